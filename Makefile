@@ -1,0 +1,67 @@
+# vantage — one-command set-up. `make demo` and `make test` work on a fresh Debian 12 machine:
+# they install the Debian packages, configure CMake in build/ (RelWithDebInfo), build, then run.
+
+BUILD_DIR ?= build
+SANITIZE_DIR ?= build-sanitize
+FUZZ_DIR ?= build-fuzz
+INSTALL_DIR ?= $(CURDIR)/build-install
+JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+BUILD_TYPE ?= RelWithDebInfo
+FUZZ_SECONDS ?= 60
+
+.PHONY: all deps configure build demo test bench test-sanitize test-consumer fuzz format clean
+
+all: build
+
+deps:
+	@bash scripts/install-deps.sh
+
+$(BUILD_DIR)/CMakeCache.txt:
+	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE)
+
+configure: deps $(BUILD_DIR)/CMakeCache.txt
+
+build: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+demo: build
+	$(BUILD_DIR)/cli/vantage orient examples/correspondences/cube.json
+
+test: build
+	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+bench: build
+	$(BUILD_DIR)/bench/vantage_bench --benchmark_min_time=0.2
+
+# The whole test suite once more under AddressSanitizer + UndefinedBehaviorSanitizer.
+test-sanitize: deps
+	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVANTAGE_SANITIZE=ON \
+	  -DVANTAGE_BUILD_BENCH=OFF -DVANTAGE_BUILD_EXAMPLES=OFF -DVANTAGE_BUILD_VIEWER=OFF
+	cmake --build $(SANITIZE_DIR) -j $(JOBS)
+	cd $(SANITIZE_DIR) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j $(JOBS)
+
+# Installs the library and builds tests/consumer against it with find_package(vantage).
+test-consumer: build
+	rm -rf $(INSTALL_DIR) $(BUILD_DIR)/consumer
+	cmake --install $(BUILD_DIR) --prefix $(INSTALL_DIR)
+	cmake -S tests/consumer -B $(BUILD_DIR)/consumer -DCMAKE_PREFIX_PATH=$(INSTALL_DIR)
+	cmake --build $(BUILD_DIR)/consumer -j $(JOBS)
+	$(BUILD_DIR)/consumer/vantage_consumer
+
+# A short libFuzzer run of the layout parser on the seed corpus in examples/layouts.
+fuzz: deps
+	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DVANTAGE_FUZZ=ON -DVANTAGE_BUILD_TESTS=OFF -DVANTAGE_BUILD_BENCH=OFF \
+	  -DVANTAGE_BUILD_EXAMPLES=OFF -DVANTAGE_BUILD_VIEWER=OFF
+	cmake --build $(FUZZ_DIR) -j $(JOBS) --target vantage_fuzz_layout
+	rm -rf $(FUZZ_DIR)/corpus && mkdir -p $(FUZZ_DIR)/corpus
+	$(FUZZ_DIR)/fuzz/vantage_fuzz_layout -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 \
+	  $(FUZZ_DIR)/corpus examples/layouts
+
+format:
+	find analysis sdp design cli io viewer examples tests bench fuzz \
+	  \( -name '*.h' -o -name '*.cc' \) 2>/dev/null | xargs clang-format -i
+
+clean:
+	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(FUZZ_DIR) $(INSTALL_DIR)

@@ -1,0 +1,325 @@
+#include "vantage/analysis/absolute_orientation.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "vantage/analysis/common.h"
+
+namespace vantage {
+
+const char* to_string(OrientationMethod method) {
+  switch (method) {
+    case OrientationMethod::kQMethod:
+      return "qmethod";
+    case OrientationMethod::kSvd:
+      return "svd";
+    case OrientationMethod::kFoam:
+      return "foam";
+  }
+  return "unknown";
+}
+
+const char* to_string(OrientationStatus status) {
+  switch (status) {
+    case OrientationStatus::kOk:
+      return "ok";
+    case OrientationStatus::kDegenerate:
+      return "degenerate";
+    case OrientationStatus::kNotCentred:
+      return "not_centred";
+  }
+  return "unknown";
+}
+
+bool OrientationOptions::is_valid(std::string* why) const {
+  auto fail = [&](const char* text) {
+    if (why) *why = text;
+    return false;
+  };
+  if (!(degenerate_gap >= 0.0 && degenerate_gap < 1.0))
+    return fail("degenerate_gap must be in [0, 1)");
+  if (!(centred_tolerance >= 0.0)) return fail("centred_tolerance must be >= 0");
+  if (!(eigen.fallback_relative_gap >= 0.0 && eigen.fallback_relative_gap < 1.0))
+    return fail("eigen.fallback_relative_gap must be in [0, 1)");
+  return true;
+}
+
+namespace {
+
+/// Weighted sufficient statistics of a correspondence set: every solver below needs only these.
+struct Moments {
+  double weight_sum = 0.0;
+  Eigen::Vector3d z_sum = Eigen::Vector3d::Zero();  // sum w z
+  Eigen::Vector3d v_sum = Eigen::Vector3d::Zero();  // sum w v
+  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();      // sum w z v^T
+  double zz = 0.0;                                  // sum w |z|^2
+  double vv = 0.0;                                  // sum w |v|^2
+};
+
+void validate(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v, const Eigen::VectorXd& w,
+              const OrientationOptions& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw InvalidArgument("options: " + why);
+  if (z.cols() != v.cols()) {
+    std::ostringstream out;
+    out << "z_object has " << z.cols() << " columns but the measured set has " << v.cols();
+    throw InvalidArgument(out.str());
+  }
+  if (z.cols() < 1) throw InvalidArgument("z_object: need at least one correspondence");
+  if (w.size() != 0 && w.size() != z.cols()) {
+    std::ostringstream out;
+    out << "weights has " << w.size() << " entries, expected " << z.cols();
+    throw InvalidArgument(out.str());
+  }
+  for (Eigen::Index i = 0; i < z.cols(); ++i) {
+    if (!z.col(i).allFinite()) {
+      throw InvalidArgument("z_object[" + std::to_string(i) + "] is not finite");
+    }
+    if (!v.col(i).allFinite()) {
+      throw InvalidArgument("measured[" + std::to_string(i) + "] is not finite");
+    }
+    if (w.size() != 0 && !(w(i) > 0.0 && std::isfinite(w(i)))) {
+      throw InvalidArgument("weights[" + std::to_string(i) + "] must be positive and finite");
+    }
+  }
+}
+
+Moments moments(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v, const Eigen::VectorXd& w) {
+  Moments m;
+  for (Eigen::Index i = 0; i < z.cols(); ++i) {
+    const double wi = w.size() == 0 ? 1.0 : w(i);
+    const Eigen::Vector3d zi = z.col(i);
+    const Eigen::Vector3d vi = v.col(i);
+    m.weight_sum += wi;
+    m.z_sum += wi * zi;
+    m.v_sum += wi * vi;
+    m.H.noalias() += wi * zi * vi.transpose();
+    m.zz += wi * zi.squaredNorm();
+    m.vv += wi * vi.squaredNorm();
+  }
+  return m;
+}
+
+/// Moments of the data centred at their weighted centroids.
+Moments centred(const Moments& m) {
+  Moments c = m;
+  const Eigen::Vector3d z_bar = m.z_sum / m.weight_sum;
+  const Eigen::Vector3d v_bar = m.v_sum / m.weight_sum;
+  c.z_sum.setZero();
+  c.v_sum.setZero();
+  c.H -= m.weight_sum * z_bar * v_bar.transpose();
+  c.zz = std::max(0.0, m.zz - m.weight_sum * z_bar.squaredNorm());
+  c.vv = std::max(0.0, m.vv - m.weight_sum * v_bar.squaredNorm());
+  return c;
+}
+
+/// D of Eq. (2) from H = sum w z v^T (K is bilinear, so D depends on the data only through H).
+Eigen::Matrix4d d_from_h(const Eigen::Matrix3d& H) {
+  Eigen::Matrix4d D;
+  D.topLeftCorner<3, 3>() = H + H.transpose() - 2.0 * H.trace() * Eigen::Matrix3d::Identity();
+  const Eigen::Vector3d zxv(H(1, 2) - H(2, 1), H(2, 0) - H(0, 2), H(0, 1) - H(1, 0));
+  D.topRightCorner<3, 1>() = zxv;
+  D.bottomLeftCorner<1, 3>() = zxv.transpose();
+  D(3, 3) = 0.0;
+  return D;
+}
+
+/// adj(M) = cofactor(M)^T; its rows are cross products of M's columns.
+Eigen::Matrix3d adjugate(const Eigen::Matrix3d& M) {
+  Eigen::Matrix3d adj;
+  adj.row(0) = M.col(1).cross(M.col(2)).transpose();
+  adj.row(1) = M.col(2).cross(M.col(0)).transpose();
+  adj.row(2) = M.col(0).cross(M.col(1)).transpose();
+  return adj;
+}
+
+struct RotationSolve {
+  Eigen::Matrix3d R;
+  double gap = 0.0;
+  bool used_fallback = false;
+};
+
+/// Maximises trace(R H) over SO(3) with Haralick's SVD and the reflection guard.
+RotationSolve rotation_svd(const Eigen::Matrix3d& H) {
+  Eigen::JacobiSVD<Eigen::Matrix3d> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::Matrix3d& U = svd.matrixU();
+  const Eigen::Matrix3d& V = svd.matrixV();
+  const double d = (V * U.transpose()).determinant() < 0.0 ? -1.0 : 1.0;
+  Eigen::Matrix3d S = Eigen::Matrix3d::Identity();
+  S(2, 2) = d;
+  const Eigen::Vector3d s = svd.singularValues();
+  // Eigenvalues of Davenport's matrix are +-s1 +-s2 +-d s3; the top two differ by 2 (s2 + d s3).
+  return {V * S * U.transpose(), std::max(0.0, 2.0 * (s(1) + d * s(2))), false};
+}
+
+RotationSolve rotation_qmethod(const Eigen::Matrix3d& H, const TopEigenOptions& eigen) {
+  const TopEigenpair top = top_eigenpair(d_from_h(H), eigen);
+  return {rotation_from_quaternion(top.vector), top.gap, top.used_fallback};
+}
+
+/// FOAM (DESIGN.md note 8) with B = sum w b r^T = H^T (b = v measured, r = z reference).
+/// Like the q-method's eigensolver, Newton is not trusted when the top two roots nearly coincide
+/// (it converges only linearly there): the SVD solution, exact in that case, is used instead.
+RotationSolve rotation_foam(const Eigen::Matrix3d& H, double lambda_start,
+                            double fallback_relative_gap) {
+  const Eigen::Matrix3d B = H.transpose();
+  const double f2 = B.squaredNorm();
+  const double det_b = B.determinant();
+  const Eigen::Matrix3d adj_b = adjugate(B);
+  const double adj2 = adj_b.squaredNorm();
+  // (lambda^2 - |B|^2)^2 - 8 lambda det B - 4 |adj B|^2 = 0, written as a depressed quartic.
+  const Eigen::Vector2d roots = internal::largest_two_quartic_roots(
+      -2.0 * f2, -8.0 * det_b, f2 * f2 - 4.0 * adj2, lambda_start * (1.0 + 1e-12));
+  const double lambda = roots(0);
+  const double kappa = 0.5 * (lambda * lambda - f2);
+  const double zeta = kappa * lambda - det_b;
+  // zeta vanishes when B has rank <= 1; the attitude formula then divides by ~0.
+  const double gap = roots(0) - roots(1);
+  if (!(gap > fallback_relative_gap * 2.0 * std::sqrt(f2)) || !(std::abs(zeta) > 0.0)) {
+    RotationSolve fallback = rotation_svd(H);
+    fallback.used_fallback = true;
+    return fallback;
+  }
+  const Eigen::Matrix3d A =
+      ((kappa + f2) * B + lambda * adj_b.transpose() - B * B.transpose() * B) / zeta;
+  return {A, gap, false};
+}
+
+RotationSolve solve_rotation(const Moments& m, const OrientationOptions& options) {
+  switch (options.method) {
+    case OrientationMethod::kSvd:
+      return rotation_svd(m.H);
+    case OrientationMethod::kFoam:
+      // Upper bound on the largest root: lambda_max = max trace(A B^T) <= ||B||_* <= sqrt(3) ||B||_F.
+      return rotation_foam(m.H, std::sqrt(3.0) * m.H.norm(), options.eigen.fallback_relative_gap);
+    case OrientationMethod::kQMethod:
+      break;
+  }
+  return rotation_qmethod(m.H, options.eigen);
+}
+
+OrientationStatus classify(const RotationSolve& solve, const Eigen::Matrix3d& H,
+                           const OrientationOptions& options, std::string* message) {
+  const double scale = 2.0 * H.norm();
+  if (!(solve.gap > options.degenerate_gap * scale) || !(scale > 0.0)) {
+    *message =
+        "the data do not determine the rotation (relative eigen gap below degenerate_gap): "
+        "fewer than two non-parallel vectors?";
+    return OrientationStatus::kDegenerate;
+  }
+  return OrientationStatus::kOk;
+}
+
+}  // namespace
+
+Eigen::Matrix4d orientation_matrix_d(const Eigen::Matrix3Xd& z_object,
+                                     const Eigen::Matrix3Xd& v_camera,
+                                     const Eigen::VectorXd& weights) {
+  validate(z_object, v_camera, weights, OrientationOptions{});
+  Eigen::Matrix4d D = Eigen::Matrix4d::Zero();
+  for (Eigen::Index i = 0; i < z_object.cols(); ++i) {
+    const double wi = weights.size() == 0 ? 1.0 : weights(i);
+    D += wi * quaternion_k(v_camera.col(i), z_object.col(i));
+  }
+  return D;
+}
+
+OrientationResult absolute_orientation(const Eigen::Matrix3Xd& z_object,
+                                       const Eigen::Matrix3Xd& v_camera,
+                                       const Eigen::VectorXd& weights,
+                                       const OrientationOptions& options) {
+  validate(z_object, v_camera, weights, options);
+  const Moments m = moments(z_object, v_camera, weights);
+  if (!(m.vv > 0.0)) throw InvalidArgument("measured: every measured vector is zero");
+
+  const RotationSolve solve = solve_rotation(m, options);
+  OrientationResult result;
+  result.R_camera_object = solve.R;
+  result.quaternion = quaternion_from_rotation(solve.R);
+  result.eigen_gap = solve.gap;
+  result.used_fallback = solve.used_fallback;
+  const double correlation = (solve.R * m.H).trace();  // sum w v^T R z
+  result.alpha = std::max(0.0, correlation) / m.vv;    // Eq. (4)
+  result.residual =
+      std::max(0.0, m.zz - 2.0 * result.alpha * correlation + result.alpha * result.alpha * m.vv);
+  result.status = classify(solve, m.H, options, &result.message);
+  return result;
+}
+
+PoseResult absolute_pose(const Eigen::Matrix3Xd& z_object, const Eigen::Matrix3Xd& q_camera,
+                         const Eigen::VectorXd& weights, const OrientationOptions& options) {
+  validate(z_object, q_camera, weights, options);
+  const Moments m = moments(z_object, q_camera, weights);
+  const Moments c = centred(m);
+  if (!(c.vv > 0.0)) {
+    throw InvalidArgument("measured: all measured points coincide, the scale is undefined");
+  }
+  const RotationSolve solve = solve_rotation(c, options);
+  PoseResult result;
+  result.R_camera_object = solve.R;
+  result.eigen_gap = solve.gap;
+  result.used_fallback = solve.used_fallback;
+  const double correlation = (solve.R * c.H).trace();
+  result.alpha = std::max(0.0, correlation) / c.vv;
+  // Eq. (13): p = (alpha sum w q - sum w R z) / sum w.
+  result.p_camera_object = (result.alpha * m.v_sum - solve.R * m.z_sum) / m.weight_sum;
+  result.residual =
+      std::max(0.0, c.zz - 2.0 * result.alpha * correlation + result.alpha * result.alpha * c.vv);
+  result.status = classify(solve, c.H, options, &result.message);
+  return result;
+}
+
+PoseResult decoupled_pose(const Eigen::Matrix3Xd& z_object, const Eigen::Matrix3Xd& q_camera,
+                          double alpha, const Eigen::VectorXd& weights,
+                          const OrientationOptions& options) {
+  validate(z_object, q_camera, weights, options);
+  if (!(alpha > 0.0 && std::isfinite(alpha))) {
+    throw InvalidArgument("alpha must be positive and finite");
+  }
+  const Moments m = moments(z_object, q_camera, weights);
+  PoseResult result;
+  result.alpha = alpha;
+  double z_abs_sum = 0.0;
+  for (Eigen::Index i = 0; i < z_object.cols(); ++i)
+    z_abs_sum += (weights.size() == 0 ? 1.0 : weights(i)) * z_object.col(i).norm();
+  if (m.z_sum.norm() > options.centred_tolerance * std::max(z_abs_sum, 1e-300)) {
+    result.status = OrientationStatus::kNotCentred;
+    result.message =
+        "sum w_i z_i != 0 (Eq. 11): Prop. 3 does not apply; choose weights with "
+        "`vantage weights` or use absolute_pose(), which centres the data";
+    return result;
+  }
+  const RotationSolve solve = solve_rotation(m, options);
+  result.R_camera_object = solve.R;
+  result.eigen_gap = solve.gap;
+  result.used_fallback = solve.used_fallback;
+  result.p_camera_object = (alpha * m.v_sum - solve.R * m.z_sum) / m.weight_sum;  // Eq. (13)
+  // J of Eq. (12) expanded with sum w z = 0.
+  const Eigen::Vector3d p = result.p_camera_object;
+  result.residual = std::max(
+      0.0, m.zz - 2.0 * alpha * (solve.R * m.H).trace() + alpha * alpha * m.vv +
+               m.weight_sum * p.squaredNorm() - 2.0 * alpha * p.dot(m.v_sum));
+  result.status = classify(solve, m.H, options, &result.message);
+  return result;
+}
+
+Eigen::Matrix4d swap_delta_d(const Eigen::Vector3d& v_j, const Eigen::Vector3d& v_k,
+                             const Eigen::Vector3d& z_j, const Eigen::Vector3d& z_k, double w_j,
+                             double w_k) {
+  return quaternion_k(v_k - v_j, w_j * z_j - w_k * z_k);
+}
+
+Eigen::Matrix3d rotation_from_d(const Eigen::Matrix4d& D, const TopEigenOptions& options) {
+  return rotation_from_quaternion(top_eigenpair(D, options).vector);
+}
+
+double rotation_angle_between(const Eigen::Matrix3d& A, const Eigen::Matrix3d& B) {
+  // 2 atan2(|e|, |eps4|) of the relative quaternion keeps full precision near 0 (acos does not).
+  const Eigen::Quaterniond q(A.transpose() * B);
+  return 2.0 * std::atan2(q.vec().norm(), std::abs(q.w()));
+}
+
+}  // namespace vantage

@@ -1,0 +1,130 @@
+#include "vantage/analysis/quaternion.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+
+#include "support/eigen_testing.h"
+
+namespace vantage {
+namespace {
+
+using testing::IsNearQuaternion;
+using testing::IsRotation;
+using testing::kSeed;
+
+// Eigen-solver agreement: the fast path and Eigen's solver differ by rounding only.
+constexpr double kEigenTolerance = 1e-10;
+constexpr double kExact = 1e-14;
+
+TEST(QuaternionK, IsSymmetricAndBilinear) {
+  std::mt19937 rng(kSeed);
+  for (int trial = 0; trial < 20; ++trial) {
+    const Eigen::Vector3d v1 = testing::random_points(rng, 1).col(0);
+    const Eigen::Vector3d v2 = testing::random_points(rng, 1).col(0);
+    const Eigen::Vector3d z = testing::random_points(rng, 1).col(0);
+    const Eigen::Matrix4d K = quaternion_k(v1, z);
+    EXPECT_EIGEN_NEAR(K, K.transpose(), 0.0);
+    EXPECT_EIGEN_NEAR(quaternion_k(2.0 * v1 - 3.0 * v2, z),
+                      2.0 * quaternion_k(v1, z) - 3.0 * quaternion_k(v2, z), 1e-13);
+    EXPECT_EIGEN_NEAR(quaternion_k(v1, Eigen::Vector3d::Zero()), Eigen::Matrix4d::Zero(), 0.0);
+  }
+}
+
+TEST(QuaternionK, QuadraticFormIsCorrelationShiftedByDotProduct) {
+  // eps^T K(v, z) eps = v^T R(eps) z - v^T z for unit eps (DESIGN.md note 6).
+  std::mt19937 rng(kSeed + 1);
+  for (int trial = 0; trial < 50; ++trial) {
+    const Eigen::Vector3d v = testing::random_points(rng, 1).col(0);
+    const Eigen::Vector3d z = testing::random_points(rng, 1).col(0);
+    const Eigen::Matrix3d R = testing::random_rotation(rng);
+    const Eigen::Vector4d eps = quaternion_from_rotation(R);
+    EXPECT_NEAR(eps.dot(quaternion_k(v, z) * eps), v.dot(R * z) - v.dot(z), 1e-13);
+  }
+}
+
+TEST(RotationFromQuaternion, MatchesEigenAndIsRotation) {
+  std::mt19937 rng(kSeed + 2);
+  for (int trial = 0; trial < 50; ++trial) {
+    const Eigen::Matrix3d R = testing::random_rotation(rng);
+    const Eigen::Vector4d eps = quaternion_from_rotation(R);
+    EXPECT_GE(eps(3), 0.0);
+    EXPECT_NEAR(eps.norm(), 1.0, kExact);
+    EXPECT_THAT(rotation_from_quaternion(eps), IsRotation());
+    EXPECT_EIGEN_NEAR(rotation_from_quaternion(eps), R, 1e-14);
+    EXPECT_EIGEN_NEAR(rotation_from_quaternion(-eps), R, 1e-14);
+  }
+}
+
+TEST(RotationFromQuaternion, AxisAngleConvention) {
+  // 90 degrees about z maps x to y (active rotation).
+  const double s = std::sqrt(0.5);
+  const Eigen::Matrix3d R = rotation_from_quaternion(Eigen::Vector4d(0, 0, s, s));
+  EXPECT_EIGEN_NEAR(R * Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), kExact);
+}
+
+TEST(RotationFromQuaternion, HalfTurnRoundTrips) {
+  const Eigen::Vector3d axes[] = {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
+                                  Eigen::Vector3d(1, 1, 1).normalized()};
+  for (const Eigen::Vector3d& axis : axes) {
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(M_PI, axis).toRotationMatrix();
+    EXPECT_EIGEN_NEAR(rotation_from_quaternion(quaternion_from_rotation(R)), R, 1e-14);
+  }
+}
+
+Eigen::Matrix4d random_symmetric(std::mt19937& rng) {
+  Eigen::Matrix4d A;
+  std::normal_distribution<double> normal;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) A(i, j) = normal(rng);
+  return A + A.transpose();
+}
+
+TEST(TopEigenpair, FastPathAgreesWithFullSolver) {
+  std::mt19937 rng(kSeed + 3);
+  int fast = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const Eigen::Matrix4d D = random_symmetric(rng);
+    const TopEigenpair got = top_eigenpair(D);
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> reference(D);
+    EXPECT_NEAR(got.lambda, reference.eigenvalues()(3), kEigenTolerance);
+    EXPECT_NEAR(got.gap, reference.eigenvalues()(3) - reference.eigenvalues()(2),
+                kEigenTolerance);
+    EXPECT_THAT(got.vector, IsNearQuaternion(reference.eigenvectors().col(3), 1e-9));
+    EXPECT_EIGEN_NEAR(D * got.vector, got.lambda * got.vector, 1e-9);
+    fast += got.used_fallback ? 0 : 1;
+  }
+  EXPECT_GT(fast, 190);  // random matrices almost never have a near-double top eigenvalue
+}
+
+TEST(TopEigenpair, FallsBackWhenTopEigenvaluesNearlyCoincide) {
+  std::mt19937 rng(kSeed + 4);
+  const Eigen::Matrix4d Q =
+      Eigen::HouseholderQR<Eigen::Matrix4d>(random_symmetric(rng)).householderQ();
+  const Eigen::Vector4d eigenvalues(-1.0, 0.5, 2.0, 2.0 + 1e-9);
+  const Eigen::Matrix4d D = Q * eigenvalues.asDiagonal() * Q.transpose();
+  const TopEigenpair got = top_eigenpair(D);
+  EXPECT_TRUE(got.used_fallback);
+  EXPECT_NEAR(got.gap, 1e-9, 1e-12);
+  EXPECT_NEAR(got.lambda, 2.0 + 1e-9, 1e-12);
+}
+
+TEST(TopEigenpair, HandlesMultiplesOfIdentityAndZero) {
+  for (const double c : {0.0, 3.0}) {
+    const TopEigenpair got = top_eigenpair(c * Eigen::Matrix4d::Identity());
+    EXPECT_NEAR(got.lambda, c, kExact);
+    EXPECT_EQ(got.gap, 0.0);
+    EXPECT_NEAR(got.vector.norm(), 1.0, kExact);
+  }
+}
+
+TEST(TopEigenpair, ForcedFullSolverMatchesFastPath) {
+  std::mt19937 rng(kSeed + 5);
+  const Eigen::Matrix4d D = random_symmetric(rng);
+  TopEigenOptions full;
+  full.force_full_solver = true;
+  EXPECT_THAT(top_eigenpair(D, full).vector, IsNearQuaternion(top_eigenpair(D).vector, 1e-9));
+}
+
+}  // namespace
+}  // namespace vantage
