@@ -193,7 +193,8 @@ RotationSolve solve_rotation(const Moments& m, const OrientationOptions& options
     case OrientationMethod::kSvd:
       return rotation_svd(m.H);
     case OrientationMethod::kFoam:
-      // Upper bound on the largest root: lambda_max = max trace(A B^T) <= ||B||_* <= sqrt(3) ||B||_F.
+      // Upper bound on the largest root: lambda_max = max trace(A B^T) <= ||B||_* <= sqrt(3)
+      // ||B||_F.
       return rotation_foam(m.H, std::sqrt(3.0) * m.H.norm(), options.eigen.fallback_relative_gap);
     case OrientationMethod::kQMethod:
       break;
@@ -299,9 +300,9 @@ PoseResult decoupled_pose(const Eigen::Matrix3Xd& z_object, const Eigen::Matrix3
   result.p_camera_object = (alpha * m.v_sum - solve.R * m.z_sum) / m.weight_sum;  // Eq. (13)
   // J of Eq. (12) expanded with sum w z = 0.
   const Eigen::Vector3d p = result.p_camera_object;
-  result.residual = std::max(
-      0.0, m.zz - 2.0 * alpha * (solve.R * m.H).trace() + alpha * alpha * m.vv +
-               m.weight_sum * p.squaredNorm() - 2.0 * alpha * p.dot(m.v_sum));
+  result.residual =
+      std::max(0.0, m.zz - 2.0 * alpha * (solve.R * m.H).trace() + alpha * alpha * m.vv +
+                        m.weight_sum * p.squaredNorm() - 2.0 * alpha * p.dot(m.v_sum));
   result.status = classify(solve, m.H, options, &result.message);
   return result;
 }
@@ -310,6 +311,15 @@ Eigen::Matrix4d swap_delta_d(const Eigen::Vector3d& v_j, const Eigen::Vector3d& 
                              const Eigen::Vector3d& z_j, const Eigen::Vector3d& z_k, double w_j,
                              double w_k) {
   return quaternion_k(v_k - v_j, w_j * z_j - w_k * z_k);
+}
+
+Eigen::Matrix3d optimal_rotation(const Eigen::Matrix3d& H, const OrientationOptions& options,
+                                 double* eigen_gap) {
+  Moments m;
+  m.H = H;
+  const RotationSolve solve = solve_rotation(m, options);
+  if (eigen_gap) *eigen_gap = solve.gap;
+  return solve.R;
 }
 
 Eigen::Matrix3d rotation_from_d(const Eigen::Matrix4d& D, const TopEigenOptions& options) {

@@ -140,8 +140,7 @@ TEST(AbsoluteOrientation, ResidualIsTheObjective) {
         Eigen::AngleAxisd(1e-4, Eigen::Vector3d::Unit(axis)).toRotationMatrix();
     double J_perturbed = 0.0;
     for (int i = 0; i < 7; ++i)
-      J_perturbed +=
-          w(i) * (dR * r.R_camera_object * z.col(i) - r.alpha * v.col(i)).squaredNorm();
+      J_perturbed += w(i) * (dR * r.R_camera_object * z.col(i) - r.alpha * v.col(i)).squaredNorm();
     EXPECT_GE(J_perturbed, J - 1e-12);
   }
 }
@@ -158,6 +157,20 @@ TEST(AbsoluteOrientation, DIsTheSumOfK) {
   EXPECT_LT(rotation_angle_between(rotation_from_d(D), r.R_camera_object), 1e-10);
 }
 
+TEST(AbsoluteOrientation, OptimalRotationFromCrossCovarianceMatchesSolver) {
+  std::mt19937 rng(kSeed + 11);
+  const Eigen::Matrix3Xd z = testing::random_points(rng, 6);
+  const Eigen::Matrix3Xd v = testing::random_points(rng, 6);
+  const Eigen::Matrix3d H = z * v.transpose();
+  for (OrientationMethod method : kMethods) {
+    double gap = -1.0;
+    const Eigen::Matrix3d R = optimal_rotation(H, with_method(method), &gap);
+    const OrientationResult reference = absolute_orientation(z, v, {}, with_method(method));
+    EXPECT_LT(rotation_angle_between(R, reference.R_camera_object), 1e-12);
+    EXPECT_DOUBLE_EQ(gap, reference.eigen_gap);
+  }
+}
+
 TEST(AbsoluteOrientation, ParallelVectorsAreDegenerate) {
   Eigen::Matrix3Xd z(3, 3);
   z << 1, 2, -1, 0, 0, 0, 0, 0, 0;
@@ -167,8 +180,7 @@ TEST(AbsoluteOrientation, ParallelVectorsAreDegenerate) {
     EXPECT_THAT(r.R_camera_object, IsRotationWithin(1e-10));
     EXPECT_FALSE(r.message.empty());
     // Any optimum still maps the one direction correctly.
-    EXPECT_EIGEN_NEAR(r.R_camera_object * Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitX(),
-                      1e-9);
+    EXPECT_EIGEN_NEAR(r.R_camera_object * Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitX(), 1e-9);
   }
 }
 
@@ -204,8 +216,9 @@ TEST(AbsoluteOrientation, BadInputThrowsNamingTheArgument) {
               ::testing::HasSubstr("z_object[2]"));
   EXPECT_THAT(message_of([&] { absolute_orientation(z, Eigen::Matrix3Xd::Zero(3, 4)); }),
               ::testing::HasSubstr("zero"));
-  EXPECT_THAT(message_of([&] { absolute_orientation(Eigen::Matrix3Xd(3, 0), Eigen::Matrix3Xd(3, 0)); }),
-              ::testing::HasSubstr("at least one"));
+  EXPECT_THAT(
+      message_of([&] { absolute_orientation(Eigen::Matrix3Xd(3, 0), Eigen::Matrix3Xd(3, 0)); }),
+      ::testing::HasSubstr("at least one"));
   OrientationOptions bad;
   bad.degenerate_gap = -1.0;
   EXPECT_THAT(message_of([&] { absolute_orientation(z, z, {}, bad); }),
@@ -226,8 +239,8 @@ TEST(SwapSensitivity, DeltaDEqualsRecomputedD) {
       swapped.col(j) = v.col(k);
       swapped.col(k) = v.col(j);
       const Eigen::Matrix4d expected = orientation_matrix_d(z, swapped, w) - D;
-      EXPECT_EIGEN_NEAR(swap_delta_d(v.col(j), v.col(k), z.col(j), z.col(k), w(j), w(k)),
-                        expected, 1e-13);
+      EXPECT_EIGEN_NEAR(swap_delta_d(v.col(j), v.col(k), z.col(j), z.col(k), w(j), w(k)), expected,
+                        1e-13);
     }
   }
 }
@@ -263,8 +276,8 @@ TEST(DecoupledPose, WeightsCanCentreTheData) {
   z << 1, -2, 0, 0, 0, 0, 1, -1, 0.5, -1, 0, 0;
   const Eigen::VectorXd w = (Eigen::VectorXd(4) << 2, 1, 0.5, 0.5).finished();
   ASSERT_NEAR((z * w).norm(), 0.0, 1e-15);
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized())
-                                .toRotationMatrix();
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   const Eigen::Vector3d p(1, 2, 30);
   const PoseResult result = decoupled_pose(z, (R * z).colwise() + p, 1.0, w);
   ASSERT_EQ(result.status, OrientationStatus::kOk);

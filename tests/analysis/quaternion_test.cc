@@ -88,8 +88,7 @@ TEST(TopEigenpair, FastPathAgreesWithFullSolver) {
     const TopEigenpair got = top_eigenpair(D);
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> reference(D);
     EXPECT_NEAR(got.lambda, reference.eigenvalues()(3), kEigenTolerance);
-    EXPECT_NEAR(got.gap, reference.eigenvalues()(3) - reference.eigenvalues()(2),
-                kEigenTolerance);
+    EXPECT_NEAR(got.gap, reference.eigenvalues()(3) - reference.eigenvalues()(2), kEigenTolerance);
     EXPECT_THAT(got.vector, IsNearQuaternion(reference.eigenvectors().col(3), 1e-9));
     EXPECT_EIGEN_NEAR(D * got.vector, got.lambda * got.vector, 1e-9);
     fast += got.used_fallback ? 0 : 1;

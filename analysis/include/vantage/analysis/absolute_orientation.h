@@ -62,9 +62,9 @@ struct OrientationOptions {
 struct OrientationResult {
   Eigen::Matrix3d R_camera_object = Eigen::Matrix3d::Identity();
   Eigen::Vector4d quaternion = Eigen::Vector4d::UnitW();  ///< [e; eps4] of R, eps4 >= 0
-  double alpha = 1.0;        ///< optimal scale, Eq. (4)
-  double residual = 0.0;     ///< J of Eq. (1) at the optimum (weighted sum of squares)
-  double eigen_gap = 0.0;    ///< lambda_1 - lambda_2 of D (Eq. 2): conditioning of the problem
+  double alpha = 1.0;                                     ///< optimal scale, Eq. (4)
+  double residual = 0.0;       ///< J of Eq. (1) at the optimum (weighted sum of squares)
+  double eigen_gap = 0.0;      ///< lambda_1 - lambda_2 of D (Eq. 2): conditioning of the problem
   bool used_fallback = false;  ///< q-method: full eigensolver used; FOAM: SVD used (zeta ~ 0)
   OrientationStatus status = OrientationStatus::kOk;
   std::string message;  ///< empty when status is kOk
@@ -74,9 +74,9 @@ struct OrientationResult {
 struct PoseResult {
   Eigen::Matrix3d R_camera_object = Eigen::Matrix3d::Identity();
   Eigen::Vector3d p_camera_object = Eigen::Vector3d::Zero();
-  double alpha = 1.0;       ///< scale: alpha q_i ~= R z_i + p
-  double residual = 0.0;    ///< J of Eq. (12) at the optimum (weighted sum of squares)
-  double eigen_gap = 0.0;   ///< lambda_1 - lambda_2 of D built from the centred data
+  double alpha = 1.0;      ///< scale: alpha q_i ~= R z_i + p
+  double residual = 0.0;   ///< J of Eq. (12) at the optimum (weighted sum of squares)
+  double eigen_gap = 0.0;  ///< lambda_1 - lambda_2 of D built from the centred data
   bool used_fallback = false;
   OrientationStatus status = OrientationStatus::kOk;
   std::string message;
@@ -117,6 +117,13 @@ PoseResult decoupled_pose(const Eigen::Matrix3Xd& z_object, const Eigen::Matrix3
 Eigen::Matrix4d swap_delta_d(const Eigen::Vector3d& v_j, const Eigen::Vector3d& v_k,
                              const Eigen::Vector3d& z_j, const Eigen::Vector3d& z_k, double w_j,
                              double w_k);
+
+/// The rotation maximising trace(R H) = sum w_i v_i^T R z_i over SO(3), for the weighted
+/// cross-covariance H = sum w_i z_i v_i^T, by options.method. The building block of
+/// absolute_orientation() for callers that accumulate H themselves (e.g. orthogonal
+/// iteration). Allocates nothing. *eigen_gap, when given, receives lambda_1 - lambda_2 of D.
+Eigen::Matrix3d optimal_rotation(const Eigen::Matrix3d& H, const OrientationOptions& options = {},
+                                 double* eigen_gap = nullptr);
 
 /// The top eigenpair of D (Eq. 2) as a rotation: R(eps) of Eq. (5) for the top eigenvector.
 /// Used by analyses that modify D incrementally (Prop. 2, Prop. 4).

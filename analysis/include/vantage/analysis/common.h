@@ -33,9 +33,9 @@ namespace internal {
 }  // namespace vantage
 
 /// Invariant check that is never compiled out. Throws vantage::InternalError.
-#define VANTAGE_CHECK(condition, message)                                                     \
-  do {                                                                                        \
-    if (!(condition)) {                                                                       \
-      ::vantage::internal::throw_check_failure(#condition, __FILE__, __LINE__, (message));    \
-    }                                                                                         \
+#define VANTAGE_CHECK(condition, message)                                                  \
+  do {                                                                                     \
+    if (!(condition)) {                                                                    \
+      ::vantage::internal::throw_check_failure(#condition, __FILE__, __LINE__, (message)); \
+    }                                                                                      \
   } while (false)
