@@ -1,0 +1,63 @@
+#pragma once
+
+/// A fiducial layout: what the user hands vantage to analyse (DESIGN.md, "Layout file").
+///
+/// Direction mode holds the data vectors z_i of the paper directly. Point mode holds marker
+/// positions; the analysis then uses the free vectors z_j - z_i (i < j) of Prop. 8, each with a
+/// pair weight (sqrt(w_i w_j) by default).
+
+#include <Eigen/Core>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vantage {
+
+/// Which kind of entries a layout holds.
+enum class LayoutMode {
+  kVectors,  ///< entries are data vectors z_i (object frame)
+  kPoints,   ///< entries are marker positions (object frame)
+};
+
+/// "vectors" or "points".
+const char* to_string(LayoutMode mode);
+
+/// How a free vector z_j - z_i is weighted from its markers' weights (Prop. 8).
+enum class PairWeighting {
+  kGeometricMean,   ///< sqrt(w_i w_j) — the default, as in DESIGN.md
+  kArithmeticMean,  ///< (w_i + w_j) / 2
+};
+
+/// A layout in the object frame.
+struct Layout {
+  std::string name;
+  LayoutMode mode = LayoutMode::kVectors;
+  Eigen::Matrix3Xd entries;     ///< one vector (direction mode) or point (point mode) per column
+  Eigen::VectorXd weights;      ///< one positive weight per entry
+  Eigen::Matrix3Xd candidates;  ///< allowed additions for design (may have zero columns)
+
+  /// Throws InvalidArgument naming the field and index of the first violation: fewer than 2
+  /// entries, non-finite values, a zero-length vector (direction mode), coincident points
+  /// (point mode), weights of the wrong length, non-finite or <= 0, non-finite candidates.
+  /// Field names are those of the file format: "vectors", "points", "weights", "candidates".
+  void validate() const;
+
+  /// "vectors" or "points": the file-format name of the entries field.
+  const char* entries_field() const;
+};
+
+/// The data vectors an analysis works on, with their weights.
+struct DataVectors {
+  Eigen::Matrix3Xd vectors;  ///< 3 x m
+  Eigen::VectorXd weights;   ///< m positive weights
+  /// Point mode: the marker pair (i, j), i < j, of each free vector z_j - z_i. Empty in
+  /// direction mode.
+  std::vector<std::pair<int, int>> pairs;
+};
+
+/// The layout's data vectors: its entries in direction mode, all free vectors z_j - z_i (i < j,
+/// in lexicographic order of (i, j)) in point mode. Validates the layout first.
+DataVectors data_vectors(const Layout& layout,
+                         PairWeighting weighting = PairWeighting::kGeometricMean);
+
+}  // namespace vantage

@@ -1,0 +1,88 @@
+#include "vantage/analysis/layout.h"
+
+#include <cmath>
+#include <string>
+
+#include "vantage/analysis/common.h"
+
+namespace vantage {
+
+const char* to_string(LayoutMode mode) {
+  return mode == LayoutMode::kPoints ? "points" : "vectors";
+}
+
+const char* Layout::entries_field() const { return to_string(mode); }
+
+namespace {
+
+[[noreturn]] void fail(const std::string& field, Eigen::Index index, const std::string& problem) {
+  throw InvalidArgument(field + "[" + std::to_string(index) + "]: " + problem);
+}
+
+}  // namespace
+
+void Layout::validate() const {
+  const std::string field = entries_field();
+  const Eigen::Index n = entries.cols();
+  if (n < 2) {
+    throw InvalidArgument(field + ": need at least 2 entries, got " + std::to_string(n));
+  }
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (!entries.col(i).allFinite()) fail(field, i, "not a finite number");
+    if (mode == LayoutMode::kVectors && !(entries.col(i).norm() > 0.0)) {
+      fail(field, i, "zero-length vector");
+    }
+  }
+  if (mode == LayoutMode::kPoints) {
+    for (Eigen::Index j = 1; j < n; ++j) {
+      for (Eigen::Index i = 0; i < j; ++i) {
+        if (entries.col(i) == entries.col(j)) {
+          fail(field, j, "coincides with " + field + "[" + std::to_string(i) + "]");
+        }
+      }
+    }
+  }
+  if (weights.size() != n) {
+    throw InvalidArgument("weights: expected " + std::to_string(n) + " entries (one per " +
+                          (mode == LayoutMode::kPoints ? "point" : "vector") + "), got " +
+                          std::to_string(weights.size()));
+  }
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (!std::isfinite(weights(i))) fail("weights", i, "not a finite number");
+    if (!(weights(i) > 0.0)) fail("weights", i, "must be > 0");
+  }
+  for (Eigen::Index i = 0; i < candidates.cols(); ++i) {
+    if (!candidates.col(i).allFinite()) fail("candidates", i, "not a finite number");
+    if (mode == LayoutMode::kVectors && !(candidates.col(i).norm() > 0.0)) {
+      fail("candidates", i, "zero-length vector");
+    }
+  }
+}
+
+DataVectors data_vectors(const Layout& layout, PairWeighting weighting) {
+  layout.validate();
+  DataVectors out;
+  if (layout.mode == LayoutMode::kVectors) {
+    out.vectors = layout.entries;
+    out.weights = layout.weights;
+    return out;
+  }
+  const int n = static_cast<int>(layout.entries.cols());
+  const int m = n * (n - 1) / 2;
+  out.vectors.resize(3, m);
+  out.weights.resize(m);
+  out.pairs.reserve(m);
+  int k = 0;
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j, ++k) {
+      out.vectors.col(k) = layout.entries.col(j) - layout.entries.col(i);
+      const double wi = layout.weights(i), wj = layout.weights(j);
+      out.weights(k) =
+          weighting == PairWeighting::kGeometricMean ? std::sqrt(wi * wj) : 0.5 * (wi + wj);
+      out.pairs.emplace_back(i, j);
+    }
+  }
+  return out;
+}
+
+}  // namespace vantage

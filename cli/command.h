@@ -1,0 +1,51 @@
+#pragma once
+
+// Shared pieces of the `vantage` subcommands. Contract (DESIGN.md): every subcommand prints a
+// readable report by default and exactly one JSON object on stdout with --json; exit status 0
+// when done, 2 for bad input or usage (one line on stderr, nothing written), 1 for an internal
+// failure such as a solver that did not converge.
+
+#include <CLI/CLI.hpp>
+#include <Eigen/Core>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "vantage/analysis/absolute_orientation.h"
+
+namespace vantage::cli {
+
+using Json = nlohmann::ordered_json;
+
+/// Exit statuses of the command.
+constexpr int kExitOk = 0;
+constexpr int kExitFailure = 1;
+constexpr int kExitBadInput = 2;
+
+/// A registered subcommand: its CLI11 node and the function that runs it after parsing.
+struct Command {
+  CLI::App* app = nullptr;
+  std::function<int()> run;
+};
+
+Command add_orient_command(CLI::App& root);
+
+/// "qmethod" | "svd" | "foam" (already checked by CLI11) to the enum.
+OrientationMethod parse_orientation_method(const std::string& name);
+
+/// A matrix as nested JSON rows ([[..], [..]]), a vector as a flat list.
+Json json_rows(const Eigen::MatrixXd& m);
+Json json_list(const Eigen::VectorXd& v);
+
+/// Prints one JSON object on stdout (two-space indented).
+void print_json(const Json& object);
+
+/// Fixed-width text for the readable reports: "[ x y z ]" and a number with `digits`
+/// significant digits.
+std::string format_vector(const Eigen::VectorXd& v, int digits = 6);
+std::string format_number(double x, int digits = 6);
+
+/// The readable rows of a 3x3 matrix, each indented by `indent` spaces and ending in '\n'.
+std::string format_matrix(const Eigen::MatrixXd& m, int indent = 2, int digits = 6);
+
+}  // namespace vantage::cli

@@ -1,0 +1,56 @@
+// vantage — how good is a fiducial layout for pose from a single affine image, and how to make it
+// better. See README.md for the subcommands and their JSON contracts.
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "command.h"
+#include "vantage/analysis/common.h"
+
+namespace {
+
+/// Errors are exactly one line on stderr.
+void print_error(const std::string& kind, std::string message) {
+  for (char& c : message)
+    if (c == '\n' || c == '\r') c = ' ';
+  std::cerr << "vantage: " << kind << ": " << message << std::endl;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace vantage::cli;
+  CLI::App app{
+      "vantage: evaluate and design fiducial layouts for pose estimation from a single affine "
+      "image (McInroy, Erwin & Robertson), with the estimators of Haralick et al. and Wu & Wu.",
+      "vantage"};
+  app.require_subcommand(1, 1);
+  app.set_version_flag("--version", std::string(VANTAGE_VERSION));
+
+  const std::vector<Command> commands = {
+      add_orient_command(app),
+  };
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    print_error("error", e.what());
+    return kExitBadInput;
+  }
+
+  try {
+    for (const Command& command : commands) {
+      if (command.app->parsed()) return command.run();
+    }
+  } catch (const vantage::InvalidArgument& e) {
+    print_error("error", e.what());
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    print_error("internal error", e.what());
+    return kExitFailure;
+  }
+  print_error("error", "no subcommand given (see vantage --help)");
+  return kExitBadInput;
+}

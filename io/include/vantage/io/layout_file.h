@@ -1,0 +1,39 @@
+#pragma once
+
+/// Reading and writing layout files (JSON, DESIGN.md "Layout file"):
+///
+///   {"name": "orthogonal triad",
+///    "vectors": [[1, 0, 0], [0, 1, 0], [0, 0, 1]],      // or "points": [[x, y, z], ...]
+///    "weights": [1, 1, 1],                               // optional, default all 1
+///    "candidates": [[0.5, 0.5, 0.7]]}                    // optional
+///
+/// Every error is one line "<source>: <field>[<index>]: <problem>" in a vantage::InvalidArgument.
+
+#include <string>
+#include <string_view>
+
+#include "vantage/analysis/layout.h"
+
+namespace vantage::io {
+
+/// Parses the JSON text of a layout; `source` names it in error messages (usually the path).
+/// Accepted top-level fields: name, description, vectors | points, weights, candidates.
+/// Throws InvalidArgument for text that is not JSON, a root that is not an object, unknown
+/// fields, both or neither of vectors/points, wrong arity, non-numbers, NaN/Inf, zero-length
+/// vectors, coincident points, weights of the wrong length or <= 0, fewer than 2 entries.
+Layout parse_layout(std::string_view text, const std::string& source);
+
+/// Reads and parses the layout file at `path` (errors name the path).
+Layout read_layout(const std::string& path);
+
+/// The layout as JSON text in the file format (two-space indented, trailing newline).
+std::string layout_to_json(const Layout& layout);
+
+/// Writes the layout to `path`. Refuses (InvalidArgument) to replace an existing file unless
+/// `overwrite` is set. Validates the layout first, so nothing is written for a bad layout.
+void write_layout(const std::string& path, const Layout& layout, bool overwrite = false);
+
+/// The whole content of a file; throws InvalidArgument "<path>: cannot open file" if unreadable.
+std::string read_text_file(const std::string& path);
+
+}  // namespace vantage::io

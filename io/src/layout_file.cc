@@ -1,0 +1,83 @@
+#include "vantage/io/layout_file.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "json_fields.h"
+#include "vantage/analysis/common.h"
+
+namespace vantage::io {
+
+using internal::fail;
+
+std::string read_text_file(const std::string& path) {
+  if (std::filesystem::is_directory(path)) fail(path, "is a directory, not a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, "cannot open file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+Layout parse_layout(std::string_view text, const std::string& source) {
+  const nlohmann::json root = internal::parse_object(text, source);
+  internal::reject_unknown_fields(
+      root, source, {"name", "description", "vectors", "points", "weights", "candidates"});
+  const bool has_vectors = root.contains("vectors");
+  const bool has_points = root.contains("points");
+  if (has_vectors == has_points) {
+    fail(source, has_vectors ? "vectors/points: give exactly one of \"vectors\" or \"points\", "
+                               "not both"
+                             : "vectors/points: missing; give \"vectors\" (directions) or "
+                               "\"points\" (marker positions)");
+  }
+  Layout layout;
+  layout.mode = has_points ? LayoutMode::kPoints : LayoutMode::kVectors;
+  const char* field = layout.entries_field();
+  layout.name = root.contains("name") ? internal::read_string(root["name"], source, "name") : "";
+  layout.entries = internal::read_vectors<3>(root[field], source, field);
+  layout.weights = root.contains("weights")
+                       ? internal::read_numbers(root["weights"], source, "weights")
+                       : Eigen::VectorXd::Ones(layout.entries.cols());
+  layout.candidates = root.contains("candidates")
+                          ? internal::read_vectors<3>(root["candidates"], source, "candidates")
+                          : Eigen::Matrix3Xd(3, 0);
+  try {
+    layout.validate();
+  } catch (const InvalidArgument& e) {
+    fail(source, e.what());
+  }
+  return layout;
+}
+
+Layout read_layout(const std::string& path) { return parse_layout(read_text_file(path), path); }
+
+std::string layout_to_json(const Layout& layout) {
+  auto rows = [](const Eigen::Matrix3Xd& m) {
+    nlohmann::json list = nlohmann::json::array();
+    for (Eigen::Index j = 0; j < m.cols(); ++j) list.push_back({m(0, j), m(1, j), m(2, j)});
+    return list;
+  };
+  nlohmann::ordered_json out;
+  out["name"] = layout.name;
+  out[layout.entries_field()] = rows(layout.entries);
+  out["weights"] =
+      std::vector<double>(layout.weights.data(), layout.weights.data() + layout.weights.size());
+  if (layout.candidates.cols() > 0) out["candidates"] = rows(layout.candidates);
+  return out.dump(2) + "\n";
+}
+
+void write_layout(const std::string& path, const Layout& layout, bool overwrite) {
+  layout.validate();
+  if (!overwrite && std::filesystem::exists(path)) {
+    fail(path, "exists already; refusing to overwrite it");
+  }
+  const std::string text = layout_to_json(layout);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) fail(path, "cannot open file for writing");
+  out << text;
+  if (!out.flush()) fail(path, "write failed");
+}
+
+}  // namespace vantage::io
