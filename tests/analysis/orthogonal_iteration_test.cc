@@ -26,6 +26,7 @@ constexpr double kNoiseFreeTranslation = 1e-8;  // object units, at depths 4-8
 // FOAM and SVD compute the same rotation per step (to rounding), so the iterations agree to the
 // stopping accuracy.
 constexpr double kStepAgreementRadians = 1e-8;
+constexpr double kStepAgreementTranslation = 1e-7;  // object units, at depths 4-8
 // Noise of 1e-3 in normalised image coordinates (about 1 pixel at f = 1000) on 20 points spread
 // over ~0.25 rad of field of view: rotation errors of a few milliradians at most.
 constexpr double kImageNoise = 1e-3;
@@ -167,7 +168,7 @@ TEST(OrthogonalIteration, FoamAndSvdStepsConvergeToTheSamePose) {
     EXPECT_LT(rotation_angle_between(foam.R_camera_object, svd.R_camera_object),
               kStepAgreementRadians)
         << "trial " << trial;
-    EXPECT_EIGEN_NEAR(foam.p_camera_object, svd.p_camera_object, kStepAgreementRadians * 10.0);
+    EXPECT_EIGEN_NEAR(foam.p_camera_object, svd.p_camera_object, kStepAgreementTranslation);
     EXPECT_NEAR(foam.error, svd.error, 1e-12 * svd.error + 1e-24);
   }
 }
@@ -203,9 +204,11 @@ TEST(OrthogonalIteration, DownweightedOutlierIsIgnored) {
   s.image.col(3) += Eigen::Vector2d(0.2, -0.1);  // a gross mismatch
   Eigen::VectorXd w = Eigen::VectorXd::Ones(10);
   w(3) = 1e-15;
+  // The outlier's pull on E is ~1e-15 * 0.2^2 against an exact fit elsewhere: negligible.
+  constexpr double kDownweightedRadians = 1e-6;
   const OrthogonalIterationResult result =
       orthogonal_iteration_pose(s.model, s.image, w, tight(OrientationMethod::kFoam));
-  EXPECT_LT(rotation_angle_between(result.R_camera_object, s.R), 1e-6);
+  EXPECT_LT(rotation_angle_between(result.R_camera_object, s.R), kDownweightedRadians);
 }
 
 TEST(OrthogonalIteration, ObjectSpaceErrorMatchesDefinition) {

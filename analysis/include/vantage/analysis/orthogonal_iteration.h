@@ -10,7 +10,7 @@
 /// (OrthogonalIterationOptions::focal_length, in image units; f = 1 means the points are already
 /// normalised camera coordinates x/z, y/z) point i defines the line of sight through
 ///   m_i = (u_i / f, v_i / f, 1),
-/// and the observed line-of-sight projection V_i = m_i m_i^T / (m_i^T m_i) (Wu & Wu Eq. 4-6).
+/// and the observed line-of-sight projection V_i = m_i m_i^T / (m_i^T m_i) (Wu & Wu Sec. 2).
 ///
 /// Object-space collinearity error (Wu & Wu Eq. 7, Lu et al. Eq. 17), in squared object units:
 ///   E(R, p) = sum_i w_i || (I - V_i) (R x_i + p) ||^2.
