@@ -375,8 +375,16 @@ CellViewpoint solve_cell_lmi(const Eigen::Matrix3Xd& vectors, const Eigen::Vecto
   return result;
 }
 
+Eigen::VectorXd paper_signs(const Eigen::Matrix3Xd& vectors) {
+  const Eigen::Matrix3Xd unit = normalized_columns(vectors, "vectors");
+  const internal::MinNormPoint hull =
+      internal::min_norm_point(unit.data(), static_cast<int>(unit.cols()));
+  if (!hull.contains_origin) return Eigen::VectorXd::Ones(unit.cols());
+  return upper_hemisphere_signs(unit);
+}
+
 CellViewpoint paper_worst_viewpoint(const Eigen::Matrix3Xd& vectors, const SdpOptions& options) {
-  return solve_cell_lmi(vectors, upper_hemisphere_signs(vectors), options);
+  return solve_cell_lmi(vectors, paper_signs(vectors), options);
 }
 
 bool WorstViewpointOptions::is_valid(std::string* why) const {

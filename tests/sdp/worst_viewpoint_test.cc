@@ -89,6 +89,13 @@ TEST(PaperSigns, UpperHemisphereWithTieBreaks) {
   EXPECT_EIGEN_NEAR(upper_hemisphere_signs(z), expected, 0.0);
 }
 
+TEST(PaperSigns, KeepsVectorsThatShareAHemisphereAndNegatesOtherwise) {
+  const Eigen::Matrix3Xd shared = columns({{1, 0, 0}, {0, 1, 0}, {0.5, 0.5, -2}});
+  EXPECT_EIGEN_NEAR(paper_signs(shared), Eigen::Vector3d::Ones(), 0.0);
+  const Eigen::Matrix3Xd opposite = columns({{0, 0, 1}, {0, 0, -1}, {1, 0, 0}});
+  EXPECT_EIGEN_NEAR(paper_signs(opposite), upper_hemisphere_signs(opposite), 0.0);
+}
+
 TEST(CellLmi, OrthogonalTriadMatchesPaper) {
   // Fig. 2: Z = I gives a = (1, 1, 1)/sqrt(3), t = 1/sqrt(3), p-bar = sqrt(2/3) = 0.8165.
   const CellViewpoint paper = paper_worst_viewpoint(Eigen::Matrix3d::Identity());
@@ -155,13 +162,20 @@ TEST(GlobalWorstViewpoint, NoteThreeLayoutGlobalVersusPaper) {
   ASSERT_EQ(all_positive.status, CellViewpoint::Status::kOk);
   EXPECT_NEAR(all_positive.t, 1.0 / std::sqrt(2.0 * k * k + 1.0), kSdp);
   EXPECT_NEAR(all_positive.pbar, 0.953, kPrinted);
-  // The paper's sign rule as specified (negate z < 0) flips (1, 1, -2)/sqrt(6) and lands in
-  // another cell: t^2 = 1 / (2 + (1 + sqrt(6)/2)^2), p-bar = 0.9253.
+  // The four vectors as given lie in one open hemisphere, so the paper keeps their signs and
+  // its single LMI is the all-positive cell: the paper's 0.95.
+  EXPECT_EIGEN_NEAR(paper_signs(z), Eigen::Vector4d::Ones(), 0.0);
   const CellViewpoint paper = paper_worst_viewpoint(z);
   ASSERT_EQ(paper.status, CellViewpoint::Status::kOk);
-  EXPECT_NEAR(paper.t, 1.0 / std::sqrt(2.0 + k * k), kSdp);
-  EXPECT_NEAR(paper.pbar, 0.9253, kPrinted);
+  EXPECT_NEAR(paper.t, all_positive.t, kSdp);
+  EXPECT_NEAR(paper.pbar, 0.953, kPrinted);
   EXPECT_GE(paper.pbar, w.pbar);
+  // Negating by the z > 0 rule alone would flip (1, 1, -2)/sqrt(6) into another cell:
+  // t^2 = 1 / (2 + (1 + sqrt(6)/2)^2), p-bar = 0.9253.
+  const CellViewpoint z_rule = solve_cell_lmi(z, upper_hemisphere_signs(z));
+  ASSERT_EQ(z_rule.status, CellViewpoint::Status::kOk);
+  EXPECT_NEAR(z_rule.t, 1.0 / std::sqrt(2.0 + k * k), kSdp);
+  EXPECT_NEAR(z_rule.pbar, 0.9253, kPrinted);
   EXPECT_GE(all_positive.pbar, w.pbar);
 }
 

@@ -71,8 +71,16 @@ const char* to_string(CellViewpoint::Status status);
 CellViewpoint solve_cell_lmi(const Eigen::Matrix3Xd& vectors, const Eigen::VectorXd& signs,
                              const SdpOptions& options = {});
 
-/// The paper's answer: solve_cell_lmi() with upper_hemisphere_signs(). Local to one cell, so
-/// its t is <= the global t* (its p-bar >= the global p-bar_min).
+/// The signs the paper's single LMI is solved with. The paper negates vectors only because the
+/// LMI needs every s_i a.n_i > 0 ("this condition cannot be satisfied unless all of the data
+/// vectors are in the same hemisphere"): when the vectors as given already lie in one open
+/// hemisphere (0 not in conv{n_i}) they are kept (all s_i = +1), otherwise
+/// upper_hemisphere_signs() negates those not in the upper hemisphere. This reproduces the
+/// paper's Fig. 3 value (0.95, DESIGN.md note 3) for Z = I plus (1, 1, -2)/sqrt(6).
+Eigen::VectorXd paper_signs(const Eigen::Matrix3Xd& vectors);
+
+/// The paper's answer: solve_cell_lmi() with paper_signs(). Local to one cell, so its t is <=
+/// the global t* (its p-bar >= the global p-bar_min).
 CellViewpoint paper_worst_viewpoint(const Eigen::Matrix3Xd& vectors,
                                     const SdpOptions& options = {});
 
