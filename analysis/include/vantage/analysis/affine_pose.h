@@ -91,7 +91,10 @@ struct AffineOrientationOptions {
   /// Relative margin (see AffineStatus::kAmbiguous), dimensionless, >= 0.
   double ambiguity_tolerance = 1e-9;
   /// Rotations closer than this are the same answer for the ambiguity test. Radians, >= 0.
-  double distinct_rotation_angle = 1e-6;
+  /// A vector almost in the image plane (small |v_zi|) makes its two sign patterns nearly
+  /// equal, with rotations ~1e-5 rad apart and margins ~1e-9: not an ambiguity. A mirror pose
+  /// is about twice the tilt away, so 1e-3 rad (0.06 deg) separates the two.
+  double distinct_rotation_angle = 1e-3;
   /// Relative eigen gap of the winning D at or below which the status is kDegenerate, as in
   /// OrientationOptions::degenerate_gap. Dimensionless, in [0, 1).
   double degenerate_gap = 1e-10;
