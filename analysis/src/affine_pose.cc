@@ -357,7 +357,7 @@ struct QuarticSolver {
   }
 
   static constexpr int kMaxIterations = 100;
-  static constexpr double kLaguerreStop = 1e-8;
+  static constexpr double kLaguerreStop = 1e-4;
 };
 
 double residual_from_viewpoint(const AffineProblem& problem, const Eigen::Vector3d& r3,
@@ -368,10 +368,29 @@ double residual_from_viewpoint(const AffineProblem& problem, const Eigen::Vector
   return std::max(0.0, j);
 }
 
+/// kGrayCode's lanes: the top kLaneBits sign bits are fixed per lane and the Gray code walks
+/// the others, so each step solves kLanes independent patterns whose root-finder chains (each
+/// warm-started from its own previous root) overlap in the CPU instead of running serially.
+constexpr int kLaneBits = 2;
+constexpr int kLanes = 1 << kLaneBits;
+
 void enumerate_gray_code(const Eigen::Matrix3Xd& z, const AffineProblem& problem,
                          const AffineOrientationOptions& options, bool quartic, Podium* podium,
                          std::uint64_t* fallbacks) {
-  GrayCodeWalk walk(z, problem.d, problem.v_z, problem.w, problem.free);
+  std::uint64_t used_fallback = 0;
+  const auto eigen_path = [&](const Eigen::Matrix4d& D, std::uint64_t signs) {
+    const TopEigenpair top = top_eigenpair(D, options.eigen);
+    used_fallback += top.used_fallback ? 1 : 0;
+    podium->offer(residual_from_moments(problem, rotation_from_quaternion(top.vector)), signs);
+  };
+  if (!quartic) {
+    GrayCodeWalk walk(z, problem.d, problem.v_z, problem.w, problem.free);
+    walk.run(walk.patterns() - 1, [&](const Eigen::Matrix4d& D, const Eigen::Vector3d&,
+                                      std::uint64_t signs) { eigen_path(D, signs); });
+    *fallbacks = used_fallback;
+    return;
+  }
+
   QuarticSolver solver;
   solver.a = problem.G.col(0);
   solver.b = problem.G.col(1);
@@ -385,43 +404,56 @@ void enumerate_gray_code(const Eigen::Matrix3Xd& z, const AffineProblem& problem
   }
   solver.fallback_gap = options.eigen.fallback_relative_gap;
 
-  std::uint64_t used_fallback = 0;
-  const auto eigen_path = [&](const Eigen::Matrix4d& D, std::uint64_t signs) {
-    const TopEigenpair top = top_eigenpair(D, options.eigen);
-    used_fallback += top.used_fallback ? 1 : 0;
-    podium->offer(residual_from_moments(problem, rotation_from_quaternion(top.vector)), signs);
-  };
-  if (quartic) {
-    // lambda_max = max_R trace(R H) moves by at most |Delta h| when h changes, so the previous
-    // root plus |Delta h| bounds the next one from above: a warm start for the root finder.
-    std::vector<double> step_norm;
-    for (const int j : problem.free) {
-      step_norm.push_back(2.0 * problem.w(j) * problem.v_z(j) * z.col(j).norm());
+  const int m = static_cast<int>(problem.free.size());
+  const int lane_bits = m > kLaneBits ? kLaneBits : 0;
+  const int lanes = 1 << lane_bits;
+  const int low_bits = m - lane_bits;
+  const std::vector<int> low(problem.free.begin(), problem.free.begin() + low_bits);
+  GrayCodeWalk walk(z, problem.d, problem.v_z, problem.w, low);
+  // Offsets of lane t (bit k of t negates v_z of free vector low_bits + k) from the walk's H, D.
+  Eigen::Vector3d lane_h[kLanes];
+  Eigen::Matrix4d lane_d[kLanes];
+  for (int t = 0; t < lanes; ++t) {
+    lane_h[t].setZero();
+    lane_d[t].setZero();
+    for (int k = 0; k < lane_bits; ++k) {
+      if (!((t >> k) & 1)) continue;
+      const int j = problem.free[low_bits + k];
+      const double scale = -2.0 * problem.w(j) * problem.v_z(j);
+      lane_h[t] += scale * z.col(j);
+      lane_d[t] += scale * quaternion_k(Eigen::Vector3d::UnitZ(), z.col(j));
     }
-    const double slack = 1e-12 * solver.lambda_bound;
-    double previous = -1.0;  // < 0: no warm start
-    std::uint64_t previous_signs = 0;
-    walk.run(walk.patterns() - 1,
-             [&](const Eigen::Matrix4d& D, const Eigen::Vector3d& h, std::uint64_t signs) {
-               double lambda;
-               Eigen::Vector3d r3;
-               const double warm =
-                   previous < 0.0 ? solver.cold_bound(h)
-                                  : previous + step_norm[__builtin_ctzll(signs ^ previous_signs)];
-               previous_signs = signs;
-               if (solver.solve(h, warm + slack, &lambda, &r3)) {
-                 previous = lambda;
-                 podium->offer(residual_from_viewpoint(problem, r3, lambda, h), signs);
-               } else {
-                 previous = -1.0;
-                 ++used_fallback;
-                 eigen_path(D, signs);
-               }
-             });
-  } else {
-    walk.run(walk.patterns() - 1, [&](const Eigen::Matrix4d& D, const Eigen::Vector3d&,
-                                      std::uint64_t signs) { eigen_path(D, signs); });
   }
+  // lambda_max = max_R trace(R H) moves by at most |Delta h| when h changes, so the previous
+  // root plus |Delta h| bounds the next one from above: a warm start for the root finder.
+  std::vector<double> step_norm;
+  for (const int j : low)
+    step_norm.push_back(2.0 * problem.w(j) * problem.v_z(j) * z.col(j).norm());
+  const double slack = 1e-12 * solver.lambda_bound;
+  double previous[kLanes];
+  std::fill(previous, previous + kLanes, -1.0);  // < 0: no warm start
+  std::uint64_t previous_signs = 0;
+  walk.run(walk.patterns() - 1, [&](const Eigen::Matrix4d& D, const Eigen::Vector3d& h_low,
+                                    std::uint64_t low_signs) {
+    const double step =
+        low_signs == previous_signs ? 0.0 : step_norm[__builtin_ctzll(low_signs ^ previous_signs)];
+    previous_signs = low_signs;
+    for (int t = 0; t < lanes; ++t) {
+      const Eigen::Vector3d h = h_low + lane_h[t];
+      const std::uint64_t signs = low_signs | (static_cast<std::uint64_t>(t) << low_bits);
+      const double warm = previous[t] < 0.0 ? solver.cold_bound(h) : previous[t] + step;
+      double lambda;
+      Eigen::Vector3d r3;
+      if (solver.solve(h, warm + slack, &lambda, &r3)) {
+        previous[t] = lambda;
+        podium->offer(residual_from_viewpoint(problem, r3, lambda, h), signs);
+      } else {
+        previous[t] = -1.0;
+        ++used_fallback;
+        eigen_path(D + lane_d[t], signs);
+      }
+    }
+  });
   *fallbacks = used_fallback;
 }
 
