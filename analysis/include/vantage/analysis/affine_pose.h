@@ -45,7 +45,10 @@ enum class SignEnumeration {
   /// lambda of D's characteristic quartic (Laguerre from an upper bound; its coefficients need
   /// only |H|_F, det H and |adj H|_F, each O(1) in h), the viewpoint r3 (third row of R) from
   /// FOAM's closed form (DESIGN.md note 8), and J_2d = tr S - r3^T S r3 - 2 (lambda - r3^T h)
-  /// + sum w |alpha d|^2 with S = sum w z z^T. About 60 flops and no allocation per pattern;
+  /// + sum w |alpha d|^2 with S = sum w z z^T. The root finder starts from the previous
+  /// pattern's root + |Delta h| (an upper bound); the top two sign bits are fixed per lane so
+  /// each Gray-code step solves four independent patterns. About 60 flops and no allocation
+  /// per pattern; the winner and runner-up are re-solved exactly by Theorem 1 at the end;
   /// when lambda is nearly double (FOAM's zeta ~ 0) the pattern falls back to top_eigenpair(D).
   kGrayCode,
   /// Gray code with the Eq. (17) update of D, top_eigenpair() (fast path) for the quaternion,
