@@ -1,0 +1,168 @@
+#pragma once
+
+/// Theorem 6 (McInroy et al., Sec. III.D): the worst-case viewpoint of a set of data vectors.
+///
+/// A viewpoint is a unit vector a (the camera's optical axis, the third row of R_camera_object).
+/// From a, data vector z_i keeps the fraction p_i = sqrt(1 - (a.n_i)^2) of its norm in the image,
+/// n_i = z_i / ||z_i||. The worst viewpoint minimises p-bar = max_i p_i (Eq. 27), i.e. it solves
+///
+///   t* = max_{||a|| = 1} min_i |a.n_i|          (Eq. 31),   p-bar_min = sqrt(1 - t*^2)
+///
+/// (DESIGN.md note 1: the printed Eq. 29, 1 - t^2, is a misprint). a and -a are the same
+/// viewpoint; results are reported with a in the upper hemisphere (z > 0, ties by y > 0, x > 0).
+///
+/// The paper's LMI (Eq. 28) fixes a sign s_i per vector and solves one *sign cell*:
+///   max t  s.t.  [[s_i a.n_i, t], [t, s_i a.n_i]] >= 0,  [[I, a], [a^T, 1]] >= 0,
+/// which is local to that cell (DESIGN.md note 3). Its optimum is the distance from the origin to
+/// conv{s_i n_i} (note 5). global_worst_viewpoint() maximises over all cells by branch and bound
+/// on the sphere with exact per-cell solutions, and returns a certificate.
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "vantage/sdp/lmi.h"
+
+namespace vantage::sdp {
+
+/// The columns of `vectors` scaled to unit length. Throws InvalidArgument (naming `argument`)
+/// when a column is zero or not finite.
+Eigen::Matrix3Xd normalized_columns(const Eigen::Matrix3Xd& vectors, const char* argument);
+
+/// min_i |a.n_i| for unit columns n_i and a unit a: the objective of Eq. (31).
+double min_abs_projection(const Eigen::Matrix3Xd& unit_vectors, const Eigen::Vector3d& a);
+
+/// p-bar = sqrt(1 - t^2) for t in [0, 1] (clamped), Eq. (29) corrected (DESIGN.md note 1).
+double pbar_from_t(double t);
+
+/// The representative of {a, -a} in the upper hemisphere: z > 0, or z = 0 and y > 0, or
+/// z = y = 0 and x >= 0.
+Eigen::Vector3d upper_hemisphere(const Eigen::Vector3d& a);
+
+/// The paper's signs (Sec. III.D, end of the proof of Theorem 6): s_i = +1 when n_i is in the
+/// upper hemisphere (z > 0, ties broken by y > 0, then x > 0), else -1.
+Eigen::VectorXd upper_hemisphere_signs(const Eigen::Matrix3Xd& vectors);
+
+/// Result of one cell LMI (Eq. 28) solved on an SDP backend.
+struct CellViewpoint {
+  enum class Status {
+    kOk,            ///< the SDP has a solution and t > CellViewpoint::kEmptyCellT
+    kEmptyCell,     ///< t <= kEmptyCellT: 0 is in conv{s_i n_i}, no viewpoint has all s_i a.n_i > 0
+    kSolverFailed,  ///< the SDP status has no solution (see `sdp`)
+  };
+  /// t at or below which a cell counts as empty (the SDP tolerance is 1e-8 relative).
+  static constexpr double kEmptyCellT = 1e-7;
+
+  Status status = Status::kSolverFailed;
+  Eigen::Vector3d viewpoint = Eigen::Vector3d::UnitZ();  ///< a / ||a||, upper hemisphere
+  double t = 0.0;                                        ///< the LMI's optimal t (Eq. 28)
+  double pbar = 1.0;                                     ///< sqrt(1 - t^2)
+  SdpResult sdp;                                         ///< the backend's raw result (y = [a; t])
+  std::string message;
+};
+
+/// "ok", "empty_cell" or "solver_failed".
+const char* to_string(CellViewpoint::Status status);
+
+/// The cell LMI of Eq. (28) for data vectors (3 x m, m >= 1, non-zero columns; normalised here)
+/// and signs s_i (m entries, each +1 or -1), solved with options.backend. Variables y = [a; t],
+/// objective min -t, blocks: m dense 2x2 blocks and one dense 4x4 block.
+/// Throws InvalidArgument on bad vectors, signs or options.
+CellViewpoint solve_cell_lmi(const Eigen::Matrix3Xd& vectors, const Eigen::VectorXd& signs,
+                             const SdpOptions& options = {});
+
+/// The paper's answer: solve_cell_lmi() with upper_hemisphere_signs(). Local to one cell, so
+/// its t is <= the global t* (its p-bar >= the global p-bar_min).
+CellViewpoint paper_worst_viewpoint(const Eigen::Matrix3Xd& vectors,
+                                    const SdpOptions& options = {});
+
+/// Options of global_worst_viewpoint().
+struct WorstViewpointOptions {
+  /// Required t_upper - t_lower of the certificate. Dimensionless, in [1e-15, 1e-3].
+  double certificate_tolerance = 1e-9;
+  /// Cells whose optimum is within this of t* are reported as further global optima (ties, e.g.
+  /// the four of Z = I). Dimensionless, in [0, 1e-3].
+  double tie_tolerance = 1e-9;
+  /// Patch budget of the branch and bound, >= 1. When exhausted the result is kNotCertified.
+  long max_patches = 50'000'000;
+  /// Also solve the best cell's LMI (Eq. 28) on the SDP backend and compare (confirmation).
+  bool confirm_with_sdp = false;
+  SdpOptions sdp;  ///< backend options of the confirmation solve
+
+  /// True when every field is in range; otherwise *why names the field and the constraint.
+  bool is_valid(std::string* why = nullptr) const;
+};
+
+/// The global worst viewpoint with its certificate.
+struct WorstViewpoint {
+  enum class Status {
+    kCertified,     ///< t_upper - t_lower <= certificate_tolerance (and, when asked, the SDP
+                    ///< confirmation agrees within kSdpAgreement)
+    kNotCertified,  ///< patch budget exhausted: t_upper - t_lower > certificate_tolerance
+    kSdpDisagrees,  ///< certified, but the confirming cell LMI differs by more than kSdpAgreement
+  };
+  /// |t_sdp - t| above which the SDP confirmation counts as a disagreement (CSDP stops at
+  /// relative accuracy 1e-8; the LMI's t is accurate to about 1e-7).
+  static constexpr double kSdpAgreement = 1e-6;
+
+  Status status = Status::kNotCertified;
+  Eigen::Vector3d viewpoint = Eigen::Vector3d::UnitZ();  ///< a global optimum, upper hemisphere
+  std::vector<Eigen::Vector3d> viewpoints;  ///< every global optimum up to sign (incl. viewpoint)
+  double t = 0.0;                           ///< min_i |a.n_i| at `viewpoint` (= t_lower)
+  double pbar = 1.0;                        ///< p-bar_min = sqrt(1 - t^2)
+  double t_upper = 1.0;        ///< proven upper bound on min_i |a.n_i| over the whole sphere
+  double t_lower = 0.0;        ///< attained value (t)
+  long cells_solved = 0;       ///< exact cell problems (minimum-norm points) solved
+  long patches = 0;            ///< spherical patches visited by the branch and bound
+  bool sdp_confirmed = false;  ///< confirm_with_sdp was set and the confirmation ran
+  CellViewpoint confirmation;  ///< the confirming cell LMI (when sdp_confirmed)
+  std::string message;
+};
+
+/// "certified", "not_certified" or "sdp_disagrees".
+const char* to_string(WorstViewpoint::Status status);
+
+/// The global worst viewpoint: t* = max over all sign cells (DESIGN.md note 3) without
+/// enumerating the 2^(m-1) sign patterns. Branch and bound over spherical patches of the three
+/// cube faces +x, +y, +z (antipodes are the same viewpoint): a patch of centre c and angular
+/// radius r has the upper bound min_i sin(min(pi/2, asin|c.n_i| + r)); patches no great circle
+/// n_i^perp crosses lie in one cell whose optimum is solved exactly as the minimum-norm point of
+/// conv{s_i n_i} (note 5, Wolfe's algorithm); patches whose bound is below the best attained
+/// value are pruned. vectors: 3 x m, m >= 2, non-zero finite columns (parallel, duplicated and
+/// antiparallel columns are fine: all parallel gives t = 1, p-bar = 0).
+/// Throws InvalidArgument on bad input or options.
+WorstViewpoint global_worst_viewpoint(const Eigen::Matrix3Xd& vectors,
+                                      const WorstViewpointOptions& options = {});
+
+/// Options of crosscheck_worst_viewpoint().
+struct CrossCheckOptions {
+  /// Fibonacci samples over the upper hemisphere; 0 = automatic: clamp(50 m^2, 20000, 400000).
+  int samples = 0;
+  /// Best samples (in distinct sign cells) polished by NLopt, >= 1.
+  int polish_starts = 16;
+  /// |t_nlopt - t_reference| at or below which the two agree. Dimensionless, > 0.
+  double agreement = 1e-6;
+
+  /// True when every field is in range; otherwise *why names the field and the constraint.
+  bool is_valid(std::string* why = nullptr) const;
+};
+
+/// Independent NLopt cross-check of t*.
+struct CrossCheck {
+  std::string method;  ///< "nlopt_multistart_mma"
+  double t = 0.0;      ///< best min_i |a.n_i| found (attained at `viewpoint`)
+  Eigen::Vector3d viewpoint = Eigen::Vector3d::UnitZ();
+  double difference = 0.0;  ///< t - t_reference
+  bool agrees = false;      ///< |difference| <= agreement
+  std::string message;      ///< empty when it agrees; otherwise says so loudly
+};
+
+/// Global maximisation of min_i |a.n_i| on the unit sphere independent of the branch and bound
+/// and of CSDP: dense Fibonacci sampling of the hemisphere, then the best samples polished by
+/// NLopt's MMA (Svanberg's method of moving asymptotes) on max t s.t. s_i n_i.a >= t, ||a||^2 <= 1
+/// (signs from the sample). Reports whether it agrees with t_reference; it never replaces the SDP
+/// answer.
+CrossCheck crosscheck_worst_viewpoint(const Eigen::Matrix3Xd& vectors, double t_reference,
+                                      const CrossCheckOptions& options = {});
+
+}  // namespace vantage::sdp

@@ -1,0 +1,257 @@
+#include "vantage/sdp/worst_viewpoint.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "support/eigen_testing.h"
+#include "vantage/analysis/common.h"
+
+namespace vantage::sdp {
+namespace {
+
+using testing::kSeed;
+
+// The branch and bound's certificate and the exact vertex enumeration agree to rounding.
+constexpr double kExact = 1e-9;
+// The acceptance threshold against brute force and the NLopt cross-check.
+constexpr double kBruteForce = 1e-6;
+// CSDP's relative accuracy 1e-8 gives t to about 1e-7.
+constexpr double kSdp = 1e-6;
+// The paper's Fig. 3 / note 3 value is printed to three decimals.
+constexpr double kPrinted = 5e-4;
+
+const double kInvSqrt3 = 1.0 / std::sqrt(3.0);
+
+Eigen::Matrix3Xd columns(std::initializer_list<Eigen::Vector3d> list) {
+  Eigen::Matrix3Xd m(3, list.size());
+  int i = 0;
+  for (const Eigen::Vector3d& v : list) m.col(i++) = v;
+  return m;
+}
+
+// Exact t* by enumerating every candidate optimum (DESIGN.md note 5: a cell optimum is the
+// minimum-norm point of conv{s_i n_i}, supported by 1, 2 or 3 points): a = n_i, a ~ n_i +- n_j,
+// a ~ (n_i - s_j n_j) x (n_i - s_k n_k). Independent of the library's algorithm.
+double brute_force_t(const Eigen::Matrix3Xd& vectors) {
+  const Eigen::Matrix3Xd n = vectors.colwise().normalized();
+  const int m = static_cast<int>(n.cols());
+  double best = 0.0;
+  auto consider = [&](const Eigen::Vector3d& a) {
+    if (a.norm() < 1e-12) return;
+    best = std::max(best, min_abs_projection(n, a.normalized()));
+  };
+  for (int i = 0; i < m; ++i) {
+    consider(n.col(i));
+    for (int j = i + 1; j < m; ++j) {
+      for (double sj : {-1.0, 1.0}) {
+        consider(n.col(i) + sj * n.col(j));
+        for (int k = j + 1; k < m; ++k) {
+          for (double sk : {-1.0, 1.0}) {
+            consider((n.col(i) - sj * n.col(j)).cross(n.col(i) - sk * n.col(k)));
+          }
+        }
+      }
+    }
+  }
+  return best;
+}
+
+Eigen::Matrix3Xd random_unit_columns(std::mt19937& rng, int m) {
+  Eigen::Matrix3Xd z(3, m);
+  for (int i = 0; i < m; ++i) z.col(i) = testing::random_unit_vector(rng);
+  return z;
+}
+
+void expect_consistent(const WorstViewpoint& w, const Eigen::Matrix3Xd& vectors) {
+  const Eigen::Matrix3Xd n = vectors.colwise().normalized();
+  EXPECT_EQ(w.status, WorstViewpoint::Status::kCertified) << w.message;
+  EXPECT_LE(w.t_upper - w.t_lower, 1e-9);
+  EXPECT_NEAR(w.t, w.t_lower, 0.0);
+  EXPECT_NEAR(min_abs_projection(n, w.viewpoint), w.t, 1e-15) << "the viewpoint attains t";
+  EXPECT_NEAR(w.viewpoint.norm(), 1.0, 1e-12);
+  EXPECT_NEAR(w.pbar, std::sqrt(1.0 - w.t * w.t), 1e-15);
+  ASSERT_FALSE(w.viewpoints.empty());
+  EXPECT_EIGEN_NEAR(w.viewpoints.front(), w.viewpoint, 0.0);
+  for (const Eigen::Vector3d& a : w.viewpoints) {
+    EXPECT_NEAR(min_abs_projection(n, a), w.t, 1e-9) << "every reported optimum attains t";
+    EXPECT_EQ(upper_hemisphere(a), a);
+  }
+  EXPECT_TRUE(std::isfinite(w.t) && std::isfinite(w.pbar));
+}
+
+TEST(PaperSigns, UpperHemisphereWithTieBreaks) {
+  const Eigen::Matrix3Xd z = columns(
+      {{0, 0, 1}, {0, 0, -1}, {1, 1, 0}, {1, -1, 0}, {1, 0, 0}, {-1, 0, 0}, {0.3, 0.2, -0.1}});
+  Eigen::VectorXd expected(7);
+  expected << 1, -1, 1, -1, 1, -1, -1;
+  EXPECT_EIGEN_NEAR(upper_hemisphere_signs(z), expected, 0.0);
+}
+
+TEST(CellLmi, OrthogonalTriadMatchesPaper) {
+  // Fig. 2: Z = I gives a = (1, 1, 1)/sqrt(3), t = 1/sqrt(3), p-bar = sqrt(2/3) = 0.8165.
+  const CellViewpoint paper = paper_worst_viewpoint(Eigen::Matrix3d::Identity());
+  ASSERT_EQ(paper.status, CellViewpoint::Status::kOk) << paper.message;
+  EXPECT_NEAR(paper.t, kInvSqrt3, kSdp);
+  EXPECT_NEAR(paper.pbar, std::sqrt(2.0 / 3.0), kSdp);
+  EXPECT_EIGEN_NEAR(paper.viewpoint, Eigen::Vector3d::Constant(kInvSqrt3), kSdp);
+  EXPECT_EQ(paper.sdp.backend, "csdp");
+  EXPECT_NEAR(paper.sdp.gap, 0.0, kSdp);
+}
+
+TEST(CellLmi, EmptyCellIsReported) {
+  // n and -n with equal signs: 0 is in the hull, no viewpoint sees both positively.
+  const Eigen::Matrix3Xd z = columns({{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}});
+  const CellViewpoint cell = solve_cell_lmi(z, Eigen::Vector3d(1, 1, 1));
+  EXPECT_NE(cell.status, CellViewpoint::Status::kOk);
+  EXPECT_LE(cell.t, 1e-6);
+}
+
+TEST(CellLmi, RejectsBadSigns) {
+  EXPECT_THROW(solve_cell_lmi(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1, 0, 1)),
+               InvalidArgument);
+  EXPECT_THROW(solve_cell_lmi(Eigen::Matrix3d::Identity(), Eigen::Vector2d(1, 1)), InvalidArgument);
+}
+
+TEST(GlobalWorstViewpoint, OrthogonalTriadHasFourOptima) {
+  WorstViewpointOptions options;
+  options.confirm_with_sdp = true;
+  const WorstViewpoint w = global_worst_viewpoint(Eigen::Matrix3d::Identity(), options);
+  expect_consistent(w, Eigen::Matrix3d::Identity());
+  EXPECT_NEAR(w.t, kInvSqrt3, kExact);
+  EXPECT_NEAR(w.pbar, 0.8165, 1e-4);
+  ASSERT_EQ(w.viewpoints.size(), 4u);
+  for (double sx : {-1.0, 1.0}) {
+    for (double sy : {-1.0, 1.0}) {
+      const Eigen::Vector3d expected = Eigen::Vector3d(sx, sy, 1.0) * kInvSqrt3;
+      int found = 0;
+      for (const Eigen::Vector3d& a : w.viewpoints) found += (a - expected).norm() < 1e-9;
+      EXPECT_EQ(found, 1) << expected.transpose();
+    }
+  }
+  EXPECT_TRUE(w.sdp_confirmed);
+  EXPECT_NEAR(w.confirmation.t, w.t, kSdp);
+}
+
+TEST(GlobalWorstViewpoint, NoteThreeLayoutGlobalVersusPaper) {
+  // DESIGN.md note 3: adding (1, 1, -2)/sqrt(6) moves the paper's single LMI to p-bar = 0.953
+  // but (1, 1, -1)/sqrt(3) still has p-bar = 0.8165.
+  Eigen::Matrix3Xd z(3, 4);
+  z << Eigen::Matrix3d::Identity(), Eigen::Vector3d(1, 1, -2) / std::sqrt(6.0);
+  const WorstViewpoint w = global_worst_viewpoint(z);
+  expect_consistent(w, z);
+  EXPECT_NEAR(w.t, kInvSqrt3, kExact);
+  EXPECT_NEAR(w.pbar, std::sqrt(2.0 / 3.0), kExact);
+  bool has_111 = false;
+  for (const Eigen::Vector3d& a : w.viewpoints) {
+    has_111 = has_111 || (a - Eigen::Vector3d(-1, -1, 1) * kInvSqrt3).norm() < 1e-9;
+  }
+  EXPECT_TRUE(has_111) << "(1, 1, -1)/sqrt(3) up to sign is a worst viewpoint";
+  // The 0.953 of note 3 (the paper's "0.95") is the all-positive cell: with a = (u, u, v) the
+  // active constraints give t^2 = 1 / (2 (1 + sqrt(6)/2)^2 + 1).
+  const double k = 1.0 + std::sqrt(6.0) / 2.0;
+  const CellViewpoint all_positive = solve_cell_lmi(z, Eigen::Vector4d::Ones());
+  ASSERT_EQ(all_positive.status, CellViewpoint::Status::kOk);
+  EXPECT_NEAR(all_positive.t, 1.0 / std::sqrt(2.0 * k * k + 1.0), kSdp);
+  EXPECT_NEAR(all_positive.pbar, 0.953, kPrinted);
+  // The paper's sign rule as specified (negate z < 0) flips (1, 1, -2)/sqrt(6) and lands in
+  // another cell: t^2 = 1 / (2 + (1 + sqrt(6)/2)^2), p-bar = 0.9253.
+  const CellViewpoint paper = paper_worst_viewpoint(z);
+  ASSERT_EQ(paper.status, CellViewpoint::Status::kOk);
+  EXPECT_NEAR(paper.t, 1.0 / std::sqrt(2.0 + k * k), kSdp);
+  EXPECT_NEAR(paper.pbar, 0.9253, kPrinted);
+  EXPECT_GE(paper.pbar, w.pbar);
+  EXPECT_GE(all_positive.pbar, w.pbar);
+}
+
+TEST(GlobalWorstViewpoint, RandomLayoutsMatchBruteForce) {
+  std::mt19937 rng(kSeed);
+  for (int trial = 0; trial < 24; ++trial) {
+    const int m = 3 + trial % 10 + (trial >= 20 ? 20 : 0);
+    const Eigen::Matrix3Xd z = random_unit_columns(rng, m) * (1.0 + trial);
+    WorstViewpointOptions options;
+    options.confirm_with_sdp = true;
+    const WorstViewpoint w = global_worst_viewpoint(z, options);
+    SCOPED_TRACE(::testing::Message() << "trial " << trial << ", m = " << m);
+    expect_consistent(w, z);
+    EXPECT_NEAR(w.t, brute_force_t(z), kExact);
+    EXPECT_NEAR(w.confirmation.t, w.t, kSdp) << "CSDP cell LMI confirms the exact cell optimum";
+    const CellViewpoint paper = paper_worst_viewpoint(z);
+    ASSERT_EQ(paper.status, CellViewpoint::Status::kOk);
+    EXPECT_LE(paper.t, w.t + kSdp) << "the paper's single cell cannot beat the global optimum";
+    EXPECT_GE(paper.pbar, w.pbar - kSdp);
+    const CrossCheck check = crosscheck_worst_viewpoint(z, w.t);
+    EXPECT_TRUE(check.agrees) << check.message;
+    EXPECT_NEAR(check.t, w.t, kBruteForce);
+  }
+}
+
+TEST(GlobalWorstViewpoint, LargeRandomLayoutAgreesWithCrossCheck) {
+  std::mt19937 rng(kSeed + 1);
+  const Eigen::Matrix3Xd z = random_unit_columns(rng, 200);
+  WorstViewpointOptions options;
+  options.confirm_with_sdp = true;
+  const WorstViewpoint w = global_worst_viewpoint(z, options);
+  expect_consistent(w, z);
+  CrossCheckOptions check_options;
+  check_options.samples = 100000;  // spacing ~0.01 rad, well inside cells of inradius ~0.03
+  const CrossCheck check = crosscheck_worst_viewpoint(z, w.t, check_options);
+  EXPECT_TRUE(check.agrees) << check.message;
+  EXPECT_LE(check.t, w.t_upper + 1e-12) << "nothing beats the certified upper bound";
+}
+
+TEST(GlobalWorstViewpoint, CoplanarFanReachesTheZoneCeiling) {
+  // DESIGN.md note 4: m coplanar vectors at equal angles reach p-bar = cos(pi / (2m)); the m
+  // in-plane bisectors are the worst viewpoints.
+  for (int m : {3, 4, 6}) {
+    Eigen::Matrix3Xd z(3, m);
+    for (int i = 0; i < m; ++i) z.col(i) << std::cos(M_PI * i / m), std::sin(M_PI * i / m), 0.0;
+    const WorstViewpoint w = global_worst_viewpoint(z);
+    expect_consistent(w, z);
+    EXPECT_NEAR(w.pbar, std::cos(M_PI / (2 * m)), kExact);
+    EXPECT_EQ(static_cast<int>(w.viewpoints.size()), m);
+  }
+}
+
+TEST(GlobalWorstViewpoint, DegenerateLayouts) {
+  // All parallel (with antiparallel and scaled copies): t = 1, p-bar = 0, a = the direction.
+  const Eigen::Vector3d d = Eigen::Vector3d(1, 2, 3).normalized();
+  const Eigen::Matrix3Xd parallel = columns({d, -2.0 * d, 0.5 * d});
+  const WorstViewpoint wp = global_worst_viewpoint(parallel);
+  expect_consistent(wp, parallel);
+  EXPECT_NEAR(wp.t, 1.0, kExact);
+  EXPECT_NEAR(wp.pbar, 0.0, 1e-4);
+  EXPECT_EIGEN_NEAR(wp.viewpoint, d, 1e-9);
+  EXPECT_EQ(wp.viewpoints.size(), 1u);
+
+  // Two vectors at angle theta: t* = max(cos(theta/2), sin(theta/2)).
+  for (double theta : {0.3, 1.0, M_PI / 2, 2.5}) {
+    const Eigen::Matrix3Xd two = columns({{1, 0, 0}, {std::cos(theta), std::sin(theta), 0}});
+    const WorstViewpoint w2 = global_worst_viewpoint(two);
+    expect_consistent(w2, two);
+    EXPECT_NEAR(w2.t, std::max(std::cos(theta / 2), std::sin(theta / 2)), kExact);
+  }
+
+  // Duplicated and antiparallel copies of Z = I change nothing.
+  Eigen::Matrix3Xd copies(3, 7);
+  copies << Eigen::Matrix3d::Identity(), -Eigen::Matrix3d::Identity(), Eigen::Vector3d(3, 0, 0);
+  const WorstViewpoint wc = global_worst_viewpoint(copies);
+  expect_consistent(wc, copies);
+  EXPECT_NEAR(wc.t, kInvSqrt3, kExact);
+  EXPECT_EQ(wc.viewpoints.size(), 4u);
+}
+
+TEST(GlobalWorstViewpoint, RejectsBadInput) {
+  EXPECT_THROW(global_worst_viewpoint(Eigen::Matrix3Xd(3, 1)), InvalidArgument);
+  EXPECT_THROW(global_worst_viewpoint(Eigen::Matrix3Xd(3, 0)), InvalidArgument);
+  EXPECT_THROW(global_worst_viewpoint(columns({{1, 0, 0}, {0, 0, 0}})), InvalidArgument);
+  EXPECT_THROW(global_worst_viewpoint(columns({{1, 0, 0}, {0, NAN, 0}})), InvalidArgument);
+  WorstViewpointOptions bad;
+  bad.certificate_tolerance = 0.0;
+  EXPECT_THROW(global_worst_viewpoint(Eigen::Matrix3d::Identity(), bad), InvalidArgument);
+  EXPECT_THROW(crosscheck_worst_viewpoint(Eigen::Matrix3Xd(3, 1), 0.0), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace vantage::sdp
