@@ -246,7 +246,8 @@ class Designer {
     Eigen::Vector3d kill_point = Eigen::Vector3d::UnitX();
     std::vector<Eigen::Vector3d> kill_points;
     st.best_kill_level = best_kill_level(current.worst_viewpoints, &kill_point, &kill_points);
-    st.single_vector_can_improve = st.best_kill_level < current.t - options_.tie_tolerance;
+    st.single_vector_can_improve =
+        points_ || st.best_kill_level < current.t - options_.tie_tolerance;
     if (!options_.candidates_only) {
       if (points_) {
         const int g = options_.grid_samples;

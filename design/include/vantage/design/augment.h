@@ -112,12 +112,11 @@ struct AugmentStep {
   int vector_count = 0;      ///< data vectors after this step (free vectors in point mode)
   double ceiling = 1.0;      ///< pbar_ceiling(vector_count)
   bool improved = false;     ///< p-bar_min rose by more than the tie tolerance (in t)
-  /// Exact answer to "can any single vector raise p-bar_min here?" (direction mode; in point
-  /// mode the same test on single free vectors, a necessary condition only). False means
-  /// provably not.
+  /// Exact answer to "can any single vector raise p-bar_min here?" in direction mode; false
+  /// means provably not. Always true in point mode (a marker adds several vectors at once).
   bool single_vector_can_improve = true;
   /// min over unit c of max_k |a_k.c| over the worst viewpoints before the step; a single
-  /// vector can raise p-bar_min iff this is below t.
+  /// vector can raise p-bar_min iff this is below t (direction mode).
   double best_kill_level = 0.0;
   /// Angle (degrees) between the added direction and the nearest plane a_k^perp of a worst
   /// viewpoint before the step (direction mode; 0 = exactly the paper's rule).
