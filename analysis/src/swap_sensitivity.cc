@@ -1,0 +1,50 @@
+#include "vantage/analysis/swap_sensitivity.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "vantage/analysis/absolute_orientation.h"
+#include "vantage/analysis/common.h"
+
+namespace vantage {
+
+std::vector<SwapError> swap_sensitivity(const Eigen::Matrix3Xd& z, const Eigen::VectorXd& weights,
+                                        int count) {
+  const Eigen::Index m = z.cols();
+  if (m < 2) throw InvalidArgument("swap_sensitivity: z must have at least 2 columns");
+  if (count < 1) throw InvalidArgument("swap_sensitivity: count must be >= 1");
+  if (!z.allFinite()) throw InvalidArgument("swap_sensitivity: z is not finite");
+  if (weights.size() != 0 && weights.size() != m) {
+    throw InvalidArgument("swap_sensitivity: weights must have one entry per column of z");
+  }
+  for (Eigen::Index k = 0; k < weights.size(); ++k) {
+    if (!(weights(k) > 0.0) || !std::isfinite(weights(k))) {
+      throw InvalidArgument("swap_sensitivity: weights(" + std::to_string(k) +
+                            ") must be positive and finite");
+    }
+  }
+  auto w = [&weights](Eigen::Index k) { return weights.size() == 0 ? 1.0 : weights(k); };
+  const Eigen::Matrix4d D = orientation_matrix_d(z, z, weights);
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  std::vector<SwapError> all;
+  all.reserve(static_cast<size_t>(m * (m - 1) / 2));
+  for (Eigen::Index i = 0; i < m; ++i) {
+    for (Eigen::Index j = i + 1; j < m; ++j) {
+      const Eigen::Matrix4d swapped =
+          D + swap_delta_d(z.col(i), z.col(j), z.col(i), z.col(j), w(i), w(j));
+      const double angle = rotation_angle_between(rotation_from_d(swapped), identity);
+      all.push_back({static_cast<int>(i), static_cast<int>(j), angle * 180.0 / M_PI});
+    }
+  }
+  const size_t keep = std::min(all.size(), static_cast<size_t>(count));
+  std::partial_sort(all.begin(), all.begin() + keep, all.end(),
+                    [](const SwapError& a, const SwapError& b) {
+                      if (a.error_deg != b.error_deg) return a.error_deg > b.error_deg;
+                      return a.i != b.i ? a.i < b.i : a.j < b.j;
+                    });
+  all.resize(keep);
+  return all;
+}
+
+}  // namespace vantage

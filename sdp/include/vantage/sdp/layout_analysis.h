@@ -1,0 +1,76 @@
+#pragma once
+
+/// One call that runs the whole worst-viewpoint analysis of a set of data vectors: Theorem 6
+/// (global, certified, every optimum up to sign), the paper's single LMI beside it, Eq. (30)
+/// worst-case errors, the NLopt cross-check and Prop. 2 swap sensitivity. The fields mirror the
+/// `vantage analyze --json` contract.
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "vantage/analysis/swap_sensitivity.h"
+#include "vantage/sdp/worst_viewpoint.h"
+
+namespace vantage::sdp {
+
+/// Options of analyze_vectors().
+struct LayoutAnalysisOptions {
+  WorstViewpointOptions worst_viewpoint;  ///< confirm_with_sdp is forced on by analyze_vectors
+  CrossCheckOptions crosscheck;
+  bool run_crosscheck = true;  ///< false skips NLopt (crosscheck.method = "skipped")
+  int swap_count = 5;          ///< worst swap pairs reported, >= 1
+
+  /// True when every field is in range; otherwise *why names the field and the constraint.
+  bool is_valid(std::string* why = nullptr) const;
+};
+
+/// Everything `vantage analyze` reports for one set of vectors.
+struct LayoutAnalysis {
+  Eigen::Vector3d worst_viewpoint = Eigen::Vector3d::UnitZ();  ///< upper hemisphere
+  std::vector<Eigen::Vector3d> worst_viewpoints;               ///< every global optimum up to sign
+  double t = 0.0;                                              ///< max_a min_i |a.n_i| (Eq. 31)
+  double pbar_min = 1.0;                                       ///< sqrt(1 - t^2) (Eq. 29 corrected)
+  Eigen::VectorXd worst_case_errors_deg;  ///< Eq. (30) per vector at worst_viewpoint, degrees
+  double max_worst_case_error_deg = 0.0;
+
+  struct Certificate {
+    double t_upper = 1.0;  ///< proven bound on t over the whole sphere
+    double t_lower = 0.0;  ///< attained t
+    bool certified = false;
+  } certificate;
+
+  struct PaperLmi {
+    Eigen::Vector3d viewpoint = Eigen::Vector3d::UnitZ();
+    double t = 0.0;
+    double pbar = 1.0;
+    std::string status;  ///< to_string(CellViewpoint::Status)
+  } paper_lmi;
+
+  struct CrossCheckSummary {
+    std::string method;  ///< "nlopt_multistart_mma" or "skipped"
+    double t = 0.0;
+    bool agrees = false;
+    std::string message;  ///< non-empty (loud) on disagreement
+  } crosscheck;
+
+  std::vector<SwapError> swaps;  ///< worst pairs, decreasing error_deg
+
+  struct Solver {
+    std::string backend;  ///< "csdp"
+    std::string status;   ///< to_string(WorstViewpoint::Status): "certified", ...
+    long cells_solved = 0;
+    long patches = 0;
+    std::string sdp_status;  ///< to_string(SdpStatus) of the confirming cell LMI
+  } solver;
+
+  std::string message;  ///< empty when certified, confirmed and cross-checked
+};
+
+/// Runs the analysis on data vectors (3 x m, m >= 2, non-zero finite columns; their lengths only
+/// matter for the swap analysis) with weights (m positive entries or empty = all 1; used by the
+/// swap analysis). Throws InvalidArgument on bad input or options.
+LayoutAnalysis analyze_vectors(const Eigen::Matrix3Xd& vectors, const Eigen::VectorXd& weights = {},
+                               const LayoutAnalysisOptions& options = {});
+
+}  // namespace vantage::sdp

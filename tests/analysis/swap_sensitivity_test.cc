@@ -1,0 +1,72 @@
+#include "vantage/analysis/swap_sensitivity.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "support/eigen_testing.h"
+#include "vantage/analysis/absolute_orientation.h"
+#include "vantage/analysis/common.h"
+
+namespace vantage {
+namespace {
+
+using testing::kSeed;
+
+// Incremental (Eq. 10) and recomputed D give the same rotation up to eigenvector rounding.
+constexpr double kDegrees = 1e-6;
+
+TEST(SwapSensitivity, IncrementalEqualsRecomputedForAnyTrueRotation) {
+  std::mt19937 rng(kSeed);
+  for (int trial = 0; trial < 10; ++trial) {
+    const int m = 3 + trial;
+    const Eigen::Matrix3Xd z = testing::random_points(rng, m);
+    Eigen::VectorXd w = Eigen::VectorXd::Random(m).cwiseAbs().array() + 0.5;
+    const std::vector<SwapError> worst = swap_sensitivity(z, w, 1000);
+    ASSERT_EQ(static_cast<int>(worst.size()), m * (m - 1) / 2);
+    for (size_t k = 1; k < worst.size(); ++k) EXPECT_GE(worst[k - 1].error_deg, worst[k].error_deg);
+    // Recompute each swap from scratch with a random true rotation and scale.
+    const Eigen::Matrix3d R = testing::random_rotation(rng);
+    for (const SwapError& s : worst) {
+      Eigen::Matrix3Xd v = R * z / 1.7;
+      v.col(s.i).swap(v.col(s.j));
+      const OrientationResult r = absolute_orientation(z, v, w);
+      EXPECT_NEAR(rotation_angle_between(r.R_camera_object, R) * 180.0 / M_PI, s.error_deg,
+                  kDegrees)
+          << "pair " << s.i << ", " << s.j;
+    }
+  }
+}
+
+TEST(SwapSensitivity, WorstFiveAndEdgeCases) {
+  std::mt19937 rng(kSeed + 1);
+  const Eigen::Matrix3Xd z = testing::random_points(rng, 8);
+  const std::vector<SwapError> five = swap_sensitivity(z);
+  ASSERT_EQ(five.size(), 5u);
+  const std::vector<SwapError> all = swap_sensitivity(z, {}, 100);
+  for (size_t k = 0; k < 5; ++k) {
+    EXPECT_EQ(five[k].i, all[k].i);
+    EXPECT_EQ(five[k].j, all[k].j);
+    EXPECT_LT(five[k].i, five[k].j);
+  }
+  // Swapping identical vectors changes nothing.
+  Eigen::Matrix3Xd twins(3, 3);
+  twins << Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(0, 1, 0);
+  const std::vector<SwapError> t = swap_sensitivity(twins, {}, 3);
+  bool found = false;
+  for (const SwapError& s : t) {
+    if (s.i == 0 && s.j == 1) {
+      found = true;
+      EXPECT_NEAR(s.error_deg, 0.0, kDegrees);
+    }
+    EXPECT_TRUE(std::isfinite(s.error_deg));
+  }
+  EXPECT_TRUE(found);
+  EXPECT_THROW(swap_sensitivity(Eigen::Matrix3Xd(3, 1)), InvalidArgument);
+  EXPECT_THROW(swap_sensitivity(z, Eigen::VectorXd::Ones(3)), InvalidArgument);
+  EXPECT_THROW(swap_sensitivity(z, {}, 0), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace vantage
