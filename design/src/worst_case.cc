@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/error_bounds.h"
 #include "vantage/design/augment.h"
 #include "vantage/sdp/worst_viewpoint.h"
 
@@ -11,15 +12,6 @@ namespace vantage::design {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-// Eq. (30): worst-case angular error (radians) of a vector keeping the fraction p of its norm
-// when the best vector keeps pbar >= p.
-double worst_case_error(double p, double pbar) {
-  if (!(pbar > 0.0)) return 0.5 * kPi;
-  const double ratio = std::min(1.0, p / pbar);
-  const double c = p * ratio + std::sqrt(std::max(0.0, (1.0 - p * p) * (1.0 - ratio * ratio)));
-  return std::acos(std::clamp(c, -1.0, 1.0));
-}
 
 }  // namespace
 
@@ -31,16 +23,10 @@ WorstCase evaluate_worst_case(const Eigen::Matrix3Xd& vectors) {
   out.worst_viewpoints = w.viewpoints;
   if (out.worst_viewpoints.empty()) out.worst_viewpoints.push_back(w.viewpoint);
   out.certified = w.status == sdp::WorstViewpoint::Status::kCertified;
-  const Eigen::Matrix3Xd n = sdp::normalized_columns(vectors, "vectors");
-  double worst = 0.0;
   for (const Eigen::Vector3d& a : out.worst_viewpoints) {
-    for (Eigen::Index i = 0; i < n.cols(); ++i) {
-      const double d = a.dot(n.col(i));
-      const double p = std::sqrt(std::max(0.0, 1.0 - d * d));
-      worst = std::max(worst, worst_case_error(p, out.pbar_min));
-    }
+    out.max_worst_case_error_deg =
+        std::max(out.max_worst_case_error_deg, worst_case_errors_deg(vectors, a).maxCoeff());
   }
-  out.max_worst_case_error_deg = worst * 180.0 / kPi;
   return out;
 }
 

@@ -41,8 +41,7 @@ struct WorstCase {
   double pbar_min = 1.0;  ///< sqrt(1 - t^2) (Eq. 29 corrected, DESIGN.md note 1)
   std::vector<Eigen::Vector3d> worst_viewpoints;  ///< every global optimum up to sign
   /// Largest worst-case angular error of Eq. (30) over the data vectors and the worst
-  /// viewpoints, in degrees: theta_i = acos(p_i^2 / pbar + sqrt((1 - p_i^2)(1 - p_i^2 / pbar^2)))
-  /// with p_i = sqrt(1 - (a.n_i)^2). 90 when p-bar_min = 0 (all vectors parallel).
+  /// viewpoints, in degrees (vantage::worst_case_errors_deg, analysis/error_bounds.h).
   double max_worst_case_error_deg = 0.0;
   bool certified = false;  ///< the global solver's certificate closed (status kCertified)
 };
