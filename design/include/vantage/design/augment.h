@@ -1,0 +1,185 @@
+#pragma once
+
+/// Marker-set design: the inductive augmenter of McInroy et al., Sec. III.E, done globally.
+///
+/// The paper (text around Fig. 3): "since a represents the worst case viewpoint, a data vector
+/// added in the space perpendicular to a converts this worst case viewpoint into an ideal
+/// viewpoint ... a good set of n data vectors can be found inductively by repeating applying
+/// Theorem 6 and adding data points in a^perp". With the single-cell LMI of Eq. (28) that rule
+/// reports gains that are not real (DESIGN.md note 3: Z = I plus a vector in a^perp gives the
+/// paper's 0.95, but the global p-bar_min stays 0.8165). Here every step uses the *global* worst
+/// viewpoints (sdp::global_worst_viewpoint, all sign cells, certified) and keeps the addition
+/// that maximises the new global p-bar_min.
+///
+/// Facts the augmenter relies on and reports:
+///  - Adding data never lowers p-bar_min (t = max_a min_i |a.n_i| can only fall).
+///  - One more vector c raises p-bar_min only if it "kills" every current worst viewpoint a_k,
+///    i.e. |a_k.c| < t for all k. Candidates that do not are scored without a solve (their t is
+///    unchanged and the surviving worst viewpoints are those they do not kill), and whether any
+///    c at all can kill them all is decided exactly: min over unit c of max_k |a_k.c| is
+///    attained at c = a_i x a_j or c = (a_i - s a_j) x (a_i - s' a_k) (s, s' = +-1), so it is
+///    the minimum over those finitely many points. Z = I has four worst viewpoints (+-1,+-1,1)/
+///    sqrt(3) with sum_k (a_k.c)^2 = 4/3 for every unit c, so no single vector can raise 0.8165.
+///  - Ceiling (DESIGN.md note 4): m data vectors never give p-bar_min above cos(pi/(2m)).
+///  - Coplanar layouts reach high p-bar_min but carry the two-fold (Necker) ambiguity of affine
+///    pose; their coplanarity is reported as a number.
+///
+/// Direction mode adds unit directions. Point mode adds a marker position p, which adds the n
+/// free vectors p - z_i (Prop. 8) to the analysis.
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "vantage/analysis/layout.h"
+
+namespace vantage::design {
+
+/// The global worst case of a set of data vectors: the one evaluation the augmenter repeats.
+struct WorstCase {
+  double t = 0.0;         ///< max_a min_i |a.n_i| (Eq. 31), certified by the global solver
+  double pbar_min = 1.0;  ///< sqrt(1 - t^2) (Eq. 29 corrected, DESIGN.md note 1)
+  std::vector<Eigen::Vector3d> worst_viewpoints;  ///< every global optimum up to sign
+  /// Largest worst-case angular error of Eq. (30) over the data vectors and the worst
+  /// viewpoints, in degrees (vantage::worst_case_errors_deg, analysis/error_bounds.h).
+  double max_worst_case_error_deg = 0.0;
+  bool certified = false;  ///< the global solver's certificate closed (status kCertified)
+};
+
+/// The global worst case of `vectors` (3 x m, m >= 2, non-zero finite columns), from
+/// sdp::global_worst_viewpoint. Throws InvalidArgument on bad vectors.
+WorstCase evaluate_worst_case(const Eigen::Matrix3Xd& vectors);
+
+/// The ceiling of DESIGN.md note 4: cos(pi / (2 m)) for m >= 1 data vectors.
+double pbar_ceiling(int m);
+
+/// How close the data vectors are to one plane: the two-fold ambiguity risk.
+struct Coplanarity {
+  /// Smallest singular value of [n_1 ... n_m] / sqrt(m) (n_i = z_i / ||z_i||): 0 for coplanar
+  /// vectors, 1/sqrt(3) = 0.577 for an isotropic set (e.g. Z = I); about the RMS sine of the
+  /// angle between the vectors and their best-fit plane.
+  double smallest_singular_value = 0.0;
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< normal of the best-fit plane
+  bool nearly_coplanar = false;  ///< smallest_singular_value < the threshold used
+};
+
+/// Coplanarity of `vectors` (3 x m, m >= 1, non-zero columns). threshold >= 0.
+Coplanarity coplanarity(const Eigen::Matrix3Xd& vectors, double threshold = 0.1);
+
+/// Options of augment_layout().
+struct AugmentOptions {
+  int add = 1;  ///< K: additions, >= 0 (0 only analyses)
+  /// Choose only among the layout's `candidates` (must then be non-empty); a candidate is used
+  /// at most once. Otherwise candidates, when given, are evaluated alongside the free search.
+  bool candidates_only = false;
+  /// Point mode: the search box is the bounding box of the markers grown on every side by
+  /// margin times its largest side. >= 0, dimensionless.
+  double margin = 0.25;
+  /// Direction mode: coarse samples per great circle a^perp (half circle, c ~ -c), >= 4.
+  int circle_samples = 72;
+  /// Point mode: coarse grid points per box axis, >= 2.
+  int grid_samples = 7;
+  /// Best coarse candidates polished by a local compass search, >= 1.
+  int refine_starts = 3;
+  /// Compass search stops when its step (radians on the sphere; fraction of the box's largest
+  /// side in point mode) falls below this. In (0, 0.1].
+  double refine_tolerance = 1e-7;
+  /// New t within this of another counts as equal (then fewer worst viewpoints, then the larger
+  /// kill margin wins). In [0, 1e-3].
+  double tie_tolerance = 1e-9;
+  /// Run the direct optimiser (all K additions at once) for comparison.
+  bool run_direct = true;
+  /// Direct optimiser: multi-start count (the first start is the greedy answer), >= 1.
+  int direct_starts = 6;
+  /// Direct optimiser: objective evaluations (global worst-viewpoint solves) per start, >= 10.
+  int direct_evaluations_per_start = 400;
+  /// Seed of the direct optimiser's random starts.
+  unsigned seed = 1;
+  /// Coplanarity::nearly_coplanar threshold on the smallest singular value, >= 0.
+  double coplanarity_threshold = 0.1;
+
+  /// True when every field is in range; otherwise *why names the field and the constraint.
+  bool is_valid(std::string* why = nullptr) const;
+};
+
+/// One greedy step.
+struct AugmentStep {
+  /// The added unit direction (direction mode) or marker position (point mode).
+  Eigen::Vector3d added = Eigen::Vector3d::Zero();
+  int candidate_index = -1;  ///< index into Layout::candidates when chosen from them, else -1
+  WorstCase worst;           ///< of the augmented layout after this step
+  int vector_count = 0;      ///< data vectors after this step (free vectors in point mode)
+  double ceiling = 1.0;      ///< pbar_ceiling(vector_count)
+  bool improved = false;     ///< p-bar_min rose by more than the tie tolerance (in t)
+  /// Exact answer to "can any single vector raise p-bar_min here?" in direction mode; false
+  /// means provably not. Always true in point mode (a marker adds several vectors at once).
+  bool single_vector_can_improve = true;
+  /// min over unit c of max_k |a_k.c| over the worst viewpoints before the step; a single
+  /// vector can raise p-bar_min iff this is below t (direction mode).
+  double best_kill_level = 0.0;
+  /// Angle (degrees) between the added direction and the nearest plane a_k^perp of a worst
+  /// viewpoint before the step (direction mode; 0 = exactly the paper's rule).
+  double angle_from_worst_plane_deg = 0.0;
+  long global_solves = 0;  ///< global worst-viewpoint solves spent on this step
+  long screened = 0;       ///< candidates scored without a solve (they kill no worst viewpoint
+                           ///< set completely)
+  std::string note;        ///< plain words: what happened, and why when nothing improved
+};
+
+/// The direct optimiser's answer.
+struct DirectResult {
+  enum class Status {
+    kOk,       ///< ran; pbar_min is the best found (multi-start local, not a proof)
+    kSkipped,  ///< not run: options.run_direct false, K = 0, or too many candidate subsets
+  };
+  Status status = Status::kSkipped;
+  std::vector<Eigen::Vector3d> added;  ///< the K directions or positions
+  std::vector<int> candidate_indices;  ///< candidates-only: their indices
+  WorstCase worst;                     ///< of the layout with all K added
+  long global_solves = 0;
+  std::string method;  ///< "nlopt_sbplx_multistart" or "exhaustive_candidates"
+  std::string message;
+};
+
+/// "ok" or "skipped".
+const char* to_string(DirectResult::Status status);
+
+/// Result of augment_layout().
+struct AugmentResult {
+  enum class Status {
+    kOk,            ///< every global solve was certified
+    kNotCertified,  ///< some global solve's certificate did not close (see message)
+    kNoCandidates,  ///< candidates-only and the candidates ran out before K steps
+  };
+  Status status = Status::kOk;
+  std::string message;
+  WorstCase initial;
+  int initial_vector_count = 0;
+  double initial_ceiling = 1.0;
+  Coplanarity initial_coplanarity;
+  std::vector<AugmentStep> steps;
+  double final_pbar_min = 0.0;
+  Coplanarity final_coplanarity;
+  Layout augmented;  ///< the input layout with the additions appended (weights 1)
+  DirectResult direct;
+  long global_solves = 0;  ///< total, greedy and direct
+};
+
+/// "ok", "not_certified" or "no_candidates".
+const char* to_string(AugmentResult::Status status);
+
+/// Greedy augmentation, K = options.add steps. At each step: the global worst viewpoints a_k of
+/// the current layout; candidates = coarse samples of every great circle a_k^perp (the paper's
+/// rule), the points c = a_i x a_j, and the minimisers of max_k |a_k.c| (where a single vector
+/// kills all a_k at once) in direction mode; a grid over the grown bounding box in point mode;
+/// the layout's unused candidates always (only them with candidates_only). Candidates are scored
+/// by the new global t (lower is better), then fewer worst viewpoints, then the larger kill
+/// margin min_k (t - |a_k.c|) over the viewpoints they kill; the best few are polished by a
+/// compass search on the sphere (or in the box). Adding never lowers p-bar_min.
+/// Then, when asked, the direct optimiser: NLopt Subplex over all K additions at once (unit
+/// directions, or positions in the box), multi-start from the greedy answer and seeded random
+/// starts; with candidates_only, an exhaustive search over K-subsets of the candidates.
+/// Throws InvalidArgument on an invalid layout or options.
+AugmentResult augment_layout(const Layout& layout, const AugmentOptions& options = {});
+
+}  // namespace vantage::design

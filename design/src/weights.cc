@@ -1,0 +1,298 @@
+#include "vantage/design/weights.h"
+
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "vantage/analysis/common.h"
+
+namespace vantage::design {
+
+namespace {
+
+// Singular values of [Z / scale; 1^T] below this fraction of the largest count as zero.
+constexpr double kRankTolerance = 1e-10;
+// Z w = 0, 1^T w = n is inconsistent when its least-squares residual exceeds this (times n).
+constexpr double kConsistencyTolerance = 1e-9;
+// In a boundary solution, weights below this multiple of zero_tolerance are the forced zeros
+// (the interior-point optimum lies in the relative interior of the optimal face, so the free
+// weights stay well away from 0).
+constexpr double kForcedZeroFactor = 1e3;
+
+struct MaxMin {
+  enum class Kind { kSolved, kAffineInfeasible, kSolverFailed } kind = Kind::kSolverFailed;
+  Eigen::VectorXd w;  // sum n
+  double s = 0.0;     // min_i w_i
+  sdp::SdpStatus sdp_status = sdp::SdpStatus::kOptimal;
+  int lp_solves = 0;
+};
+
+// max s s.t. Z w = 0, 1^T w = n, w_i >= s (s free).
+MaxMin solve_max_min(const Eigen::Matrix3Xd& z, const sdp::SdpOptions& sdp_options) {
+  MaxMin out;
+  const int n = static_cast<int>(z.cols());
+  const double scale = z.cwiseAbs().maxCoeff();
+  if (!(scale > 0.0)) {
+    out.kind = MaxMin::Kind::kSolved;
+    out.w = Eigen::VectorXd::Ones(n);
+    out.s = 1.0;
+    return out;
+  }
+  Eigen::MatrixXd a(4, n);
+  a.topRows<3>() = z / scale;
+  a.row(3).setOnes();
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(4);
+  b(3) = n;
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::VectorXd& sigma = svd.singularValues();
+  int rank = 0;
+  for (int k = 0; k < sigma.size(); ++k) {
+    if (sigma(k) > kRankTolerance * sigma(0)) ++rank;
+  }
+  Eigen::VectorXd w0 = Eigen::VectorXd::Zero(n);
+  for (int k = 0; k < rank; ++k) {
+    w0 += svd.matrixV().col(k) * (svd.matrixU().col(k).dot(b) / sigma(k));
+  }
+  if ((a * w0 - b).norm() > kConsistencyTolerance * n) {
+    out.kind = MaxMin::Kind::kAffineInfeasible;
+    return out;
+  }
+  const int d = n - rank;
+  if (d == 0) {
+    out.kind = MaxMin::Kind::kSolved;
+    out.w = w0;
+    out.s = w0.minCoeff();
+    return out;
+  }
+  const Eigen::MatrixXd basis = svd.matrixV().rightCols(d);
+  // y = [u; s]; block: w0_i + sum_j B_ij u_j - s >= 0; minimise -s.
+  sdp::LmiProblem lp(d + 1);
+  const int block = lp.add_diagonal_block(n);
+  lp.set_objective(d, -1.0);
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < d; ++j) {
+      if (basis(i, j) != 0.0) lp.add_variable_entry(j, block, i, i, basis(i, j));
+    }
+    lp.add_variable_entry(d, block, i, i, -1.0);
+    if (w0(i) != 0.0) lp.add_constant_entry(block, i, i, -w0(i));
+  }
+  const sdp::SdpResult r = sdp::solve_lmi(lp, sdp_options);
+  out.lp_solves = 1;
+  out.sdp_status = r.status;
+  if (!sdp::has_solution(r.status)) {
+    out.kind = MaxMin::Kind::kSolverFailed;
+    return out;
+  }
+  out.kind = MaxMin::Kind::kSolved;
+  out.w = w0 + basis * r.y.head(d);
+  out.s = out.w.minCoeff();
+  return out;
+}
+
+std::string format_vector(const Eigen::Vector3d& v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
+  return s.str();
+}
+
+struct Classified {
+  Weights::Status status = Weights::Status::kSolverFailed;
+  Eigen::VectorXd weights;
+  double s = 0.0;
+  std::vector<int> zero_forced;
+  sdp::SdpStatus sdp_status = sdp::SdpStatus::kOptimal;
+  int lp_solves = 0;
+};
+
+// Solves and classifies; a boundary solution is re-solved on its support so that the free
+// weights are max-min and the forced ones exactly 0.
+Classified classify(const Eigen::Matrix3Xd& z, const WeightsOptions& options) {
+  Classified out;
+  const MaxMin m = solve_max_min(z, options.sdp);
+  out.lp_solves = m.lp_solves;
+  out.sdp_status = m.sdp_status;
+  if (m.kind == MaxMin::Kind::kSolverFailed) return out;
+  if (m.kind == MaxMin::Kind::kAffineInfeasible) {
+    out.status = Weights::Status::kInfeasible;
+    out.s = -1.0;
+    return out;
+  }
+  out.s = m.s;
+  if (m.s > options.zero_tolerance) {
+    out.status = Weights::Status::kPositive;
+    out.weights = m.w;
+    return out;
+  }
+  if (m.s < -options.zero_tolerance) {
+    out.status = Weights::Status::kInfeasible;
+    return out;
+  }
+  out.status = Weights::Status::kBoundary;
+  const int n = static_cast<int>(z.cols());
+  std::vector<int> support;
+  for (int i = 0; i < n; ++i) {
+    if (m.w(i) <= kForcedZeroFactor * options.zero_tolerance) {
+      out.zero_forced.push_back(i);
+    } else {
+      support.push_back(i);
+    }
+  }
+  out.weights = m.w.cwiseMax(0.0);
+  if (support.empty() || out.zero_forced.empty()) return out;
+  Eigen::Matrix3Xd sub(3, support.size());
+  for (size_t k = 0; k < support.size(); ++k) sub.col(k) = z.col(support[k]);
+  const Classified inner = classify(sub, options);
+  out.lp_solves += inner.lp_solves;
+  if (inner.status != Weights::Status::kPositive && inner.status != Weights::Status::kBoundary) {
+    return out;
+  }
+  out.weights.setZero();
+  const double rescale = static_cast<double>(n) / static_cast<double>(support.size());
+  for (size_t k = 0; k < support.size(); ++k) {
+    out.weights(support[k]) = inner.weights(k) * rescale;
+  }
+  for (int i : inner.zero_forced) out.zero_forced.push_back(support[i]);
+  std::sort(out.zero_forced.begin(), out.zero_forced.end());
+  return out;
+}
+
+}  // namespace
+
+const char* to_string(WeightsSuggestion::Kind kind) {
+  return kind == WeightsSuggestion::Kind::kShiftOrigin ? "shift_origin" : "symmetric_partner";
+}
+
+const char* to_string(Weights::Status status) {
+  switch (status) {
+    case Weights::Status::kPositive:
+      return "positive";
+    case Weights::Status::kBoundary:
+      return "boundary";
+    case Weights::Status::kInfeasible:
+      return "infeasible";
+    case Weights::Status::kSolverFailed:
+      return "solver_failed";
+  }
+  return "unknown";
+}
+
+bool WeightsOptions::is_valid(std::string* why) const {
+  auto fail = [why](const char* text) {
+    if (why != nullptr) *why = text;
+    return false;
+  };
+  if (!(zero_tolerance > 0.0 && zero_tolerance <= 1e-2)) {
+    return fail("zero_tolerance: must be in (0, 1e-2]");
+  }
+  std::string sdp_why;
+  if (!sdp.is_valid(&sdp_why)) {
+    if (why != nullptr) *why = "sdp." + sdp_why;
+    return false;
+  }
+  return true;
+}
+
+Weights nullspace_weights(const Eigen::Matrix3Xd& z, const WeightsOptions& options,
+                          bool allow_shift) {
+  std::string why;
+  if (!options.is_valid(&why)) throw InvalidArgument("WeightsOptions: " + why);
+  if (z.cols() < 1) throw InvalidArgument("z: need at least 1 column");
+  for (Eigen::Index i = 0; i < z.cols(); ++i) {
+    if (!z.col(i).allFinite()) {
+      throw InvalidArgument("z[" + std::to_string(i) + "]: not a finite number");
+    }
+  }
+  const int n = static_cast<int>(z.cols());
+  Weights out;
+  const Classified c = classify(z, options);
+  out.status = c.status;
+  out.sdp_status = c.sdp_status;
+  out.lp_solves = c.lp_solves;
+  out.lp_optimum = c.s;
+  out.zero_forced = c.zero_forced;
+  if (c.status == Weights::Status::kSolverFailed) {
+    out.message =
+        std::string("the LP backend returned no solution: ") + sdp::to_string(c.sdp_status);
+    return out;
+  }
+  out.feasible = c.status == Weights::Status::kPositive || c.status == Weights::Status::kBoundary;
+  if (out.feasible) {
+    out.weights = c.weights;
+    out.residual = (z * out.weights).norm();
+    out.min_weight = out.weights.minCoeff();
+  }
+  if (c.status == Weights::Status::kPositive) {
+    out.message = "strictly positive weights satisfy Eq. (11)";
+  } else if (c.status == Weights::Status::kBoundary) {
+    out.message =
+        "the origin lies on the boundary of the convex hull of the z_i: weights exist only with " +
+        std::to_string(out.zero_forced.size()) + " of them 0";
+  } else {
+    out.message =
+        "no non-negative weights satisfy Eq. (11): the origin is outside the convex hull of the "
+        "z_i";
+  }
+  if (!options.suggest || c.status == Weights::Status::kPositive) return out;
+
+  WeightsSuggestion best_partner;
+  bool have_partner = false;
+  for (int i = 0; i < n; ++i) {
+    if (!(z.col(i).norm() > 0.0)) continue;
+    Eigen::Matrix3Xd fixed(3, n + 1);
+    fixed.leftCols(n) = z;
+    fixed.col(n) = -z.col(i);
+    const Classified f = classify(fixed, options);
+    out.lp_solves += f.lp_solves;
+    if (f.status != Weights::Status::kPositive && f.status != Weights::Status::kBoundary) {
+      continue;
+    }
+    const double min_weight = f.weights.minCoeff();
+    if (!have_partner || min_weight > best_partner.min_weight) {
+      have_partner = true;
+      best_partner.kind = WeightsSuggestion::Kind::kSymmetricPartner;
+      best_partner.index = i;
+      best_partner.added = -z.col(i);
+      best_partner.min_weight = min_weight;
+      best_partner.weights = f.weights;
+    }
+  }
+  if (have_partner) {
+    std::ostringstream t;
+    t << "add the symmetric partner -z[" << best_partner.index
+      << "] = " << format_vector(best_partner.added) << ": the smallest weight becomes "
+      << best_partner.min_weight;
+    best_partner.text = t.str();
+    out.suggestions.push_back(best_partner);
+  }
+  if (allow_shift) {
+    const Eigen::Vector3d centroid = z.rowwise().mean();
+    const Classified f = classify(z.colwise() - centroid, options);
+    out.lp_solves += f.lp_solves;
+    if (f.status == Weights::Status::kPositive || f.status == Weights::Status::kBoundary) {
+      WeightsSuggestion shift;
+      shift.kind = WeightsSuggestion::Kind::kShiftOrigin;
+      shift.shift = centroid;
+      shift.weights = f.weights;
+      shift.min_weight = f.weights.minCoeff();
+      std::ostringstream t;
+      t << "move the object origin to the centroid " << format_vector(centroid)
+        << " of the points: the smallest weight becomes " << shift.min_weight;
+      shift.text = t.str();
+      out.suggestions.push_back(shift);
+    }
+  }
+  std::stable_sort(out.suggestions.begin(), out.suggestions.end(),
+                   [](const WeightsSuggestion& a, const WeightsSuggestion& b) {
+                     return a.min_weight > b.min_weight;
+                   });
+  return out;
+}
+
+Weights layout_weights(const Layout& layout, const WeightsOptions& options) {
+  layout.validate();
+  return nullspace_weights(layout.entries, options, layout.mode == LayoutMode::kPoints);
+}
+
+}  // namespace vantage::design

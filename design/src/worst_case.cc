@@ -1,0 +1,52 @@
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+
+#include "vantage/analysis/common.h"
+#include "vantage/analysis/error_bounds.h"
+#include "vantage/design/augment.h"
+#include "vantage/sdp/worst_viewpoint.h"
+
+namespace vantage::design {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace
+
+WorstCase evaluate_worst_case(const Eigen::Matrix3Xd& vectors) {
+  const sdp::WorstViewpoint w = sdp::global_worst_viewpoint(vectors);
+  WorstCase out;
+  out.t = w.t;
+  out.pbar_min = w.pbar;
+  out.worst_viewpoints = w.viewpoints;
+  if (out.worst_viewpoints.empty()) out.worst_viewpoints.push_back(w.viewpoint);
+  out.certified = w.status == sdp::WorstViewpoint::Status::kCertified;
+  for (const Eigen::Vector3d& a : out.worst_viewpoints) {
+    out.max_worst_case_error_deg =
+        std::max(out.max_worst_case_error_deg, worst_case_errors_deg(vectors, a).maxCoeff());
+  }
+  return out;
+}
+
+double pbar_ceiling(int m) {
+  if (m < 1) throw InvalidArgument("m: need at least 1 data vector, got " + std::to_string(m));
+  return std::cos(kPi / (2.0 * m));
+}
+
+Coplanarity coplanarity(const Eigen::Matrix3Xd& vectors, double threshold) {
+  if (!(threshold >= 0.0)) throw InvalidArgument("threshold: must be >= 0");
+  if (vectors.cols() < 1) throw InvalidArgument("vectors: need at least 1 column");
+  const Eigen::Matrix3Xd n = sdp::normalized_columns(vectors, "vectors");
+  // Singular values of N / sqrt(m) are the square roots of the eigenvalues of N N^T / m.
+  const Eigen::Matrix3d scatter = n * n.transpose() / static_cast<double>(n.cols());
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(scatter);
+  Coplanarity out;
+  out.smallest_singular_value = std::sqrt(std::max(0.0, eig.eigenvalues()(0)));
+  out.normal = eig.eigenvectors().col(0);
+  out.nearly_coplanar = out.smallest_singular_value < threshold;
+  return out;
+}
+
+}  // namespace vantage::design
