@@ -25,7 +25,7 @@ build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
 demo: build
-	$(BUILD_DIR)/cli/vantage orient examples/correspondences/cube.json
+	$(BUILD_DIR)/cli/vantage analyze examples/layouts/satellite.json
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)

@@ -28,6 +28,7 @@ struct Command {
   std::function<int()> run;
 };
 
+Command add_analyze_command(CLI::App& root);
 Command add_orient_command(CLI::App& root);
 
 /// "qmethod" | "svd" | "foam" (already checked by CLI11) to the enum.

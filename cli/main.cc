@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string(VANTAGE_VERSION));
 
   const std::vector<Command> commands = {
+      add_analyze_command(app),
       add_orient_command(app),
   };
 
