@@ -337,9 +337,7 @@ Eigen::Matrix4d swap_delta_d(const Eigen::Vector3d& v_j, const Eigen::Vector3d& 
 
 Eigen::Matrix3d optimal_rotation(const Eigen::Matrix3d& H, const OrientationOptions& options,
                                  double* eigen_gap) {
-  Moments m;
-  m.H = H;
-  const RotationSolve solve = solve_rotation(m.H, lambda_upper_from_moments(m), options);
+  const RotationSolve solve = solve_rotation(H, std::numeric_limits<double>::infinity(), options);
   if (eigen_gap) *eigen_gap = solve.gap;
   return solve.R;
 }

@@ -84,10 +84,13 @@ Eigen::Vector2d largest_two_quartic_roots(double c2, double c1, double c0, doubl
     *d1 = (4.0 * x2 + 2.0 * c2) * x + c1;
     *d2 = 12.0 * x2 + 2.0 * c2;
   };
-  // A start below the largest root (a hint spoilt by rounding) would stop the iteration at
-  // once: use the Laguerre-Samuelson bound instead, which needs only the coefficients.
+  // The hint is used only when it is provably above every root: by Budan-Fourier, no root
+  // exceeds x when p and all its derivatives are >= 0 at x. Otherwise (a hint spoilt by rounding
+  // or wrong) start from the Laguerre-Samuelson bound, which needs only the coefficients.
   const double safe_start = kUpperBound * scale;
-  if (!(x0 <= safe_start) || ((x0 * x0 + c2) * x0 + c1) * x0 + c0 < 0.0) x0 = safe_start;
+  double p0, d1, d2;
+  quartic(x0, &p0, &d1, &d2);
+  if (!(x0 <= safe_start && x0 >= 0.0 && p0 >= 0.0 && d1 >= 0.0 && d2 >= 0.0)) x0 = safe_start;
   const double r1 = laguerre_from_above<4>(x0, tolerance, quartic);
   // Deflate: p(x) = (x - r1) (x^3 + r1 x^2 + b x + c).
   const double b = c2 + r1 * r1;
@@ -99,11 +102,12 @@ Eigen::Vector2d largest_two_quartic_roots(double c2, double c1, double c0, doubl
   };
   // The cubic's roots sum to -r1 and their squares to -2 c2 - r1^2, so by Laguerre-Samuelson the
   // largest is at most mean + sqrt(2 variance): closer than r1, and equal to the root when the
-  // two smallest coincide. If rounding put it below the root, start from r1.
+  // two smallest coincide. If rounding put it below the root (Budan-Fourier), start from r1.
   const double mean = -r1 / 3.0;
   const double variance = std::max(0.0, (-2.0 * c2 - r1 * r1) / 3.0 - mean * mean);
   double start = std::min(r1, mean + std::sqrt(2.0 * variance));
-  if (((start + r1) * start + b) * start + c < 0.0) start = r1;
+  cubic(start, &p0, &d1, &d2);
+  if (!(p0 >= 0.0 && d1 >= 0.0 && d2 >= 0.0)) start = r1;
   const double r2 = laguerre_from_above<3>(start, tolerance, cubic);
   return {r1, std::min(r1, r2)};
 }

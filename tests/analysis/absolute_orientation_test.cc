@@ -170,7 +170,7 @@ TEST(AbsoluteOrientation, OptimalRotationFromCrossCovarianceMatchesSolver) {
     const Eigen::Matrix3d R = optimal_rotation(H, with_method(method), &gap);
     const OrientationResult reference = absolute_orientation(z, v, {}, with_method(method));
     EXPECT_LT(rotation_angle_between(R, reference.R_camera_object), 1e-12);
-    EXPECT_NEAR(gap, reference.eigen_gap, kSameSolverGap);
+    EXPECT_NEAR(gap, reference.eigen_gap, kSameSolverGap) << to_string(method);
   }
 }
 

@@ -59,8 +59,8 @@ namespace internal {
 /// real (a characteristic polynomial of a symmetric traceless matrix), found by Laguerre's method,
 /// which decreases monotonically from above. x0 is a hint (an upper bound of the largest root, or
 /// +inf): it is used when it is below the Laguerre-Samuelson bound sqrt(-3 c2 / 2) and the quartic
-/// is >= 0 there, otherwise the iteration starts from that bound. Returns {root1, root2} with root1
-/// >= root2.
+/// and all its derivatives are >= 0 there (Budan-Fourier: no root exceeds it), otherwise the
+/// iteration starts from that bound. Returns {root1, root2} with root1 >= root2.
 Eigen::Vector2d largest_two_quartic_roots(double c2, double c1, double c0, double x0);
 
 /// top_eigenpair() of a traceless symmetric 4x4 matrix M (full, both triangles) whose
