@@ -119,14 +119,35 @@ namespace {
 // kOthers[i]: the indices 0..3 without i.
 constexpr int kOthers[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
 
-/// Determinant of A without row skip_row and column skip_col.
-double minor3(const Eigen::Matrix4d& A, int skip_row, int skip_col) {
-  const int* r = kOthers[skip_row];
-  const int* c = kOthers[skip_col];
-  return A(r[0], c[0]) * (A(r[1], c[1]) * A(r[2], c[2]) - A(r[1], c[2]) * A(r[2], c[1])) -
-         A(r[0], c[1]) * (A(r[1], c[0]) * A(r[2], c[2]) - A(r[1], c[2]) * A(r[2], c[0])) +
-         A(r[0], c[2]) * (A(r[1], c[0]) * A(r[2], c[1]) - A(r[1], c[1]) * A(r[2], c[0]));
-}
+/// The 3x3 minors of a 4x4 matrix from its twelve 2x2 minors (Laplace expansion): pairs[0] holds
+/// the 2x2 minors of rows {2, 3}, pairs[1] those of rows {0, 1}, indexed by column pair.
+class Minors3 {
+ public:
+  explicit Minors3(const Eigen::Matrix4d& A) : A_(A) {
+    for (int k = 0; k < 4; ++k)
+      for (int l = k + 1; l < 4; ++l) {
+        pairs_[0][k][l] = A(2, k) * A(3, l) - A(2, l) * A(3, k);
+        pairs_[1][k][l] = A(0, k) * A(1, l) - A(0, l) * A(1, k);
+      }
+  }
+
+  /// Determinant of A without row skip_row and column skip_col: expanded along the remaining row
+  /// of the pair {0, 1} or {2, 3} that contains skip_row, times 2x2 minors of the other pair.
+  double operator()(int skip_row, int skip_col) const {
+    static constexpr int kLeadRow[4] = {1, 0, 3, 2};
+    // The lead row is first (skip_row 0, 1) or last (skip_row 2, 3) of the three remaining
+    // rows; either way its cofactor signs are + - +.
+    const int* c = kOthers[skip_col];
+    const auto& m = pairs_[skip_row < 2 ? 0 : 1];
+    const int lead = kLeadRow[skip_row];
+    return A_(lead, c[0]) * m[c[1]][c[2]] - A_(lead, c[1]) * m[c[0]][c[2]] +
+           A_(lead, c[2]) * m[c[0]][c[1]];
+  }
+
+ private:
+  const Eigen::Matrix4d& A_;
+  double pairs_[2][4][4] = {};
+};
 
 TopEigenpair full_solver(const Eigen::Matrix4d& M, double shift) {
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> solver(M);
@@ -153,17 +174,18 @@ TopEigenpair top_eigenpair_traceless(const Eigen::Matrix4d& M, double c2, double
   A.diagonal().array() -= roots(0);
   // A has rank 3, so adj(A) = c q q^T for the top eigenvector q: its diagonal c q_i^2 names the
   // best-conditioned column (largest |q_i|), and that column is c q_i q.
+  const Minors3 minor3(A);
   int best = 0;
   double best_diagonal = -1.0;
   for (int i = 0; i < 4; ++i) {
-    const double diagonal = std::abs(minor3(A, i, i));
+    const double diagonal = std::abs(minor3(i, i));
     if (diagonal > best_diagonal) {
       best_diagonal = diagonal;
       best = i;
     }
   }
   Eigen::Vector4d column;
-  for (int i = 0; i < 4; ++i) column(i) = ((i + best) % 2 == 0 ? 1.0 : -1.0) * minor3(A, best, i);
+  for (int i = 0; i < 4; ++i) column(i) = ((i + best) % 2 == 0 ? 1.0 : -1.0) * minor3(best, i);
   const double norm2 = column.squaredNorm();
   if (!(norm2 > 0.0) || !std::isfinite(norm2)) return full_solver(M, 0.0);
   TopEigenpair out;
