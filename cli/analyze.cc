@@ -40,7 +40,7 @@ int run_analyze(const AnalyzeArgs& args) {
   const Layout layout = io::read_layout(args.file);
   const DataVectors data =
       data_vectors(layout, args.pair_weighting == "arithmetic" ? PairWeighting::kArithmeticMean
-                                                              : PairWeighting::kGeometricMean);
+                                                               : PairWeighting::kGeometricMean);
   sdp::LayoutAnalysisOptions options;
   options.swap_count = args.swaps;
   options.run_crosscheck = args.crosscheck;
@@ -108,8 +108,8 @@ int run_analyze(const AnalyzeArgs& args) {
               << report.solver.status << ", " << report.solver.cells_solved << " cells solved, "
               << "confirmed on " << report.solver.backend << " (" << report.solver.sdp_status
               << ")\n"
-              << "paper's single LMI     pbar " << format_number(report.paper_lmi.pbar, 6)
-              << " at " << format_vector(report.paper_lmi.viewpoint)
+              << "paper's single LMI     pbar " << format_number(report.paper_lmi.pbar, 6) << " at "
+              << format_vector(report.paper_lmi.viewpoint)
               << "  (one sign cell only; >= the global value)\n"
               << "cross-check            " << report.crosscheck.method << " t "
               << format_number(report.crosscheck.t, 9)
@@ -126,9 +126,8 @@ int run_analyze(const AnalyzeArgs& args) {
     }
   }
   if (!trusted) {
-    std::cerr << "vantage: warning: " << (report.message.empty() ? "result not certified"
-                                                                 : report.message)
-              << std::endl;
+    std::cerr << "vantage: warning: "
+              << (report.message.empty() ? "result not certified" : report.message) << std::endl;
     return kExitFailure;
   }
   return kExitOk;

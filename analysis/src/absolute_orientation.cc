@@ -4,6 +4,7 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "vantage/analysis/common.h"
@@ -74,6 +75,8 @@ void validate(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v, const Eigen:
     out << "weights has " << w.size() << " entries, expected " << z.cols();
     throw InvalidArgument(out.str());
   }
+  const bool weights_ok = w.size() == 0 || (w.allFinite() && (w.array() > 0.0).all());
+  if (z.allFinite() && v.allFinite() && weights_ok) return;
   for (Eigen::Index i = 0; i < z.cols(); ++i) {
     if (!z.col(i).allFinite()) {
       throw InvalidArgument("z_object[" + std::to_string(i) + "] is not finite");
@@ -87,20 +90,26 @@ void validate(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v, const Eigen:
   }
 }
 
-Moments moments(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v, const Eigen::VectorXd& w) {
+template <bool kWeighted>
+Moments accumulate_moments(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v,
+                           const Eigen::VectorXd& w) {
   Moments m;
   for (Eigen::Index i = 0; i < z.cols(); ++i) {
-    const double wi = w.size() == 0 ? 1.0 : w(i);
+    const double wi = kWeighted ? w(i) : 1.0;
     const Eigen::Vector3d zi = z.col(i);
-    const Eigen::Vector3d vi = v.col(i);
-    m.weight_sum += wi;
+    const Eigen::Vector3d wvi = wi * v.col(i);
     m.z_sum += wi * zi;
-    m.v_sum += wi * vi;
-    m.H.noalias() += wi * zi * vi.transpose();
+    m.v_sum += wvi;
+    m.H.noalias() += zi * wvi.transpose();
     m.zz += wi * zi.squaredNorm();
-    m.vv += wi * vi.squaredNorm();
+    m.vv += wvi.dot(v.col(i));
   }
+  m.weight_sum = kWeighted ? w.sum() : static_cast<double>(z.cols());
   return m;
+}
+
+Moments moments(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v, const Eigen::VectorXd& w) {
+  return w.size() == 0 ? accumulate_moments<false>(z, v, w) : accumulate_moments<true>(z, v, w);
 }
 
 /// Moments of the data centred at their weighted centroids.
@@ -116,15 +125,12 @@ Moments centred(const Moments& m) {
   return c;
 }
 
-/// D of Eq. (2) from H = sum w z v^T (K is bilinear, so D depends on the data only through H).
-Eigen::Matrix4d d_from_h(const Eigen::Matrix3d& H) {
-  Eigen::Matrix4d D;
-  D.topLeftCorner<3, 3>() = H + H.transpose() - 2.0 * H.trace() * Eigen::Matrix3d::Identity();
-  const Eigen::Vector3d zxv(H(1, 2) - H(2, 1), H(2, 0) - H(0, 2), H(0, 1) - H(1, 0));
-  D.topRightCorner<3, 1>() = zxv;
-  D.bottomLeftCorner<1, 3>() = zxv.transpose();
-  D(3, 3) = 0.0;
-  return D;
+/// Upper bound of lambda_max = max_R trace(R H) from the moments: trace(R H) = sum w v^T R z <=
+/// sum w |v||z| <= sqrt(zz vv) (Cauchy-Schwarz), equal to lambda_max for noise-free data, so the
+/// root iteration starts at the root. (The iteration itself falls back to a bound from H alone
+/// when this one is looser or spoilt by rounding.)
+double lambda_upper_from_moments(const Moments& m) {
+  return std::sqrt(m.zz * m.vv) * (1.0 + 1e-12);
 }
 
 /// adj(M) = cofactor(M)^T; its rows are cross products of M's columns.
@@ -155,14 +161,29 @@ RotationSolve rotation_svd(const Eigen::Matrix3d& H) {
   return {V * S * U.transpose(), std::max(0.0, 2.0 * (s(1) + d * s(2))), false};
 }
 
-RotationSolve rotation_qmethod(const Eigen::Matrix3d& H, const TopEigenOptions& eigen) {
-  const TopEigenpair top = top_eigenpair(d_from_h(H), eigen);
+/// Theorem 1 through Davenport's K = D + trace(H) I (DESIGN.md note 6): traceless, with the same
+/// eigenvectors and gaps as D, and with FOAM's quartic (DESIGN.md note 8) as characteristic
+/// polynomial, which costs a few 3x3 products instead of a 4x4 one.
+RotationSolve rotation_qmethod(const Eigen::Matrix3d& H, double lambda_upper,
+                               const TopEigenOptions& eigen) {
+  const double trace = H.trace();
+  Eigen::Matrix4d K;
+  K.topLeftCorner<3, 3>() = H + H.transpose() - trace * Eigen::Matrix3d::Identity();
+  const Eigen::Vector3d zxv(H(1, 2) - H(2, 1), H(2, 0) - H(0, 2), H(0, 1) - H(1, 0));
+  K.topRightCorner<3, 1>() = zxv;
+  K.bottomLeftCorner<1, 3>() = zxv.transpose();
+  K(3, 3) = trace;
+  const double f2 = H.squaredNorm();
+  const double c0 = f2 * f2 - 4.0 * adjugate(H).squaredNorm();
+  const TopEigenpair top = internal::top_eigenpair_traceless(K, -2.0 * f2, -8.0 * H.determinant(),
+                                                             c0, lambda_upper, eigen);
   return {rotation_from_quaternion(top.vector), top.gap, top.used_fallback};
 }
 
 /// FOAM (DESIGN.md note 8) with B = sum w b r^T = H^T (b = v measured, r = z reference).
-/// Like the q-method's eigensolver, Newton is not trusted when the top two roots nearly coincide
-/// (it converges only linearly there): the SVD solution, exact in that case, is used instead.
+/// Like the q-method's eigensolver, the root iteration is not trusted when the top two roots
+/// nearly coincide (it converges only linearly there): the SVD solution, exact in that case, is
+/// used instead.
 RotationSolve rotation_foam(const Eigen::Matrix3d& H, double lambda_start,
                             double fallback_relative_gap) {
   const Eigen::Matrix3d B = H.transpose();
@@ -172,7 +193,7 @@ RotationSolve rotation_foam(const Eigen::Matrix3d& H, double lambda_start,
   const double adj2 = adj_b.squaredNorm();
   // (lambda^2 - |B|^2)^2 - 8 lambda det B - 4 |adj B|^2 = 0, written as a depressed quartic.
   const Eigen::Vector2d roots = internal::largest_two_quartic_roots(
-      -2.0 * f2, -8.0 * det_b, f2 * f2 - 4.0 * adj2, lambda_start * (1.0 + 1e-12));
+      -2.0 * f2, -8.0 * det_b, f2 * f2 - 4.0 * adj2, lambda_start);
   const double lambda = roots(0);
   const double kappa = 0.5 * (lambda * lambda - f2);
   const double zeta = kappa * lambda - det_b;
@@ -188,18 +209,19 @@ RotationSolve rotation_foam(const Eigen::Matrix3d& H, double lambda_start,
   return {A, gap, false};
 }
 
-RotationSolve solve_rotation(const Moments& m, const OrientationOptions& options) {
+/// lambda_upper: an upper bound of max_R trace(R H), the root iteration's start for q-method
+/// and FOAM.
+RotationSolve solve_rotation(const Eigen::Matrix3d& H, double lambda_upper,
+                             const OrientationOptions& options) {
   switch (options.method) {
     case OrientationMethod::kSvd:
-      return rotation_svd(m.H);
+      return rotation_svd(H);
     case OrientationMethod::kFoam:
-      // Upper bound on the largest root: lambda_max = max trace(A B^T) <= ||B||_* <= sqrt(3)
-      // ||B||_F.
-      return rotation_foam(m.H, std::sqrt(3.0) * m.H.norm(), options.eigen.fallback_relative_gap);
+      return rotation_foam(H, lambda_upper, options.eigen.fallback_relative_gap);
     case OrientationMethod::kQMethod:
       break;
   }
-  return rotation_qmethod(m.H, options.eigen);
+  return rotation_qmethod(H, lambda_upper, options.eigen);
 }
 
 OrientationStatus classify(const RotationSolve& solve, const Eigen::Matrix3d& H,
@@ -236,7 +258,7 @@ OrientationResult absolute_orientation(const Eigen::Matrix3Xd& z_object,
   const Moments m = moments(z_object, v_camera, weights);
   if (!(m.vv > 0.0)) throw InvalidArgument("measured: every measured vector is zero");
 
-  const RotationSolve solve = solve_rotation(m, options);
+  const RotationSolve solve = solve_rotation(m.H, lambda_upper_from_moments(m), options);
   OrientationResult result;
   result.R_camera_object = solve.R;
   result.quaternion = quaternion_from_rotation(solve.R);
@@ -258,7 +280,7 @@ PoseResult absolute_pose(const Eigen::Matrix3Xd& z_object, const Eigen::Matrix3X
   if (!(c.vv > 0.0)) {
     throw InvalidArgument("measured: all measured points coincide, the scale is undefined");
   }
-  const RotationSolve solve = solve_rotation(c, options);
+  const RotationSolve solve = solve_rotation(c.H, lambda_upper_from_moments(c), options);
   PoseResult result;
   result.R_camera_object = solve.R;
   result.eigen_gap = solve.gap;
@@ -293,7 +315,7 @@ PoseResult decoupled_pose(const Eigen::Matrix3Xd& z_object, const Eigen::Matrix3
         "`vantage weights` or use absolute_pose(), which centres the data";
     return result;
   }
-  const RotationSolve solve = solve_rotation(m, options);
+  const RotationSolve solve = solve_rotation(m.H, lambda_upper_from_moments(m), options);
   result.R_camera_object = solve.R;
   result.eigen_gap = solve.gap;
   result.used_fallback = solve.used_fallback;
@@ -315,9 +337,7 @@ Eigen::Matrix4d swap_delta_d(const Eigen::Vector3d& v_j, const Eigen::Vector3d& 
 
 Eigen::Matrix3d optimal_rotation(const Eigen::Matrix3d& H, const OrientationOptions& options,
                                  double* eigen_gap) {
-  Moments m;
-  m.H = H;
-  const RotationSolve solve = solve_rotation(m, options);
+  const RotationSolve solve = solve_rotation(H, std::numeric_limits<double>::infinity(), options);
   if (eigen_gap) *eigen_gap = solve.gap;
   return solve.R;
 }

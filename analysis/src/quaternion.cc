@@ -43,20 +43,32 @@ namespace internal {
 
 namespace {
 
-constexpr int kMaxNewtonIterations = 100;
-// Newton stops once a step is below this fraction of the iterate's magnitude (a few ulps).
-constexpr double kNewtonRelativeStep = 4.0 * std::numeric_limits<double>::epsilon();
+constexpr int kMaxIterations = 100;
+// For a traceless symmetric 4x4 matrix, lambda_max <= sqrt(3/4) ||M||_F (Laguerre-Samuelson);
+// the factor's last digits keep the start above the root despite rounding.
+constexpr double kUpperBound = 0.86602540378443865 * (1.0 + 1e-12);  // sqrt(3/4)
+// Iteration stops once a step is below this fraction of ||M||_F (a few ulps of the roots).
+constexpr double kRelativeStep = 4.0 * std::numeric_limits<double>::epsilon();
 
-template <typename Poly, typename Derivative>
-double newton_from_above(double x, double floor, Poly p, Derivative dp) {
-  for (int it = 0; it < kMaxNewtonIterations; ++it) {
-    const double slope = dp(x);
-    if (!(slope > 0.0)) break;
-    const double step = p(x) / slope;
-    if (!(step > 0.0)) break;  // at or below the root: monotone convergence is over
+/// Laguerre's method from above the largest root r of a polynomial of degree kDegree whose roots
+/// are all real: the iterates decrease monotonically to r, cubically near a simple root, and from
+/// far away in a few steps (Newton needs many when other roots are close by). Above r,
+/// p'/p = sum 1/(x - r_i) <= kDegree / (x - r), so x - r <= kDegree p / p': the iteration stops
+/// once that bound or the last step is below tolerance.
+/// eval(x, &p, &p', &p'') evaluates the polynomial and its derivatives.
+template <int kDegree, typename Eval>
+double laguerre_from_above(double x, double tolerance, Eval eval) {
+  constexpr double n = kDegree;
+  for (int it = 0; it < kMaxIterations; ++it) {
+    double p, d1, d2;
+    eval(x, &p, &d1, &d2);
+    if (!(p > 0.0) || !(d1 > 0.0)) break;  // at (or by rounding below) the root
+    if (n * p <= tolerance * d1) break;
+    // x - n / (G + sqrt((n - 1)(n H - G^2))) with G = p'/p, H = G^2 - p''/p, multiplied out.
+    const double step =
+        n * p / (d1 + std::sqrt(std::max(0.0, (n - 1.0) * ((n - 1.0) * d1 * d1 - n * p * d2))));
     x -= step;
-    if (x <= floor) return floor;
-    if (step <= kNewtonRelativeStep * std::max(1.0, std::abs(x))) break;
+    if (!(step > tolerance)) break;
   }
   return x;
 }
@@ -64,16 +76,39 @@ double newton_from_above(double x, double floor, Poly p, Derivative dp) {
 }  // namespace
 
 Eigen::Vector2d largest_two_quartic_roots(double c2, double c1, double c0, double x0) {
-  const double lowest = -std::numeric_limits<double>::infinity();
-  const double r1 = newton_from_above(
-      x0, lowest, [&](double x) { return ((x * x + c2) * x + c1) * x + c0; },
-      [&](double x) { return (4.0 * x * x + 2.0 * c2) * x + c1; });
+  const double scale = std::sqrt(std::max(0.0, -2.0 * c2));  // ||M||_F
+  const double tolerance = kRelativeStep * scale;
+  auto quartic = [&](double x, double* p, double* d1, double* d2) {
+    const double x2 = x * x;
+    *p = ((x2 + c2) * x + c1) * x + c0;
+    *d1 = (4.0 * x2 + 2.0 * c2) * x + c1;
+    *d2 = 12.0 * x2 + 2.0 * c2;
+  };
+  // The hint is used only when it is provably above every root: by Budan-Fourier, no root
+  // exceeds x when p and all its derivatives are >= 0 at x. Otherwise (a hint spoilt by rounding
+  // or wrong) start from the Laguerre-Samuelson bound, which needs only the coefficients.
+  const double safe_start = kUpperBound * scale;
+  double p0, d1, d2;
+  quartic(x0, &p0, &d1, &d2);
+  if (!(x0 <= safe_start && x0 >= 0.0 && p0 >= 0.0 && d1 >= 0.0 && d2 >= 0.0)) x0 = safe_start;
+  const double r1 = laguerre_from_above<4>(x0, tolerance, quartic);
   // Deflate: p(x) = (x - r1) (x^3 + r1 x^2 + b x + c).
   const double b = c2 + r1 * r1;
   const double c = c1 + r1 * b;
-  const double r2 = newton_from_above(
-      r1, lowest, [&](double x) { return ((x + r1) * x + b) * x + c; },
-      [&](double x) { return (3.0 * x + 2.0 * r1) * x + b; });
+  auto cubic = [&](double x, double* p, double* d1, double* d2) {
+    *p = ((x + r1) * x + b) * x + c;
+    *d1 = (3.0 * x + 2.0 * r1) * x + b;
+    *d2 = 6.0 * x + 2.0 * r1;
+  };
+  // The cubic's roots sum to -r1 and their squares to -2 c2 - r1^2, so by Laguerre-Samuelson the
+  // largest is at most mean + sqrt(2 variance): closer than r1, and equal to the root when the
+  // two smallest coincide. If rounding put it below the root (Budan-Fourier), start from r1.
+  const double mean = -r1 / 3.0;
+  const double variance = std::max(0.0, (-2.0 * c2 - r1 * r1) / 3.0 - mean * mean);
+  double start = std::min(r1, mean + std::sqrt(2.0 * variance));
+  cubic(start, &p0, &d1, &d2);
+  if (!(p0 >= 0.0 && d1 >= 0.0 && d2 >= 0.0)) start = r1;
+  const double r2 = laguerre_from_above<3>(start, tolerance, cubic);
   return {r1, std::min(r1, r2)};
 }
 
@@ -81,16 +116,38 @@ Eigen::Vector2d largest_two_quartic_roots(double c2, double c1, double c0, doubl
 
 namespace {
 
-double minor3(const Eigen::Matrix4d& A, int skip_row, int skip_col) {
-  int r[3], c[3];
-  for (int i = 0, k = 0; i < 4; ++i)
-    if (i != skip_row) r[k++] = i;
-  for (int j = 0, k = 0; j < 4; ++j)
-    if (j != skip_col) c[k++] = j;
-  return A(r[0], c[0]) * (A(r[1], c[1]) * A(r[2], c[2]) - A(r[1], c[2]) * A(r[2], c[1])) -
-         A(r[0], c[1]) * (A(r[1], c[0]) * A(r[2], c[2]) - A(r[1], c[2]) * A(r[2], c[0])) +
-         A(r[0], c[2]) * (A(r[1], c[0]) * A(r[2], c[1]) - A(r[1], c[1]) * A(r[2], c[0]));
-}
+// kOthers[i]: the indices 0..3 without i.
+constexpr int kOthers[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+
+/// The 3x3 minors of a 4x4 matrix from its twelve 2x2 minors (Laplace expansion): pairs[0] holds
+/// the 2x2 minors of rows {2, 3}, pairs[1] those of rows {0, 1}, indexed by column pair.
+class Minors3 {
+ public:
+  explicit Minors3(const Eigen::Matrix4d& A) : A_(A) {
+    for (int k = 0; k < 4; ++k)
+      for (int l = k + 1; l < 4; ++l) {
+        pairs_[0][k][l] = A(2, k) * A(3, l) - A(2, l) * A(3, k);
+        pairs_[1][k][l] = A(0, k) * A(1, l) - A(0, l) * A(1, k);
+      }
+  }
+
+  /// Determinant of A without row skip_row and column skip_col: expanded along the remaining row
+  /// of the pair {0, 1} or {2, 3} that contains skip_row, times 2x2 minors of the other pair.
+  double operator()(int skip_row, int skip_col) const {
+    static constexpr int kLeadRow[4] = {1, 0, 3, 2};
+    // The lead row is first (skip_row 0, 1) or last (skip_row 2, 3) of the three remaining
+    // rows; either way its cofactor signs are + - +.
+    const int* c = kOthers[skip_col];
+    const auto& m = pairs_[skip_row < 2 ? 0 : 1];
+    const int lead = kLeadRow[skip_row];
+    return A_(lead, c[0]) * m[c[1]][c[2]] - A_(lead, c[1]) * m[c[0]][c[2]] +
+           A_(lead, c[2]) * m[c[0]][c[1]];
+  }
+
+ private:
+  const Eigen::Matrix4d& A_;
+  double pairs_[2][4][4] = {};
+};
 
 TopEigenpair full_solver(const Eigen::Matrix4d& M, double shift) {
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> solver(M);
@@ -104,56 +161,54 @@ TopEigenpair full_solver(const Eigen::Matrix4d& M, double shift) {
 
 }  // namespace
 
+namespace internal {
+
+TopEigenpair top_eigenpair_traceless(const Eigen::Matrix4d& M, double c2, double c1, double c0,
+                                     double lambda_upper, const TopEigenOptions& options) {
+  const double scale = std::sqrt(-2.0 * c2);  // ||M||_F
+  if (options.force_full_solver || !(scale > 0.0)) return full_solver(M, 0.0);
+  const Eigen::Vector2d roots = largest_two_quartic_roots(c2, c1, c0, lambda_upper);
+  const double gap = roots(0) - roots(1);
+  if (!(gap > options.fallback_relative_gap * scale)) return full_solver(M, 0.0);
+  Eigen::Matrix4d A = M;
+  A.diagonal().array() -= roots(0);
+  // A has rank 3, so adj(A) = c q q^T for the top eigenvector q: its diagonal c q_i^2 names the
+  // best-conditioned column (largest |q_i|), and that column is c q_i q.
+  const Minors3 minor3(A);
+  int best = 0;
+  double best_diagonal = -1.0;
+  for (int i = 0; i < 4; ++i) {
+    const double diagonal = std::abs(minor3(i, i));
+    if (diagonal > best_diagonal) {
+      best_diagonal = diagonal;
+      best = i;
+    }
+  }
+  Eigen::Vector4d column;
+  for (int i = 0; i < 4; ++i) column(i) = ((i + best) % 2 == 0 ? 1.0 : -1.0) * minor3(best, i);
+  const double norm2 = column.squaredNorm();
+  if (!(norm2 > 0.0) || !std::isfinite(norm2)) return full_solver(M, 0.0);
+  TopEigenpair out;
+  out.lambda = roots(0);
+  out.gap = gap;
+  out.vector = column / std::sqrt(norm2);
+  out.used_fallback = false;
+  return out;
+}
+
+}  // namespace internal
+
 TopEigenpair top_eigenpair(const Eigen::Matrix4d& D, const TopEigenOptions& options) {
   const double shift = D.trace() / 4.0;
   Eigen::Matrix4d M = D.selfadjointView<Eigen::Lower>();
   M.diagonal().array() -= shift;
-
-  TopEigenpair out;
-  if (options.force_full_solver) {
-    out = full_solver(M, shift);
-  } else {
-    const Eigen::Matrix4d M2 = M * M;
-    const double frobenius2 = M2.trace();
-    const double scale = std::sqrt(frobenius2);
-    if (!(scale > 0.0)) {
-      out = full_solver(M, shift);
-    } else {
-      const double c2 = -0.5 * frobenius2;
-      const double c1 = -M2.cwiseProduct(M).sum() / 3.0;
-      const double c0 = M.determinant();
-      // For a traceless symmetric 4x4 matrix, lambda_max <= sqrt(3/4) ||M||_F.
-      const Eigen::Vector2d roots =
-          internal::largest_two_quartic_roots(c2, c1, c0, std::sqrt(0.75) * scale * (1.0 + 1e-12));
-      const double gap = roots(0) - roots(1);
-      if (!(gap > options.fallback_relative_gap * scale)) {
-        out = full_solver(M, shift);
-      } else {
-        Eigen::Matrix4d A = M;
-        A.diagonal().array() -= roots(0);
-        // Each column of adj(A) is parallel to the top eigenvector; take the largest one.
-        Eigen::Vector4d best = Eigen::Vector4d::Zero();
-        double best_norm = -1.0;
-        for (int j = 0; j < 4; ++j) {
-          Eigen::Vector4d col;
-          for (int i = 0; i < 4; ++i) col(i) = ((i + j) % 2 == 0 ? 1.0 : -1.0) * minor3(A, j, i);
-          const double norm = col.squaredNorm();
-          if (norm > best_norm) {
-            best_norm = norm;
-            best = col;
-          }
-        }
-        if (!(best_norm > 0.0) || !std::isfinite(best_norm)) {
-          out = full_solver(M, shift);
-        } else {
-          out.lambda = roots(0) + shift;
-          out.gap = gap;
-          out.vector = best / std::sqrt(best_norm);
-          out.used_fallback = false;
-        }
-      }
-    }
-  }
+  const Eigen::Matrix4d M2 = M * M;
+  const double c2 = -0.5 * M2.trace();
+  const double c1 = -M2.cwiseProduct(M).sum() / 3.0;
+  const double c0 = M.determinant();
+  TopEigenpair out = internal::top_eigenpair_traceless(
+      M, c2, c1, c0, std::numeric_limits<double>::infinity(), options);
+  out.lambda += shift;
   if (out.vector(3) < 0.0) out.vector = -out.vector;
   return out;
 }

@@ -19,6 +19,9 @@ constexpr double kNoiseFreeRadians = 1e-10;
 constexpr double kNoiseFreeRelative = 1e-10;
 // Methods solve the same problem exactly, so even on noisy data they agree to rounding.
 constexpr double kMethodAgreementRadians = 1e-9;
+// The same solver from a different root-iteration start (optimal_rotation() knows only H): the
+// roots agree to a few ulps of ||H||, and the gap is their difference.
+constexpr double kSameSolverGap = 1e-13;
 
 const OrientationMethod kMethods[] = {OrientationMethod::kQMethod, OrientationMethod::kSvd,
                                       OrientationMethod::kFoam};
@@ -167,7 +170,7 @@ TEST(AbsoluteOrientation, OptimalRotationFromCrossCovarianceMatchesSolver) {
     const Eigen::Matrix3d R = optimal_rotation(H, with_method(method), &gap);
     const OrientationResult reference = absolute_orientation(z, v, {}, with_method(method));
     EXPECT_LT(rotation_angle_between(R, reference.R_camera_object), 1e-12);
-    EXPECT_DOUBLE_EQ(gap, reference.eigen_gap);
+    EXPECT_NEAR(gap, reference.eigen_gap, kSameSolverGap) << to_string(method);
   }
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <limits>
 
 #include "support/eigen_testing.h"
 
@@ -123,6 +124,24 @@ TEST(TopEigenpair, ForcedFullSolverMatchesFastPath) {
   TopEigenOptions full;
   full.force_full_solver = true;
   EXPECT_THAT(top_eigenpair(D, full).vector, IsNearQuaternion(top_eigenpair(D).vector, 1e-9));
+}
+
+TEST(LargestTwoQuarticRoots, AnyHintGivesTheTopTwoRoots) {
+  // Roots 3, 1, -1.5, -2.5 (sum 0): the hint may be exact, loose, wrong (between roots, where
+  // the quartic is positive too) or infinite; only a provable upper bound may be used as start.
+  const double r[4] = {3.0, 1.0, -1.5, -2.5};
+  double e2 = 0.0, e3 = 0.0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      e2 += r[i] * r[j];
+      for (int k = j + 1; k < 4; ++k) e3 += r[i] * r[j] * r[k];
+    }
+  const double e4 = r[0] * r[1] * r[2] * r[3];
+  for (const double hint : {3.0, 3.5, 0.0, -2.0, 2.0, std::numeric_limits<double>::infinity()}) {
+    const Eigen::Vector2d roots = internal::largest_two_quartic_roots(e2, -e3, e4, hint);
+    EXPECT_NEAR(roots(0), 3.0, kEigenTolerance) << "hint " << hint;
+    EXPECT_NEAR(roots(1), 1.0, kEigenTolerance) << "hint " << hint;
+  }
 }
 
 }  // namespace

@@ -33,10 +33,9 @@ nlohmann::json analyze_json(const std::string& args, ScratchDir& scratch) {
 TEST(AnalyzeCli, TriadHasFourWorstViewpointsAndTheContractFields) {
   ScratchDir scratch;
   const auto json = analyze_json(layout("triad"), scratch);
-  for (const char* field :
-       {"name", "mode", "n_vectors", "worst_viewpoint", "worst_viewpoints", "t", "pbar_min",
-        "worst_case_errors_deg", "max_worst_case_error_deg", "certificate", "paper_lmi",
-        "crosscheck", "swaps", "solver"}) {
+  for (const char* field : {"name", "mode", "n_vectors", "worst_viewpoint", "worst_viewpoints", "t",
+                            "pbar_min", "worst_case_errors_deg", "max_worst_case_error_deg",
+                            "certificate", "paper_lmi", "crosscheck", "swaps", "solver"}) {
     EXPECT_TRUE(json.contains(field)) << field;
   }
   EXPECT_EQ(json["mode"], "vectors");
@@ -45,9 +44,9 @@ TEST(AnalyzeCli, TriadHasFourWorstViewpointsAndTheContractFields) {
   EXPECT_NEAR(json["t"].get<double>(), 1.0 / std::sqrt(3.0), kClosedForm);
   EXPECT_EQ(json["worst_viewpoints"].size(), 4u);
   EXPECT_EQ(json["worst_case_errors_deg"].size(), 3u);
-  EXPECT_LE(json["certificate"]["t_upper"].get<double>() -
-                json["certificate"]["t_lower"].get<double>(),
-            1e-9);
+  EXPECT_LE(
+      json["certificate"]["t_upper"].get<double>() - json["certificate"]["t_lower"].get<double>(),
+      1e-9);
   EXPECT_TRUE(json["crosscheck"]["agrees"].get<bool>());
   EXPECT_EQ(json["solver"]["backend"], "csdp");
   EXPECT_EQ(json["solver"]["status"], "certified");

@@ -1,14 +1,20 @@
 #pragma once
 
-/// Counts heap allocations made through the global operator new, to prove that hot paths
-/// allocate nothing (STYLE.md 16). The replacement operators are defined once per test binary in
-/// tests/<module>/allocation_counter_test.cc.
-
-#include <cstddef>
+/// Counts heap allocations, to prove that hot paths allocate nothing (STYLE.md 16). The counter
+/// sees the global operator new family and malloc/calloc/realloc; its definition lives in
+/// tests/analysis/allocation_counter_test.cc (one per test binary that links it).
 
 namespace vantage::testing {
 
-/// Number of calls to the global operator new (all forms) since the program started.
-std::size_t allocation_count();
+/// Counts the heap allocations made while it is alive (not thread-safe across counters).
+class CountAllocations {
+ public:
+  CountAllocations();
+  ~CountAllocations();
+  CountAllocations(const CountAllocations&) = delete;
+  CountAllocations& operator=(const CountAllocations&) = delete;
+
+  long count() const;
+};
 
 }  // namespace vantage::testing
