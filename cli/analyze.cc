@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "command.h"
+#include "vantage/analysis/common.h"
 #include "vantage/analysis/layout.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/sdp/layout_analysis.h"
