@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
 
   const std::vector<Command> commands = {
       add_orient_command(app),
+      add_pose_command(app),
   };
 
   try {
