@@ -30,6 +30,7 @@ struct Command {
 
 Command add_analyze_command(CLI::App& root);
 Command add_orient_command(CLI::App& root);
+Command add_pose_command(CLI::App& root);
 
 /// "qmethod" | "svd" | "foam" (already checked by CLI11) to the enum.
 OrientationMethod parse_orientation_method(const std::string& name);
