@@ -30,6 +30,8 @@ int main(int argc, char** argv) {
 
   const std::vector<Command> commands = {
       add_orient_command(app),
+      add_design_command(app),
+      add_weights_command(app),
   };
 
   try {
