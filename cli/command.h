@@ -30,6 +30,8 @@ struct Command {
 
 Command add_analyze_command(CLI::App& root);
 Command add_orient_command(CLI::App& root);
+Command add_design_command(CLI::App& root);
+Command add_weights_command(CLI::App& root);
 Command add_pose_command(CLI::App& root);
 
 /// "qmethod" | "svd" | "foam" (already checked by CLI11) to the enum.

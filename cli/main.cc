@@ -31,6 +31,8 @@ int main(int argc, char** argv) {
   const std::vector<Command> commands = {
       add_analyze_command(app),
       add_orient_command(app),
+      add_design_command(app),
+      add_weights_command(app),
       add_pose_command(app),
   };
 

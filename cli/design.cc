@@ -1,0 +1,352 @@
+// `vantage design LAYOUT --add K [--candidates-only] [--margin M] [--direct|--no-direct]
+// [--write OUT.json] [--overwrite] [--json]`: the inductive augmenter of McInroy et al.
+// (Sec. III.E, text around Fig. 3) done on the global worst viewpoint (DESIGN.md notes 3-4).
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "command.h"
+#include "vantage/analysis/common.h"
+#include "vantage/design/augment.h"
+#include "vantage/io/layout_file.h"
+
+namespace vantage::cli {
+
+namespace {
+
+// A point-mode candidate closer than this (times the search box's largest side) to a marker or
+// to another candidate would give a zero free vector: the augmenter's own separation threshold.
+constexpr double kCandidateSeparation = 1e-9;
+
+struct DesignArgs {
+  std::string file;
+  int add = 0;
+  bool candidates_only = false;
+  double margin = design::AugmentOptions{}.margin;
+  bool direct = true;
+  std::string write;
+  bool overwrite = false;
+  bool json = false;
+};
+
+[[noreturn]] void bad(const std::string& message) { throw InvalidArgument(message); }
+
+// Point mode: candidates that coincide with a marker or with each other cannot be added.
+void check_point_candidates(const std::string& source, const Layout& layout, double margin) {
+  if (layout.mode != LayoutMode::kPoints || layout.candidates.cols() == 0) return;
+  const Eigen::Vector3d lo = layout.entries.rowwise().minCoeff();
+  const Eigen::Vector3d hi = layout.entries.rowwise().maxCoeff();
+  const double scale = (1.0 + 2.0 * margin) * (hi - lo).maxCoeff();
+  const double min_distance = kCandidateSeparation * scale;
+  for (Eigen::Index c = 0; c < layout.candidates.cols(); ++c) {
+    const Eigen::Vector3d x = layout.candidates.col(c);
+    for (Eigen::Index i = 0; i < layout.entries.cols(); ++i) {
+      if ((x - layout.entries.col(i)).norm() <= min_distance) {
+        bad(source + ": candidates[" + std::to_string(c) + "]: coincides with points[" +
+            std::to_string(i) + "]");
+      }
+    }
+    for (Eigen::Index d = 0; d < c; ++d) {
+      if ((x - layout.candidates.col(d)).norm() <= min_distance) {
+        bad(source + ": candidates[" + std::to_string(c) + "]: coincides with candidates[" +
+            std::to_string(d) + "]");
+      }
+    }
+  }
+}
+
+// Every check that can fail before the (possibly long) search, so that a bad call costs
+// nothing and writes nothing.
+void check_write_target(const DesignArgs& args) {
+  if (args.write.empty()) return;
+  namespace fs = std::filesystem;
+  const fs::path out(args.write);
+  std::error_code ec;
+  if (fs::exists(out, ec) && fs::equivalent(out, fs::path(args.file), ec) && !args.overwrite) {
+    bad("--write: " + args.write +
+        " is the input layout; refusing to overwrite it without "
+        "--overwrite");
+  }
+  if (fs::exists(out, ec)) {
+    if (fs::is_directory(out, ec)) bad("--write: " + args.write + " is a directory");
+    if (!args.overwrite) {
+      bad("--write: " + args.write + " exists already; refusing to overwrite it (--overwrite)");
+    }
+  }
+  const fs::path parent = out.parent_path();
+  if (!parent.empty() && !fs::is_directory(parent, ec)) {
+    bad("--write: directory " + parent.string() + " does not exist");
+  }
+}
+
+// The written layout: the greedy additions appended; candidates already used are dropped (they
+// are markers or directions of the layout now).
+Layout layout_to_write(const design::AugmentResult& result) {
+  Layout out = result.augmented;
+  std::vector<bool> used(out.candidates.cols(), false);
+  for (const design::AugmentStep& step : result.steps) {
+    if (step.candidate_index >= 0) used[step.candidate_index] = true;
+  }
+  Eigen::Matrix3Xd kept(3, out.candidates.cols());
+  Eigen::Index count = 0;
+  for (Eigen::Index c = 0; c < out.candidates.cols(); ++c) {
+    if (!used[c]) kept.col(count++) = out.candidates.col(c);
+  }
+  out.candidates = kept.leftCols(count);
+  return out;
+}
+
+Json json_points(const std::vector<Eigen::Vector3d>& points) {
+  Json list = Json::array();
+  for (const Eigen::Vector3d& p : points) list.push_back(json_list(p));
+  return list;
+}
+
+Json json_worst(const design::WorstCase& worst, int n_vectors) {
+  Json out;
+  out["pbar_min"] = worst.pbar_min;
+  out["worst_viewpoints"] = json_points(worst.worst_viewpoints);
+  out["max_worst_case_error_deg"] = worst.max_worst_case_error_deg;
+  out["ceiling"] = design::pbar_ceiling(n_vectors);
+  out["n_vectors"] = n_vectors;
+  out["t"] = worst.t;
+  out["certified"] = worst.certified;
+  return out;
+}
+
+// Which global solves did not certify, in words ("initial, step 2, direct").
+std::string uncertified_parts(const design::AugmentResult& r) {
+  std::string parts;
+  auto add = [&parts](const std::string& part) { parts += (parts.empty() ? "" : ", ") + part; };
+  if (!r.initial.certified) add("initial");
+  for (size_t s = 0; s < r.steps.size(); ++s) {
+    if (!r.steps[s].worst.certified) add("step " + std::to_string(s + 1));
+  }
+  if (r.direct.status == design::DirectResult::Status::kOk && !r.direct.worst.certified) {
+    add("direct");
+  }
+  return parts;
+}
+
+std::string format_point(const Eigen::Vector3d& p) {
+  // Four decimals; values that round to zero print as 0.0000, never -0.0000.
+  auto coordinate = [](double x) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof(buffer), "%.4f", std::abs(x) < 5e-5 ? 0.0 : x);
+    return std::string(buffer);
+  };
+  return "(" + coordinate(p.x()) + ", " + coordinate(p.y()) + ", " + coordinate(p.z()) + ")";
+}
+
+std::string format_points(const std::vector<Eigen::Vector3d>& points) {
+  std::string out;
+  for (const Eigen::Vector3d& p : points) out += (out.empty() ? "" : " ") + format_point(p);
+  return out;
+}
+
+std::string pad(std::string text, size_t width) {
+  if (text.size() < width) text.append(width - text.size(), ' ');
+  return text;
+}
+
+std::string fixed(double x, int decimals) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.*f", decimals, x);
+  return buffer;
+}
+
+Json design_json(const DesignArgs& args, const Layout& layout, const design::AugmentResult& r) {
+  Json out;
+  out["layout"] = args.file;
+  out["name"] = layout.name;
+  out["mode"] = to_string(layout.mode);
+  out["status"] = design::to_string(r.status);
+  if (!r.message.empty()) out["message"] = r.message;
+  out["initial"] = json_worst(r.initial, r.initial_vector_count);
+  Json steps = Json::array();
+  for (const design::AugmentStep& st : r.steps) {
+    Json step;
+    step["added"] = json_list(st.added);
+    step["pbar_min"] = st.worst.pbar_min;
+    step["worst_viewpoints"] = json_points(st.worst.worst_viewpoints);
+    step["max_worst_case_error_deg"] = st.worst.max_worst_case_error_deg;
+    step["ceiling"] = st.ceiling;
+    step["n_vectors"] = st.vector_count;
+    step["improved"] = st.improved;
+    step["note"] = st.note;
+    if (st.candidate_index >= 0) step["candidate_index"] = st.candidate_index;
+    step["single_vector_can_improve"] = st.single_vector_can_improve;
+    if (layout.mode == LayoutMode::kVectors) {
+      step["best_kill_level"] = st.best_kill_level;
+      step["angle_from_worst_plane_deg"] = st.angle_from_worst_plane_deg;
+    }
+    step["t"] = st.worst.t;
+    step["certified"] = st.worst.certified;
+    step["global_solves"] = st.global_solves;
+    steps.push_back(step);
+  }
+  out["steps"] = steps;
+  out["final_pbar_min"] = r.final_pbar_min;
+  if (r.direct.status == design::DirectResult::Status::kOk) {
+    Json direct;
+    direct["pbar_min"] = r.direct.worst.pbar_min;
+    direct["added"] = json_points(r.direct.added);
+    direct["method"] = r.direct.method;
+    if (!r.direct.candidate_indices.empty()) {
+      direct["candidate_indices"] = r.direct.candidate_indices;
+    }
+    direct["worst_viewpoints"] = json_points(r.direct.worst.worst_viewpoints);
+    direct["max_worst_case_error_deg"] = r.direct.worst.max_worst_case_error_deg;
+    direct["certified"] = r.direct.worst.certified;
+    direct["global_solves"] = r.direct.global_solves;
+    out["direct"] = direct;
+  } else if (args.direct) {
+    out["direct_message"] = r.direct.message;
+  }
+  Json coplanarity;
+  coplanarity["initial"] = r.initial_coplanarity.smallest_singular_value;
+  coplanarity["final"] = r.final_coplanarity.smallest_singular_value;
+  coplanarity["nearly_coplanar"] = r.final_coplanarity.nearly_coplanar;
+  coplanarity["threshold"] = design::AugmentOptions{}.coplanarity_threshold;
+  out["coplanarity"] = coplanarity;
+  out["global_solves"] = r.global_solves;
+  return out;
+}
+
+void print_report(const DesignArgs& args, const Layout& layout, const design::AugmentResult& r) {
+  const char* unit = layout.mode == LayoutMode::kPoints ? "marker" : "direction";
+  std::cout << "vantage design: " << args.file
+            << (layout.name.empty() ? "" : " (" + layout.name + ")") << ", "
+            << to_string(layout.mode) << " mode, " << layout.entries.cols() << " entries, "
+            << r.initial_vector_count << " data vectors; adding " << args.add << " " << unit
+            << (args.add == 1 ? "" : "s") << (args.candidates_only ? " from the candidates" : "")
+            << "\n"
+            << "status  " << design::to_string(r.status)
+            << (r.message.empty() ? "" : " (" + r.message + ")") << "\n"
+            << "p-bar_min: global worst case (Theorem 6 over all sign cells); max error: Eq. (30) "
+               "at the worst viewpoints; ceiling: cos(pi/(2m)) for m data vectors\n\n";
+  std::cout << pad("step", 6) << pad("added", 34) << pad("m", 6) << pad("pbar_min", 11)
+            << pad("max err deg", 13) << pad("ceiling", 10) << "note\n";
+  std::cout << pad("0", 6) << pad("(initial layout)", 34)
+            << pad(std::to_string(r.initial_vector_count), 6)
+            << pad(fixed(r.initial.pbar_min, 6), 11)
+            << pad(fixed(r.initial.max_worst_case_error_deg, 3), 13)
+            << pad(fixed(r.initial_ceiling, 6), 10) << r.initial.worst_viewpoints.size()
+            << " worst viewpoint(s)\n";
+  for (size_t s = 0; s < r.steps.size(); ++s) {
+    const design::AugmentStep& st = r.steps[s];
+    std::cout << pad(std::to_string(s + 1), 6)
+              << pad(format_point(st.added) +
+                         (st.candidate_index >= 0 ? " c" + std::to_string(st.candidate_index) : ""),
+                     34)
+              << pad(std::to_string(st.vector_count), 6) << pad(fixed(st.worst.pbar_min, 6), 11)
+              << pad(fixed(st.worst.max_worst_case_error_deg, 3), 13)
+              << pad(fixed(st.ceiling, 6), 10) << st.note << "\n";
+  }
+  std::cout << "\ninitial worst viewpoints: " << format_points(r.initial.worst_viewpoints) << "\n";
+  if (!r.steps.empty()) {
+    std::cout << "final worst viewpoints:   "
+              << format_points(r.steps.back().worst.worst_viewpoints) << "\n";
+  }
+  std::cout << "final p-bar_min " << fixed(r.final_pbar_min, 6) << "\n";
+  if (r.direct.status == design::DirectResult::Status::kOk) {
+    std::cout << "direct optimiser (" << r.direct.method << ", all " << args.add
+              << " at once): p-bar_min " << fixed(r.direct.worst.pbar_min, 6) << " vs greedy "
+              << fixed(r.final_pbar_min, 6) << "; added " << format_points(r.direct.added) << "\n";
+  } else if (args.direct) {
+    std::cout << "direct optimiser: " << r.direct.message << "\n";
+  }
+  std::cout << "coplanarity (smallest singular value of the unit data vectors / sqrt(m); 0 = "
+               "coplanar, two-fold ambiguity): "
+            << fixed(r.initial_coplanarity.smallest_singular_value, 4)
+            << (r.initial_coplanarity.nearly_coplanar ? " (nearly coplanar)" : "") << " -> "
+            << fixed(r.final_coplanarity.smallest_singular_value, 4)
+            << (r.final_coplanarity.nearly_coplanar ? " (NEARLY COPLANAR)" : "") << "\n";
+}
+
+int run_design(const DesignArgs& args) {
+  if (args.add < 1) bad("--add: must be >= 1, got " + std::to_string(args.add));
+  if (!(args.margin >= 0.0) || !std::isfinite(args.margin)) {
+    bad("--margin: must be finite and >= 0, got " + format_number(args.margin));
+  }
+  const Layout layout = io::read_layout(args.file);
+  const Eigen::Index n_candidates = layout.candidates.cols();
+  if (args.candidates_only && n_candidates == 0) {
+    bad("--candidates-only: " + args.file + " has no \"candidates\"");
+  }
+  if (args.candidates_only && args.add > n_candidates) {
+    bad("--add: " + std::to_string(args.add) + " exceeds the " + std::to_string(n_candidates) +
+        " candidates of " + args.file + " (--candidates-only uses each at most once)");
+  }
+  check_point_candidates(args.file, layout, args.margin);
+  check_write_target(args);
+
+  design::AugmentOptions options;
+  options.add = args.add;
+  options.candidates_only = args.candidates_only;
+  options.margin = args.margin;
+  options.run_direct = args.direct;
+  const design::AugmentResult r = design::augment_layout(layout, options);
+
+  const bool ok = r.status == design::AugmentResult::Status::kOk;
+  if (ok && !args.write.empty()) io::write_layout(args.write, layout_to_write(r), args.overwrite);
+
+  if (args.json) {
+    Json out = design_json(args, layout, r);
+    if (ok && !args.write.empty()) out["written"] = args.write;
+    print_json(out);
+  } else {
+    print_report(args, layout, r);
+    if (ok && !args.write.empty()) std::cout << "written: " << args.write << "\n";
+  }
+  if (!ok) {
+    std::cerr << "vantage: design: " << design::to_string(r.status) << ": " << r.message;
+    const std::string parts = uncertified_parts(r);
+    if (!parts.empty()) std::cerr << " (" << parts << ")";
+    if (parts == "direct") {
+      std::cerr << "; the greedy steps are certified (--no-direct skips the comparison)";
+    }
+    std::cerr << (args.write.empty() ? "" : "; nothing written") << std::endl;
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_design_command(CLI::App& root) {
+  auto args = std::make_shared<DesignArgs>();
+  CLI::App* sub = root.add_subcommand(
+      "design",
+      "Add K directions or markers greedily where the global worst viewpoint is weakest "
+      "(the paper's a-perp rule, Sec. III.E), with the ceiling cos(pi/(2m)) and a direct "
+      "optimiser for comparison");
+  sub->add_option("LAYOUT", args->file, "layout JSON file (vectors or points, optional candidates)")
+      ->required();
+  sub->add_option("--add", args->add,
+                  "K: directions (vector layouts) or markers (point layouts) "
+                  "to add, >= 1")
+      ->required();
+  sub->add_flag("--candidates-only", args->candidates_only,
+                "choose only among the layout's candidates (each at most once)");
+  sub->add_option("--margin", args->margin,
+                  "point mode: search the markers' bounding box grown by M times its largest "
+                  "side on every side, >= 0")
+      ->capture_default_str();
+  sub->add_flag("--direct,!--no-direct", args->direct,
+                "also run (default) or skip the direct optimiser over all K additions at once");
+  CLI::Option* write =
+      sub->add_option("--write", args->write,
+                      "write the augmented layout (greedy additions, weight 1; used candidates "
+                      "removed) to OUT.json; nothing is written on any error");
+  sub->add_flag("--overwrite", args->overwrite,
+                "let --write replace an existing file (even the input layout)")
+      ->needs(write);
+  sub->add_flag("--json", args->json, "print one JSON object instead of the report");
+  return {sub, [args] { return run_design(*args); }};
+}
+
+}  // namespace vantage::cli

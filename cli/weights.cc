@@ -1,0 +1,110 @@
+// `vantage weights LAYOUT [--json]`: max-min non-negative weights with sum_i w_i z_i = 0, the
+// null-space condition (Eq. 11) of the decoupled pose solution of Prop. 3 (McInroy et al.).
+// Weights that do not exist are an answer (exit 0), with the paper's fixes.
+
+#include <iostream>
+#include <memory>
+
+#include "command.h"
+#include "vantage/design/weights.h"
+#include "vantage/io/layout_file.h"
+
+namespace vantage::cli {
+
+namespace {
+
+struct WeightsArgs {
+  std::string file;
+  bool json = false;
+};
+
+Json suggestion_json(const design::WeightsSuggestion& s) {
+  Json out;
+  out["kind"] = design::to_string(s.kind);
+  out["text"] = s.text;
+  if (s.kind == design::WeightsSuggestion::Kind::kSymmetricPartner) {
+    out["index"] = s.index;
+    out["added"] = json_list(s.added);
+  } else {
+    out["shift"] = json_list(s.shift);
+  }
+  out["min_weight"] = s.min_weight;
+  out["weights"] = json_list(s.weights);
+  return out;
+}
+
+int run_weights(const WeightsArgs& args) {
+  const Layout layout = io::read_layout(args.file);
+  const design::Weights w = design::layout_weights(layout);
+  const bool solved = w.status != design::Weights::Status::kSolverFailed;
+
+  if (args.json) {
+    Json out;
+    out["layout"] = args.file;
+    out["mode"] = to_string(layout.mode);
+    out["n"] = layout.entries.cols();
+    out["feasible"] = w.feasible;
+    out["status"] = design::to_string(w.status);
+    out["weights"] = json_list(w.weights);
+    out["residual"] = w.residual;
+    out["min_weight"] = w.min_weight;
+    out["lp_optimum"] = w.lp_optimum;
+    if (!w.zero_forced.empty()) out["zero_forced"] = w.zero_forced;
+    if (!w.suggestions.empty()) {
+      out["suggestion"] = suggestion_json(w.suggestions.front());
+      Json all = Json::array();
+      for (const design::WeightsSuggestion& s : w.suggestions) all.push_back(suggestion_json(s));
+      out["suggestions"] = all;
+    }
+    out["message"] = w.message;
+    print_json(out);
+  } else {
+    std::cout << "vantage weights: " << args.file
+              << (layout.name.empty() ? "" : " (" + layout.name + ")") << ", "
+              << layout.entries.cols() << " " << layout.entries_field() << "\n"
+              << "Prop. 3 / Eq. (11): w_i >= 0, sum_i w_i z_i = 0, sum_i w_i = n, smallest weight "
+                 "as large as possible\n"
+              << "status      " << design::to_string(w.status)
+              << (w.feasible ? " (weights exist)" : " (no such weights)") << "\n"
+              << "            " << w.message << "\n";
+    if (w.feasible) {
+      std::cout << "min weight  " << format_number(w.min_weight) << "\n"
+                << "residual    " << format_number(w.residual) << "  (||sum_i w_i z_i||)\n"
+                << "  i  " << layout.entries_field() << "\n";
+      for (Eigen::Index i = 0; i < layout.entries.cols(); ++i) {
+        char index[24];
+        std::snprintf(index, sizeof(index), "%3ld", static_cast<long>(i));
+        std::cout << index << "  " << format_vector(layout.entries.col(i), 4)
+                  << "  w = " << format_number(w.weights(i)) << "\n";
+      }
+    } else if (solved) {
+      std::cout << "lp optimum  " << format_number(w.lp_optimum)
+                << "  (largest smallest weight; < 0: the origin is outside conv{z_i})\n";
+    }
+    for (size_t s = 0; s < w.suggestions.size(); ++s) {
+      std::cout << (s == 0 ? "suggestion: " : "or:         ") << w.suggestions[s].text << "\n";
+    }
+  }
+  if (!solved) {
+    std::cerr << "vantage: weights: " << w.message << std::endl;
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_weights_command(CLI::App& root) {
+  auto args = std::make_shared<WeightsArgs>();
+  CLI::App* sub = root.add_subcommand(
+      "weights",
+      "Non-negative weights with sum_i w_i z_i = 0 (Prop. 3, Eq. 11), smallest weight maximised; "
+      "when none exist, the fix: a symmetric partner -z_i or a shift of the origin");
+  sub->add_option("LAYOUT", args->file,
+                  "layout JSON file (points: marker positions; vectors: the z_i themselves)")
+      ->required();
+  sub->add_flag("--json", args->json, "print one JSON object instead of the report");
+  return {sub, [args] { return run_weights(*args); }};
+}
+
+}  // namespace vantage::cli

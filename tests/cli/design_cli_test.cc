@@ -1,0 +1,270 @@
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_runner.h"
+
+namespace vantage {
+namespace {
+
+using ::testing::HasSubstr;
+using testing::run_vantage;
+using testing::ScratchDir;
+
+const std::string kLayouts = std::string(VANTAGE_SOURCE_DIR) + "/examples/layouts/";
+const std::string kTriad = kLayouts + "triad.json";
+const std::string kFan = kLayouts + "coplanar_fan.json";
+const std::string kNote3 = kLayouts + "note3_four_vectors.json";
+const std::string kSatellite = kLayouts + "satellite.json";
+
+constexpr double kPi = 3.14159265358979323846;
+// p-bar_min of Z = I (DESIGN.md note 1): sqrt(2/3).
+const double kTriadPbar = std::sqrt(2.0 / 3.0);
+// The global solver certifies t to 1e-9 and JSON carries doubles exactly (17 digits), so the
+// same layout evaluated twice agrees to this.
+constexpr double kSameLayout = 1e-9;
+// Adding data never lowers p-bar_min; the values come from independent certified solves.
+constexpr double kMonotone = 1e-9;
+
+nlohmann::json run_json(const std::string& args, const ScratchDir& scratch) {
+  const auto run = run_vantage(args + " --json", scratch);
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(run.err, "");
+  return nlohmann::json::parse(run.out);
+}
+
+double ceiling(int m) { return std::cos(kPi / (2.0 * m)); }
+
+// Contract fields of every report and the invariants between them.
+void expect_contract(const nlohmann::json& json, int add) {
+  for (const char* field : {"initial", "steps", "final_pbar_min", "coplanarity", "status"}) {
+    ASSERT_TRUE(json.contains(field)) << field;
+  }
+  for (const char* field :
+       {"pbar_min", "worst_viewpoints", "max_worst_case_error_deg", "ceiling", "n_vectors"}) {
+    EXPECT_TRUE(json["initial"].contains(field)) << field;
+  }
+  for (const char* field : {"initial", "final", "nearly_coplanar"}) {
+    EXPECT_TRUE(json["coplanarity"].contains(field)) << field;
+  }
+  ASSERT_EQ(json["steps"].size(), static_cast<size_t>(add));
+  double previous = json["initial"]["pbar_min"].get<double>();
+  for (const auto& step : json["steps"]) {
+    for (const char* field : {"added", "pbar_min", "worst_viewpoints", "max_worst_case_error_deg",
+                              "ceiling", "n_vectors", "improved", "note"}) {
+      EXPECT_TRUE(step.contains(field)) << field;
+    }
+    const double pbar = step["pbar_min"].get<double>();
+    EXPECT_GE(pbar, previous - kMonotone) << "a greedy step lowered p-bar_min";
+    EXPECT_LE(pbar, step["ceiling"].get<double>() + kMonotone) << "above the ceiling (note 4)";
+    EXPECT_NEAR(step["ceiling"].get<double>(), ceiling(step["n_vectors"].get<int>()), 1e-15);
+    EXPECT_EQ(step["added"].size(), 3u);
+    EXPECT_GE(step["worst_viewpoints"].size(), 1u);
+    previous = pbar;
+  }
+  EXPECT_DOUBLE_EQ(json["final_pbar_min"].get<double>(), previous);
+}
+
+TEST(DesignCli, TriadPlusOneVectorStaysAtSqrtTwoThirds) {
+  ScratchDir scratch;
+  const auto json = run_json("design '" + kTriad + "' --add 1", scratch);
+  expect_contract(json, 1);
+  EXPECT_EQ(json["status"], "ok");
+  EXPECT_NEAR(json["initial"]["pbar_min"].get<double>(), kTriadPbar, kSameLayout);
+  EXPECT_EQ(json["initial"]["worst_viewpoints"].size(), 4u);  // (+-1, +-1, 1) / sqrt(3)
+  EXPECT_EQ(json["initial"]["n_vectors"], 3);
+  EXPECT_NEAR(json["final_pbar_min"].get<double>(), kTriadPbar, kSameLayout);
+  const auto& step = json["steps"][0];
+  EXPECT_FALSE(step["improved"].get<bool>());
+  EXPECT_FALSE(step["single_vector_can_improve"].get<bool>());
+  EXPECT_THAT(step["note"].get<std::string>(), HasSubstr("no single vector can raise"));
+  EXPECT_EQ(step["n_vectors"], 4);
+  // The direct optimiser cannot beat what no single vector can do.
+  ASSERT_TRUE(json.contains("direct"));
+  EXPECT_LE(json["direct"]["pbar_min"].get<double>(), kTriadPbar + kSameLayout);
+  EXPECT_EQ(json["direct"]["added"].size(), 1u);
+  EXPECT_TRUE(json["direct"].contains("method"));
+}
+
+TEST(DesignCli, CoplanarFanStartsAtItsCeilingAndIsFlagged) {
+  ScratchDir scratch;
+  const auto json = run_json("design '" + kFan + "' --add 2 --no-direct", scratch);
+  expect_contract(json, 2);
+  EXPECT_FALSE(json.contains("direct"));
+  // Three coplanar vectors 60 degrees apart reach cos(pi/6), the ceiling for m = 3.
+  EXPECT_NEAR(json["initial"]["pbar_min"].get<double>(), ceiling(3), kSameLayout);
+  EXPECT_NEAR(json["initial"]["ceiling"].get<double>(), ceiling(3), 1e-15);
+  EXPECT_LT(json["coplanarity"]["initial"].get<double>(), 1e-12);
+  // The augmenter leaves the plane: the ambiguity measure rises off zero.
+  EXPECT_GT(json["coplanarity"]["final"].get<double>(), 0.1);
+  EXPECT_FALSE(json["coplanarity"]["nearly_coplanar"].get<bool>());
+  // The fan sits at its ceiling, so the first addition (off the plane) can and does raise it.
+  EXPECT_TRUE(json["steps"][0]["improved"].get<bool>());
+  EXPECT_GT(json["steps"][0]["pbar_min"].get<double>(), ceiling(3));
+  // Every step improves, or sits at its ceiling, or says (exactly) that no vector could.
+  for (const auto& step : json["steps"]) {
+    const bool at_ceiling = step["pbar_min"].get<double>() >= step["ceiling"].get<double>() - 1e-9;
+    const bool proven_stuck = !step["single_vector_can_improve"].get<bool>();
+    EXPECT_TRUE(step["improved"].get<bool>() || at_ceiling || proven_stuck) << step.dump();
+    if (proven_stuck) {
+      EXPECT_THAT(step["note"].get<std::string>(), HasSubstr("no single vector can raise"));
+    }
+  }
+}
+
+TEST(DesignCli, GreedyStepsNeverLowerPbarAndStayBelowTheCeiling) {
+  ScratchDir scratch;
+  const auto json = run_json("design '" + kNote3 + "' --add 3 --no-direct", scratch);
+  expect_contract(json, 3);
+  EXPECT_GT(json["final_pbar_min"].get<double>(), json["initial"]["pbar_min"].get<double>());
+}
+
+TEST(DesignCli, WrittenLayoutReanalysesToEveryReportedStep) {
+  ScratchDir scratch;
+  const auto two =
+      run_json("design '" + kNote3 + "' --add 2 --no-direct --write two.json", scratch);
+  const auto one =
+      run_json("design '" + kNote3 + "' --add 1 --no-direct --write one.json", scratch);
+  EXPECT_EQ(two["written"], "two.json");
+  const auto file = nlohmann::json::parse(testing::read_file(scratch.path("two.json")));
+  ASSERT_EQ(file["vectors"].size(), 6u);
+  for (int j = 0; j < 3; ++j) {
+    EXPECT_DOUBLE_EQ(file["vectors"][4][j].get<double>(),
+                     two["steps"][0]["added"][j].get<double>());
+  }
+  // The greedy run is deterministic, so the K = 1 file holds step 1 of the K = 2 run.
+  const auto again_two = run_json("design two.json --add 1 --no-direct", scratch);
+  const auto again_one = run_json("design one.json --add 1 --no-direct", scratch);
+  EXPECT_NEAR(again_two["initial"]["pbar_min"].get<double>(), two["final_pbar_min"].get<double>(),
+              kSameLayout);
+  EXPECT_NEAR(again_one["initial"]["pbar_min"].get<double>(),
+              two["steps"][0]["pbar_min"].get<double>(), kSameLayout);
+  EXPECT_NEAR(again_two["initial"]["max_worst_case_error_deg"].get<double>(),
+              two["steps"][1]["max_worst_case_error_deg"].get<double>(), 1e-6);
+}
+
+TEST(DesignCli, CandidatesOnlyPicksACandidateAndWritesItAsAMarker) {
+  ScratchDir scratch;
+  const auto json =
+      run_json("design '" + kSatellite + "' --add 1 --candidates-only --no-direct --write out.json",
+               scratch);
+  expect_contract(json, 1);
+  EXPECT_EQ(json["mode"], "points");
+  const auto& step = json["steps"][0];
+  ASSERT_TRUE(step.contains("candidate_index"));
+  const auto layout = nlohmann::json::parse(testing::read_file(kSatellite));
+  const int c = step["candidate_index"].get<int>();
+  EXPECT_EQ(step["added"], layout["candidates"][c]);
+  const auto file = nlohmann::json::parse(testing::read_file(scratch.path("out.json")));
+  ASSERT_EQ(file["points"].size(), layout["points"].size() + 1);
+  EXPECT_EQ(file["points"].back(), layout["candidates"][c]);
+  // The used candidate is a marker now, not a place for another one.
+  EXPECT_EQ(file["candidates"].size(), layout["candidates"].size() - 1);
+  const auto again = run_json("design out.json --add 1 --candidates-only --no-direct", scratch);
+  EXPECT_NEAR(again["initial"]["pbar_min"].get<double>(), json["final_pbar_min"].get<double>(),
+              kSameLayout);
+}
+
+TEST(DesignCli, WriteRefusesToOverwriteUnlessTold) {
+  ScratchDir scratch;
+  const std::string original = testing::read_file(kTriad);
+  const std::string input = scratch.write("in.json", original);
+  scratch.write("taken.json", "keep me");
+
+  auto run = run_vantage("design in.json --add 1 --no-direct --write taken.json", scratch);
+  EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(run.out, "");
+  EXPECT_EQ(testing::line_count(run.err), 1) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("exists already"));
+  EXPECT_EQ(testing::read_file(scratch.path("taken.json")), "keep me");
+
+  run = run_vantage("design in.json --add 1 --no-direct --write in.json", scratch);
+  EXPECT_EQ(run.status, 2);
+  EXPECT_THAT(run.err, HasSubstr("is the input layout"));
+  EXPECT_EQ(testing::read_file(input), original);
+
+  run = run_vantage("design in.json --add 1 --no-direct --write taken.json --overwrite", scratch);
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(nlohmann::json::parse(testing::read_file(scratch.path("taken.json")))["vectors"].size(),
+            4u);
+  EXPECT_THAT(run.out, HasSubstr("written: taken.json"));
+}
+
+TEST(DesignCli, ReadableReportHasTheStepTable) {
+  ScratchDir scratch;
+  const auto run = run_vantage("design '" + kTriad + "' --add 1 --no-direct", scratch);
+  ASSERT_EQ(run.status, 0) << run.err;
+  for (const char* text : {"step", "added", "pbar_min", "max err deg", "ceiling", "note",
+                           "0.816497", "0.923880", "no single vector can raise", "coplanarity"}) {
+    EXPECT_THAT(run.out, HasSubstr(text));
+  }
+}
+
+TEST(DesignCli, HelpExitsZero) {
+  ScratchDir scratch;
+  const auto run = run_vantage("design --help", scratch);
+  EXPECT_EQ(run.status, 0);
+  for (const char* option : {"--add", "--candidates-only", "--margin", "--no-direct", "--write",
+                             "--overwrite", "--json"}) {
+    EXPECT_THAT(run.out, HasSubstr(option));
+  }
+}
+
+struct BadCall {
+  const char* name;
+  const char* file_text;  // written to in.json; nullptr: no file
+  const char* args;       // after "design"; every call also asks for --write out.json
+  const char* expected;
+};
+
+class DesignCliBadInput : public ::testing::TestWithParam<BadCall> {};
+
+TEST_P(DesignCliBadInput, OneErrorLineExitTwoNothingWritten) {
+  ScratchDir scratch;
+  if (GetParam().file_text) scratch.write("in.json", GetParam().file_text);
+  const auto run = run_vantage(std::string("design ") + GetParam().args, scratch);
+  EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(run.out, "");
+  EXPECT_EQ(testing::line_count(run.err), 1) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("vantage: error: "));
+  EXPECT_THAT(run.err, HasSubstr(GetParam().expected));
+  EXPECT_FALSE(std::filesystem::exists(scratch.path("out.json")));
+}
+
+constexpr const char* kTriadText = R"({"vectors": [[1,0,0],[0,1,0],[0,0,1]]})";
+constexpr const char* kPointsWithCandidates =
+    R"({"points": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]], "candidates": [[1,1,1],[1,0,0]]})";
+
+const BadCall kBadCalls[] = {
+    {"NoLayout", nullptr, "--add 1 --write out.json", "LAYOUT is required"},
+    {"MissingFile", nullptr, "in.json --add 1 --write out.json", "in.json: cannot open file"},
+    {"NotJson", "{", "in.json --add 1 --write out.json --json", "in.json: not valid JSON"},
+    {"OneVector", R"({"vectors": [[1,0,0]]})", "in.json --add 1 --write out.json", "vectors"},
+    {"ZeroVector", R"({"vectors": [[1,0,0],[0,0,0]]})", "in.json --add 1 --write out.json",
+     "vectors[1]"},
+    {"NoAdd", kTriadText, "in.json --write out.json", "--add is required"},
+    {"AddZero", kTriadText, "in.json --add 0 --write out.json", "--add: must be >= 1"},
+    {"AddNegative", kTriadText, "in.json --add -2 --write out.json", "--add"},
+    {"AddNotANumber", kTriadText, "in.json --add two --write out.json", "--add"},
+    {"NegativeMargin", kTriadText, "in.json --add 1 --margin -0.5 --write out.json",
+     "--margin: must be finite and >= 0"},
+    {"CandidatesOnlyWithoutCandidates", kTriadText,
+     "in.json --add 1 --candidates-only --write out.json", "in.json has no \"candidates\""},
+    {"MoreThanTheCandidates", kPointsWithCandidates,
+     "in.json --add 3 --candidates-only --write out.json", "exceeds the 2 candidates"},
+    {"CandidateOnAMarker", kPointsWithCandidates,
+     "in.json --add 1 --candidates-only --write out.json",
+     "candidates[1]: coincides with points[1]"},
+    {"OverwriteWithoutWrite", kTriadText, "in.json --add 1 --overwrite", "--overwrite"},
+    {"WriteIntoMissingDirectory", kTriadText, "in.json --add 1 --write nowhere/out.json",
+     "does not exist"},
+};
+
+INSTANTIATE_TEST_SUITE_P(DesignCli, DesignCliBadInput, ::testing::ValuesIn(kBadCalls),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace vantage
