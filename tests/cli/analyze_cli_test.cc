@@ -138,5 +138,22 @@ TEST(AnalyzeCli, MissingFileAndBadOptions) {
   EXPECT_EQ(testing::line_count(run.err), 1);
 }
 
+TEST(AnalyzeCli, AgreesWithDesignOnTheWrittenLayout) {
+  // Issue 4: every p-bar_min that `design` reports agrees with `analyze` on the written layout.
+  ScratchDir scratch;
+  for (const char* name : {"coplanar_fan", "note3_four_vectors"}) {
+    const auto design = run_vantage(
+        "design " + layout(name) + " --add 2 --no-direct --write out.json --overwrite --json",
+        scratch);
+    ASSERT_EQ(design.status, 0) << design.err;
+    const auto designed = nlohmann::json::parse(design.out);
+    const auto analyzed = analyze_json("out.json --no-crosscheck", scratch);
+    EXPECT_NEAR(analyzed["pbar_min"].get<double>(), designed["final_pbar_min"].get<double>(),
+                kClosedForm)
+        << name;
+    EXPECT_EQ(analyzed["n_vectors"].get<int>(), designed["steps"].back()["n_vectors"].get<int>());
+  }
+}
+
 }  // namespace
 }  // namespace vantage

@@ -1,11 +1,16 @@
-// Theorem 1 through the installed library: rotate a few vectors by a known rotation, scale them,
-// and check that absolute_orientation() recovers rotation and scale. Exit status 0 only then.
+// The installed library used the way a user would: Theorem 1 recovers a known rotation and scale
+// (vantage::analysis), and the global worst viewpoint of the orthogonal triad is p-bar_min =
+// sqrt(2/3) (vantage::sdp, so CSDP and NLopt resolve through the package config). Exit status 0
+// only when both hold.
 
 #include <cmath>
 #include <cstdio>
 
 #include "vantage/analysis/absolute_orientation.h"
 #include "vantage/analysis/quaternion.h"
+#include "vantage/design/weights.h"
+#include "vantage/io/layout_file.h"
+#include "vantage/sdp/worst_viewpoint.h"
 
 int main() {
   // Noise-free data: the solver must return the truth up to rounding.
@@ -24,7 +29,18 @@ int main() {
   const double error = vantage::rotation_angle_between(result.R_camera_object, R_true);
   std::printf("status %s, rotation error %.3g rad, alpha %.12g (true %.12g)\n",
               vantage::to_string(result.status), error, result.alpha, alpha_true);
-  const bool ok = result.status == vantage::OrientationStatus::kOk && error < kToleranceRadians &&
-                  std::abs(result.alpha - alpha_true) < kToleranceRadians * alpha_true;
-  return ok ? 0 : 1;
+  const bool orientation_ok = result.status == vantage::OrientationStatus::kOk &&
+                              error < kToleranceRadians &&
+                              std::abs(result.alpha - alpha_true) < kToleranceRadians * alpha_true;
+
+  const vantage::Layout triad = vantage::io::parse_layout(
+      R"({"name": "triad", "vectors": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]})", "consumer");
+  const vantage::sdp::WorstViewpoint worst =
+      vantage::sdp::global_worst_viewpoint(vantage::data_vectors(triad).vectors);
+  const vantage::design::Weights weights = vantage::design::layout_weights(triad);
+  std::printf("triad: pbar_min %.12g with %zu worst viewpoints; weights feasible: %s\n", worst.pbar,
+              worst.viewpoints.size(), weights.feasible ? "yes" : "no");
+  const bool worst_ok = std::abs(worst.pbar - std::sqrt(2.0 / 3.0)) < kToleranceRadians &&
+                        worst.viewpoints.size() == 4 && !weights.feasible;
+  return orientation_ok && worst_ok ? 0 : 1;
 }
