@@ -9,6 +9,7 @@
 #include "command.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/layout.h"
+#include "vantage/design/augment.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/sdp/layout_analysis.h"
 
@@ -45,10 +46,10 @@ int run_analyze(const AnalyzeArgs& args) {
   sdp::LayoutAnalysisOptions options;
   options.swap_count = args.swaps;
   options.run_crosscheck = args.crosscheck;
-  const sdp::LayoutAnalysis report = sdp::analyze_vectors(data.vectors, data.weights, options);
+  const sdp::LayoutAnalysis report = against_source(
+      args.file, [&] { return sdp::analyze_vectors(data.vectors, data.weights, options); });
   const long m = data.vectors.cols();
-  // DESIGN.md note 4: no layout of m vectors has p-bar_min above cos(pi / (2m)).
-  const double ceiling = std::cos(M_PI / (2.0 * static_cast<double>(m)));
+  const double ceiling = design::pbar_ceiling(static_cast<int>(m));
   const bool trusted =
       report.solver.status == "certified" && (!args.crosscheck || report.crosscheck.agrees);
 
@@ -76,7 +77,7 @@ int run_analyze(const AnalyzeArgs& args) {
                          {"agrees", report.crosscheck.agrees}};
     Json swaps = Json::array();
     for (const SwapError& s : report.swaps) {
-      Json swap = {{"i", s.i}, {"j", s.j}, {"error_deg", s.error_deg}};
+      Json swap = {{"i", s.i}, {"j", s.j}, {"error_deg", s.error_deg}, {"ambiguous", s.ambiguous}};
       if (!data.pairs.empty()) {
         swap["pair_i"] = {data.pairs[s.i].first, data.pairs[s.i].second};
         swap["pair_j"] = {data.pairs[s.j].first, data.pairs[s.j].second};
@@ -123,7 +124,8 @@ int run_analyze(const AnalyzeArgs& args) {
     std::cout << "\nswap sensitivity (Prop. 2), worst pairs:\n";
     for (const SwapError& s : report.swaps) {
       std::cout << "  " << vector_label(data, s.i) << " <-> " << vector_label(data, s.j) << "  "
-                << format_number(s.error_deg, 6) << " deg\n";
+                << format_number(s.error_deg, 6) << " deg"
+                << (s.ambiguous ? "  (ambiguous: the swapped optimum is not unique)" : "") << "\n";
     }
   }
   if (!trusted) {

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "vantage/analysis/absolute_orientation.h"
+#include "vantage/analysis/common.h"
 
 namespace vantage::cli {
 
@@ -36,6 +37,21 @@ Command add_pose_command(CLI::App& root);
 
 /// "qmethod" | "svd" | "foam" (already checked by CLI11) to the enum.
 OrientationMethod parse_orientation_method(const std::string& name);
+
+/// Throws InvalidArgument "<source>: <message>", with the library's argument names replaced by
+/// the file's field names (model_object -> model), so that every error names the file.
+[[noreturn]] void rethrow_against(const std::string& source, const std::exception& error);
+
+/// Runs a library call on data read from `source`; its InvalidArgument (too few points,
+/// coincident points, ...) is reported against the file.
+template <typename Call>
+auto against_source(const std::string& source, Call&& call) {
+  try {
+    return call();
+  } catch (const InvalidArgument& e) {
+    rethrow_against(source, e);
+  }
+}
 
 /// A matrix as nested JSON rows ([[..], [..]]), a vector as a flat list.
 Json json_rows(const Eigen::MatrixXd& m);

@@ -289,7 +289,8 @@ int run_design(const DesignArgs& args) {
   options.candidates_only = args.candidates_only;
   options.margin = args.margin;
   options.run_direct = args.direct;
-  const design::AugmentResult r = design::augment_layout(layout, options);
+  const design::AugmentResult r =
+      against_source(args.file, [&] { return design::augment_layout(layout, options); });
 
   const bool ok = r.status == design::AugmentResult::Status::kOk;
   if (ok && !args.write.empty()) io::write_layout(args.write, layout_to_write(r), args.overwrite);

@@ -18,6 +18,13 @@ OrientationMethod parse_orientation_method(const std::string& name) {
 
 namespace {
 
+/// 0 for a unique pose; 1 (with the reason on stderr) when the data do not determine it.
+int exit_status(const PoseResult& pose) {
+  if (pose.status == OrientationStatus::kOk) return kExitOk;
+  std::cerr << "vantage: orient: " << to_string(pose.status) << ": " << pose.message << std::endl;
+  return kExitFailure;
+}
+
 struct OrientArgs {
   std::string file;
   std::string method = "qmethod";
@@ -29,7 +36,8 @@ int run_orient(const OrientArgs& args) {
   file.require({"model", "measured"}, "vantage orient");
   OrientationOptions options;
   options.method = parse_orientation_method(args.method);
-  const PoseResult pose = absolute_pose(file.model, file.measured, file.weights, options);
+  const PoseResult pose = against_source(
+      file.source, [&] { return absolute_pose(file.model, file.measured, file.weights, options); });
 
   if (args.json) {
     Json out;
@@ -43,7 +51,7 @@ int run_orient(const OrientArgs& args) {
     out["status"] = to_string(pose.status);
     if (!pose.message.empty()) out["message"] = pose.message;
     print_json(out);
-    return kExitOk;
+    return exit_status(pose);
   }
   std::cout << "vantage orient: " << file.model.cols() << " correspondences from " << args.file
             << ", method " << to_string(options.method) << "\n"
@@ -57,7 +65,7 @@ int run_orient(const OrientArgs& args) {
             << "residual   " << format_number(pose.residual) << "  (weighted sum of squares)\n"
             << "eigen gap  " << format_number(pose.eigen_gap)
             << "  (lambda1 - lambda2 of D: conditioning)\n";
-  return kExitOk;
+  return exit_status(pose);
 }
 
 }  // namespace

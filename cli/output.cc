@@ -6,6 +6,16 @@
 
 namespace vantage::cli {
 
+void rethrow_against(const std::string& source, const std::exception& error) {
+  std::string message = error.what();
+  const std::string library_name = "model_object";
+  for (auto at = message.find(library_name); at != std::string::npos;
+       at = message.find(library_name, at)) {
+    message.replace(at, library_name.size(), "model");
+  }
+  throw InvalidArgument(source + ": " + message);
+}
+
 Json json_rows(const Eigen::MatrixXd& m) {
   Json rows = Json::array();
   for (Eigen::Index i = 0; i < m.rows(); ++i) {

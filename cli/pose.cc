@@ -45,21 +45,10 @@ Json json_number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); 
 
 std::string purpose(const PoseArgs& args) { return "vantage pose --method " + args.method; }
 
-/// Runs a library call; its InvalidArgument (too few points, coincident points, ...) is reported
-/// against the file, with the library's argument names replaced by the file's field names.
+/// Runs a library call; its InvalidArgument is reported against the file.
 template <typename Call>
 auto against_file(const io::CorrespondenceFile& file, Call&& call) {
-  try {
-    return call();
-  } catch (const InvalidArgument& e) {
-    std::string message = e.what();
-    const std::string library_name = "model_object";
-    for (auto at = message.find(library_name); at != std::string::npos;
-         at = message.find(library_name, at)) {
-      message.replace(at, library_name.size(), "model");
-    }
-    throw InvalidArgument(file.source + ": " + message);
-  }
+  return against_source(file.source, std::forward<Call>(call));
 }
 
 void reject_weights(const io::CorrespondenceFile& file, const PoseArgs& args) {

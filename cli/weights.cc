@@ -35,7 +35,8 @@ Json suggestion_json(const design::WeightsSuggestion& s) {
 
 int run_weights(const WeightsArgs& args) {
   const Layout layout = io::read_layout(args.file);
-  const design::Weights w = design::layout_weights(layout);
+  const design::Weights w =
+      against_source(args.file, [&] { return design::layout_weights(layout); });
   const bool solved = w.status != design::Weights::Status::kSolverFailed;
 
   if (args.json) {

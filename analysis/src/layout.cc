@@ -21,22 +21,49 @@ namespace {
 
 }  // namespace
 
+namespace {
+
+/// Checks a direction: finite, non-zero, and of a length that normalises without under- or
+/// overflow.
+void check_direction(const Eigen::Vector3d& v, const std::string& field, Eigen::Index i) {
+  if (!v.allFinite()) fail(field, i, "not a finite number");
+  const double length = v.stableNorm();
+  if (length == 0.0) fail(field, i, "zero-length vector");
+  if (length < Layout::kMinLength || length > Layout::kMaxLength) {
+    fail(field, i, "length outside [1e-150, 1e150], cannot be normalised safely");
+  }
+}
+
+void check_point(const Eigen::Vector3d& p, const std::string& field, Eigen::Index i) {
+  if (!p.allFinite()) fail(field, i, "not a finite number");
+  if (p.lpNorm<Eigen::Infinity>() > Layout::kMaxLength) {
+    fail(field, i, "coordinates beyond +-1e150");
+  }
+}
+
+}  // namespace
+
 void Layout::validate() const {
   const std::string field = entries_field();
   const Eigen::Index n = entries.cols();
-  if (n < 2) {
-    throw InvalidArgument(field + ": need at least 2 entries, got " + std::to_string(n));
+  const bool points = mode == LayoutMode::kPoints;
+  if (n < (points ? 3 : 2)) {
+    throw InvalidArgument(field +
+                          (points ? ": need at least 3 points (2 free vectors), got "
+                                  : ": need at least 2 vectors, got ") +
+                          std::to_string(n));
   }
   for (Eigen::Index i = 0; i < n; ++i) {
-    if (!entries.col(i).allFinite()) fail(field, i, "not a finite number");
-    if (mode == LayoutMode::kVectors && !(entries.col(i).norm() > 0.0)) {
-      fail(field, i, "zero-length vector");
+    if (points) {
+      check_point(entries.col(i), field, i);
+    } else {
+      check_direction(entries.col(i), field, i);
     }
   }
-  if (mode == LayoutMode::kPoints) {
+  if (points) {
     for (Eigen::Index j = 1; j < n; ++j) {
       for (Eigen::Index i = 0; i < j; ++i) {
-        if (entries.col(i) == entries.col(j)) {
+        if ((entries.col(j) - entries.col(i)).stableNorm() < kMinLength) {
           fail(field, j, "coincides with " + field + "[" + std::to_string(i) + "]");
         }
       }
@@ -50,11 +77,13 @@ void Layout::validate() const {
   for (Eigen::Index i = 0; i < n; ++i) {
     if (!std::isfinite(weights(i))) fail("weights", i, "not a finite number");
     if (!(weights(i) > 0.0)) fail("weights", i, "must be > 0");
+    if (weights(i) > kMaxWeight) fail("weights", i, "must be <= 1e100");
   }
   for (Eigen::Index i = 0; i < candidates.cols(); ++i) {
-    if (!candidates.col(i).allFinite()) fail("candidates", i, "not a finite number");
-    if (mode == LayoutMode::kVectors && !(candidates.col(i).norm() > 0.0)) {
-      fail("candidates", i, "zero-length vector");
+    if (points) {
+      check_point(candidates.col(i), "candidates", i);
+    } else {
+      check_direction(candidates.col(i), "candidates", i);
     }
   }
 }
@@ -77,8 +106,8 @@ DataVectors data_vectors(const Layout& layout, PairWeighting weighting) {
     for (int j = i + 1; j < n; ++j, ++k) {
       out.vectors.col(k) = layout.entries.col(j) - layout.entries.col(i);
       const double wi = layout.weights(i), wj = layout.weights(j);
-      out.weights(k) =
-          weighting == PairWeighting::kGeometricMean ? std::sqrt(wi * wj) : 0.5 * (wi + wj);
+      out.weights(k) = weighting == PairWeighting::kGeometricMean ? std::sqrt(wi) * std::sqrt(wj)
+                                                                  : 0.5 * (wi + wj);
       out.pairs.emplace_back(i, j);
     }
   }

@@ -33,8 +33,15 @@ std::vector<SwapError> swap_sensitivity(const Eigen::Matrix3Xd& z, const Eigen::
     for (Eigen::Index j = i + 1; j < m; ++j) {
       const Eigen::Matrix4d swapped =
           D + swap_delta_d(z.col(i), z.col(j), z.col(i), z.col(j), w(i), w(j));
-      const double angle = rotation_angle_between(rotation_from_d(swapped), identity);
-      all.push_back({static_cast<int>(i), static_cast<int>(j), angle * 180.0 / M_PI});
+      const TopEigenpair top = top_eigenpair(swapped);
+      if (!(top.gap > kSwapAmbiguousGap * swapped.norm())) {
+        // A repeated top eigenvalue: the optima form a subspace of dimension >= 2 of unit
+        // quaternions, which always holds one with eps4 = 0, a half turn.
+        all.push_back({static_cast<int>(i), static_cast<int>(j), 180.0, true});
+        continue;
+      }
+      const double angle = rotation_angle_between(rotation_from_quaternion(top.vector), identity);
+      all.push_back({static_cast<int>(i), static_cast<int>(j), angle * 180.0 / M_PI, false});
     }
   }
   const size_t keep = std::min(all.size(), static_cast<size_t>(count));

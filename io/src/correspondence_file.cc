@@ -34,6 +34,9 @@ CorrespondenceFile parse_correspondences(std::string_view text, const std::strin
   internal::reject_unknown_fields(
       root, source,
       {"name", "description", "model", "measured", "image", "image1", "image2", "weights"});
+  for (const char* text_field : {"name", "description"}) {
+    if (root.contains(text_field)) internal::read_string(root[text_field], source, text_field);
+  }
   CorrespondenceFile file;
   file.source = source;
   auto read3 = [&](const char* field, Eigen::Matrix3Xd* out, bool* has) {

@@ -63,7 +63,9 @@ Eigen::Matrix<double, Rows, Eigen::Dynamic> read_vectors(const nlohmann::json& v
                        (item.is_array() ? std::to_string(item.size())
                                         : std::string("a ") + item.type_name()));
     }
-    for (int i = 0; i < Rows; ++i) out(i, j) = read_number(item[i], source, where);
+    for (int i = 0; i < Rows; ++i) {
+      out(i, j) = read_number(item[i], source, where + "[" + std::to_string(i) + "]");
+    }
   }
   return out;
 }

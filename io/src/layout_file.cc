@@ -36,6 +36,9 @@ Layout parse_layout(std::string_view text, const std::string& source) {
   layout.mode = has_points ? LayoutMode::kPoints : LayoutMode::kVectors;
   const char* field = layout.entries_field();
   layout.name = root.contains("name") ? internal::read_string(root["name"], source, "name") : "";
+  layout.description = root.contains("description")
+                           ? internal::read_string(root["description"], source, "description")
+                           : "";
   layout.entries = internal::read_vectors<3>(root[field], source, field);
   layout.weights = root.contains("weights")
                        ? internal::read_numbers(root["weights"], source, "weights")
@@ -61,6 +64,7 @@ std::string layout_to_json(const Layout& layout) {
   };
   nlohmann::ordered_json out;
   out["name"] = layout.name;
+  if (!layout.description.empty()) out["description"] = layout.description;
   out[layout.entries_field()] = rows(layout.entries);
   out["weights"] =
       std::vector<double>(layout.weights.data(), layout.weights.data() + layout.weights.size());

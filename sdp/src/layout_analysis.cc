@@ -36,7 +36,12 @@ LayoutAnalysis analyze_vectors(const Eigen::Matrix3Xd& vectors, const Eigen::Vec
   report.t = global.t;
   report.pbar_min = global.pbar;
   report.worst_case_errors_deg = worst_case_errors_deg(vectors, global.viewpoint);
+  // With tied worst viewpoints the bound is the largest over all of them (design reports the same).
   report.max_worst_case_error_deg = report.worst_case_errors_deg.maxCoeff();
+  for (const Eigen::Vector3d& a : global.viewpoints) {
+    report.max_worst_case_error_deg =
+        std::max(report.max_worst_case_error_deg, worst_case_errors_deg(vectors, a).maxCoeff());
+  }
   report.certificate = {global.t_upper, global.t_lower,
                         global.status != WorstViewpoint::Status::kNotCertified};
   report.solver.backend = to_string(wv.sdp.backend);

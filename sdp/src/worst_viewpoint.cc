@@ -362,15 +362,21 @@ CellViewpoint solve_cell_lmi(const Eigen::Matrix3Xd& vectors, const Eigen::Vecto
         std::string("cell LMI: ") + to_string(result.sdp.status) + ": " + result.sdp.message;
     return result;
   }
-  result.t = result.sdp.y(3);
-  result.pbar = pbar_from_t(result.t);
+  // The SDP's t is accurate to its tolerance only; report what the normalised viewpoint attains
+  // in the cell, min_i s_i a.n_i, so that t never exceeds a value some viewpoint achieves.
   const Eigen::Vector3d a = result.sdp.y.head<3>();
-  if (result.t <= CellViewpoint::kEmptyCellT || !(a.norm() > 0.0)) {
+  const double t_sdp = result.sdp.y(3);
+  if (t_sdp <= CellViewpoint::kEmptyCellT || !(a.norm() > 0.0)) {
+    result.t = t_sdp;
+    result.pbar = pbar_from_t(std::max(0.0, t_sdp));
     result.status = CellViewpoint::Status::kEmptyCell;
     result.message = "the sign cell is empty: 0 is in conv{s_i n_i}";
     return result;
   }
-  result.viewpoint = upper_hemisphere(a.normalized());
+  const Eigen::Vector3d unit_a = a.normalized();
+  result.t = (signs.asDiagonal() * (n.transpose() * unit_a)).minCoeff();
+  result.pbar = pbar_from_t(std::max(0.0, result.t));
+  result.viewpoint = upper_hemisphere(unit_a);
   result.status = CellViewpoint::Status::kOk;
   return result;
 }

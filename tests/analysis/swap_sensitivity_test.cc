@@ -39,6 +39,38 @@ TEST(SwapSensitivity, IncrementalEqualsRecomputedForAnyTrueRotation) {
   }
 }
 
+TEST(SwapSensitivity, TriadSwapsAreAmbiguous) {
+  // Z = I, swapping e1 and e2: D' = diag(-2 u u^T, 0) with u = e2 - e1 has the top eigenvalue 0
+  // three times (identity and two half turns are all optimal): worst case 180 degrees.
+  const std::vector<SwapError> swaps = swap_sensitivity(Eigen::Matrix3d::Identity(), {}, 3);
+  ASSERT_EQ(swaps.size(), 3u);
+  for (const SwapError& s : swaps) {
+    EXPECT_TRUE(s.ambiguous) << s.i << " " << s.j;
+    EXPECT_EQ(s.error_deg, 180.0);
+  }
+}
+
+TEST(SwapSensitivity, WellDeterminedSwapsLeaveTheRotation) {
+  // Many well-spread vectors: swapping two keeps R = I the unique optimum (error exactly 0).
+  std::mt19937 rng(kSeed + 3);
+  const Eigen::Matrix3Xd z = testing::random_points(rng, 12);
+  const std::vector<SwapError> swaps = swap_sensitivity(z, {}, 66);
+  int unchanged = 0;
+  for (const SwapError& s : swaps) {
+    if (!s.ambiguous && s.error_deg < 1e-6) ++unchanged;
+    if (!s.ambiguous) {
+      Eigen::Matrix3Xd v = z;
+      v.col(s.i) = z.col(s.j);
+      v.col(s.j) = z.col(s.i);
+      const OrientationResult direct = absolute_orientation(z, v);
+      EXPECT_NEAR(rotation_angle_between(direct.R_camera_object, Eigen::Matrix3d::Identity()) *
+                      180.0 / M_PI,
+                  s.error_deg, 1e-6);
+    }
+  }
+  EXPECT_GT(unchanged, 0);
+}
+
 TEST(SwapSensitivity, WorstFiveAndEdgeCases) {
   std::mt19937 rng(kSeed + 1);
   const Eigen::Matrix3Xd z = testing::random_points(rng, 8);

@@ -79,11 +79,24 @@ const BadCall kBadCalls[] = {
     {"BadMethod", R"({"model": [[0,0,0]], "measured": [[0,0,0]]})", "in.json --method nope",
      "--method"},
     {"CoincidentMeasured", R"({"model": [[0,0,0],[1,0,0]], "measured": [[1,1,1],[1,1,1]]})",
-     "in.json", "coincide"},
+     "in.json", "in.json: measured: all measured points coincide"},
 };
 
 INSTANTIATE_TEST_SUITE_P(OrientCli, OrientCliBadInput, ::testing::ValuesIn(kBadCalls),
                          [](const auto& info) { return std::string(info.param.name); });
+
+TEST(OrientCli, CollinearDataAreDegenerateExitOne) {
+  // Points on one line do not determine the rotation about it: the pose is printed with status
+  // "degenerate", the reason goes to stderr, exit 1.
+  ScratchDir scratch;
+  scratch.write("line.json",
+                R"({"model": [[0,0,0],[1,0,0],[2,0,0]], "measured": [[1,1,1],[2,1,1],[3,1,1]]})");
+  const auto run = run_vantage("orient line.json --json", scratch);
+  EXPECT_EQ(run.status, 1);
+  EXPECT_EQ(nlohmann::json::parse(run.out)["status"], "degenerate");
+  EXPECT_EQ(testing::line_count(run.err), 1) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("degenerate"));
+}
 
 TEST(Cli, UnknownSubcommandIsAUsageError) {
   ScratchDir scratch;

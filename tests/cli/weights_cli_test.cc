@@ -162,7 +162,8 @@ const BadCall kBadCalls[] = {
     {"MissingFile", nullptr, "in.json", "in.json: cannot open file"},
     {"NotJson", "[1,", "in.json --json", "in.json: not valid JSON"},
     {"CoincidentPoints", R"({"points": [[0,0,0],[1,0,0],[1,0,0]]})", "in.json", "points[2]"},
-    {"BadWeights", R"({"points": [[0,0,0],[1,0,0]], "weights": [1, -1]})", "in.json", "weights[1]"},
+    {"BadWeights", R"({"points": [[0,0,0],[1,0,0],[0,1,0]], "weights": [1, -1, 1]})", "in.json",
+     "weights[1]"},
 };
 
 INSTANTIATE_TEST_SUITE_P(WeightsCli, WeightsCliBadInput, ::testing::ValuesIn(kBadCalls),

@@ -51,7 +51,7 @@ const BadLayout kBadLayouts[] = {
     {"VectorsNotAList", R"({"vectors": 3})", "vectors: expected a list"},
     {"WrongArity", R"({"vectors": [[1,0,0],[0,1]]})", "vectors[1]: expected 3 numbers, got 2"},
     {"EntryNotAList", R"({"vectors": [[1,0,0], 5]})", "vectors[1]: expected 3 numbers"},
-    {"NotANumber", R"({"vectors": [[1,0,0],[0,"y",0]]})", "vectors[1]: expected a number"},
+    {"NotANumber", R"({"vectors": [[1,0,0],[0,"y",0]]})", "vectors[1][1]: expected a number"},
     // JSON has no NaN or Inf literals; a number beyond double range fails in the JSON reader.
     {"Overflow", R"({"vectors": [[1,0,0],[0,1e999,0]]})", "number overflow parsing '1e999'"},
     {"NaNLiteral", R"({"vectors": [[1,0,0],[0,NaN,0]]})", "not valid JSON"},
@@ -65,7 +65,7 @@ const BadLayout kBadLayouts[] = {
      "weights: expected 2 entries"},
     {"WeightZero", R"({"vectors": [[1,0,0],[0,1,0]], "weights": [1, 0]})",
      "weights[1]: must be > 0"},
-    {"WeightNegative", R"({"points": [[1,0,0],[0,1,0]], "weights": [-1, 1]})",
+    {"WeightNegative", R"({"points": [[1,0,0],[0,1,0],[0,0,1]], "weights": [-1, 1, 1]})",
      "weights[0]: must be > 0"},
     {"WeightNotNumber", R"({"vectors": [[1,0,0],[0,1,0]], "weights": [1, null]})",
      "weights[1]: expected a number"},
@@ -74,6 +74,16 @@ const BadLayout kBadLayouts[] = {
     {"CandidateZero", R"({"vectors": [[1,0,0],[0,1,0]], "candidates": [[0,0,0]]})",
      "candidates[0]: zero-length"},
     {"NameNotString", R"({"name": 3, "vectors": [[1,0,0],[0,1,0]]})", "name: expected a string"},
+    {"DescriptionNotString", R"({"description": [], "vectors": [[1,0,0],[0,1,0]]})",
+     "description: expected a string"},
+    {"TwoPoints", R"({"points": [[0,0,0],[1,0,0]]})", "points: need at least 3 points"},
+    {"NearlyCoincidentPoints", R"({"points": [[0,0,0],[1,0,0],[1e-200,0,0]]})",
+     "points[2]: coincides with points[0]"},
+    {"HugePoint", R"({"points": [[1e308,0,0],[-1e308,0,0],[0,1,0]]})",
+     "points[0]: coordinates beyond"},
+    {"TinyVector", R"({"vectors": [[1,0,0],[1e-320,0,0]]})", "vectors[1]: length outside"},
+    {"HugeWeight", R"({"vectors": [[1,0,0],[0,1,0]], "weights": [1e200, 1]})",
+     "weights[0]: must be <= 1e100"},
 };
 
 INSTANTIATE_TEST_SUITE_P(LayoutFile, BadLayoutFile, ::testing::ValuesIn(kBadLayouts),
@@ -105,11 +115,13 @@ TEST(LayoutFile, PointModeExpandsToWeightedFreeVectors) {
 
 TEST(LayoutFile, RoundTripsThroughWrite) {
   const Layout layout = parse_layout(
-      R"({"name": "rt", "points": [[0,0,0],[1,0.5,0],[0,2,-1]], "weights": [1, 2, 3],
+      R"({"name": "rt", "description": "round trip", "points": [[0,0,0],[1,0.5,0],[0,2,-1]],
+          "weights": [1, 2, 3],
           "candidates": [[0.25, 0.5, 0.75]]})",
       "t.json");
   const Layout again = parse_layout(layout_to_json(layout), "again.json");
   EXPECT_EQ(again.name, "rt");
+  EXPECT_EQ(again.description, "round trip");
   EXPECT_EQ(again.mode, LayoutMode::kPoints);
   EXPECT_EIGEN_NEAR(again.entries, layout.entries, 0.0);
   EXPECT_EIGEN_NEAR(again.weights, layout.weights, 0.0);

@@ -30,15 +30,22 @@ enum class PairWeighting {
 
 /// A layout in the object frame.
 struct Layout {
+  static constexpr double kMinLength = 1e-150;  ///< squares of lengths stay normal doubles
+  static constexpr double kMaxLength = 1e150;   ///< squares and differences stay finite
+  static constexpr double kMaxWeight = 1e100;   ///< weighted sums of squares stay finite
+
   std::string name;
+  std::string description;  ///< free text, kept when the layout is written back
   LayoutMode mode = LayoutMode::kVectors;
   Eigen::Matrix3Xd entries;     ///< one vector (direction mode) or point (point mode) per column
   Eigen::VectorXd weights;      ///< one positive weight per entry
   Eigen::Matrix3Xd candidates;  ///< allowed additions for design (may have zero columns)
 
   /// Throws InvalidArgument naming the field and index of the first violation: fewer than 2
-  /// entries, non-finite values, a zero-length vector (direction mode), coincident points
-  /// (point mode), weights of the wrong length, non-finite or <= 0, non-finite candidates.
+  /// vectors or 3 points (point mode needs at least 2 free vectors), non-finite values, a vector
+  /// whose length is 0 or outside [kMinLength, kMaxLength] (so it normalises safely), point
+  /// coordinates beyond kMaxLength, coincident points (a free vector shorter than kMinLength),
+  /// weights of the wrong length, non-finite, <= 0 or above kMaxWeight, bad candidates.
   /// Field names are those of the file format: "vectors", "points", "weights", "candidates".
   void validate() const;
 
