@@ -18,6 +18,11 @@ constexpr double kCrossingSlack = 1e-15;
 constexpr double kCellExact = 1e-12;
 // Viewpoints closer than this (1 - |a.b|) are the same optimum.
 constexpr double kSameViewpoint = 1e-9;
+// Attained values this close to the best are equal up to rounding (each is min_i |a.n_i|, dot
+// products of unit vectors accurate to a few ulps): among them the reported viewpoint is the
+// lexicographically first, so exactly symmetric layouts give a canonical answer. Far below any
+// certificate_tolerance, and the only slack allowed between t_lower and the best attained value.
+constexpr double kSameValue = 1e-14;
 // Patches with an angular radius below this are not subdivided further.
 constexpr double kMinPatchRadius = 1e-11;
 // Initial grid per cube face (kGrid x kGrid patches).
@@ -428,9 +433,21 @@ WorstViewpoint global_worst_viewpoint(const Eigen::Matrix3Xd& vectors,
   WorstViewpoint result;
   std::vector<Candidate> optima = search.optima();
   VANTAGE_CHECK(!optima.empty(), "the branch and bound found no attained viewpoint");
-  for (Candidate& c : optima) c.a = upper_hemisphere(c.a);
+  // The reported viewpoint must attain the best value found: t_upper is certified against that
+  // value, so reporting another tie (up to tie_tolerance below it) would widen the certificate by
+  // up to tie_tolerance. Only values equal to the best up to rounding are ordered
+  // lexicographically; the other ties follow by decreasing value. The group is fixed before
+  // sorting, so the comparison is a strict weak ordering.
+  double best = 0.0;
+  for (Candidate& c : optima) {
+    c.a = upper_hemisphere(c.a);
+    best = std::max(best, c.value);
+  }
   std::sort(optima.begin(), optima.end(), [&](const Candidate& a, const Candidate& b) {
-    if (std::abs(a.value - b.value) > options.tie_tolerance) return a.value > b.value;
+    const bool a_best = a.value >= best - kSameValue;
+    const bool b_best = b.value >= best - kSameValue;
+    if (a_best != b_best) return a_best;
+    if (!a_best && a.value != b.value) return a.value > b.value;
     return lexicographically_before(a.a, b.a);
   });
   result.viewpoint = optima.front().a;

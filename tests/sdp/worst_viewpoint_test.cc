@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "support/eigen_testing.h"
 #include "vantage/analysis/common.h"
@@ -225,6 +226,68 @@ TEST(GlobalWorstViewpoint, CoplanarFanReachesTheZoneCeiling) {
     expect_consistent(w, z);
     EXPECT_NEAR(w.pbar, std::cos(M_PI / (2 * m)), kExact);
     EXPECT_EQ(static_cast<int>(w.viewpoints.size()), m);
+  }
+}
+
+// Symmetric layouts with several tied optima (the regression of near-tie certificates).
+struct TiedLayout {
+  const char* name;
+  Eigen::Matrix3Xd vectors;
+  int optima;  // global optima up to sign of the unperturbed layout
+  double t;    // its t*
+};
+
+std::vector<TiedLayout> tied_layouts() {
+  const double s = std::sqrt(3.0) / 2.0;
+  std::vector<TiedLayout> layouts;
+  layouts.push_back({"triad Z = I", Eigen::Matrix3d::Identity(), 4, kInvSqrt3});
+  layouts.push_back({"fan plus (0, 0, 1)",
+                     columns({{1, 0, 0}, {0.5, s, 0}, {-0.5, s, 0}, {0, 0, 1}}), 6,
+                     1.0 / std::sqrt(5.0)});
+  // The cube's three face normals and four body diagonals (octahedral symmetry): t* = 1/3 at the
+  // four diagonals.
+  layouts.push_back(
+      {"cube axes and diagonals",
+       columns({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {-1, 1, 1}}), 4,
+       1.0 / 3.0});
+  return layouts;
+}
+
+TEST(GlobalWorstViewpoint, NearTiePerturbationsAreCertifiedAtTheBestTie) {
+  // Tiny tie-breaking perturbations split the tied optima by ~the perturbation size. The
+  // reported viewpoint must attain the best of them: t_upper is certified against the best
+  // attained value, so the gap is bounded by the exact-cell test (1e-12, a subset-cell optimum
+  // attained to that accuracy closes its patch) plus the rounding tie of the final choice
+  // (1e-14), independent of the perturbation and of tie_tolerance (1e-9, which once widened it).
+  constexpr double kNearTieGap = 2e-12;
+  // The brute force evaluates cross products of near-equal differences: accurate to ~1e-12.
+  constexpr double kUpperBoundSlack = 1e-12;
+  // Ties equal to the best up to rounding are ordered lexicographically (kSameValue = 1e-14).
+  constexpr double kRoundingTie = 1e-14;
+  std::mt19937 rng(kSeed + 2);
+  std::uniform_real_distribution<double> log_size(-12.0, -7.0);
+  for (const TiedLayout& layout : tied_layouts()) {
+    const WorstViewpoint exact = global_worst_viewpoint(layout.vectors);
+    expect_consistent(exact, layout.vectors);
+    EXPECT_EQ(static_cast<int>(exact.viewpoints.size()), layout.optima) << layout.name;
+    EXPECT_NEAR(exact.t, layout.t, kExact) << layout.name;
+    for (int trial = 0; trial < 40; ++trial) {
+      Eigen::Matrix3Xd z = layout.vectors;
+      for (Eigen::Index i = 0; i < z.cols(); ++i) {
+        z.col(i) += std::pow(10.0, log_size(rng)) * testing::random_unit_vector(rng);
+      }
+      const WorstViewpoint w = global_worst_viewpoint(z);
+      SCOPED_TRACE(::testing::Message() << layout.name << ", trial " << trial);
+      expect_consistent(w, z);
+      EXPECT_LE(w.t_upper - w.t_lower, kNearTieGap);
+      const double brute = brute_force_t(z);
+      EXPECT_NEAR(w.t, brute, kExact);
+      EXPECT_LE(brute, w.t_upper + kUpperBoundSlack) << "t_upper bounds every candidate optimum";
+      const Eigen::Matrix3Xd n = z.colwise().normalized();
+      for (const Eigen::Vector3d& a : w.viewpoints) {
+        EXPECT_LE(min_abs_projection(n, a), w.t + kRoundingTie) << "no tie beats the viewpoint";
+      }
+    }
   }
 }
 

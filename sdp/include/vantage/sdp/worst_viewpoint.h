@@ -114,10 +114,15 @@ struct WorstViewpoint {
   static constexpr double kSdpAgreement = 1e-6;
 
   Status status = Status::kNotCertified;
-  Eigen::Vector3d viewpoint = Eigen::Vector3d::UnitZ();  ///< a global optimum, upper hemisphere
-  std::vector<Eigen::Vector3d> viewpoints;  ///< every global optimum up to sign (incl. viewpoint)
-  double t = 0.0;                           ///< min_i |a.n_i| at `viewpoint` (= t_lower)
-  double pbar = 1.0;                        ///< p-bar_min = sqrt(1 - t^2)
+  /// The best attained global optimum, upper hemisphere (so t_upper - t_lower is not widened by
+  /// the tie_tolerance); among optima whose values agree to rounding (1e-14) the first by
+  /// largest z, then y, then x.
+  Eigen::Vector3d viewpoint = Eigen::Vector3d::UnitZ();
+  /// Every global optimum up to sign within tie_tolerance of t: `viewpoint` first, the others
+  /// by decreasing value.
+  std::vector<Eigen::Vector3d> viewpoints;
+  double t = 0.0;              ///< min_i |a.n_i| at `viewpoint` (= t_lower)
+  double pbar = 1.0;           ///< p-bar_min = sqrt(1 - t^2)
   double t_upper = 1.0;        ///< proven upper bound on min_i |a.n_i| over the whole sphere
   double t_lower = 0.0;        ///< attained value (t)
   long cells_solved = 0;       ///< exact cell problems (minimum-norm points) solved
