@@ -213,24 +213,14 @@ TEST(DesignCli, HelpExitsZero) {
   }
 }
 
-struct BadCall {
-  const char* name;
-  const char* file_text;  // written to in.json; nullptr: no file
-  const char* args;       // after "design"; every call also asks for --write out.json
-  const char* expected;
-};
+using testing::BadCall;
 
 class DesignCliBadInput : public ::testing::TestWithParam<BadCall> {};
 
 TEST_P(DesignCliBadInput, OneErrorLineExitTwoNothingWritten) {
+  // Every call also asks for --write out.json: nothing may be written.
   ScratchDir scratch;
-  if (GetParam().file_text) scratch.write("in.json", GetParam().file_text);
-  const auto run = run_vantage(std::string("design ") + GetParam().args, scratch);
-  EXPECT_EQ(run.status, 2);
-  EXPECT_EQ(run.out, "");
-  EXPECT_EQ(testing::line_count(run.err), 1) << run.err;
-  EXPECT_THAT(run.err, HasSubstr("vantage: error: "));
-  EXPECT_THAT(run.err, HasSubstr(GetParam().expected));
+  testing::run_bad_call("design", GetParam(), scratch);
   EXPECT_FALSE(std::filesystem::exists(scratch.path("out.json")));
 }
 

@@ -48,24 +48,13 @@ TEST(OrientCli, HelpExitsZero) {
   EXPECT_THAT(run.out, HasSubstr("--method"));
 }
 
-struct BadCall {
-  const char* name;
-  const char* file_text;  // written to in.json; nullptr: no file
-  const char* args;       // after "orient"
-  const char* expected;
-};
+using testing::BadCall;
 
 class OrientCliBadInput : public ::testing::TestWithParam<BadCall> {};
 
 TEST_P(OrientCliBadInput, OneErrorLineExitTwoNothingOnStdout) {
   ScratchDir scratch;
-  if (GetParam().file_text) scratch.write("in.json", GetParam().file_text);
-  const auto run = run_vantage(std::string("orient ") + GetParam().args, scratch);
-  EXPECT_EQ(run.status, 2);
-  EXPECT_EQ(run.out, "");
-  EXPECT_EQ(testing::line_count(run.err), 1) << run.err;
-  EXPECT_THAT(run.err, HasSubstr("vantage: error: "));
-  EXPECT_THAT(run.err, HasSubstr(GetParam().expected));
+  testing::run_bad_call("orient", GetParam(), scratch);
 }
 
 const BadCall kBadCalls[] = {

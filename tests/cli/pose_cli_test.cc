@@ -289,12 +289,8 @@ TEST(PoseCli, HelpExitsZero) {
   EXPECT_THAT(run.out, HasSubstr("--free-vectors"));
 }
 
-struct BadCall {
-  const char* name;
-  const char* file_text;  // written to in.json; nullptr: no file
-  const char* args;       // after "pose"; AFFINE stands for the affine example's path
-  const char* expected;
-};
+// In args, AFFINE stands for the affine example's path.
+using testing::BadCall;
 
 class PoseCliBadInput : public ::testing::TestWithParam<BadCall> {};
 
@@ -306,12 +302,7 @@ TEST_P(PoseCliBadInput, OneErrorLineExitTwoNothingOnStdout) {
     args.replace(at, 6, "'" + kAffine + "'");
   }
   for (const char* json : {"", " --json"}) {
-    const auto run = run_vantage("pose " + args + json, scratch);
-    EXPECT_EQ(run.status, 2) << run.out;
-    EXPECT_EQ(run.out, "");
-    EXPECT_EQ(testing::line_count(run.err), 1) << run.err;
-    EXPECT_THAT(run.err, HasSubstr("vantage: error: "));
-    EXPECT_THAT(run.err, HasSubstr(GetParam().expected));
+    testing::expect_bad_input(run_vantage("pose " + args + json, scratch), GetParam().expected);
   }
 }
 

@@ -137,24 +137,13 @@ TEST(WeightsCli, ReadableReport) {
   EXPECT_THAT(run.out, HasSubstr("residual"));
 }
 
-struct BadCall {
-  const char* name;
-  const char* file_text;  // written to in.json; nullptr: no file
-  const char* args;       // after "weights"
-  const char* expected;
-};
+using testing::BadCall;
 
 class WeightsCliBadInput : public ::testing::TestWithParam<BadCall> {};
 
 TEST_P(WeightsCliBadInput, OneErrorLineExitTwo) {
   ScratchDir scratch;
-  if (GetParam().file_text) scratch.write("in.json", GetParam().file_text);
-  const auto run = run_vantage(std::string("weights ") + GetParam().args, scratch);
-  EXPECT_EQ(run.status, 2);
-  EXPECT_EQ(run.out, "");
-  EXPECT_EQ(testing::line_count(run.err), 1) << run.err;
-  EXPECT_THAT(run.err, HasSubstr("vantage: error: "));
-  EXPECT_THAT(run.err, HasSubstr(GetParam().expected));
+  testing::run_bad_call("weights", GetParam(), scratch);
 }
 
 const BadCall kBadCalls[] = {

@@ -3,6 +3,8 @@
 /// Runs the built `vantage` binary (path in VANTAGE_CLI, set by CMake) and captures its exit
 /// status, stdout and stderr, for end-to-end tests of the command-line contract.
 
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <unistd.h>
@@ -74,6 +76,34 @@ inline int line_count(const std::string& text) {
   int lines = 0;
   for (char c : text) lines += c == '\n';
   return lines + (!text.empty() && text.back() != '\n');
+}
+
+/// A call that must be refused as bad input or usage.
+struct BadCall {
+  const char* name;
+  const char* file_text;  ///< written to in.json first; nullptr: no file
+  const char* args;       ///< after the subcommand
+  const char* expected;   ///< a fragment the one error line must contain
+};
+
+/// The bad-input contract (DESIGN.md): exit status 2, nothing on stdout, exactly one line on
+/// stderr, "vantage: error: ..." containing `expected`.
+inline void expect_bad_input(const CliRun& run, const std::string& expected) {
+  EXPECT_EQ(run.status, 2) << run.out;
+  EXPECT_EQ(run.out, "");
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_THAT(run.err, ::testing::HasSubstr("vantage: error: "));
+  EXPECT_THAT(run.err, ::testing::HasSubstr(expected));
+}
+
+/// Writes call.file_text to in.json (when given), runs `vantage <subcommand> <call.args>` and
+/// checks the bad-input contract.
+inline CliRun run_bad_call(const std::string& subcommand, const BadCall& call,
+                           const ScratchDir& scratch) {
+  if (call.file_text) scratch.write("in.json", call.file_text);
+  CliRun run = run_vantage(subcommand + " " + call.args, scratch);
+  expect_bad_input(run, call.expected);
+  return run;
 }
 
 }  // namespace vantage::testing
