@@ -25,6 +25,8 @@ Json suggestion_json(const design::WeightsSuggestion& s) {
   if (s.kind == design::WeightsSuggestion::Kind::kSymmetricPartner) {
     out["index"] = s.index;
     out["added"] = json_list(s.added);
+  } else if (s.kind == design::WeightsSuggestion::Kind::kBalancingEntry) {
+    out["added"] = json_list(s.added);
   } else {
     out["shift"] = json_list(s.shift);
   }

@@ -161,7 +161,15 @@ Classified classify(const Eigen::Matrix3Xd& z, const WeightsOptions& options) {
 }  // namespace
 
 const char* to_string(WeightsSuggestion::Kind kind) {
-  return kind == WeightsSuggestion::Kind::kShiftOrigin ? "shift_origin" : "symmetric_partner";
+  switch (kind) {
+    case WeightsSuggestion::Kind::kShiftOrigin:
+      return "shift_origin";
+    case WeightsSuggestion::Kind::kBalancingEntry:
+      return "balancing_entry";
+    case WeightsSuggestion::Kind::kSymmetricPartner:
+      break;
+  }
+  return "symmetric_partner";
 }
 
 const char* to_string(Weights::Status status) {
@@ -265,6 +273,26 @@ Weights nullspace_weights(const Eigen::Matrix3Xd& z, const WeightsOptions& optio
       << best_partner.min_weight;
     best_partner.text = t.str();
     out.suggestions.push_back(best_partner);
+  }
+  const Eigen::Vector3d balance = -z.rowwise().sum();
+  if (balance.norm() > 0.0) {
+    Eigen::Matrix3Xd fixed(3, n + 1);
+    fixed.leftCols(n) = z;
+    fixed.col(n) = balance;
+    const Classified f = classify(fixed, options);
+    out.lp_solves += f.lp_solves;
+    if (f.status == Weights::Status::kPositive || f.status == Weights::Status::kBoundary) {
+      WeightsSuggestion entry;
+      entry.kind = WeightsSuggestion::Kind::kBalancingEntry;
+      entry.added = balance;
+      entry.weights = f.weights;
+      entry.min_weight = f.weights.minCoeff();
+      std::ostringstream t;
+      t << "add one entry at -sum z_i = " << format_vector(balance)
+        << ": equal weights then balance, the smallest weight becomes " << entry.min_weight;
+      entry.text = t.str();
+      out.suggestions.push_back(entry);
+    }
   }
   if (allow_shift) {
     const Eigen::Vector3d centroid = z.rowwise().mean();

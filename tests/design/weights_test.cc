@@ -117,8 +117,12 @@ TEST(NullspaceWeights, OriginOutsideHullIsInfeasibleAndPartnerFixVerified) {
   EXPECT_LT(w.lp_optimum, 0.0);
   EXPECT_EQ(w.weights.size(), 0);
   ASSERT_FALSE(w.suggestions.empty());
-  const WeightsSuggestion& s = w.suggestions.front();
-  EXPECT_EQ(s.kind, WeightsSuggestion::Kind::kSymmetricPartner);
+  const WeightsSuggestion* partner = nullptr;
+  for (const WeightsSuggestion& candidate : w.suggestions) {
+    if (candidate.kind == WeightsSuggestion::Kind::kSymmetricPartner) partner = &candidate;
+  }
+  ASSERT_NE(partner, nullptr);
+  const WeightsSuggestion& s = *partner;
   ASSERT_GE(s.index, 0);
   EXPECT_EIGEN_NEAR(s.added, Eigen::Vector3d(-z.col(s.index)), 0.0);
   Eigen::Matrix3Xd fixed(3, 5);
@@ -167,7 +171,35 @@ TEST(NullspaceWeights, DirectionModeNeverSuggestsAShift) {
   EXPECT_EQ(w.status, Weights::Status::kInfeasible);
   ASSERT_FALSE(w.suggestions.empty());
   for (const WeightsSuggestion& s : w.suggestions) {
-    EXPECT_EQ(s.kind, WeightsSuggestion::Kind::kSymmetricPartner);
+    EXPECT_NE(s.kind, WeightsSuggestion::Kind::kShiftOrigin);
+  }
+}
+
+TEST(NullspaceWeights, BalancingEntryAlwaysGivesStrictlyPositiveWeights) {
+  // Z = I: the best single symmetric partner only reaches a smallest weight of 0, while one
+  // entry at -(1, 1, 1) lets all four weights be equal (1 after normalising to sum 4).
+  const Weights w = nullspace_weights(Eigen::Matrix3d::Identity());
+  ASSERT_FALSE(w.suggestions.empty());
+  const WeightsSuggestion& best = w.suggestions.front();
+  EXPECT_EQ(best.kind, WeightsSuggestion::Kind::kBalancingEntry);
+  EXPECT_EIGEN_NEAR(best.added, Eigen::Vector3d(-1, -1, -1), 0.0);
+  EXPECT_NEAR(best.min_weight, 1.0, kLpTolerance);
+  Eigen::Matrix3Xd fixed(3, 4);
+  fixed << Eigen::Matrix3d::Identity(), best.added;
+  expect_valid_weights(fixed, nullspace_weights(fixed));
+  // Random infeasible layouts: the balancing entry's weights are strictly positive.
+  std::mt19937 rng(testing::kSeed + 77);
+  for (int trial = 0; trial < 10; ++trial) {
+    const Eigen::Matrix3Xd z = testing::random_points(rng, 5).array() + 2.0;
+    const Weights r = nullspace_weights(z);
+    ASSERT_EQ(r.status, Weights::Status::kInfeasible);
+    bool found = false;
+    for (const WeightsSuggestion& s : r.suggestions) {
+      if (s.kind != WeightsSuggestion::Kind::kBalancingEntry) continue;
+      found = true;
+      EXPECT_GT(s.min_weight, kLpTolerance);
+    }
+    EXPECT_TRUE(found);
   }
 }
 

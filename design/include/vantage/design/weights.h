@@ -56,10 +56,13 @@ struct WeightsSuggestion {
   enum class Kind {
     kSymmetricPartner,  ///< add -z_index (with its own weight) to the layout
     kShiftOrigin,       ///< subtract `shift` from every point (move the origin to `shift`)
+    /// add one entry at -sum_i z_i: then equal weights satisfy Eq. (11), so strictly positive
+    /// weights always exist (the paper's symmetric pairs need one partner per entry)
+    kBalancingEntry,
   };
   Kind kind = Kind::kSymmetricPartner;
   int index = -1;                                   ///< kSymmetricPartner: the mirrored entry
-  Eigen::Vector3d added = Eigen::Vector3d::Zero();  ///< kSymmetricPartner: -z_index
+  Eigen::Vector3d added = Eigen::Vector3d::Zero();  ///< the new entry (partner or balancing)
   Eigen::Vector3d shift = Eigen::Vector3d::Zero();  ///< kShiftOrigin: the new origin
   /// Smallest weight of the max-min weights of the fixed layout (normalised to sum = its
   /// entry count); > zero_tolerance means the fix gives strictly positive weights.
@@ -68,7 +71,7 @@ struct WeightsSuggestion {
   std::string text;         ///< one sentence for the user
 };
 
-/// "symmetric_partner" or "shift_origin".
+/// "symmetric_partner", "shift_origin" or "balancing_entry".
 const char* to_string(WeightsSuggestion::Kind kind);
 
 /// Result of nullspace_weights().
