@@ -1,3 +1,4 @@
+
 #include "vantage/analysis/affine_pose.h"
 
 #include <Eigen/Eigenvalues>
@@ -320,7 +321,7 @@ struct QuarticSolver {
   /// Laguerre stops once a step is below kLaguerreStop * x: the error left is of order
   /// kLaguerreStop^3 x (cubic convergence).
   static constexpr double kLaguerreStop = 1e-4;
-  /// Laguerre steps every lane takes before the convergence test (see LaneSolve).
+  /// Steps every lane takes before the first convergence test (see solve_lanes).
   static constexpr int kLockstepIterations = 2;
 };
 
@@ -340,31 +341,55 @@ T laguerre_step(const T& x, const T& c2, const T& c1, const T& c0) {
   return (p > 0.0 && step > 0.0).select(step, T::Zero());
 }
 
+/// One Halley step 2 p p' / (2 p'^2 - p p'') on the same quartic: cubically convergent like
+/// Laguerre's, without the square root. Above the largest root of a real-rooted quartic,
+/// u = p p'' / p'^2 is in [0, 3/4] and Halley's step (p / p') / (1 - u / 2) never exceeds
+/// Laguerre's (4 p / p') / (1 + 3 sqrt(1 - 4 u / 3)) (the difference reduces to 4 u^2 >= 0), so
+/// it never overshoots the root either: safe from any upper bound, and best once close.
+template <typename T>
+T halley_step(const T& x, const T& c2, const T& c1, const T& c0) {
+  const T x2 = x * x;
+  const T p = (x2 + c2) * x2 + c1 * x + c0;
+  const T dp = (4.0 * x2 + 2.0 * c2) * x + c1;
+  const T ddp = 12.0 * x2 + 2.0 * c2;
+  const T step = 2.0 * p * dp / (2.0 * dp * dp - p * ddp);
+  return (p > 0.0 && step > 0.0).select(step, T::Zero());
+}
+
 inline double laguerre_step(double x, double c2, double c1, double c0) {
   using One = Eigen::Array<double, 1, 1>;
   return laguerre_step(One(x), One(c2), One(c1), One(c0))(0);
 }
 
+#if defined(__GNUC__)
+// Inline Eigen's per-expression loops into the caller (GCC and Clang; no ISA assumption).
+#define VANTAGE_FLATTEN __attribute__((flatten))
+#else
+#define VANTAGE_FLATTEN
+#endif
+
 /// kGrayCode's lanes: the top kLaneBits sign bits are fixed per lane and the Gray code walks
 /// the others, so each step solves kLanes independent patterns. Their root finders run in
 /// lockstep on Eigen arrays (SIMD packets of the build's baseline ISA, no branches per lane), so
 /// the kLanes dependency chains (each warm-started from its own previous root) overlap.
-constexpr int kLaneBits = 3;
+constexpr int kLaneBits = 4;
 constexpr int kLanes = 1 << kLaneBits;
 using LaneArray = Eigen::Array<double, kLanes, 1>;
 
 /// Per-lane result of one Gray-code step.
 struct LaneSolve {
-  LaneArray lambda;   // largest root of the quartic
-  LaneArray j;        // J_2d of the viewpoint FOAM gives for it
-  LaneArray trusted;  // 1 where zeta > fallback_gap lambda^3 (FOAM is safe), else 0
+  LaneArray lambda;  // largest root of the quartic
+  LaneArray j;       // J_2d of the viewpoint FOAM gives for it; -1: not trusted, fall back
 };
 
 /// The quartic's largest root from the upper bounds x, FOAM's viewpoint r3 and J_2d for kLanes
-/// third columns h. Every lane takes kLockstepIterations Laguerre steps (enough for nearly all
-/// warm starts); a lane whose last step still exceeded kLaguerreStop * x continues alone.
-void solve_lanes(const QuarticSolver& solver, const AffineProblem& problem, const LaneArray& hx,
-                 const LaneArray& hy, const LaneArray& hz, LaneArray x, LaneSolve* out) {
+/// third columns h. Every lane takes one Laguerre step (robust from a far start) and one Halley
+/// step; if some lane's last step still exceeded kLaguerreStop * x, all take another Halley
+/// step, and a lane still not converged continues alone with Laguerre. Steps on a converged lane
+/// are 0 or refine it, so the lockstep never loses accuracy against per-lane stopping.
+VANTAGE_FLATTEN void solve_lanes(const QuarticSolver& solver, const AffineProblem& problem,
+                                 const LaneArray& hx, const LaneArray& hy, const LaneArray& hz,
+                                 LaneArray x, LaneSolve* out) {
   const Eigen::Vector3d& a = solver.a;
   const Eigen::Vector3d& b = solver.b;
   const Eigen::Vector3d& c = solver.a_cross_b;
@@ -379,15 +404,15 @@ void solve_lanes(const QuarticSolver& solver, const AffineProblem& problem, cons
   const LaneArray c2 = -2.0 * f2;
   const LaneArray c1 = -8.0 * det;
   const LaneArray c0 = f2 * f2 - 4.0 * adj2;
-  LaneArray step;
-  for (int it = 0; it < QuarticSolver::kLockstepIterations; ++it) {
-    step = laguerre_step(x, c2, c1, c0);
-    x -= step;
-  }
+  x -= laguerre_step(x, c2, c1, c0);
+  LaneArray step = halley_step(x, c2, c1, c0);
+  x -= step;
   if ((step > QuarticSolver::kLaguerreStop * x).any()) {
+    step = halley_step(x, c2, c1, c0);
+    x -= step;
     for (int t = 0; t < kLanes; ++t) {
       double s = step(t);
-      for (int it = QuarticSolver::kLockstepIterations;
+      for (int it = QuarticSolver::kLockstepIterations + 1;
            s > QuarticSolver::kLaguerreStop * x(t) && it < QuarticSolver::kMaxIterations; ++it) {
         s = laguerre_step(x(t), c2(t), c1(t), c0(t));
         x(t) -= s;
@@ -413,9 +438,10 @@ void solve_lanes(const QuarticSolver& solver, const AffineProblem& problem, cons
                         2.0 * (S(0, 1) * rx * ry + S(0, 2) * rx * rz + S(1, 2) * ry * rz);
   const LaneArray rh = rx * hx + ry * hy + rz * hz;
   out->lambda = x;
-  out->j = ((S.trace() + problem.dd) - srs - 2.0 * (x - rh)).max(LaneArray::Zero());
-  out->trusted = (x > 0.0 && zeta > solver.fallback_gap * x * x * x)
-                     .select(LaneArray::Ones(), LaneArray::Zero());
+  // A lane FOAM cannot trust (zeta <= fallback_gap lambda^3) gets j = -1.
+  out->j = (x > 0.0 && zeta > solver.fallback_gap * x * x * x)
+               .select(((S.trace() + problem.dd) - srs - 2.0 * (x - rh)).max(LaneArray::Zero()),
+                       LaneArray::Constant(-1.0));
 }
 
 void enumerate_gray_code(const Eigen::Matrix3Xd& z, const AffineProblem& problem,
@@ -497,9 +523,10 @@ void enumerate_gray_code(const Eigen::Matrix3Xd& z, const AffineProblem& problem
     }
     solve_lanes(solver, problem, hx, hy, hz, warm, &solved);
     previous = solved.lambda;
+    if (!(solved.j < podium->second).any()) return;  // no lane to offer, none to fall back
     for (int t = 0; t < lanes; ++t) {
       const std::uint64_t signs = low_signs | (static_cast<std::uint64_t>(t) << low_bits);
-      if (solved.trusted(t) == 0.0) {
+      if (solved.j(t) < 0.0) {
         previous(t) = -1.0;
         ++used_fallback;
         eigen_path(D + lane_d[t], signs);
