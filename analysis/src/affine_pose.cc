@@ -407,7 +407,7 @@ VANTAGE_FLATTEN void solve_lanes(const QuarticSolver& solver, const AffineProble
   x -= laguerre_step(x, c2, c1, c0);
   LaneArray step = halley_step(x, c2, c1, c0);
   x -= step;
-  if ((step > QuarticSolver::kLaguerreStop * x).any()) {
+  if ((step - QuarticSolver::kLaguerreStop * x).maxCoeff() > 0.0) {  // a packed max, no branches
     step = halley_step(x, c2, c1, c0);
     x -= step;
     for (int t = 0; t < kLanes; ++t) {
@@ -438,10 +438,11 @@ VANTAGE_FLATTEN void solve_lanes(const QuarticSolver& solver, const AffineProble
                         2.0 * (S(0, 1) * rx * ry + S(0, 2) * rx * rz + S(1, 2) * ry * rz);
   const LaneArray rh = rx * hx + ry * hy + rz * hz;
   out->lambda = x;
-  // A lane FOAM cannot trust (zeta <= fallback_gap lambda^3) gets j = -1.
-  out->j = (x > 0.0 && zeta > solver.fallback_gap * x * x * x)
-               .select(((S.trace() + problem.dd) - srs - 2.0 * (x - rh)).max(LaneArray::Zero()),
-                       LaneArray::Constant(-1.0));
+  // A lane FOAM cannot trust (zeta <= fallback_gap lambda^3), or whose J_2d is NaN (overflow),
+  // gets j = -1 and falls back to top_eigenpair(); so no entry of j is NaN.
+  const LaneArray j = (S.trace() + problem.dd) - srs - 2.0 * (x - rh);
+  out->j = (x > 0.0 && zeta > solver.fallback_gap * x * x * x && j == j)
+               .select(j.max(LaneArray::Zero()), LaneArray::Constant(-1.0));
 }
 
 void enumerate_gray_code(const Eigen::Matrix3Xd& z, const AffineProblem& problem,
@@ -515,7 +516,7 @@ void enumerate_gray_code(const Eigen::Matrix3Xd& z, const AffineProblem& problem
     const LaneArray hy = h_low.y() + lane_hy;
     const LaneArray hz = h_low.z() + lane_hz;
     LaneArray warm = previous + (step + slack);
-    if ((previous < 0.0).any()) {
+    if (previous.minCoeff() < 0.0) {
       for (int t = 0; t < kLanes; ++t) {
         if (previous(t) < 0.0)
           warm(t) = solver.cold_bound(Eigen::Vector3d(hx(t), hy(t), hz(t))) + slack;
@@ -523,7 +524,7 @@ void enumerate_gray_code(const Eigen::Matrix3Xd& z, const AffineProblem& problem
     }
     solve_lanes(solver, problem, hx, hy, hz, warm, &solved);
     previous = solved.lambda;
-    if (!(solved.j < podium->second).any()) return;  // no lane to offer, none to fall back
+    if (!(solved.j.minCoeff() < podium->second)) return;  // nothing to offer or fall back
     for (int t = 0; t < lanes; ++t) {
       const std::uint64_t signs = low_signs | (static_cast<std::uint64_t>(t) << low_bits);
       if (solved.j(t) < 0.0) {
