@@ -46,10 +46,13 @@ enum class SignEnumeration {
   /// only |H|_F, det H and |adj H|_F, each O(1) in h), the viewpoint r3 (third row of R) from
   /// FOAM's closed form (DESIGN.md note 8), and J_2d = tr S - r3^T S r3 - 2 (lambda - r3^T h)
   /// + sum w |alpha d|^2 with S = sum w z z^T. The root finder starts from the previous
-  /// pattern's root + |Delta h| (an upper bound); the top two sign bits are fixed per lane so
-  /// each Gray-code step solves four independent patterns. About 60 flops and no allocation
-  /// per pattern; the winner and runner-up are re-solved exactly by Theorem 1 at the end;
-  /// when lambda is nearly double (FOAM's zeta ~ 0) the pattern falls back to top_eigenpair(D).
+  /// pattern's root + |Delta h| (an upper bound) and takes one Laguerre and one Halley step
+  /// (more only for the rare pattern not yet converged to ~1e-12 relative); the top four sign
+  /// bits are fixed per lane so each Gray-code step solves 16 independent patterns, in lockstep
+  /// on Eigen arrays (SIMD, no per-lane branches). About 100 flops, one square root, two
+  /// divisions and no allocation per pattern; the winner and runner-up are re-solved exactly by
+  /// Theorem 1 at the end; when lambda is nearly double (FOAM's zeta ~ 0) or J_2d is not finite
+  /// the pattern falls back to top_eigenpair(D).
   kGrayCode,
   /// Gray code with the Eq. (17) update of D, top_eigenpair() (fast path) for the quaternion,
   /// R from Eq. (5) and J_2d from moments: the paper's procedure, O(1) and allocation-free.
