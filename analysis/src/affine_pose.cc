@@ -279,23 +279,27 @@ class GrayCodeWalk {
   std::vector<Eigen::Vector3d, Eigen::aligned_allocator<Eigen::Vector3d>> step_h_;
 };
 
-/// Best and second-best patterns seen so far, by J_2d.
+/// The kPodiumSize best patterns seen so far, by increasing J_2d. More than two are kept
+/// because flipping the sign of a near-zero v_z gives a near-copy of the winner; the runner-up
+/// that measures the two-fold ambiguity is the best pattern with a distinct rotation.
 struct Podium {
-  double best = std::numeric_limits<double>::infinity();
-  double second = std::numeric_limits<double>::infinity();
-  std::uint64_t best_signs = 0;
-  std::uint64_t second_signs = 0;
+  static constexpr int kPodiumSize = 64;
+  double j[kPodiumSize];
+  std::uint64_t signs[kPodiumSize];
+  int count = 0;
+  /// J_2d a pattern must beat to enter (+infinity until the podium is full).
+  double threshold = std::numeric_limits<double>::infinity();
 
-  void offer(double j, std::uint64_t signs) {
-    if (j < best) {
-      second = best;
-      second_signs = best_signs;
-      best = j;
-      best_signs = signs;
-    } else if (j < second) {
-      second = j;
-      second_signs = signs;
+  void offer(double value, std::uint64_t pattern) {
+    if (!(value < threshold)) return;
+    int at = count < kPodiumSize ? count++ : kPodiumSize - 1;
+    for (; at > 0 && value < j[at - 1]; --at) {
+      j[at] = j[at - 1];
+      signs[at] = signs[at - 1];
     }
+    j[at] = value;
+    signs[at] = pattern;
+    if (count == kPodiumSize) threshold = j[kPodiumSize - 1];
   }
 };
 
@@ -524,14 +528,14 @@ void enumerate_gray_code(const Eigen::Matrix3Xd& z, const AffineProblem& problem
     }
     solve_lanes(solver, problem, hx, hy, hz, warm, &solved);
     previous = solved.lambda;
-    if (!(solved.j.minCoeff() < podium->second)) return;  // nothing to offer or fall back
+    if (!(solved.j.minCoeff() < podium->threshold)) return;  // nothing to offer or fall back
     for (int t = 0; t < lanes; ++t) {
       const std::uint64_t signs = low_signs | (static_cast<std::uint64_t>(t) << low_bits);
       if (solved.j(t) < 0.0) {
         previous(t) = -1.0;
         ++used_fallback;
         eigen_path(D + lane_d[t], signs);
-      } else if (solved.j(t) < podium->second) {
+      } else if (solved.j(t) < podium->threshold) {
         podium->offer(solved.j(t), signs);
       }
     }
@@ -592,19 +596,27 @@ AffineOrientationResult solve_affine(const Eigen::Matrix3Xd& z, const Eigen::Mat
   // Re-solve the winner (and runner-up) from scratch: exact R, free of update rounding, and the
   // eigen gap for the degeneracy test.
   Eigen::VectorXd v_z;
-  const OrientationResult winner = solve_pattern(z, problem, podium.best_signs, options, &v_z);
+  const OrientationResult winner = solve_pattern(z, problem, podium.signs[0], options, &v_z);
   result.R_camera_object = winner.R_camera_object;
   result.eigen_gap = winner.eigen_gap;
   result.v_z = v_z / alpha;
   result.residual = residual_direct(z, problem.d, problem.w, result.R_camera_object);
 
-  if (result.sign_patterns > 1) {
-    const OrientationResult second =
-        solve_pattern(z, problem, podium.second_signs, options, nullptr);
-    result.runner_up_R_camera_object = second.R_camera_object;
-    result.runner_up_residual = residual_direct(z, problem.d, problem.w, second.R_camera_object);
-    result.ambiguity_margin = std::max(0.0, result.runner_up_residual - result.residual);
-    result.runner_up_angle = rotation_angle_between(result.R_camera_object, second.R_camera_object);
+  if (podium.count > 1) {
+    // The runner-up is the best pattern whose rotation differs from the winner's by more than
+    // distinct_rotation_angle (near-copies of the winner are skipped); when every kept pattern
+    // is a near-copy, the second best is reported.
+    for (int k = 1; k < podium.count; ++k) {
+      const OrientationResult other = solve_pattern(z, problem, podium.signs[k], options, nullptr);
+      const double angle = rotation_angle_between(result.R_camera_object, other.R_camera_object);
+      if (k == 1 || angle > options.distinct_rotation_angle) {
+        result.runner_up_R_camera_object = other.R_camera_object;
+        result.runner_up_residual = residual_direct(z, problem.d, problem.w, other.R_camera_object);
+        result.ambiguity_margin = std::max(0.0, result.runner_up_residual - result.residual);
+        result.runner_up_angle = angle;
+      }
+      if (angle > options.distinct_rotation_angle) break;
+    }
   } else {
     result.runner_up_residual = std::numeric_limits<double>::infinity();
     result.ambiguity_margin = std::numeric_limits<double>::infinity();

@@ -21,6 +21,7 @@
 /// point. Weights: Eigen::VectorXd with one positive entry per column; empty means all 1.
 
 #include <Eigen/Core>
+#include <cmath>
 #include <cstdint>
 #include <string>
 
@@ -96,11 +97,12 @@ struct AffineOrientationOptions {
   double in_plane_tolerance = 1e-12;
   /// Relative margin (see AffineStatus::kAmbiguous), dimensionless, >= 0.
   double ambiguity_tolerance = 1e-9;
-  /// Rotations closer than this are the same answer for the ambiguity test. Radians, >= 0.
-  /// A vector almost in the image plane (small |v_zi|) makes its two sign patterns nearly
-  /// equal, with rotations ~1e-5 rad apart and margins ~1e-9: not an ambiguity. A mirror pose
-  /// is about twice the tilt away, so 1e-3 rad (0.06 deg) separates the two.
-  double distinct_rotation_angle = 1e-3;
+  /// Rotations closer than this are the same answer for the ambiguity test and the runner-up.
+  /// Radians, >= 0. A vector near the image plane (small |v_zi| / |z_i|) makes its two sign
+  /// patterns near-copies, their rotations apart by about that ratio (0.11 deg for the bundled
+  /// examples/correspondences/affine_pose.json): not an ambiguity. A mirror pose is about twice
+  /// the tilt away, so 1 deg separates the two for any tilt worth calling a view.
+  double distinct_rotation_angle = M_PI / 180.0;
   /// Relative eigen gap of the winning D at or below which the status is kDegenerate, as in
   /// OrientationOptions::degenerate_gap. Dimensionless, in [0, 1).
   double degenerate_gap = 1e-10;
@@ -114,10 +116,13 @@ struct AffineOrientationResult {
   Eigen::Matrix3d R_camera_object = Eigen::Matrix3d::Identity();  ///< winner, re-solved exactly
   double alpha = 1.0;     ///< scale used: given (Prop. 4) or the LUB estimate (Lemma 7, Eq. 23)
   double residual = 0.0;  ///< J_2d of the winner: sum w_i |P R z_i - alpha d_i|^2 (Eq. 15)
-  /// J_2d of the second-best pattern; +infinity when only one pattern exists.
+  /// J_2d of the runner-up: the best pattern (among the 64 best) whose rotation is more than
+  /// distinct_rotation_angle from the winner's — flipping a near-zero v_z only gives a near-copy
+  /// of the winner, which is not the two-fold ambiguity; the second best when all 64 are
+  /// near-copies. +infinity when only one pattern exists.
   double runner_up_residual = 0.0;
   double ambiguity_margin = 0.0;  ///< runner_up_residual - residual (>= 0; may be +infinity)
-  /// Rotation of the second-best pattern (identity when only one pattern exists).
+  /// Rotation of the runner-up pattern (identity when only one pattern exists).
   Eigen::Matrix3d runner_up_R_camera_object = Eigen::Matrix3d::Identity();
   /// Angle between the winner's and the runner-up's rotations, radians (0 with one pattern).
   double runner_up_angle = 0.0;
