@@ -50,33 +50,41 @@ constexpr double kUpperBound = 0.86602540378443865 * (1.0 + 1e-12);  // sqrt(3/4
 // Iteration stops once a step is below this fraction of ||M||_F (a few ulps of the roots).
 constexpr double kRelativeStep = 4.0 * std::numeric_limits<double>::epsilon();
 
-/// Laguerre's method from above the largest root r of a polynomial of degree kDegree whose roots
-/// are all real: the iterates decrease monotonically to r, cubically near a simple root, and from
-/// far away in a few steps (Newton needs many when other roots are close by). Above r,
-/// p'/p = sum 1/(x - r_i) <= kDegree / (x - r), so x - r <= kDegree p / p': the iteration stops
-/// once that bound or the last step is below tolerance.
+/// One step of Laguerre's method from above the largest root r of a polynomial of degree kDegree
+/// whose roots are all real: the iterates decrease monotonically to r, cubically near a simple
+/// root, and from far away in a few steps (Newton needs many when other roots are close by).
+/// Above r, p'/p = sum 1/(x - r_i) <= kDegree / (x - r), so x - r <= kDegree p / p': no step is
+/// taken once that bound is below tolerance. Returns true when the iteration is finished (that
+/// bound or the step taken is below tolerance, or x is at, or by rounding below, the root).
 /// eval(x, &p, &p', &p'') evaluates the polynomial and its derivatives.
 template <int kDegree, typename Eval>
-double laguerre_from_above(double x, double tolerance, Eval eval) {
+bool laguerre_step_from_above(double* x, double tolerance, Eval eval) {
   constexpr double n = kDegree;
-  for (int it = 0; it < kMaxIterations; ++it) {
-    double p, d1, d2;
-    eval(x, &p, &d1, &d2);
-    if (!(p > 0.0) || !(d1 > 0.0)) break;  // at (or by rounding below) the root
-    if (n * p <= tolerance * d1) break;
-    // x - n / (G + sqrt((n - 1)(n H - G^2))) with G = p'/p, H = G^2 - p''/p, multiplied out.
-    const double step =
-        n * p / (d1 + std::sqrt(std::max(0.0, (n - 1.0) * ((n - 1.0) * d1 * d1 - n * p * d2))));
-    x -= step;
-    if (!(step > tolerance)) break;
-  }
-  return x;
+  double p, d1, d2;
+  eval(*x, &p, &d1, &d2);
+  if (!(p > 0.0) || !(d1 > 0.0)) return true;
+  if (n * p <= tolerance * d1) return true;
+  // x - n / (G + sqrt((n - 1)(n H - G^2))) with G = p'/p, H = G^2 - p''/p, multiplied out.
+  const double step =
+      n * p / (d1 + std::sqrt(std::max(0.0, (n - 1.0) * ((n - 1.0) * d1 * d1 - n * p * d2))));
+  *x -= step;
+  return !(step > tolerance);
+}
+
+/// True when no root of the polynomial exceeds x (Budan-Fourier): it and all its derivatives
+/// are >= 0 there.
+template <typename Eval>
+bool above_all_roots(double x, Eval eval) {
+  double p, d1, d2;
+  eval(x, &p, &d1, &d2);
+  return p >= 0.0 && d1 >= 0.0 && d2 >= 0.0;
 }
 
 }  // namespace
 
 Eigen::Vector2d largest_two_quartic_roots(double c2, double c1, double c0, double x0) {
-  const double scale = std::sqrt(std::max(0.0, -2.0 * c2));  // ||M||_F
+  const double scale2 = std::max(0.0, -2.0 * c2);  // ||M||_F^2 = sum of the squared roots
+  const double scale = std::sqrt(scale2);
   const double tolerance = kRelativeStep * scale;
   auto quartic = [&](double x, double* p, double* d1, double* d2) {
     const double x2 = x * x;
@@ -84,32 +92,39 @@ Eigen::Vector2d largest_two_quartic_roots(double c2, double c1, double c0, doubl
     *d1 = (4.0 * x2 + 2.0 * c2) * x + c1;
     *d2 = 12.0 * x2 + 2.0 * c2;
   };
-  // The hint is used only when it is provably above every root: by Budan-Fourier, no root
-  // exceeds x when p and all its derivatives are >= 0 at x. Otherwise (a hint spoilt by rounding
-  // or wrong) start from the Laguerre-Samuelson bound, which needs only the coefficients.
+  // The hint is used only when it is provably above every root, otherwise (a hint spoilt by
+  // rounding or wrong) start from the Laguerre-Samuelson bound, which needs only the
+  // coefficients.
   const double safe_start = kUpperBound * scale;
-  double p0, d1, d2;
-  quartic(x0, &p0, &d1, &d2);
-  if (!(x0 <= safe_start && x0 >= 0.0 && p0 >= 0.0 && d1 >= 0.0 && d2 >= 0.0)) x0 = safe_start;
-  const double r1 = laguerre_from_above<4>(x0, tolerance, quartic);
-  // Deflate: p(x) = (x - r1) (x^3 + r1 x^2 + b x + c).
-  const double b = c2 + r1 * r1;
-  const double c = c1 + r1 * b;
-  auto cubic = [&](double x, double* p, double* d1, double* d2) {
-    *p = ((x + r1) * x + b) * x + c;
-    *d1 = (3.0 * x + 2.0 * r1) * x + b;
-    *d2 = 6.0 * x + 2.0 * r1;
+  if (!(x0 <= safe_start && x0 >= 0.0 && above_all_roots(x0, quartic))) x0 = safe_start;
+  // lambda_2 without deflating by lambda_1, so that both iterations run side by side: for roots
+  // r1 >= r2 >= r3 >= r4 summing to 0, the resolvent cubic u^3 + 2 c2 u^2 + (c2^2 - 4 c0) u - c1^2
+  // has the roots (r1 + r_k)^2, k = 2, 3, 4, the largest (r1 + r2)^2 >= -2 c2 / 3 (their sum is
+  // -2 c2), so r2 = sqrt(u1) - r1 loses nothing to the square root. Its roots are >= 0, so u1 is
+  // at most their sum; the Laguerre-Samuelson bound mean + sqrt(2 variance) is closer.
+  const double e2 = 2.0 * c2;
+  const double e1 = c2 * c2 - 4.0 * c0;
+  const double e0 = -c1 * c1;
+  auto resolvent = [&](double u, double* p, double* d1, double* d2) {
+    *p = ((u + e2) * u + e1) * u + e0;
+    *d1 = (3.0 * u + 2.0 * e2) * u + e1;
+    *d2 = 6.0 * u + 2.0 * e2;
   };
-  // The cubic's roots sum to -r1 and their squares to -2 c2 - r1^2, so by Laguerre-Samuelson the
-  // largest is at most mean + sqrt(2 variance): closer than r1, and equal to the root when the
-  // two smallest coincide. If rounding put it below the root (Budan-Fourier), start from r1.
-  const double mean = -r1 / 3.0;
-  const double variance = std::max(0.0, (-2.0 * c2 - r1 * r1) / 3.0 - mean * mean);
-  double start = std::min(r1, mean + std::sqrt(2.0 * variance));
-  cubic(start, &p0, &d1, &d2);
-  if (!(p0 >= 0.0 && d1 >= 0.0 && d2 >= 0.0)) start = r1;
-  const double r2 = laguerre_from_above<3>(start, tolerance, cubic);
-  return {r1, std::min(r1, r2)};
+  const double mean = -e2 / 3.0;
+  const double variance = std::max(0.0, (e2 * e2 - 2.0 * e1) / 3.0 - mean * mean);
+  double u = std::min(scale2, mean + std::sqrt(2.0 * variance));
+  if (!above_all_roots(u, resolvent)) u = scale2 * (1.0 + 1e-12);
+  // A step of u below kRelativeStep ||M||_F^2 moves sqrt(u1) >= sqrt(2/3) ||M||_F by less than
+  // a step of the quartic's iteration.
+  const double tolerance_u = kRelativeStep * scale2;
+  double x = x0;
+  bool x_done = false, u_done = false;
+  for (int it = 0; it < kMaxIterations && !(x_done && u_done); ++it) {
+    if (!x_done) x_done = laguerre_step_from_above<4>(&x, tolerance, quartic);
+    if (!u_done) u_done = laguerre_step_from_above<3>(&u, tolerance_u, resolvent);
+  }
+  const double r2 = std::sqrt(std::max(0.0, u)) - x;
+  return {x, std::min(x, r2)};
 }
 
 }  // namespace internal
