@@ -135,7 +135,8 @@ namespace {
 constexpr int kOthers[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
 
 /// The 3x3 minors of a 4x4 matrix from its twelve 2x2 minors (Laplace expansion): pairs[0] holds
-/// the 2x2 minors of rows {2, 3}, pairs[1] those of rows {0, 1}, indexed by column pair.
+/// the 2x2 minors of rows {2, 3}, pairs[1] those of rows {0, 1}, indexed by column pair. Row and
+/// column are template arguments so that every index is resolved at compile time.
 class Minors3 {
  public:
   explicit Minors3(const Eigen::Matrix4d& A) : A_(A) {
@@ -146,22 +147,37 @@ class Minors3 {
       }
   }
 
-  /// Determinant of A without row skip_row and column skip_col: expanded along the remaining row
-  /// of the pair {0, 1} or {2, 3} that contains skip_row, times 2x2 minors of the other pair.
-  double operator()(int skip_row, int skip_col) const {
-    static constexpr int kLeadRow[4] = {1, 0, 3, 2};
-    // The lead row is first (skip_row 0, 1) or last (skip_row 2, 3) of the three remaining
+  /// Determinant of A without row kSkipRow and column kSkipCol: expanded along the remaining row
+  /// of the pair {0, 1} or {2, 3} that contains kSkipRow, times 2x2 minors of the other pair.
+  template <int kSkipRow, int kSkipCol>
+  double minor() const {
+    // The lead row is first (kSkipRow 0, 1) or last (kSkipRow 2, 3) of the three remaining
     // rows; either way its cofactor signs are + - +.
-    const int* c = kOthers[skip_col];
-    const auto& m = pairs_[skip_row < 2 ? 0 : 1];
-    const int lead = kLeadRow[skip_row];
-    return A_(lead, c[0]) * m[c[1]][c[2]] - A_(lead, c[1]) * m[c[0]][c[2]] +
-           A_(lead, c[2]) * m[c[0]][c[1]];
+    constexpr int kLead = kSkipRow ^ 1;
+    constexpr int c0 = kOthers[kSkipCol][0], c1 = kOthers[kSkipCol][1], c2 = kOthers[kSkipCol][2];
+    const auto& m = pairs_[kSkipRow < 2 ? 0 : 1];
+    return A_(kLead, c0) * m[c1][c2] - A_(kLead, c1) * m[c0][c2] + A_(kLead, c2) * m[c0][c1];
+  }
+
+  /// Column kCol of adj(A) for symmetric A (cofactors of row kCol), given its diagonal entry.
+  template <int kCol>
+  Eigen::Vector4d adjugate_column(double diagonal) const {
+    Eigen::Vector4d column;
+    column(0) = kCol == 0 ? diagonal : cofactor<kCol, 0>();
+    column(1) = kCol == 1 ? diagonal : cofactor<kCol, 1>();
+    column(2) = kCol == 2 ? diagonal : cofactor<kCol, 2>();
+    column(3) = kCol == 3 ? diagonal : cofactor<kCol, 3>();
+    return column;
   }
 
  private:
+  template <int kRow, int kCol>
+  double cofactor() const {
+    return (kRow + kCol) % 2 == 0 ? minor<kRow, kCol>() : -minor<kRow, kCol>();
+  }
+
   const Eigen::Matrix4d& A_;
-  double pairs_[2][4][4] = {};
+  double pairs_[2][4][4];
 };
 
 TopEigenpair full_solver(const Eigen::Matrix4d& M, double shift) {
@@ -190,17 +206,26 @@ TopEigenpair top_eigenpair_traceless(const Eigen::Matrix4d& M, double c2, double
   // A has rank 3, so adj(A) = c q q^T for the top eigenvector q: its diagonal c q_i^2 names the
   // best-conditioned column (largest |q_i|), and that column is c q_i q.
   const Minors3 minor3(A);
+  const double diagonal[4] = {minor3.minor<0, 0>(), minor3.minor<1, 1>(), minor3.minor<2, 2>(),
+                              minor3.minor<3, 3>()};
   int best = 0;
-  double best_diagonal = -1.0;
-  for (int i = 0; i < 4; ++i) {
-    const double diagonal = std::abs(minor3(i, i));
-    if (diagonal > best_diagonal) {
-      best_diagonal = diagonal;
-      best = i;
-    }
-  }
+  for (int i = 1; i < 4; ++i)
+    if (std::abs(diagonal[i]) > std::abs(diagonal[best])) best = i;
   Eigen::Vector4d column;
-  for (int i = 0; i < 4; ++i) column(i) = ((i + best) % 2 == 0 ? 1.0 : -1.0) * minor3(best, i);
+  switch (best) {
+    case 0:
+      column = minor3.adjugate_column<0>(diagonal[0]);
+      break;
+    case 1:
+      column = minor3.adjugate_column<1>(diagonal[1]);
+      break;
+    case 2:
+      column = minor3.adjugate_column<2>(diagonal[2]);
+      break;
+    default:
+      column = minor3.adjugate_column<3>(diagonal[3]);
+      break;
+  }
   const double norm2 = column.squaredNorm();
   if (!(norm2 > 0.0) || !std::isfinite(norm2)) return full_solver(M, 0.0);
   TopEigenpair out;
