@@ -26,9 +26,14 @@ Eigen::Matrix4d quaternion_k(const Eigen::Vector3d& v, const Eigen::Vector3d& z)
 }
 
 Eigen::Matrix3d rotation_from_quaternion(const Eigen::Vector4d& eps) {
-  const Eigen::Vector3d e = eps.head<3>();
-  return 2.0 * ((0.5 - e.squaredNorm()) * Eigen::Matrix3d::Identity() + e * e.transpose() +
-                eps(3) * hat(e));
+  // 2 [(0.5 - e^T e) I + e e^T + eps4 hat(e)], entry by entry.
+  const double e0 = eps(0), e1 = eps(1), e2 = eps(2), w = eps(3);
+  const double d = 0.5 - (e0 * e0 + e1 * e1 + e2 * e2);
+  Eigen::Matrix3d R;
+  R << 2.0 * (d + e0 * e0), 2.0 * (e0 * e1 - w * e2), 2.0 * (e0 * e2 + w * e1),
+      2.0 * (e1 * e0 + w * e2), 2.0 * (d + e1 * e1), 2.0 * (e1 * e2 - w * e0),
+      2.0 * (e2 * e0 - w * e1), 2.0 * (e2 * e1 + w * e0), 2.0 * (d + e2 * e2);
+  return R;
 }
 
 Eigen::Vector4d quaternion_from_rotation(const Eigen::Matrix3d& R) {
@@ -50,23 +55,30 @@ constexpr double kUpperBound = 0.86602540378443865 * (1.0 + 1e-12);  // sqrt(3/4
 // Iteration stops once a step is below this fraction of ||M||_F (a few ulps of the roots).
 constexpr double kRelativeStep = 4.0 * std::numeric_limits<double>::epsilon();
 
-/// One step of Laguerre's method from above the largest root r of a polynomial of degree kDegree
-/// whose roots are all real: the iterates decrease monotonically to r, cubically near a simple
-/// root, and from far away in a few steps (Newton needs many when other roots are close by).
-/// Above r, p'/p = sum 1/(x - r_i) <= kDegree / (x - r), so x - r <= kDegree p / p': no step is
-/// taken once that bound is below tolerance. Returns true when the iteration is finished (that
-/// bound or the step taken is below tolerance, or x is at, or by rounding below, the root).
+/// One step from above the largest root r of a polynomial of degree kDegree whose roots are all
+/// real, by Laguerre's method or by Halley's. Both decrease monotonically to r (neither
+/// overshoots: with a_i = 1/(x - r_i), Cauchy-Schwarz bounds Laguerre's step, and Halley's step
+/// 2 G / (G^2 + sum a_i^2), G = sum a_i, is at most 1/a_1 because G^2 + a_1^2 >= 2 a_1 G), both
+/// cubically near a simple root. Far from r Laguerre's step is much longer (exact when the other
+/// roots coincide, where Halley's covers 2/(kDegree + 1) of the way), so it is taken first;
+/// near r Halley's is as good and cheaper (no square root on the iteration's critical path).
+/// Above r, p'/p = sum a_i <= kDegree / (x - r), so x - r <= kDegree p / p': no step is taken
+/// once that bound is below tolerance. Returns true when the iteration is finished (that bound
+/// or the step taken is below tolerance, or x is at, or by rounding below, the root).
 /// eval(x, &p, &p', &p'') evaluates the polynomial and its derivatives.
 template <int kDegree, typename Eval>
-bool laguerre_step_from_above(double* x, double tolerance, Eval eval) {
+bool step_from_above(double* x, double tolerance, bool laguerre, Eval eval) {
   constexpr double n = kDegree;
   double p, d1, d2;
   eval(*x, &p, &d1, &d2);
   if (!(p > 0.0) || !(d1 > 0.0)) return true;
   if (n * p <= tolerance * d1) return true;
-  // x - n / (G + sqrt((n - 1)(n H - G^2))) with G = p'/p, H = G^2 - p''/p, multiplied out.
+  // Laguerre: x - n / (G + sqrt((n - 1)(n H - G^2))) with G = p'/p, H = G^2 - p''/p; Halley:
+  // x - 2 p p' / (2 p'^2 - p p''); both multiplied out.
   const double step =
-      n * p / (d1 + std::sqrt(std::max(0.0, (n - 1.0) * ((n - 1.0) * d1 * d1 - n * p * d2))));
+      laguerre
+          ? n * p / (d1 + std::sqrt(std::max(0.0, (n - 1.0) * ((n - 1.0) * d1 * d1 - n * p * d2))))
+          : 2.0 * p * d1 / (2.0 * d1 * d1 - p * d2);
   *x -= step;
   return !(step > tolerance);
 }
@@ -120,8 +132,9 @@ Eigen::Vector2d largest_two_quartic_roots(double c2, double c1, double c0, doubl
   double x = x0;
   bool x_done = false, u_done = false;
   for (int it = 0; it < kMaxIterations && !(x_done && u_done); ++it) {
-    if (!x_done) x_done = laguerre_step_from_above<4>(&x, tolerance, quartic);
-    if (!u_done) u_done = laguerre_step_from_above<3>(&u, tolerance_u, resolvent);
+    const bool laguerre = it == 0;
+    if (!x_done) x_done = step_from_above<4>(&x, tolerance, laguerre, quartic);
+    if (!u_done) u_done = step_from_above<3>(&u, tolerance_u, laguerre, resolvent);
   }
   const double r2 = std::sqrt(std::max(0.0, u)) - x;
   return {x, std::min(x, r2)};
