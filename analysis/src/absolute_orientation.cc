@@ -60,23 +60,9 @@ struct Moments {
   double vv = 0.0;                                  // sum w |v|^2
 };
 
-void validate(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v, const Eigen::VectorXd& w,
-              const OrientationOptions& options) {
-  std::string why;
-  if (!options.is_valid(&why)) throw InvalidArgument("options: " + why);
-  if (z.cols() != v.cols()) {
-    std::ostringstream out;
-    out << "z_object has " << z.cols() << " columns but the measured set has " << v.cols();
-    throw InvalidArgument(out.str());
-  }
-  if (z.cols() < 1) throw InvalidArgument("z_object: need at least one correspondence");
-  if (w.size() != 0 && w.size() != z.cols()) {
-    std::ostringstream out;
-    out << "weights has " << w.size() << " entries, expected " << z.cols();
-    throw InvalidArgument(out.str());
-  }
-  const bool weights_ok = w.size() == 0 || (w.allFinite() && (w.array() > 0.0).all());
-  if (z.allFinite() && v.allFinite() && weights_ok) return;
+/// Throws InvalidArgument naming the first non-finite column or bad weight, if any.
+void check_finite_columns(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v,
+                          const Eigen::VectorXd& w) {
   for (Eigen::Index i = 0; i < z.cols(); ++i) {
     if (!z.col(i).allFinite()) {
       throw InvalidArgument("z_object[" + std::to_string(i) + "] is not finite");
@@ -90,26 +76,85 @@ void validate(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v, const Eigen:
   }
 }
 
+/// Options, sizes and weights. The finiteness of z and v is checked by moments(), in the same
+/// pass over the data.
+void validate_shapes(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v, const Eigen::VectorXd& w,
+                     const OrientationOptions& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw InvalidArgument("options: " + why);
+  if (z.cols() != v.cols()) {
+    std::ostringstream out;
+    out << "z_object has " << z.cols() << " columns but the measured set has " << v.cols();
+    throw InvalidArgument(out.str());
+  }
+  if (z.cols() < 1) throw InvalidArgument("z_object: need at least one correspondence");
+  if (w.size() != 0 && w.size() != z.cols()) {
+    std::ostringstream out;
+    out << "weights has " << w.size() << " entries, expected " << z.cols();
+    throw InvalidArgument(out.str());
+  }
+  if (w.size() != 0 && !(w.allFinite() && (w.array() > 0.0).all())) check_finite_columns(z, v, w);
+}
+
+void validate(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v, const Eigen::VectorXd& w,
+              const OrientationOptions& options) {
+  validate_shapes(z, v, w, options);
+  if (!(z.allFinite() && v.allFinite())) check_finite_columns(z, v, w);
+}
+
+/// One pass over the data, the 21 sums in scalar locals (unrolled by hand: kept in registers,
+/// where sums stored in a Moments or in arrays would go through memory on every column).
 template <bool kWeighted>
 Moments accumulate_moments(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v,
                            const Eigen::VectorXd& w) {
-  Moments m;
-  for (Eigen::Index i = 0; i < z.cols(); ++i) {
+  const double* zp = z.data();
+  const double* vp = v.data();
+  double zz = 0.0, vv = 0.0;
+  double sz0 = 0.0, sz1 = 0.0, sz2 = 0.0, sv0 = 0.0, sv1 = 0.0, sv2 = 0.0;
+  double h00 = 0.0, h01 = 0.0, h02 = 0.0, h10 = 0.0, h11 = 0.0, h12 = 0.0, h20 = 0.0, h21 = 0.0,
+         h22 = 0.0;
+  const Eigen::Index n = z.cols();
+  for (Eigen::Index i = 0; i < n; ++i, zp += 3, vp += 3) {
     const double wi = kWeighted ? w(i) : 1.0;
-    const Eigen::Vector3d zi = z.col(i);
-    const Eigen::Vector3d wvi = wi * v.col(i);
-    m.z_sum += wi * zi;
-    m.v_sum += wvi;
-    m.H.noalias() += zi * wvi.transpose();
-    m.zz += wi * zi.squaredNorm();
-    m.vv += wvi.dot(v.col(i));
+    const double z0 = zp[0], z1 = zp[1], z2 = zp[2];
+    const double wv0 = wi * vp[0], wv1 = wi * vp[1], wv2 = wi * vp[2];
+    sz0 += kWeighted ? wi * z0 : z0;
+    sz1 += kWeighted ? wi * z1 : z1;
+    sz2 += kWeighted ? wi * z2 : z2;
+    sv0 += wv0;
+    sv1 += wv1;
+    sv2 += wv2;
+    h00 += z0 * wv0;
+    h01 += z0 * wv1;
+    h02 += z0 * wv2;
+    h10 += z1 * wv0;
+    h11 += z1 * wv1;
+    h12 += z1 * wv2;
+    h20 += z2 * wv0;
+    h21 += z2 * wv1;
+    h22 += z2 * wv2;
+    const double z_norm2 = z0 * z0 + z1 * z1 + z2 * z2;
+    zz += kWeighted ? wi * z_norm2 : z_norm2;
+    vv += wv0 * vp[0] + wv1 * vp[1] + wv2 * vp[2];
   }
-  m.weight_sum = kWeighted ? w.sum() : static_cast<double>(z.cols());
+  Moments m;
+  m.weight_sum = kWeighted ? w.sum() : static_cast<double>(n);
+  m.z_sum << sz0, sz1, sz2;
+  m.v_sum << sv0, sv1, sv2;
+  m.H << h00, h01, h02, h10, h11, h12, h20, h21, h22;
+  m.zz = zz;
+  m.vv = vv;
   return m;
 }
 
+/// The moments of validated shapes (validate_shapes()), checking that z and v are finite on the
+/// way: with positive finite weights, sum w |z|^2 and sum w |v|^2 are finite unless an entry is
+/// not (or the sums overflow, which the column check then lets through as before).
 Moments moments(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v, const Eigen::VectorXd& w) {
-  return w.size() == 0 ? accumulate_moments<false>(z, v, w) : accumulate_moments<true>(z, v, w);
+  const Moments m =
+      w.size() == 0 ? accumulate_moments<false>(z, v, w) : accumulate_moments<true>(z, v, w);
+  if (!(std::isfinite(m.zz) && std::isfinite(m.vv))) check_finite_columns(z, v, w);
+  return m;
 }
 
 /// Moments of the data centred at their weighted centroids.
@@ -131,6 +176,11 @@ Moments centred(const Moments& m) {
 /// when this one is looser or spoilt by rounding.)
 double lambda_upper_from_moments(const Moments& m) {
   return std::sqrt(m.zz * m.vv) * (1.0 + 1e-12);
+}
+
+/// trace(A B) = sum_ij A_ij B_ji, without forming the product.
+double trace_of_product(const Eigen::Matrix3d& A, const Eigen::Matrix3d& B) {
+  return A.cwiseProduct(B.transpose()).sum();
 }
 
 /// adj(M) = cofactor(M)^T; its rows are cross products of M's columns.
@@ -254,7 +304,7 @@ OrientationResult absolute_orientation(const Eigen::Matrix3Xd& z_object,
                                        const Eigen::Matrix3Xd& v_camera,
                                        const Eigen::VectorXd& weights,
                                        const OrientationOptions& options) {
-  validate(z_object, v_camera, weights, options);
+  validate_shapes(z_object, v_camera, weights, options);
   const Moments m = moments(z_object, v_camera, weights);
   if (!(m.vv > 0.0)) throw InvalidArgument("measured: every measured vector is zero");
 
@@ -264,8 +314,8 @@ OrientationResult absolute_orientation(const Eigen::Matrix3Xd& z_object,
   result.quaternion = quaternion_from_rotation(solve.R);
   result.eigen_gap = solve.gap;
   result.used_fallback = solve.used_fallback;
-  const double correlation = (solve.R * m.H).trace();  // sum w v^T R z
-  result.alpha = std::max(0.0, correlation) / m.vv;    // Eq. (4)
+  const double correlation = trace_of_product(solve.R, m.H);  // sum w v^T R z
+  result.alpha = std::max(0.0, correlation) / m.vv;           // Eq. (4)
   result.residual =
       std::max(0.0, m.zz - 2.0 * result.alpha * correlation + result.alpha * result.alpha * m.vv);
   result.status = classify(solve, m.H, options, &result.message);
@@ -274,7 +324,7 @@ OrientationResult absolute_orientation(const Eigen::Matrix3Xd& z_object,
 
 PoseResult absolute_pose(const Eigen::Matrix3Xd& z_object, const Eigen::Matrix3Xd& q_camera,
                          const Eigen::VectorXd& weights, const OrientationOptions& options) {
-  validate(z_object, q_camera, weights, options);
+  validate_shapes(z_object, q_camera, weights, options);
   const Moments m = moments(z_object, q_camera, weights);
   const Moments c = centred(m);
   if (!(c.vv > 0.0)) {
@@ -285,7 +335,7 @@ PoseResult absolute_pose(const Eigen::Matrix3Xd& z_object, const Eigen::Matrix3X
   result.R_camera_object = solve.R;
   result.eigen_gap = solve.gap;
   result.used_fallback = solve.used_fallback;
-  const double correlation = (solve.R * c.H).trace();
+  const double correlation = trace_of_product(solve.R, c.H);
   result.alpha = std::max(0.0, correlation) / c.vv;
   // Eq. (13): p = (alpha sum w q - sum w R z) / sum w.
   result.p_camera_object = (result.alpha * m.v_sum - solve.R * m.z_sum) / m.weight_sum;
@@ -298,11 +348,11 @@ PoseResult absolute_pose(const Eigen::Matrix3Xd& z_object, const Eigen::Matrix3X
 PoseResult decoupled_pose(const Eigen::Matrix3Xd& z_object, const Eigen::Matrix3Xd& q_camera,
                           double alpha, const Eigen::VectorXd& weights,
                           const OrientationOptions& options) {
-  validate(z_object, q_camera, weights, options);
+  validate_shapes(z_object, q_camera, weights, options);
+  const Moments m = moments(z_object, q_camera, weights);
   if (!(alpha > 0.0 && std::isfinite(alpha))) {
     throw InvalidArgument("alpha must be positive and finite");
   }
-  const Moments m = moments(z_object, q_camera, weights);
   PoseResult result;
   result.alpha = alpha;
   double z_abs_sum = 0.0;
@@ -323,7 +373,7 @@ PoseResult decoupled_pose(const Eigen::Matrix3Xd& z_object, const Eigen::Matrix3
   // J of Eq. (12) expanded with sum w z = 0.
   const Eigen::Vector3d p = result.p_camera_object;
   result.residual =
-      std::max(0.0, m.zz - 2.0 * alpha * (solve.R * m.H).trace() + alpha * alpha * m.vv +
+      std::max(0.0, m.zz - 2.0 * alpha * trace_of_product(solve.R, m.H) + alpha * alpha * m.vv +
                         m.weight_sum * p.squaredNorm() - 2.0 * alpha * p.dot(m.v_sum));
   result.status = classify(solve, m.H, options, &result.message);
   return result;

@@ -26,9 +26,14 @@ Eigen::Matrix4d quaternion_k(const Eigen::Vector3d& v, const Eigen::Vector3d& z)
 }
 
 Eigen::Matrix3d rotation_from_quaternion(const Eigen::Vector4d& eps) {
-  const Eigen::Vector3d e = eps.head<3>();
-  return 2.0 * ((0.5 - e.squaredNorm()) * Eigen::Matrix3d::Identity() + e * e.transpose() +
-                eps(3) * hat(e));
+  // 2 [(0.5 - e^T e) I + e e^T + eps4 hat(e)], entry by entry.
+  const double e0 = eps(0), e1 = eps(1), e2 = eps(2), w = eps(3);
+  const double d = 0.5 - (e0 * e0 + e1 * e1 + e2 * e2);
+  Eigen::Matrix3d R;
+  R << 2.0 * (d + e0 * e0), 2.0 * (e0 * e1 - w * e2), 2.0 * (e0 * e2 + w * e1),
+      2.0 * (e1 * e0 + w * e2), 2.0 * (d + e1 * e1), 2.0 * (e1 * e2 - w * e0),
+      2.0 * (e2 * e0 - w * e1), 2.0 * (e2 * e1 + w * e0), 2.0 * (d + e2 * e2);
+  return R;
 }
 
 Eigen::Vector4d quaternion_from_rotation(const Eigen::Matrix3d& R) {
@@ -50,33 +55,48 @@ constexpr double kUpperBound = 0.86602540378443865 * (1.0 + 1e-12);  // sqrt(3/4
 // Iteration stops once a step is below this fraction of ||M||_F (a few ulps of the roots).
 constexpr double kRelativeStep = 4.0 * std::numeric_limits<double>::epsilon();
 
-/// Laguerre's method from above the largest root r of a polynomial of degree kDegree whose roots
-/// are all real: the iterates decrease monotonically to r, cubically near a simple root, and from
-/// far away in a few steps (Newton needs many when other roots are close by). Above r,
-/// p'/p = sum 1/(x - r_i) <= kDegree / (x - r), so x - r <= kDegree p / p': the iteration stops
-/// once that bound or the last step is below tolerance.
+/// One step from above the largest root r of a polynomial of degree kDegree whose roots are all
+/// real, by Laguerre's method or by Halley's. Both decrease monotonically to r (neither
+/// overshoots: with a_i = 1/(x - r_i), Cauchy-Schwarz bounds Laguerre's step, and Halley's step
+/// 2 G / (G^2 + sum a_i^2), G = sum a_i, is at most 1/a_1 because G^2 + a_1^2 >= 2 a_1 G), both
+/// cubically near a simple root. Far from r Laguerre's step is much longer (exact when the other
+/// roots coincide, where Halley's covers 2/(kDegree + 1) of the way), so it is taken first;
+/// near r Halley's is as good and cheaper (no square root on the iteration's critical path).
+/// Above r, p'/p = sum a_i <= kDegree / (x - r), so x - r <= kDegree p / p': no step is taken
+/// once that bound is below tolerance. Returns true when the iteration is finished (that bound
+/// or the step taken is below tolerance, or x is at, or by rounding below, the root).
 /// eval(x, &p, &p', &p'') evaluates the polynomial and its derivatives.
 template <int kDegree, typename Eval>
-double laguerre_from_above(double x, double tolerance, Eval eval) {
+bool step_from_above(double* x, double tolerance, bool laguerre, Eval eval) {
   constexpr double n = kDegree;
-  for (int it = 0; it < kMaxIterations; ++it) {
-    double p, d1, d2;
-    eval(x, &p, &d1, &d2);
-    if (!(p > 0.0) || !(d1 > 0.0)) break;  // at (or by rounding below) the root
-    if (n * p <= tolerance * d1) break;
-    // x - n / (G + sqrt((n - 1)(n H - G^2))) with G = p'/p, H = G^2 - p''/p, multiplied out.
-    const double step =
-        n * p / (d1 + std::sqrt(std::max(0.0, (n - 1.0) * ((n - 1.0) * d1 * d1 - n * p * d2))));
-    x -= step;
-    if (!(step > tolerance)) break;
-  }
-  return x;
+  double p, d1, d2;
+  eval(*x, &p, &d1, &d2);
+  if (!(p > 0.0) || !(d1 > 0.0)) return true;
+  if (n * p <= tolerance * d1) return true;
+  // Laguerre: x - n / (G + sqrt((n - 1)(n H - G^2))) with G = p'/p, H = G^2 - p''/p; Halley:
+  // x - 2 p p' / (2 p'^2 - p p''); both multiplied out.
+  const double step =
+      laguerre
+          ? n * p / (d1 + std::sqrt(std::max(0.0, (n - 1.0) * ((n - 1.0) * d1 * d1 - n * p * d2))))
+          : 2.0 * p * d1 / (2.0 * d1 * d1 - p * d2);
+  *x -= step;
+  return !(step > tolerance);
+}
+
+/// True when no root of the polynomial exceeds x (Budan-Fourier): it and all its derivatives
+/// are >= 0 there.
+template <typename Eval>
+bool above_all_roots(double x, Eval eval) {
+  double p, d1, d2;
+  eval(x, &p, &d1, &d2);
+  return p >= 0.0 && d1 >= 0.0 && d2 >= 0.0;
 }
 
 }  // namespace
 
 Eigen::Vector2d largest_two_quartic_roots(double c2, double c1, double c0, double x0) {
-  const double scale = std::sqrt(std::max(0.0, -2.0 * c2));  // ||M||_F
+  const double scale2 = std::max(0.0, -2.0 * c2);  // ||M||_F^2 = sum of the squared roots
+  const double scale = std::sqrt(scale2);
   const double tolerance = kRelativeStep * scale;
   auto quartic = [&](double x, double* p, double* d1, double* d2) {
     const double x2 = x * x;
@@ -84,32 +104,40 @@ Eigen::Vector2d largest_two_quartic_roots(double c2, double c1, double c0, doubl
     *d1 = (4.0 * x2 + 2.0 * c2) * x + c1;
     *d2 = 12.0 * x2 + 2.0 * c2;
   };
-  // The hint is used only when it is provably above every root: by Budan-Fourier, no root
-  // exceeds x when p and all its derivatives are >= 0 at x. Otherwise (a hint spoilt by rounding
-  // or wrong) start from the Laguerre-Samuelson bound, which needs only the coefficients.
+  // The hint is used only when it is provably above every root, otherwise (a hint spoilt by
+  // rounding or wrong) start from the Laguerre-Samuelson bound, which needs only the
+  // coefficients.
   const double safe_start = kUpperBound * scale;
-  double p0, d1, d2;
-  quartic(x0, &p0, &d1, &d2);
-  if (!(x0 <= safe_start && x0 >= 0.0 && p0 >= 0.0 && d1 >= 0.0 && d2 >= 0.0)) x0 = safe_start;
-  const double r1 = laguerre_from_above<4>(x0, tolerance, quartic);
-  // Deflate: p(x) = (x - r1) (x^3 + r1 x^2 + b x + c).
-  const double b = c2 + r1 * r1;
-  const double c = c1 + r1 * b;
-  auto cubic = [&](double x, double* p, double* d1, double* d2) {
-    *p = ((x + r1) * x + b) * x + c;
-    *d1 = (3.0 * x + 2.0 * r1) * x + b;
-    *d2 = 6.0 * x + 2.0 * r1;
+  if (!(x0 <= safe_start && x0 >= 0.0 && above_all_roots(x0, quartic))) x0 = safe_start;
+  // lambda_2 without deflating by lambda_1, so that both iterations run side by side: for roots
+  // r1 >= r2 >= r3 >= r4 summing to 0, the resolvent cubic u^3 + 2 c2 u^2 + (c2^2 - 4 c0) u - c1^2
+  // has the roots (r1 + r_k)^2, k = 2, 3, 4, the largest (r1 + r2)^2 >= -2 c2 / 3 (their sum is
+  // -2 c2), so r2 = sqrt(u1) - r1 loses nothing to the square root. Its roots are >= 0, so u1 is
+  // at most their sum; the Laguerre-Samuelson bound mean + sqrt(2 variance) is closer.
+  const double e2 = 2.0 * c2;
+  const double e1 = c2 * c2 - 4.0 * c0;
+  const double e0 = -c1 * c1;
+  auto resolvent = [&](double u, double* p, double* d1, double* d2) {
+    *p = ((u + e2) * u + e1) * u + e0;
+    *d1 = (3.0 * u + 2.0 * e2) * u + e1;
+    *d2 = 6.0 * u + 2.0 * e2;
   };
-  // The cubic's roots sum to -r1 and their squares to -2 c2 - r1^2, so by Laguerre-Samuelson the
-  // largest is at most mean + sqrt(2 variance): closer than r1, and equal to the root when the
-  // two smallest coincide. If rounding put it below the root (Budan-Fourier), start from r1.
-  const double mean = -r1 / 3.0;
-  const double variance = std::max(0.0, (-2.0 * c2 - r1 * r1) / 3.0 - mean * mean);
-  double start = std::min(r1, mean + std::sqrt(2.0 * variance));
-  cubic(start, &p0, &d1, &d2);
-  if (!(p0 >= 0.0 && d1 >= 0.0 && d2 >= 0.0)) start = r1;
-  const double r2 = laguerre_from_above<3>(start, tolerance, cubic);
-  return {r1, std::min(r1, r2)};
+  const double mean = -e2 / 3.0;
+  const double variance = std::max(0.0, (e2 * e2 - 2.0 * e1) / 3.0 - mean * mean);
+  double u = std::min(scale2, mean + std::sqrt(2.0 * variance));
+  if (!above_all_roots(u, resolvent)) u = scale2 * (1.0 + 1e-12);
+  // A step of u below kRelativeStep ||M||_F^2 moves sqrt(u1) >= sqrt(2/3) ||M||_F by less than
+  // a step of the quartic's iteration.
+  const double tolerance_u = kRelativeStep * scale2;
+  double x = x0;
+  bool x_done = false, u_done = false;
+  for (int it = 0; it < kMaxIterations && !(x_done && u_done); ++it) {
+    const bool laguerre = it == 0;
+    if (!x_done) x_done = step_from_above<4>(&x, tolerance, laguerre, quartic);
+    if (!u_done) u_done = step_from_above<3>(&u, tolerance_u, laguerre, resolvent);
+  }
+  const double r2 = std::sqrt(std::max(0.0, u)) - x;
+  return {x, std::min(x, r2)};
 }
 
 }  // namespace internal
@@ -120,7 +148,8 @@ namespace {
 constexpr int kOthers[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
 
 /// The 3x3 minors of a 4x4 matrix from its twelve 2x2 minors (Laplace expansion): pairs[0] holds
-/// the 2x2 minors of rows {2, 3}, pairs[1] those of rows {0, 1}, indexed by column pair.
+/// the 2x2 minors of rows {2, 3}, pairs[1] those of rows {0, 1}, indexed by column pair. Row and
+/// column are template arguments so that every index is resolved at compile time.
 class Minors3 {
  public:
   explicit Minors3(const Eigen::Matrix4d& A) : A_(A) {
@@ -131,22 +160,37 @@ class Minors3 {
       }
   }
 
-  /// Determinant of A without row skip_row and column skip_col: expanded along the remaining row
-  /// of the pair {0, 1} or {2, 3} that contains skip_row, times 2x2 minors of the other pair.
-  double operator()(int skip_row, int skip_col) const {
-    static constexpr int kLeadRow[4] = {1, 0, 3, 2};
-    // The lead row is first (skip_row 0, 1) or last (skip_row 2, 3) of the three remaining
+  /// Determinant of A without row kSkipRow and column kSkipCol: expanded along the remaining row
+  /// of the pair {0, 1} or {2, 3} that contains kSkipRow, times 2x2 minors of the other pair.
+  template <int kSkipRow, int kSkipCol>
+  double minor() const {
+    // The lead row is first (kSkipRow 0, 1) or last (kSkipRow 2, 3) of the three remaining
     // rows; either way its cofactor signs are + - +.
-    const int* c = kOthers[skip_col];
-    const auto& m = pairs_[skip_row < 2 ? 0 : 1];
-    const int lead = kLeadRow[skip_row];
-    return A_(lead, c[0]) * m[c[1]][c[2]] - A_(lead, c[1]) * m[c[0]][c[2]] +
-           A_(lead, c[2]) * m[c[0]][c[1]];
+    constexpr int kLead = kSkipRow ^ 1;
+    constexpr int c0 = kOthers[kSkipCol][0], c1 = kOthers[kSkipCol][1], c2 = kOthers[kSkipCol][2];
+    const auto& m = pairs_[kSkipRow < 2 ? 0 : 1];
+    return A_(kLead, c0) * m[c1][c2] - A_(kLead, c1) * m[c0][c2] + A_(kLead, c2) * m[c0][c1];
+  }
+
+  /// Column kCol of adj(A) for symmetric A (cofactors of row kCol), given its diagonal entry.
+  template <int kCol>
+  Eigen::Vector4d adjugate_column(double diagonal) const {
+    Eigen::Vector4d column;
+    column(0) = kCol == 0 ? diagonal : cofactor<kCol, 0>();
+    column(1) = kCol == 1 ? diagonal : cofactor<kCol, 1>();
+    column(2) = kCol == 2 ? diagonal : cofactor<kCol, 2>();
+    column(3) = kCol == 3 ? diagonal : cofactor<kCol, 3>();
+    return column;
   }
 
  private:
+  template <int kRow, int kCol>
+  double cofactor() const {
+    return (kRow + kCol) % 2 == 0 ? minor<kRow, kCol>() : -minor<kRow, kCol>();
+  }
+
   const Eigen::Matrix4d& A_;
-  double pairs_[2][4][4] = {};
+  double pairs_[2][4][4];
 };
 
 TopEigenpair full_solver(const Eigen::Matrix4d& M, double shift) {
@@ -175,17 +219,26 @@ TopEigenpair top_eigenpair_traceless(const Eigen::Matrix4d& M, double c2, double
   // A has rank 3, so adj(A) = c q q^T for the top eigenvector q: its diagonal c q_i^2 names the
   // best-conditioned column (largest |q_i|), and that column is c q_i q.
   const Minors3 minor3(A);
+  const double diagonal[4] = {minor3.minor<0, 0>(), minor3.minor<1, 1>(), minor3.minor<2, 2>(),
+                              minor3.minor<3, 3>()};
   int best = 0;
-  double best_diagonal = -1.0;
-  for (int i = 0; i < 4; ++i) {
-    const double diagonal = std::abs(minor3(i, i));
-    if (diagonal > best_diagonal) {
-      best_diagonal = diagonal;
-      best = i;
-    }
-  }
+  for (int i = 1; i < 4; ++i)
+    if (std::abs(diagonal[i]) > std::abs(diagonal[best])) best = i;
   Eigen::Vector4d column;
-  for (int i = 0; i < 4; ++i) column(i) = ((i + best) % 2 == 0 ? 1.0 : -1.0) * minor3(best, i);
+  switch (best) {
+    case 0:
+      column = minor3.adjugate_column<0>(diagonal[0]);
+      break;
+    case 1:
+      column = minor3.adjugate_column<1>(diagonal[1]);
+      break;
+    case 2:
+      column = minor3.adjugate_column<2>(diagonal[2]);
+      break;
+    default:
+      column = minor3.adjugate_column<3>(diagonal[3]);
+      break;
+  }
   const double norm2 = column.squaredNorm();
   if (!(norm2 > 0.0) || !std::isfinite(norm2)) return full_solver(M, 0.0);
   TopEigenpair out;

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <functional>
 #include <limits>
 
 #include "support/eigen_testing.h"
@@ -142,6 +144,52 @@ TEST(LargestTwoQuarticRoots, AnyHintGivesTheTopTwoRoots) {
     EXPECT_NEAR(roots(0), 3.0, kEigenTolerance) << "hint " << hint;
     EXPECT_NEAR(roots(1), 1.0, kEigenTolerance) << "hint " << hint;
   }
+}
+
+TEST(LargestTwoQuarticRoots, MatchKnownRootsOfRandomQuartics) {
+  // lambda_2 comes from the resolvent cubic, whose largest root is (r1 + r2)^2: any signs of the
+  // roots, hints from exact to the Laguerre-Samuelson fallback. A root r moves by about
+  // eps (r^4 + |e2| r^2 + |e3| |r| + |e4|) / |p'(r)| when the coefficients are rounded (its
+  // condition), so each root must be within kConditionUlps of that plus the root scale; the
+  // roots are kept kSeparation apart so that the condition stays moderate.
+  constexpr double kSeparation = 1e-3;
+  constexpr double kConditionUlps = 100.0;
+  constexpr double kEps = std::numeric_limits<double>::epsilon();
+  std::mt19937 rng(kSeed + 6);
+  std::normal_distribution<double> normal;
+  int checked = 0;
+  for (int trial = 0; trial < 500; ++trial) {
+    double r[4];
+    for (double& root : r) root = normal(rng);
+    const double mean = (r[0] + r[1] + r[2] + r[3]) / 4.0;
+    for (double& root : r) root -= mean;
+    std::sort(r, r + 4, std::greater<double>());
+    const double scale = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3]);
+    if (r[0] - r[1] < kSeparation * scale || r[1] - r[2] < kSeparation * scale) continue;
+    double e2 = 0.0, e3 = 0.0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        e2 += r[i] * r[j];
+        for (int k = j + 1; k < 4; ++k) e3 += r[i] * r[j] * r[k];
+      }
+    const double e4 = r[0] * r[1] * r[2] * r[3];
+    auto tolerance = [&](int k) {
+      const double x = r[k];
+      double derivative = 1.0;  // p'(r_k) = prod_{j != k} (r_k - r_j)
+      for (int j = 0; j < 4; ++j)
+        if (j != k) derivative *= x - r[j];
+      const double condition =
+          (x * x * x * x + std::abs(e2) * x * x + std::abs(e3 * x) + std::abs(e4)) /
+          std::abs(derivative);
+      return kConditionUlps * kEps * (scale + condition);
+    };
+    const double hint = trial % 2 == 0 ? r[0] : std::numeric_limits<double>::infinity();
+    const Eigen::Vector2d roots = internal::largest_two_quartic_roots(e2, -e3, e4, hint);
+    EXPECT_NEAR(roots(0), r[0], tolerance(0)) << "trial " << trial;
+    EXPECT_NEAR(roots(1), r[1], tolerance(1)) << "trial " << trial;
+    ++checked;
+  }
+  EXPECT_GT(checked, 400);
 }
 
 }  // namespace

@@ -40,7 +40,7 @@ struct TopEigenpair {
 /// Options of top_eigenpair().
 struct TopEigenOptions {
   /// Relative gap (lambda_1 - lambda_2) / ||D - trace(D)/4 I||_F below which the fast method
-  /// (Laguerre's method on the characteristic polynomial plus an adjugate eigenvector) is not
+  /// (root iteration on the characteristic polynomial plus an adjugate eigenvector) is not
   /// trusted and the full symmetric eigensolver is used instead. Dimensionless.
   double fallback_relative_gap = 1e-3;
   /// Set to force the full symmetric eigensolver (the reference path in tests and benchmarks).
@@ -48,19 +48,23 @@ struct TopEigenOptions {
 };
 
 /// Top eigenpair of the symmetric 4x4 matrix D (only the lower triangle is read). Fast path:
-/// Laguerre's method on the characteristic polynomial of the traceless part from an upper bound,
-/// deflation for lambda_2, eigenvector from the best-conditioned column of adj(D - lambda_1 I).
+/// Laguerre's then Halley's method on the characteristic polynomial of the traceless part from an
+/// upper bound, lambda_2 from the largest root of its resolvent cubic (iterated alongside),
+/// eigenvector from the best-conditioned column of adj(D - lambda_1 I).
 /// Falls back to Eigen::SelfAdjointEigenSolver when the relative gap is below
 /// options.fallback_relative_gap. Allocates nothing.
 TopEigenpair top_eigenpair(const Eigen::Matrix4d& D, const TopEigenOptions& options = {});
 
 namespace internal {
 /// Largest two real roots of the depressed quartic x^4 + c2 x^2 + c1 x + c0 whose roots are all
-/// real (a characteristic polynomial of a symmetric traceless matrix), found by Laguerre's method,
-/// which decreases monotonically from above. x0 is a hint (an upper bound of the largest root, or
-/// +inf): it is used when it is below the Laguerre-Samuelson bound sqrt(-3 c2 / 2) and the quartic
-/// and all its derivatives are >= 0 there (Budan-Fourier: no root exceeds it), otherwise the
-/// iteration starts from that bound. Returns {root1, root2} with root1 >= root2.
+/// real (a characteristic polynomial of a symmetric traceless matrix). The largest, r1, by one
+/// Laguerre step then Halley steps, which decrease monotonically from above; the second as
+/// sqrt(u1) - r1, where u1 = (r1 + r2)^2 is the largest root of the resolvent cubic
+/// u^3 + 2 c2 u^2 + (c2^2 - 4 c0) u - c1^2, found the same way in the same loop. x0 is a hint (an
+/// upper bound of the largest root, or +inf): it is used when it is below the Laguerre-Samuelson
+/// bound sqrt(-3 c2 / 2) and the quartic and all its derivatives are >= 0 there (Budan-Fourier: no
+/// root exceeds it), otherwise the iteration starts from that bound. Returns {root1, root2} with
+/// root1 >= root2.
 Eigen::Vector2d largest_two_quartic_roots(double c2, double c1, double c0, double x0);
 
 /// top_eigenpair() of a traceless symmetric 4x4 matrix M (full, both triangles) whose
