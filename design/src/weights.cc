@@ -244,26 +244,36 @@ Weights nullspace_weights(const Eigen::Matrix3Xd& z, const WeightsOptions& optio
   }
   if (!options.suggest || c.status == Weights::Status::kPositive) return out;
 
+  // Re-solves the LP on a fixed layout; fills `s` (weights, min_weight) when weights exist.
+  auto verify = [&](const Eigen::Matrix3Xd& fixed, WeightsSuggestion* s) {
+    const Classified f = classify(fixed, options);
+    out.lp_solves += f.lp_solves;
+    if (f.status != Weights::Status::kPositive && f.status != Weights::Status::kBoundary) {
+      return false;
+    }
+    s->weights = f.weights;
+    s->min_weight = f.weights.minCoeff();
+    return true;
+  };
+  auto with_entry = [&](const Eigen::Vector3d& added) {
+    Eigen::Matrix3Xd fixed(3, n + 1);
+    fixed.leftCols(n) = z;
+    fixed.col(n) = added;
+    return fixed;
+  };
+
   WeightsSuggestion best_partner;
   bool have_partner = false;
   for (int i = 0; i < n; ++i) {
     if (!(z.col(i).norm() > 0.0)) continue;
-    Eigen::Matrix3Xd fixed(3, n + 1);
-    fixed.leftCols(n) = z;
-    fixed.col(n) = -z.col(i);
-    const Classified f = classify(fixed, options);
-    out.lp_solves += f.lp_solves;
-    if (f.status != Weights::Status::kPositive && f.status != Weights::Status::kBoundary) {
-      continue;
-    }
-    const double min_weight = f.weights.minCoeff();
-    if (!have_partner || min_weight > best_partner.min_weight) {
+    WeightsSuggestion partner;
+    partner.kind = WeightsSuggestion::Kind::kSymmetricPartner;
+    partner.index = i;
+    partner.added = -z.col(i);
+    if (!verify(with_entry(partner.added), &partner)) continue;
+    if (!have_partner || partner.min_weight > best_partner.min_weight) {
       have_partner = true;
-      best_partner.kind = WeightsSuggestion::Kind::kSymmetricPartner;
-      best_partner.index = i;
-      best_partner.added = -z.col(i);
-      best_partner.min_weight = min_weight;
-      best_partner.weights = f.weights;
+      best_partner = partner;
     }
   }
   if (have_partner) {
@@ -274,36 +284,22 @@ Weights nullspace_weights(const Eigen::Matrix3Xd& z, const WeightsOptions& optio
     best_partner.text = t.str();
     out.suggestions.push_back(best_partner);
   }
-  const Eigen::Vector3d balance = -z.rowwise().sum();
-  if (balance.norm() > 0.0) {
-    Eigen::Matrix3Xd fixed(3, n + 1);
-    fixed.leftCols(n) = z;
-    fixed.col(n) = balance;
-    const Classified f = classify(fixed, options);
-    out.lp_solves += f.lp_solves;
-    if (f.status == Weights::Status::kPositive || f.status == Weights::Status::kBoundary) {
-      WeightsSuggestion entry;
-      entry.kind = WeightsSuggestion::Kind::kBalancingEntry;
-      entry.added = balance;
-      entry.weights = f.weights;
-      entry.min_weight = f.weights.minCoeff();
-      std::ostringstream t;
-      t << "add one entry at -sum z_i = " << format_vector(balance)
-        << ": equal weights then balance, the smallest weight becomes " << entry.min_weight;
-      entry.text = t.str();
-      out.suggestions.push_back(entry);
-    }
+  WeightsSuggestion entry;
+  entry.kind = WeightsSuggestion::Kind::kBalancingEntry;
+  entry.added = -z.rowwise().sum();
+  if (entry.added.norm() > 0.0 && verify(with_entry(entry.added), &entry)) {
+    std::ostringstream t;
+    t << "add one entry at -sum z_i = " << format_vector(entry.added)
+      << ": equal weights then balance, the smallest weight becomes " << entry.min_weight;
+    entry.text = t.str();
+    out.suggestions.push_back(entry);
   }
   if (allow_shift) {
     const Eigen::Vector3d centroid = z.rowwise().mean();
-    const Classified f = classify(z.colwise() - centroid, options);
-    out.lp_solves += f.lp_solves;
-    if (f.status == Weights::Status::kPositive || f.status == Weights::Status::kBoundary) {
-      WeightsSuggestion shift;
-      shift.kind = WeightsSuggestion::Kind::kShiftOrigin;
-      shift.shift = centroid;
-      shift.weights = f.weights;
-      shift.min_weight = f.weights.minCoeff();
+    WeightsSuggestion shift;
+    shift.kind = WeightsSuggestion::Kind::kShiftOrigin;
+    shift.shift = centroid;
+    if (verify(z.colwise() - centroid, &shift)) {
       std::ostringstream t;
       t << "move the object origin to the centroid " << format_vector(centroid)
         << " of the points: the smallest weight becomes " << shift.min_weight;

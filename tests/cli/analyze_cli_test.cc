@@ -24,10 +24,7 @@ std::string layout(const char* name) {
 }
 
 nlohmann::json analyze_json(const std::string& args, ScratchDir& scratch) {
-  const auto run = run_vantage("analyze " + args + " --json", scratch);
-  EXPECT_EQ(run.status, 0) << run.err;
-  EXPECT_EQ(run.err, "");
-  return nlohmann::json::parse(run.out);
+  return testing::run_json("analyze " + args, scratch);
 }
 
 TEST(AnalyzeCli, TriadHasFourWorstViewpointsAndTheContractFields) {

@@ -29,12 +29,7 @@ constexpr double kSameLayout = 1e-9;
 // Adding data never lowers p-bar_min; the values come from independent certified solves.
 constexpr double kMonotone = 1e-9;
 
-nlohmann::json run_json(const std::string& args, const ScratchDir& scratch) {
-  const auto run = run_vantage(args + " --json", scratch);
-  EXPECT_EQ(run.status, 0) << run.err;
-  EXPECT_EQ(run.err, "");
-  return nlohmann::json::parse(run.out);
-}
+using testing::run_json;
 
 double ceiling(int m) { return std::cos(kPi / (2.0 * m)); }
 

@@ -20,12 +20,7 @@ constexpr double kNullSpace = 1e-9;
 // The weights are normalised to sum n; CSDP solves the LP to relative accuracy ~1e-8.
 constexpr double kSumTolerance = 1e-6;
 
-nlohmann::json run_json(const std::string& args, const ScratchDir& scratch) {
-  const auto run = run_vantage(args + " --json", scratch);
-  EXPECT_EQ(run.status, 0) << run.err;
-  EXPECT_EQ(run.err, "");
-  return nlohmann::json::parse(run.out);
-}
+using testing::run_json;
 
 Eigen::Matrix3Xd columns(const nlohmann::json& rows) {
   Eigen::Matrix3Xd out(3, rows.size());

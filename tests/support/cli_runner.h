@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
@@ -76,6 +77,14 @@ inline int line_count(const std::string& text) {
   int lines = 0;
   for (char c : text) lines += c == '\n';
   return lines + (!text.empty() && text.back() != '\n');
+}
+
+/// Runs `vantage <args> --json`, expects success with nothing on stderr, and parses stdout.
+inline nlohmann::json run_json(const std::string& args, const ScratchDir& scratch) {
+  const CliRun run = run_vantage(args + " --json", scratch);
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(run.err, "");
+  return nlohmann::json::parse(run.out);
 }
 
 /// A call that must be refused as bad input or usage.
