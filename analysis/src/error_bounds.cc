@@ -62,6 +62,34 @@ Eigen::VectorXd projected_fractions(const Eigen::Matrix3Xd& vectors, const Eigen
   return p;
 }
 
+Eigen::VectorXd pbar_at_viewpoints(const Eigen::Matrix3Xd& vectors,
+                                   const Eigen::Matrix3Xd& viewpoints) {
+  if (vectors.cols() == 0) throw InvalidArgument("pbar_at_viewpoints: vectors is empty");
+  Eigen::Matrix3Xd normals(3, vectors.cols());
+  for (Eigen::Index i = 0; i < vectors.cols(); ++i) {
+    const double norm = vectors.col(i).norm();
+    if (!(norm > 0.0) || !std::isfinite(norm)) {
+      throw InvalidArgument("pbar_at_viewpoints: vectors column " + std::to_string(i) +
+                            " is zero or not finite");
+    }
+    normals.col(i) = vectors.col(i) / norm;
+  }
+  Eigen::VectorXd pbar(viewpoints.cols());
+  for (Eigen::Index k = 0; k < viewpoints.cols(); ++k) {
+    const Eigen::Vector3d a = viewpoints.col(k);
+    if (!a.allFinite() || std::abs(a.norm() - 1.0) > kUnitTolerance) {
+      throw InvalidArgument("pbar_at_viewpoints: viewpoints column " + std::to_string(k) +
+                            " is not a finite unit vector");
+    }
+    double c = 1.0;
+    for (Eigen::Index i = 0; i < normals.cols(); ++i) {
+      c = std::min(c, std::abs(normals.col(i).dot(a)));
+    }
+    pbar(k) = std::sqrt((1.0 - c) * (1.0 + c));
+  }
+  return pbar;
+}
+
 Eigen::VectorXd worst_case_errors_deg(const Eigen::Matrix3Xd& vectors, const Eigen::Vector3d& a) {
   const Eigen::VectorXd p = projected_fractions(vectors, a);
   Eigen::VectorXd errors = Eigen::VectorXd::Zero(p.size());

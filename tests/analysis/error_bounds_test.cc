@@ -83,6 +83,28 @@ TEST(ErrorBounds, Eq26AndEq30AtTheWorstViewpoint) {
   }
 }
 
+TEST(ErrorBounds, PbarAtViewpointsIsTheLargestProjectedFraction) {
+  std::mt19937_64 rng(kSeed);
+  std::normal_distribution<double> normal;
+  const Eigen::Matrix3Xd z = Eigen::Matrix3Xd::NullaryExpr(3, 7, [&] { return normal(rng); });
+  Eigen::Matrix3Xd viewpoints = Eigen::Matrix3Xd::NullaryExpr(3, 50, [&] { return normal(rng); });
+  viewpoints.colwise().normalize();
+  const Eigen::VectorXd pbar = pbar_at_viewpoints(z, viewpoints);
+  ASSERT_EQ(pbar.size(), 50);
+  for (int k = 0; k < 50; ++k) {
+    EXPECT_NEAR(pbar(k), projected_fractions(z, viewpoints.col(k)).maxCoeff(), 1e-12);
+  }
+  // Z = I: p_bar is sqrt(2/3) at (1, 1, 1)/sqrt(3) and 1 along a coordinate axis.
+  const Eigen::Matrix3Xd a = (Eigen::Matrix3Xd(3, 2) << 1, 1, 1, 0, 1, 0).finished();
+  Eigen::Matrix3Xd unit = a;
+  unit.colwise().normalize();
+  const Eigen::VectorXd identity_pbar = pbar_at_viewpoints(Eigen::Matrix3d::Identity(), unit);
+  EXPECT_NEAR(identity_pbar(0), std::sqrt(2.0 / 3.0), 1e-12);
+  EXPECT_NEAR(identity_pbar(1), 1.0, 1e-12);
+  EXPECT_THROW(pbar_at_viewpoints(Eigen::Matrix3Xd(3, 0), unit), InvalidArgument);
+  EXPECT_THROW(pbar_at_viewpoints(Eigen::Matrix3d::Identity(), a), InvalidArgument);
+}
+
 TEST(ErrorBounds, KnownValuesAndEdges) {
   EXPECT_EQ(scale_error_angle(1.0, 0.7), 0.0) << "exact scale: no error";
   // beta p = 1 puts v_e in the image plane: the error is v's elevation, acos(p).

@@ -28,6 +28,14 @@ double lub_scale_error_angle(double p, double pbar);
 /// data vector's norm in the image plane. vectors: 3 x m non-zero columns; a: unit vector.
 Eigen::VectorXd projected_fractions(const Eigen::Matrix3Xd& vectors, const Eigen::Vector3d& a);
 
+/// p_bar(a) = max_i p_i = sqrt(1 - min_i (a.n_i)^2) at each viewpoint a (a column of
+/// viewpoints, unit length), n_i = z_i / ||z_i||. arccos p_bar(a) is the largest per-vector
+/// worst-case error (Eq. 26) when the camera looks along a (DESIGN.md note 10); its minimum over
+/// the sphere is p_bar_min of Theorem 6. vectors: 3 x m, m >= 1, non-zero finite columns.
+/// Throws InvalidArgument on bad vectors or a viewpoint column that is not a finite unit vector.
+Eigen::VectorXd pbar_at_viewpoints(const Eigen::Matrix3Xd& vectors,
+                                   const Eigen::Matrix3Xd& viewpoints);
+
 /// Eq. (30), in degrees: the worst-case angular error of each data vector at the worst viewpoint
 /// a with p_bar_min = max_i p_i (Theorem 6): Eq. (26) with p_i = projected_fractions(vectors, a)
 /// and p_bar = max_i p_i. Throws InvalidArgument on zero or non-finite columns or a non-unit a.
