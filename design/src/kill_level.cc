@@ -1,5 +1,6 @@
 #include "kill_level.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
