@@ -4,7 +4,7 @@
 ///
 /// Three kinds of failure (STYLE.md 7):
 ///  - expected numerical outcomes (degenerate data, no convergence) are a Status in a result;
-///  - bad caller input throws vantage::InvalidArgument whose message names the argument;
+///  - bad caller input throws InvalidArgument "<arg>: <problem>" (see internal/checks.h);
 ///  - broken internal invariants throw vantage::InternalError through VANTAGE_CHECK, which stays
 ///    on in Release builds.
 
