@@ -19,7 +19,10 @@ function(vantage_add_library name)
   install(TARGETS ${target} EXPORT vantageTargets
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-  install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  # include/vantage/<name>/internal/ holds headers shared by the modules only (e.g. the checks of
+  # analysis/internal/checks.h): not part of the API, so not installed.
+  install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+    PATTERN internal EXCLUDE)
 endfunction()
 
 # vantage_add_test_suite(<module> LIBS ...)

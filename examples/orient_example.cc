@@ -8,6 +8,7 @@
 #include <exception>
 
 #include "vantage/analysis/absolute_orientation.h"
+#include "vantage/analysis/common.h"
 #include "vantage/io/correspondence_file.h"
 
 int main(int argc, char** argv) {
@@ -24,7 +25,8 @@ int main(int argc, char** argv) {
     const vantage::PoseResult pose =
         vantage::absolute_pose(file.model, file.measured, file.weights, options);
 
-    const Eigen::Vector3d angles = pose.R_camera_object.eulerAngles(2, 1, 0) * 180.0 / M_PI;
+    const Eigen::Vector3d angles =
+        pose.R_camera_object.eulerAngles(2, 1, 0) * vantage::kDegreesPerRadian;
     std::printf("status %s, alpha %.6f, residual %.3g\n", vantage::to_string(pose.status),
                 pose.alpha, pose.residual);
     std::printf("R (zyx Euler, deg) %.4f %.4f %.4f\n", angles(0), angles(1), angles(2));

@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/internal/checks.h"
 
 namespace vantage {
 
@@ -36,15 +36,14 @@ const char* to_string(OrientationStatus status) {
 }
 
 bool OrientationOptions::is_valid(std::string* why) const {
-  auto fail = [&](const char* text) {
-    if (why) *why = text;
-    return false;
-  };
-  if (!(degenerate_gap >= 0.0 && degenerate_gap < 1.0))
-    return fail("degenerate_gap must be in [0, 1)");
-  if (!(centred_tolerance >= 0.0)) return fail("centred_tolerance must be >= 0");
-  if (!(eigen.fallback_relative_gap >= 0.0 && eigen.fallback_relative_gap < 1.0))
-    return fail("eigen.fallback_relative_gap must be in [0, 1)");
+  using internal::invalid_option;
+  if (!(degenerate_gap >= 0.0 && degenerate_gap < 1.0)) {
+    return invalid_option(why, "degenerate_gap", "must be in [0, 1)");
+  }
+  if (!(centred_tolerance >= 0.0)) return invalid_option(why, "centred_tolerance", "must be >= 0");
+  if (!(eigen.fallback_relative_gap >= 0.0 && eigen.fallback_relative_gap < 1.0)) {
+    return invalid_option(why, "eigen.fallback_relative_gap", "must be in [0, 1)");
+  }
   return true;
 }
 
@@ -60,46 +59,26 @@ struct Moments {
   double vv = 0.0;                                  // sum w |v|^2
 };
 
-/// Throws InvalidArgument naming the first non-finite column or bad weight, if any.
-void check_finite_columns(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v,
-                          const Eigen::VectorXd& w) {
-  for (Eigen::Index i = 0; i < z.cols(); ++i) {
-    if (!z.col(i).allFinite()) {
-      throw InvalidArgument("z_object[" + std::to_string(i) + "] is not finite");
-    }
-    if (!v.col(i).allFinite()) {
-      throw InvalidArgument("measured[" + std::to_string(i) + "] is not finite");
-    }
-    if (w.size() != 0 && !(w(i) > 0.0 && std::isfinite(w(i)))) {
-      throw InvalidArgument("weights[" + std::to_string(i) + "] must be positive and finite");
-    }
-  }
+/// Throws InvalidArgument naming the first non-finite column, if any.
+void check_finite_columns(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v) {
+  internal::check_finite_columns("z_object", z);
+  internal::check_finite_columns("measured", v);
 }
 
 /// Options, sizes and weights. The finiteness of z and v is checked by moments(), in the same
 /// pass over the data.
 void validate_shapes(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v, const Eigen::VectorXd& w,
                      const OrientationOptions& options) {
-  std::string why;
-  if (!options.is_valid(&why)) throw InvalidArgument("options: " + why);
-  if (z.cols() != v.cols()) {
-    std::ostringstream out;
-    out << "z_object has " << z.cols() << " columns but the measured set has " << v.cols();
-    throw InvalidArgument(out.str());
-  }
-  if (z.cols() < 1) throw InvalidArgument("z_object: need at least one correspondence");
-  if (w.size() != 0 && w.size() != z.cols()) {
-    std::ostringstream out;
-    out << "weights has " << w.size() << " entries, expected " << z.cols();
-    throw InvalidArgument(out.str());
-  }
-  if (w.size() != 0 && !(w.allFinite() && (w.array() > 0.0).all())) check_finite_columns(z, v, w);
+  internal::check_options("options", options);
+  internal::check_count_matches("measured", v.cols(), z.cols(), "z_object");
+  internal::check_min_count("z_object", z.cols(), 1, "correspondence");
+  internal::check_weights("weights", w, z.cols(), "z_object");
 }
 
 void validate(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v, const Eigen::VectorXd& w,
               const OrientationOptions& options) {
   validate_shapes(z, v, w, options);
-  if (!(z.allFinite() && v.allFinite())) check_finite_columns(z, v, w);
+  check_finite_columns(z, v);
 }
 
 /// One pass over the data, the 21 sums in scalar locals (unrolled by hand: kept in registers,
@@ -153,7 +132,7 @@ Moments accumulate_moments(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v,
 Moments moments(const Eigen::Matrix3Xd& z, const Eigen::Matrix3Xd& v, const Eigen::VectorXd& w) {
   const Moments m =
       w.size() == 0 ? accumulate_moments<false>(z, v, w) : accumulate_moments<true>(z, v, w);
-  if (!(std::isfinite(m.zz) && std::isfinite(m.vv))) check_finite_columns(z, v, w);
+  if (!(std::isfinite(m.zz) && std::isfinite(m.vv))) check_finite_columns(z, v);
   return m;
 }
 
@@ -211,8 +190,8 @@ RotationSolve rotation_svd(const Eigen::Matrix3d& H) {
   return {V * S * U.transpose(), std::max(0.0, 2.0 * (s(1) + d * s(2))), false};
 }
 
-/// Theorem 1 through Davenport's K = D + trace(H) I (DESIGN.md note 6): traceless, with the same
-/// eigenvectors and gaps as D, and with FOAM's quartic (DESIGN.md note 8) as characteristic
+/// Theorem 1 through Davenport's K = D + trace(H) I (docs/math.md §2): traceless, with the same
+/// eigenvectors and gaps as D, and with FOAM's quartic (docs/math.md §5) as characteristic
 /// polynomial, which costs a few 3x3 products instead of a 4x4 one.
 RotationSolve rotation_qmethod(const Eigen::Matrix3d& H, double lambda_upper,
                                const TopEigenOptions& eigen) {
@@ -230,7 +209,7 @@ RotationSolve rotation_qmethod(const Eigen::Matrix3d& H, double lambda_upper,
   return {rotation_from_quaternion(top.vector), top.gap, top.used_fallback};
 }
 
-/// FOAM (DESIGN.md note 8) with B = sum w b r^T = H^T (b = v measured, r = z reference).
+/// FOAM (docs/math.md §5) with B = sum w b r^T = H^T (b = v measured, r = z reference).
 /// Like the q-method's eigensolver, the root iteration is not trusted when the top two roots
 /// nearly coincide (it converges only linearly there): the SVD solution, exact in that case, is
 /// used instead.
@@ -306,7 +285,7 @@ OrientationResult absolute_orientation(const Eigen::Matrix3Xd& z_object,
                                        const OrientationOptions& options) {
   validate_shapes(z_object, v_camera, weights, options);
   const Moments m = moments(z_object, v_camera, weights);
-  if (!(m.vv > 0.0)) throw InvalidArgument("measured: every measured vector is zero");
+  if (!(m.vv > 0.0)) internal::fail("measured", "every measured vector is zero");
 
   const RotationSolve solve = solve_rotation(m.H, lambda_upper_from_moments(m), options);
   OrientationResult result;
@@ -327,9 +306,8 @@ PoseResult absolute_pose(const Eigen::Matrix3Xd& z_object, const Eigen::Matrix3X
   validate_shapes(z_object, q_camera, weights, options);
   const Moments m = moments(z_object, q_camera, weights);
   const Moments c = centred(m);
-  if (!(c.vv > 0.0)) {
-    throw InvalidArgument("measured: all measured points coincide, the scale is undefined");
-  }
+  if (!(c.vv > 0.0))
+    internal::fail("measured", "all measured points coincide, the scale is undefined");
   const RotationSolve solve = solve_rotation(c.H, lambda_upper_from_moments(c), options);
   PoseResult result;
   result.R_camera_object = solve.R;
@@ -350,9 +328,7 @@ PoseResult decoupled_pose(const Eigen::Matrix3Xd& z_object, const Eigen::Matrix3
                           const OrientationOptions& options) {
   validate_shapes(z_object, q_camera, weights, options);
   const Moments m = moments(z_object, q_camera, weights);
-  if (!(alpha > 0.0 && std::isfinite(alpha))) {
-    throw InvalidArgument("alpha must be positive and finite");
-  }
+  internal::check_positive_finite("alpha", alpha);
   PoseResult result;
   result.alpha = alpha;
   double z_abs_sum = 0.0;

@@ -1,9 +1,9 @@
 #include "vantage/analysis/haralick_2d.h"
 
 #include <cmath>
-#include <sstream>
 
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/internal/checks.h"
 
 namespace vantage {
 
@@ -19,45 +19,21 @@ const char* to_string(Pose2dStatus status) {
 
 bool Pose2dOptions::is_valid(std::string* why) const {
   if (!(degenerate_tolerance >= 0.0 && degenerate_tolerance < 1.0)) {
-    if (why) *why = "degenerate_tolerance must be in [0, 1)";
-    return false;
+    return internal::invalid_option(why, "degenerate_tolerance", "must be in [0, 1)");
   }
   return true;
 }
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 void validate(const Eigen::Matrix2Xd& from, const Eigen::Matrix2Xd& to, const Eigen::VectorXd& w,
               const Pose2dOptions& options) {
-  std::string why;
-  if (!options.is_valid(&why)) throw InvalidArgument("options: " + why);
-  if (from.cols() != to.cols()) {
-    std::ostringstream out;
-    out << "from has " << from.cols() << " columns but to has " << to.cols();
-    throw InvalidArgument(out.str());
-  }
-  if (from.cols() < 1) throw InvalidArgument("from: need at least one correspondence");
-  if (w.size() != 0 && w.size() != from.cols()) {
-    std::ostringstream out;
-    out << "weights has " << w.size() << " entries, expected " << from.cols();
-    throw InvalidArgument(out.str());
-  }
-  for (Eigen::Index i = 0; i < from.cols(); ++i) {
-    if (!from.col(i).allFinite()) {
-      throw InvalidArgument("from[" + std::to_string(i) + "] is not finite");
-    }
-    if (!to.col(i).allFinite()) {
-      throw InvalidArgument("to[" + std::to_string(i) + "] is not finite");
-    }
-    if (w.size() != 0 && !(w(i) >= 0.0 && std::isfinite(w(i)))) {
-      throw InvalidArgument("weights[" + std::to_string(i) + "] must be >= 0 and finite");
-    }
-  }
-  if (w.size() != 0 && !(w.sum() > 0.0)) {
-    throw InvalidArgument("weights: all weights are zero, at least one must be positive");
-  }
+  internal::check_options("options", options);
+  internal::check_count_matches("to", to.cols(), from.cols(), "from");
+  internal::check_min_count("from", from.cols(), 1, "correspondence");
+  internal::check_weights("weights", w, from.cols(), "from", internal::WeightRule::kNonNegative);
+  internal::check_finite_columns("from", from);
+  internal::check_finite_columns("to", to);
 }
 
 double weight(const Eigen::VectorXd& w, Eigen::Index i) { return w.size() == 0 ? 1.0 : w(i); }

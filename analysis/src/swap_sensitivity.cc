@@ -6,24 +6,17 @@
 
 #include "vantage/analysis/absolute_orientation.h"
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/internal/checks.h"
 
 namespace vantage {
 
 std::vector<SwapError> swap_sensitivity(const Eigen::Matrix3Xd& z, const Eigen::VectorXd& weights,
                                         int count) {
   const Eigen::Index m = z.cols();
-  if (m < 2) throw InvalidArgument("swap_sensitivity: z must have at least 2 columns");
-  if (count < 1) throw InvalidArgument("swap_sensitivity: count must be >= 1");
-  if (!z.allFinite()) throw InvalidArgument("swap_sensitivity: z is not finite");
-  if (weights.size() != 0 && weights.size() != m) {
-    throw InvalidArgument("swap_sensitivity: weights must have one entry per column of z");
-  }
-  for (Eigen::Index k = 0; k < weights.size(); ++k) {
-    if (!(weights(k) > 0.0) || !std::isfinite(weights(k))) {
-      throw InvalidArgument("swap_sensitivity: weights(" + std::to_string(k) +
-                            ") must be positive and finite");
-    }
-  }
+  internal::check_min_count("z", m, 2, "columns");
+  if (count < 1) internal::fail("count", "must be >= 1, got " + std::to_string(count));
+  internal::check_finite_columns("z", z);
+  internal::check_weights("weights", weights, m, "z");
   auto w = [&weights](Eigen::Index k) { return weights.size() == 0 ? 1.0 : weights(k); };
   const Eigen::Matrix4d D = orientation_matrix_d(z, z, weights);
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
@@ -41,7 +34,7 @@ std::vector<SwapError> swap_sensitivity(const Eigen::Matrix3Xd& z, const Eigen::
         continue;
       }
       const double angle = rotation_angle_between(rotation_from_quaternion(top.vector), identity);
-      all.push_back({static_cast<int>(i), static_cast<int>(j), angle * 180.0 / M_PI, false});
+      all.push_back({static_cast<int>(i), static_cast<int>(j), angle * kDegreesPerRadian, false});
     }
   }
   const size_t keep = std::min(all.size(), static_cast<size_t>(count));

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/internal/checks.h"
 #include "vantage/analysis/quaternion.h"
 
 namespace vantage {
@@ -23,14 +24,13 @@ const char* to_string(TwoViewStatus status) {
 }
 
 bool TwoViewOptions::is_valid(std::string* why) const {
-  auto fail = [&](const char* text) {
-    if (why) *why = text;
-    return false;
-  };
-  if (!(focal_length > 0.0 && std::isfinite(focal_length)))
-    return fail("focal_length must be positive and finite");
-  if (!(degenerate_tolerance >= 0.0 && degenerate_tolerance < 1.0))
-    return fail("degenerate_tolerance must be in [0, 1)");
+  using internal::invalid_option;
+  if (!(focal_length > 0.0 && std::isfinite(focal_length))) {
+    return invalid_option(why, "focal_length", "must be positive and finite");
+  }
+  if (!(degenerate_tolerance >= 0.0 && degenerate_tolerance < 1.0)) {
+    return invalid_option(why, "degenerate_tolerance", "must be in [0, 1)");
+  }
   return true;
 }
 
@@ -40,24 +40,11 @@ constexpr Eigen::Index kMinPoints = 8;
 
 void validate(const Eigen::Matrix2Xd& image1, const Eigen::Matrix2Xd& image2,
               const TwoViewOptions& options) {
-  std::string why;
-  if (!options.is_valid(&why)) throw InvalidArgument("options: " + why);
-  if (image1.cols() != image2.cols()) {
-    std::ostringstream out;
-    out << "image1 has " << image1.cols() << " points but image2 has " << image2.cols();
-    throw InvalidArgument(out.str());
-  }
-  if (image1.cols() < kMinPoints) {
-    std::ostringstream out;
-    out << "image1: need at least " << kMinPoints << " correspondences, got " << image1.cols();
-    throw InvalidArgument(out.str());
-  }
-  for (Eigen::Index i = 0; i < image1.cols(); ++i) {
-    if (!image1.col(i).allFinite())
-      throw InvalidArgument("image1[" + std::to_string(i) + "] is not finite");
-    if (!image2.col(i).allFinite())
-      throw InvalidArgument("image2[" + std::to_string(i) + "] is not finite");
-  }
+  internal::check_options("options", options);
+  internal::check_count_matches("image2", image2.cols(), image1.cols(), "image1");
+  internal::check_min_count("image1", image1.cols(), kMinPoints, "correspondences");
+  internal::check_finite_columns("image1", image1);
+  internal::check_finite_columns("image2", image2);
 }
 
 /// Columns E_2 x E_3, E_3 x E_1, E_1 x E_2 (the cofactor matrix of E).

@@ -4,16 +4,11 @@
 
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/error_bounds.h"
+#include "vantage/analysis/internal/checks.h"
 #include "vantage/design/augment.h"
 #include "vantage/sdp/worst_viewpoint.h"
 
 namespace vantage::design {
-
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-}  // namespace
 
 WorstCase evaluate_worst_case(const Eigen::Matrix3Xd& vectors) {
   const sdp::WorstViewpoint w = sdp::global_worst_viewpoint(vectors);
@@ -31,13 +26,13 @@ WorstCase evaluate_worst_case(const Eigen::Matrix3Xd& vectors) {
 }
 
 double pbar_ceiling(int m) {
-  if (m < 1) throw InvalidArgument("m: need at least 1 data vector, got " + std::to_string(m));
+  vantage::internal::check_min_count("m", m, 1, "data vector");
   return std::cos(kPi / (2.0 * m));
 }
 
 Coplanarity coplanarity(const Eigen::Matrix3Xd& vectors, double threshold) {
-  if (!(threshold >= 0.0)) throw InvalidArgument("threshold: must be >= 0");
-  if (vectors.cols() < 1) throw InvalidArgument("vectors: need at least 1 column");
+  if (!(threshold >= 0.0)) vantage::internal::fail("threshold", "must be >= 0");
+  vantage::internal::check_min_count("vectors", vectors.cols(), 1, "column");
   const Eigen::Matrix3Xd n = sdp::normalized_columns(vectors, "vectors");
   // Singular values of N / sqrt(m) are the square roots of the eigenvalues of N N^T / m.
   const Eigen::Matrix3d scatter = n * n.transpose() / static_cast<double>(n.cols());

@@ -13,6 +13,7 @@ extern "C" {
 }
 
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/internal/checks.h"
 
 namespace vantage::sdp::internal {
 namespace {
@@ -243,7 +244,7 @@ SdpResult solve_with_csdp(const LmiProblem& problem, const SdpOptions& options) 
   }
   for (int j = 1; j <= s.k; ++j) {
     if (s.constraints[j].blocks == nullptr) {
-      throw InvalidArgument("solve_lmi: problem: F_" + std::to_string(j) + " sums to zero");
+      vantage::internal::fail("problem", "F_" + std::to_string(j) + " sums to zero");
     }
   }
 

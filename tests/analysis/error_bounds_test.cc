@@ -16,7 +16,6 @@ using testing::kSeed;
 // Eq. (18) and the direct reconstruction are the same angle up to rounding of acos near 1
 // (acos amplifies a 1e-16 cosine error to ~1e-8 rad at tiny angles).
 constexpr double kAngle = 1e-7;
-constexpr double kRadToDeg = 180.0 / M_PI;
 
 // Measured (true) vector v = R z / alpha and the reconstruction v_e from d = P v and alpha_e
 // (Eqs. 21-22, same depth sign); returns the angle between them in radians.
@@ -78,7 +77,7 @@ TEST(ErrorBounds, Eq26AndEq30AtTheWorstViewpoint) {
           << "Eq. (19)";
       const double measured = reconstructed_angle(R, z.col(i), alpha, alpha_e);
       EXPECT_NEAR(lub_scale_error_angle(p(i), pbar), measured, kAngle);
-      EXPECT_NEAR(errors(i), kRadToDeg * measured, kRadToDeg * kAngle);
+      EXPECT_NEAR(errors(i), kDegreesPerRadian * measured, kDegreesPerRadian * kAngle);
     }
   }
 }
@@ -105,6 +104,36 @@ TEST(ErrorBounds, PbarAtViewpointsIsTheLargestProjectedFraction) {
   EXPECT_THROW(pbar_at_viewpoints(Eigen::Matrix3d::Identity(), a), InvalidArgument);
 }
 
+TEST(ErrorBounds, WorstErrorAtAViewpointIsArccosPbar) {
+  // docs/math.md §11: Eq. (26) is arcsin(p / p_bar) - arcsin(p), increasing in p, so the largest
+  // error over 0 <= p <= p_bar is arccos(p_bar), reached by the vector that sets p_bar.
+  constexpr int kPbars = 20;
+  constexpr int kSteps = 200;
+  for (int b = 1; b <= kPbars; ++b) {
+    const double pbar = static_cast<double>(b) / kPbars;
+    double previous = -1.0;
+    for (int k = 0; k <= kSteps; ++k) {
+      const double p = pbar * k / kSteps;
+      const double theta = lub_scale_error_angle(p, pbar);
+      EXPECT_NEAR(theta, std::asin(p / pbar) - std::asin(p), kAngle)
+          << "p " << p << " pbar " << pbar;
+      EXPECT_GE(theta, previous - kAngle) << "not increasing at p " << p << " pbar " << pbar;
+      EXPECT_LE(theta, std::acos(pbar) + kAngle);
+      previous = theta;
+    }
+    EXPECT_NEAR(previous, std::acos(pbar), kAngle) << "p = p_bar reaches arccos(p_bar)";
+  }
+  // At any viewpoint the largest Eq. (26) error over the vectors is arccos p_bar(a).
+  std::mt19937 rng(kSeed + 2);
+  const Eigen::Matrix3Xd z = testing::random_points(rng, 6, 2.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    const Eigen::Vector3d a = testing::random_unit_vector(rng);
+    const double pbar = pbar_at_viewpoints(z, a).maxCoeff();
+    EXPECT_NEAR(worst_case_errors_deg(z, a).maxCoeff(), kDegreesPerRadian * std::acos(pbar),
+                kDegreesPerRadian * kAngle);
+  }
+}
+
 TEST(ErrorBounds, KnownValuesAndEdges) {
   EXPECT_EQ(scale_error_angle(1.0, 0.7), 0.0) << "exact scale: no error";
   // beta p = 1 puts v_e in the image plane: the error is v's elevation, acos(p).
@@ -114,7 +143,8 @@ TEST(ErrorBounds, KnownValuesAndEdges) {
   // Z = I at (1, 1, 1)/sqrt(3): every p_i = p-bar = sqrt(2/3), error acos(p-bar).
   const Eigen::VectorXd e =
       worst_case_errors_deg(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Ones().normalized());
-  for (int i = 0; i < 3; ++i) EXPECT_NEAR(e(i), kRadToDeg * std::acos(std::sqrt(2.0 / 3.0)), 1e-9);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(e(i), kDegreesPerRadian * std::acos(std::sqrt(2.0 / 3.0)), 1e-9);
   EXPECT_THROW(scale_error_angle(2.0, 0.9), InvalidArgument);
   EXPECT_THROW(scale_error_angle(-1.0, 0.5), InvalidArgument);
   EXPECT_THROW(scale_error_angle(1.0, 1.5), InvalidArgument);

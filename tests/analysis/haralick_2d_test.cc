@@ -9,14 +9,15 @@
 #include <string>
 
 #include "support/eigen_testing.h"
+#include "support/message_of.h"
 #include "vantage/analysis/common.h"
 
 namespace vantage {
 namespace {
 
 using testing::kSeed;
+using testing::message_of;
 
-constexpr double kPi = 3.14159265358979323846;
 // Noise-free recovery: rounding of O(n) sums of unit-size coordinates.
 constexpr double kNoiseFreeRadians = 1e-12;
 constexpr double kNoiseFreeTranslation = 1e-11;
@@ -179,25 +180,17 @@ TEST(Pose2d, CoincidentPointsAreDegenerate) {
 
 TEST(Pose2d, BadInputThrowsNamingTheArgument) {
   const Eigen::Matrix2Xd p = Eigen::Matrix2Xd::Random(2, 4);
-  auto message_of = [](auto&& call) -> std::string {
-    try {
-      call();
-    } catch (const InvalidArgument& e) {
-      return e.what();
-    }
-    return "";
-  };
   using ::testing::HasSubstr;
   EXPECT_THAT(message_of([&] { pose_2d(p, Eigen::Matrix2Xd::Random(2, 3)); }),
               HasSubstr("columns"));
   EXPECT_THAT(message_of([&] { pose_2d(Eigen::Matrix2Xd(2, 0), Eigen::Matrix2Xd(2, 0)); }),
-              HasSubstr("at least one"));
+              HasSubstr("need at least 1 correspondence"));
   EXPECT_THAT(message_of([&] { pose_2d(p, p, Eigen::VectorXd::Ones(3)); }), HasSubstr("weights"));
   Eigen::VectorXd negative = Eigen::VectorXd::Ones(4);
   negative(2) = -1.0;
   EXPECT_THAT(message_of([&] { pose_2d(p, p, negative); }), HasSubstr("weights[2]"));
   EXPECT_THAT(message_of([&] { pose_2d(p, p, Eigen::VectorXd::Zero(4)); }),
-              HasSubstr("all weights are zero"));
+              HasSubstr("weights: all zero"));
   Eigen::Matrix2Xd nan = p;
   nan(1, 3) = std::nan("");
   EXPECT_THAT(message_of([&] { pose_2d(nan, p); }), HasSubstr("from[3]"));

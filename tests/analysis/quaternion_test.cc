@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "support/eigen_testing.h"
+#include "vantage/analysis/common.h"
 
 namespace vantage {
 namespace {
@@ -35,7 +36,7 @@ TEST(QuaternionK, IsSymmetricAndBilinear) {
 }
 
 TEST(QuaternionK, QuadraticFormIsCorrelationShiftedByDotProduct) {
-  // eps^T K(v, z) eps = v^T R(eps) z - v^T z for unit eps (DESIGN.md note 6).
+  // eps^T K(v, z) eps = v^T R(eps) z - v^T z for unit eps (docs/math.md §2).
   std::mt19937 rng(kSeed + 1);
   for (int trial = 0; trial < 50; ++trial) {
     const Eigen::Vector3d v = testing::random_points(rng, 1).col(0);
@@ -70,7 +71,7 @@ TEST(RotationFromQuaternion, HalfTurnRoundTrips) {
   const Eigen::Vector3d axes[] = {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
                                   Eigen::Vector3d(1, 1, 1).normalized()};
   for (const Eigen::Vector3d& axis : axes) {
-    const Eigen::Matrix3d R = Eigen::AngleAxisd(M_PI, axis).toRotationMatrix();
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(kPi, axis).toRotationMatrix();
     EXPECT_EIGEN_NEAR(rotation_from_quaternion(quaternion_from_rotation(R)), R, 1e-14);
   }
 }

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "support/eigen_testing.h"
+#include "support/message_of.h"
 #include "vantage/analysis/absolute_orientation.h"
 #include "vantage/analysis/common.h"
 
@@ -32,7 +33,7 @@ TEST(SwapSensitivity, IncrementalEqualsRecomputedForAnyTrueRotation) {
       Eigen::Matrix3Xd v = R * z / 1.7;
       v.col(s.i).swap(v.col(s.j));
       const OrientationResult r = absolute_orientation(z, v, w);
-      EXPECT_NEAR(rotation_angle_between(r.R_camera_object, R) * 180.0 / M_PI, s.error_deg,
+      EXPECT_NEAR(rotation_angle_between(r.R_camera_object, R) * kDegreesPerRadian, s.error_deg,
                   kDegrees)
           << "pair " << s.i << ", " << s.j;
     }
@@ -64,7 +65,7 @@ TEST(SwapSensitivity, WellDeterminedSwapsLeaveTheRotation) {
       v.col(s.j) = z.col(s.i);
       const OrientationResult direct = absolute_orientation(z, v);
       EXPECT_NEAR(rotation_angle_between(direct.R_camera_object, Eigen::Matrix3d::Identity()) *
-                      180.0 / M_PI,
+                      kDegreesPerRadian,
                   s.error_deg, 1e-6);
     }
   }
@@ -95,9 +96,25 @@ TEST(SwapSensitivity, WorstFiveAndEdgeCases) {
     EXPECT_TRUE(std::isfinite(s.error_deg));
   }
   EXPECT_TRUE(found);
-  EXPECT_THROW(swap_sensitivity(Eigen::Matrix3Xd(3, 1)), InvalidArgument);
-  EXPECT_THROW(swap_sensitivity(z, Eigen::VectorXd::Ones(3)), InvalidArgument);
-  EXPECT_THROW(swap_sensitivity(z, {}, 0), InvalidArgument);
+}
+
+TEST(SwapSensitivity, BadInputThrowsNamingTheArgument) {
+  std::mt19937 rng(kSeed + 2);
+  const Eigen::Matrix3Xd z = testing::random_points(rng, 4);
+  using ::testing::HasSubstr;
+  using testing::message_of;
+  EXPECT_THAT(message_of([] { swap_sensitivity(Eigen::Matrix3Xd(3, 1)); }),
+              HasSubstr("z: need at least 2 columns, got 1"));
+  EXPECT_THAT(message_of([&] { swap_sensitivity(z, Eigen::VectorXd::Ones(3)); }),
+              HasSubstr("weights: has 3 entries, expected 4"));
+  Eigen::VectorXd negative = Eigen::VectorXd::Ones(4);
+  negative(2) = -1.0;
+  EXPECT_THAT(message_of([&] { swap_sensitivity(z, negative); }),
+              HasSubstr("weights[2]: must be positive and finite"));
+  Eigen::Matrix3Xd nan = z;
+  nan(0, 3) = std::nan("");
+  EXPECT_THAT(message_of([&] { swap_sensitivity(nan); }), HasSubstr("z[3]: not finite"));
+  EXPECT_THAT(message_of([&] { swap_sensitivity(z, {}, 0); }), HasSubstr("count: must be >= 1"));
 }
 
 }  // namespace

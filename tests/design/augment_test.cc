@@ -14,13 +14,12 @@ namespace {
 
 using testing::kSeed;
 
-constexpr double kPi = 3.14159265358979323846;
 // The global solver certifies t to 1e-9; p-bar = sqrt(1 - t^2) inherits that at these t.
 constexpr double kCertified = 1e-9;
 // A coplanar design reaches its ceiling up to the compass search's stopping step (1e-7 rad),
 // which moves p-bar by at most ~1e-7.
 constexpr double kCeilingReach = 1e-6;
-const double kTriadPbar = std::sqrt(2.0 / 3.0);  // DESIGN.md note 1: 0.8165
+const double kTriadPbar = std::sqrt(2.0 / 3.0);  // docs/math.md §12: 0.8165
 
 Layout direction_layout(const Eigen::Matrix3Xd& vectors) {
   Layout layout;
@@ -70,7 +69,7 @@ void expect_never_lowers(const AugmentResult& r) {
   double previous = r.initial.pbar_min;
   for (const AugmentStep& st : r.steps) {
     EXPECT_GE(st.worst.pbar_min, previous - kCertified);
-    EXPECT_LE(st.worst.pbar_min, st.ceiling + kCertified) << "note 4's ceiling";
+    EXPECT_LE(st.worst.pbar_min, st.ceiling + kCertified) << "the ceiling of docs/math.md §15";
     EXPECT_EQ(st.improved, st.worst.pbar_min > previous + kCertified);
     previous = st.worst.pbar_min;
   }
@@ -94,7 +93,7 @@ TEST(Augment, TriadPlusOneVectorNeverExceedsItsValue) {
   expect_agrees_with_fresh_analysis(r, triad);
 
   // Independently: no random vector added to Z = I lifts the global p-bar_min (Fig. 3's 0.95
-  // is a single-cell artefact, DESIGN.md note 3).
+  // is a single-cell artefact, docs/math.md §13).
   std::mt19937 rng(kSeed);
   for (int trial = 0; trial < 200; ++trial) {
     Eigen::Matrix3Xd v(3, 4);
@@ -108,7 +107,7 @@ TEST(Augment, TriadPlusOneVectorNeverExceedsItsValue) {
 
 TEST(Augment, CoplanarStartReachesItsCeiling) {
   // 0, 45, 90 degrees: the worst viewpoint is in-plane at 45 degrees, and the vector at 135
-  // degrees in its a^perp completes the equal-angle fan of note 4: cos(pi / 8).
+  // degrees in its a^perp completes the equal-angle fan of docs/math.md §15: cos(pi / 8).
   const Layout three = direction_layout(planar({0.0, 45.0, 90.0}));
   const AugmentResult r = augment_layout(three, greedy_only(1));
   ASSERT_EQ(r.steps.size(), 1u);

@@ -6,7 +6,8 @@
 
 namespace vantage::testing {
 
-/// Counts the heap allocations made while it is alive (not thread-safe across counters).
+/// Counts the heap allocations made since it was constructed (from any thread). Counters nest:
+/// each reports its own scope, and allocations made while no counter is alive are never counted.
 class CountAllocations {
  public:
   CountAllocations();
@@ -15,6 +16,9 @@ class CountAllocations {
   CountAllocations& operator=(const CountAllocations&) = delete;
 
   long count() const;
+
+ private:
+  long start_;
 };
 
 }  // namespace vantage::testing

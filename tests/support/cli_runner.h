@@ -95,8 +95,8 @@ struct BadCall {
   const char* expected;   ///< a fragment the one error line must contain
 };
 
-/// The bad-input contract (DESIGN.md): exit status 2, nothing on stdout, exactly one line on
-/// stderr, "vantage: error: ..." containing `expected`.
+/// The bad-input contract (README.md, "The `vantage` command"): exit status 2, nothing on stdout,
+/// exactly one line on stderr, "vantage: error: ..." containing `expected`.
 inline void expect_bad_input(const CliRun& run, const std::string& expected) {
   EXPECT_EQ(run.status, 2) << run.out;
   EXPECT_EQ(run.out, "");

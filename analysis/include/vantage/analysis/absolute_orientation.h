@@ -129,7 +129,9 @@ Eigen::Matrix3d optimal_rotation(const Eigen::Matrix3d& H, const OrientationOpti
 /// Used by analyses that modify D incrementally (Prop. 2, Prop. 4).
 Eigen::Matrix3d rotation_from_d(const Eigen::Matrix4d& D, const TopEigenOptions& options = {});
 
-/// Geodesic angle in radians between two rotations: acos((trace(A^T B) - 1) / 2), clamped.
+/// Geodesic angle in radians, in [0, pi], between two rotations: the rotation angle of A^T B,
+/// computed as 2 atan2(|e|, |eps4|) of its quaternion. (acos((trace(A^T B) - 1) / 2) is the same
+/// angle but loses half the digits near 0.)
 double rotation_angle_between(const Eigen::Matrix3d& A, const Eigen::Matrix3d& B);
 
 }  // namespace vantage

@@ -1,10 +1,10 @@
 #pragma once
 
-/// Shared vocabulary of vantage: the error types and the invariant check.
+/// Shared vocabulary of vantage: the error types, the invariant check and the one constant pi.
 ///
 /// Three kinds of failure (STYLE.md 7):
 ///  - expected numerical outcomes (degenerate data, no convergence) are a Status in a result;
-///  - bad caller input throws vantage::InvalidArgument whose message names the argument;
+///  - bad caller input throws InvalidArgument "<arg>: <problem>" (see internal/checks.h);
 ///  - broken internal invariants throw vantage::InternalError through VANTAGE_CHECK, which stays
 ///    on in Release builds.
 
@@ -12,6 +12,11 @@
 #include <string>
 
 namespace vantage {
+
+/// pi, the one definition every module uses (docs/math.md §1).
+inline constexpr double kPi = 3.14159265358979323846;
+/// Degrees per radian: an angle in radians times this is in degrees.
+inline constexpr double kDegreesPerRadian = 180.0 / kPi;
 
 /// Thrown when a caller passes input that violates a documented precondition.
 class InvalidArgument : public std::invalid_argument {

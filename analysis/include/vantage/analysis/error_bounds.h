@@ -30,7 +30,7 @@ Eigen::VectorXd projected_fractions(const Eigen::Matrix3Xd& vectors, const Eigen
 
 /// p_bar(a) = max_i p_i = sqrt(1 - min_i (a.n_i)^2) at each viewpoint a (a column of
 /// viewpoints, unit length), n_i = z_i / ||z_i||. arccos p_bar(a) is the largest per-vector
-/// worst-case error (Eq. 26) when the camera looks along a (DESIGN.md note 10); its minimum over
+/// worst-case error (Eq. 26) when the camera looks along a (docs/math.md §11); its minimum over
 /// the sphere is p_bar_min of Theorem 6. vectors: 3 x m, m >= 1, non-zero finite columns.
 /// Throws InvalidArgument on bad vectors or a viewpoint column that is not a finite unit vector.
 Eigen::VectorXd pbar_at_viewpoints(const Eigen::Matrix3Xd& vectors,

@@ -13,7 +13,7 @@ namespace vantage {
 
 /// Paper's K(v, z), Eq. (3):
 ///   K = [[v z^T + z v^T - 2 (v^T z) I,  hat(z) v], [(hat(z) v)^T, 0]].
-/// Bilinear and symmetric; it is Davenport's K shifted by -(v^T z) I (DESIGN.md note 6), so for a
+/// Bilinear and symmetric; it is Davenport's K shifted by -(v^T z) I (docs/math.md §2), so for a
 /// unit quaternion eps, eps^T K eps = v^T R(eps) z - v^T z.
 Eigen::Matrix4d quaternion_k(const Eigen::Vector3d& v, const Eigen::Vector3d& z);
 
@@ -69,7 +69,7 @@ Eigen::Vector2d largest_two_quartic_roots(double c2, double c1, double c0, doubl
 
 /// top_eigenpair() of a traceless symmetric 4x4 matrix M (full, both triangles) whose
 /// characteristic polynomial x^4 + c2 x^2 + c1 x + c0 the caller already knows, e.g. Davenport's
-/// K of a cross-covariance H (DESIGN.md note 8). lambda_upper is any upper bound of lambda_max(M)
+/// K of a cross-covariance H (docs/math.md §5). lambda_upper is any upper bound of lambda_max(M)
 /// (or +inf); a tight one saves iterations. The eigenvector's sign is not normalised.
 TopEigenpair top_eigenpair_traceless(const Eigen::Matrix4d& M, double c2, double c1, double c0,
                                      double lambda_upper, const TopEigenOptions& options);

@@ -6,7 +6,7 @@
 /// added in the space perpendicular to a converts this worst case viewpoint into an ideal
 /// viewpoint ... a good set of n data vectors can be found inductively by repeating applying
 /// Theorem 6 and adding data points in a^perp". With the single-cell LMI of Eq. (28) that rule
-/// reports gains that are not real (DESIGN.md note 3: Z = I plus a vector in a^perp gives the
+/// reports gains that are not real (docs/math.md §13: Z = I plus a vector in a^perp gives the
 /// paper's 0.95, but the global p-bar_min stays 0.8165). Here every step uses the *global* worst
 /// viewpoints (sdp::global_worst_viewpoint, all sign cells, certified) and keeps the addition
 /// that maximises the new global p-bar_min.
@@ -20,7 +20,7 @@
 ///    attained at c = a_i x a_j or c = (a_i - s a_j) x (a_i - s' a_k) (s, s' = +-1), so it is
 ///    the minimum over those finitely many points. Z = I has four worst viewpoints (+-1,+-1,1)/
 ///    sqrt(3) with sum_k (a_k.c)^2 = 4/3 for every unit c, so no single vector can raise 0.8165.
-///  - Ceiling (DESIGN.md note 4): m data vectors never give p-bar_min above cos(pi/(2m)).
+///  - Ceiling (docs/math.md §15): m data vectors never give p-bar_min above cos(pi/(2m)).
 ///  - Coplanar layouts reach high p-bar_min but carry the two-fold (Necker) ambiguity of affine
 ///    pose; their coplanarity is reported as a number.
 ///
@@ -38,7 +38,7 @@ namespace vantage::design {
 /// The global worst case of a set of data vectors: the one evaluation the augmenter repeats.
 struct WorstCase {
   double t = 0.0;         ///< max_a min_i |a.n_i| (Eq. 31), certified by the global solver
-  double pbar_min = 1.0;  ///< sqrt(1 - t^2) (Eq. 29 corrected, DESIGN.md note 1)
+  double pbar_min = 1.0;  ///< sqrt(1 - t^2) (Eq. 29 corrected, docs/math.md §12)
   std::vector<Eigen::Vector3d> worst_viewpoints;  ///< every global optimum up to sign
   /// Largest worst-case angular error of Eq. (30) over the data vectors and the worst
   /// viewpoints, in degrees (vantage::worst_case_errors_deg, analysis/error_bounds.h).
@@ -50,7 +50,7 @@ struct WorstCase {
 /// sdp::global_worst_viewpoint. Throws InvalidArgument on bad vectors.
 WorstCase evaluate_worst_case(const Eigen::Matrix3Xd& vectors);
 
-/// The ceiling of DESIGN.md note 4: cos(pi / (2 m)) for m >= 1 data vectors.
+/// The ceiling of docs/math.md §15: cos(pi / (2 m)) for m >= 1 data vectors.
 double pbar_ceiling(int m);
 
 /// How close the data vectors are to one plane: the two-fold ambiguity risk.

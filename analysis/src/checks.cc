@@ -1,0 +1,85 @@
+#include "vantage/analysis/internal/checks.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace vantage::internal {
+
+void fail(std::string_view arg, std::string_view problem) {
+  std::string message(arg);
+  message += ": ";
+  message += problem;
+  throw InvalidArgument(message);
+}
+
+void fail_at(std::string_view arg, Eigen::Index index, std::string_view problem) {
+  std::string message(arg);
+  message += "[" + std::to_string(index) + "]: ";
+  message += problem;
+  throw InvalidArgument(message);
+}
+
+void fail_options(std::string_view arg, std::string_view why) {
+  std::string message(arg);
+  message += ".";
+  message += why;
+  throw InvalidArgument(message);
+}
+
+bool invalid_option(std::string* why, std::string_view field, std::string_view problem) {
+  if (why != nullptr) {
+    *why = field;
+    *why += ": ";
+    *why += problem;
+  }
+  return false;
+}
+
+void check_min_count(std::string_view arg, Eigen::Index count, Eigen::Index minimum,
+                     std::string_view noun) {
+  if (count >= minimum) return;
+  std::ostringstream out;
+  out << "need at least " << minimum << " " << noun << ", got " << count;
+  fail(arg, out.str());
+}
+
+void check_count_matches(std::string_view arg, Eigen::Index count, Eigen::Index expected,
+                         std::string_view reference, std::string_view noun) {
+  if (count == expected) return;
+  std::ostringstream out;
+  out << "has " << count << " " << noun << ", expected " << expected << " (one per column of "
+      << reference << ")";
+  fail(arg, out.str());
+}
+
+void check_weights(std::string_view arg, const Eigen::VectorXd& weights, Eigen::Index expected,
+                   std::string_view reference, WeightRule rule) {
+  if (weights.size() == 0) return;
+  check_count_matches(arg, weights.size(), expected, reference, "entries");
+  const bool positive = rule == WeightRule::kPositive;
+  if (weights.allFinite() && (positive ? (weights.array() > 0.0).all()
+                                       : (weights.array() >= 0.0).all() && weights.sum() > 0.0)) {
+    return;
+  }
+  for (Eigen::Index i = 0; i < weights.size(); ++i) {
+    const double w = weights(i);
+    if (!std::isfinite(w) || (positive ? !(w > 0.0) : !(w >= 0.0))) {
+      fail_at(arg, i, positive ? "must be positive and finite" : "must be >= 0 and finite");
+    }
+  }
+  fail(arg, "all zero, at least one must be positive");
+}
+
+void check_positive_finite(std::string_view arg, double value) {
+  if (value > 0.0 && std::isfinite(value)) return;
+  std::ostringstream out;
+  out << "must be positive and finite, got " << value;
+  fail(arg, out.str());
+}
+
+void check_unit_vector(std::string_view arg, const Eigen::Vector3d& v, double tolerance) {
+  if (v.allFinite() && std::abs(v.norm() - 1.0) <= tolerance) return;
+  fail(arg, "must be a finite unit vector");
+}
+
+}  // namespace vantage::internal

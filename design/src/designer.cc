@@ -1,0 +1,192 @@
+#include "designer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "kill_level.h"
+#include "text.h"
+#include "vantage/analysis/common.h"
+
+namespace vantage::design::internal {
+namespace {
+
+// Compass search iteration cap (each iteration either moves or shrinks the step).
+constexpr int kMaxCompassIterations = 400;
+// Compass search: the step shrinks by this factor when no move improves.
+constexpr double kStepShrink = 0.5;
+
+}  // namespace
+
+bool better(const Score& a, const Score& b, double tie) {
+  if (a.t < b.t - tie) return true;
+  if (a.t > b.t + tie) return false;
+  if (a.n_worst != b.n_worst) return a.n_worst < b.n_worst;
+  return a.kill_margin > b.kill_margin;
+}
+
+Designer::Designer(const Layout& layout, const AugmentOptions& options)
+    : layout_(layout),
+      options_(options),
+      space_(make_addition_space(layout, options)),
+      vectors_(data_vectors(layout).vectors),
+      markers_(layout.entries),
+      used_(layout.candidates.cols(), false) {}
+
+WorstCase Designer::evaluate(const Eigen::Matrix3Xd& vectors) {
+  ++solves_;
+  return evaluate_worst_case(vectors);
+}
+
+Score Designer::score(const Eigen::Vector3d& x, const WorstCase& current, long* screened) {
+  Score s;
+  Eigen::Matrix3Xd added;
+  if (!space_->new_vectors(x, markers_, &added)) return s;
+  int survivors = 0;
+  double margin = std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector3d& a : current.worst_viewpoints) {
+    double proj = std::numeric_limits<double>::infinity();
+    for (Eigen::Index i = 0; i < added.cols(); ++i) {
+      proj = std::min(proj, std::abs(a.dot(added.col(i).normalized())));
+    }
+    if (proj < current.t - options_.tie_tolerance) {
+      margin = std::min(margin, current.t - proj);
+    } else {
+      ++survivors;
+    }
+  }
+  s.kill_margin = std::isfinite(margin) ? margin : 0.0;
+  if (survivors > 0) {
+    ++*screened;
+    s.t = current.t;
+    s.n_worst = survivors;
+    return s;
+  }
+  Eigen::Matrix3Xd all(3, vectors_.cols() + added.cols());
+  all << vectors_, added;
+  const WorstCase w = evaluate(all);
+  s.t = w.t;
+  s.n_worst = static_cast<int>(w.worst_viewpoints.size());
+  return s;
+}
+
+Eigen::Vector3d Designer::polish(Eigen::Vector3d x, Score* s, double step, const WorstCase& current,
+                                 long* screened) {
+  for (int it = 0; it < kMaxCompassIterations && step > options_.refine_tolerance; ++it) {
+    Eigen::Vector3d dirs[AdditionSpace::kMaxCompassMoves];
+    const int count = space_->compass_moves(x, dirs);
+    Eigen::Vector3d best_x = x;
+    Score best_s = *s;
+    for (int k = 0; k < count; ++k) {
+      const Eigen::Vector3d y = space_->move(x, step, dirs[k]);
+      const Score sy = score(y, current, screened);
+      if (better(sy, best_s, options_.tie_tolerance)) {
+        best_s = sy;
+        best_x = y;
+      }
+    }
+    if (best_x == x) {
+      step *= kStepShrink;
+    } else {
+      x = best_x;
+      *s = best_s;
+    }
+  }
+  return x;
+}
+
+std::vector<Designer::Option> Designer::generate(const WorstCase& current, AugmentStep* st) {
+  std::vector<Option> options;
+  auto add = [&](const Eigen::Vector3d& x, int index) {
+    options.push_back({x, index, score(x, current, &st->screened)});
+  };
+  for (Eigen::Index c = 0; c < layout_.candidates.cols(); ++c) {
+    if (!used_[c]) add(space_->addition(layout_.candidates.col(c)), static_cast<int>(c));
+  }
+  Eigen::Vector3d kill_point = Eigen::Vector3d::UnitX();
+  std::vector<Eigen::Vector3d> kill_points;
+  st->best_kill_level = best_kill_level(current.worst_viewpoints, &kill_point, &kill_points);
+  st->single_vector_can_improve =
+      space_->single_addition_can_improve(st->best_kill_level, current.t, options_.tie_tolerance);
+  if (!options_.candidates_only) {
+    std::vector<Eigen::Vector3d> samples;
+    space_->coarse_samples(current, kill_points, &samples);
+    for (const Eigen::Vector3d& x : samples) add(x, -1);
+  }
+  return options;
+}
+
+Designer::Option Designer::choose(std::vector<Option>* options, const WorstCase& current,
+                                  AugmentStep* st) {
+  std::stable_sort(options->begin(), options->end(), [this](const Option& a, const Option& b) {
+    return better(a.score, b.score, options_.tie_tolerance);
+  });
+  Option chosen = options->front();
+  if (options_.candidates_only) return chosen;
+  const int starts = std::min<int>(options_.refine_starts, static_cast<int>(options->size()));
+  for (int r = 0; r < starts; ++r) {
+    Option o = (*options)[r];
+    o.x = polish(o.x, &o.score, space_->initial_compass_step(), current, &st->screened);
+    if (o.x != (*options)[r].x) o.candidate_index = -1;
+    if (better(o.score, chosen.score, options_.tie_tolerance)) chosen = o;
+  }
+  return chosen;
+}
+
+void Designer::commit(const Option& chosen) {
+  if (chosen.candidate_index >= 0) used_[chosen.candidate_index] = true;
+  Eigen::Matrix3Xd added;
+  VANTAGE_CHECK(space_->new_vectors(chosen.x, markers_, &added), "chosen addition is degenerate");
+  Eigen::Matrix3Xd all(3, vectors_.cols() + added.cols());
+  all << vectors_, added;
+  vectors_ = all;
+  space_->commit(chosen.x, &markers_);
+}
+
+void Designer::describe(const WorstCase& current, const Option& chosen, AugmentStep* st) {
+  st->added = chosen.x;
+  st->candidate_index = chosen.candidate_index;
+  st->worst = evaluate(vectors_);
+  st->vector_count = vector_count();
+  st->ceiling = pbar_ceiling(st->vector_count);
+  st->improved = st->worst.t < current.t - options_.tie_tolerance;
+  st->angle_from_worst_plane_deg =
+      space_->angle_from_worst_planes_deg(chosen.x, current.worst_viewpoints);
+  std::ostringstream note;
+  const int k = static_cast<int>(current.worst_viewpoints.size());
+  if (st->improved) {
+    note << "p-bar_min rose from " << fmt(current.pbar_min) << " to " << fmt(st->worst.pbar_min);
+  } else if (!st->single_vector_can_improve) {
+    note << "no single vector can raise p-bar_min = " << fmt(current.pbar_min) << ": the " << k
+         << " worst viewpoint(s) cannot all be killed at once (min over unit c of max_k |a_k.c| "
+         << "= " << fmt(st->best_kill_level) << " >= t = " << fmt(current.t)
+         << "); added the vector leaving the fewest worst viewpoints ("
+         << st->worst.worst_viewpoints.size() << ")";
+  } else if (options_.candidates_only) {
+    note << "p-bar_min unchanged at " << fmt(current.pbar_min)
+         << ": no remaining candidate kills all " << k << " worst viewpoint(s)";
+  } else {
+    note << "p-bar_min unchanged at " << fmt(current.pbar_min) << ": no addition found in the "
+         << space_->search_name() << " kills all " << k
+         << " worst viewpoint(s); added the one leaving the fewest ("
+         << st->worst.worst_viewpoints.size() << ")";
+  }
+  st->note = note.str();
+}
+
+AugmentStep Designer::step(const WorstCase& current, bool* out_of_candidates) {
+  AugmentStep st;
+  const long solves_before = solves_;
+  std::vector<Option> options = generate(current, &st);
+  if (options.empty()) {
+    *out_of_candidates = true;
+    return st;
+  }
+  const Option chosen = choose(&options, current, &st);
+  commit(chosen);
+  describe(current, chosen, &st);
+  st.global_solves = solves_ - solves_before;
+  return st;
+}
+
+}  // namespace vantage::design::internal
