@@ -1,6 +1,7 @@
 #include "vantage/viewer/camera.h"
 
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <cmath>
 #include <random>

@@ -4,6 +4,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -23,8 +24,8 @@ void Panels::draw(ViewerSession& session, const std::optional<Eigen::Vector3d>& 
                   float width, float height) {
   const ImGuiWindowFlags flags =
       ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
-  const float surface_height = 330.0f;
-  const float design_height = 0.56f * (height - surface_height);
+  const float surface_height = std::min(340.0f, 0.36f * height);
+  const float design_height = 0.64f * (height - surface_height);
   ImGui::SetNextWindowPos(ImVec2(left, 0));
   ImGui::SetNextWindowSize(ImVec2(width, design_height));
   if (ImGui::Begin("Layout and design", nullptr, flags)) design_panel(session);
@@ -87,9 +88,9 @@ void Panels::analysis_summary(const ViewerSession& session) {
   }
   const sdp::LayoutAnalysis& r = snap->analysis;
   if (!session.analysis_current()) ImGui::TextColored(ImVec4(1, 0.75f, 0.25f, 1), "recomputing...");
-  ImGui::Text("p\u0304_min %.6f   (max error %.2f\u00b0, Eq. 30)", r.pbar_min,
+  ImGui::Text("p\u0304_min %.6f  (max error %.2f\u00b0, Eq. 30)", r.pbar_min,
               r.max_worst_case_error_deg);
-  ImGui::Text("ceiling cos(\u03c0/2m) %.6f for m = %d", snap->ceiling,
+  ImGui::Text("ceiling cos(\u03c0/2m) %.6f  (m = %d)", snap->ceiling,
               static_cast<int>(snap->data.vectors.cols()));
   ImGui::Text("certificate t \u2208 [%.9f, %.9f] %s", r.certificate.t_lower, r.certificate.t_upper,
               r.certificate.certified ? "certified" : "NOT certified");
@@ -99,8 +100,9 @@ void Panels::analysis_summary(const ViewerSession& session) {
                   ? (" + " + std::to_string(r.worst_viewpoints.size() - 1) + " ties").c_str()
                   : "");
   ImGui::Text("paper's single LMI p\u0304 %.4f (%s)", r.paper_lmi.pbar, r.paper_lmi.status.c_str());
-  ImGui::Text("cross-check %s", r.crosscheck.agrees ? "agrees" : r.crosscheck.method.c_str());
-  ImGui::TextDisabled("analysis %.3f s on a worker thread", snap->seconds);
+  ImGui::Text("NLopt cross-check %s", r.crosscheck.agrees ? "agrees" : "DISAGREES");
+  ImGui::SameLine();
+  ImGui::TextDisabled("  analysis %.2f s (worker thread)", snap->seconds);
   if (snap->coplanarity.nearly_coplanar) {
     ImGui::PushStyleColor(ImGuiCol_Text, kWarningText);
     ImGui::TextWrapped(
@@ -116,8 +118,11 @@ void Panels::analysis_summary(const ViewerSession& session) {
 
 void Panels::entry_editor(ViewerSession& session) {
   const Layout& layout = session.layout();
-  ImGui::Text("%ss (click to select, drag tips on the sphere):", entry_word(layout));
-  if (ImGui::BeginChild("entries", ImVec2(0, -ImGui::GetFrameHeightWithSpacing() * 1.2f), true)) {
+  ImGui::Text(layout.mode == LayoutMode::kPoints ? "markers (click to select, edit below):"
+                                                 : "vectors (click to select, or drag a tip):");
+  const float list_height = std::max(
+      110.0f, ImGui::GetContentRegionAvail().y - 1.3f * ImGui::GetFrameHeightWithSpacing());
+  if (ImGui::BeginChild("entries", ImVec2(0, list_height), true)) {
     for (Eigen::Index i = 0; i < layout.entries.cols(); ++i) {
       char row[96];
       std::snprintf(row, sizeof row, "%s%d  (%.3f, %.3f, %.3f)",

@@ -61,7 +61,8 @@ void Panels::readout_panel(const ViewerSession& session,
   }
   const DataVectors& data = session.data();
   const ViewpointReadout r = read_viewpoint(data.vectors, *a);
-  ImGui::Text("a = (%.3f, %.3f, %.3f): %s", a->x(), a->y(), a->z(), what);
+  ImGui::TextDisabled("%s", what);
+  ImGui::Text("a = (%.3f, %.3f, %.3f)", a->x(), a->y(), a->z());
   ImGui::Text("p\u0304(a) = %.4f   worst-case error arccos p\u0304 = %.2f\u00b0", r.pbar,
               r.max_error_deg);
   std::vector<int> order(static_cast<std::size_t>(r.p.size()));
@@ -96,9 +97,12 @@ void Panels::readout_panel(const ViewerSession& session,
 
 void Panels::error_surface_panel(const ViewerSession& session,
                                  const std::optional<Eigen::Vector3d>& hovered) {
+  ImGui::TextWrapped(
+      "\u03b8(p_i, p\u0304) for the least-upper-bound scale; dots: (p_i, p\u0304) at the "
+      "viewpoint; red: p\u0304_min");
   ImDrawList* list = ImGui::GetWindowDrawList();
   const ImVec2 origin = ImGui::GetCursorScreenPos();
-  const float side = std::min(ImGui::GetContentRegionAvail().y - 40.0f, 250.0f);
+  const float side = std::min(ImGui::GetContentRegionAvail().y - 40.0f, 260.0f);
   const ImVec2 lo(origin.x + 44.0f, origin.y + 4.0f);  // plot box, p across, p_bar up
   const float cell = side / kSurfaceCells;
   for (int row = 0; row < kSurfaceCells; ++row) {
@@ -148,12 +152,6 @@ void Panels::error_surface_panel(const ViewerSession& session,
   }
   list->AddText(ImVec2(legend_x + 18, bar_top - 8), kAxisGrey, "90\u00b0");
   list->AddText(ImVec2(legend_x + 18, bar_top + bar_height - 8), kAxisGrey, "0\u00b0");
-  list->AddText(ImVec2(legend_x, lo.y), kHalo, "\u03b8(p_i, p\u0304)");
-  const float text_x = legend_x + 52.0f;
-  list->AddText(ImVec2(text_x, bar_top + 20), kHalo, "dots: (p_i, p\u0304)");
-  list->AddText(ImVec2(text_x, bar_top + 40), kHalo, "at the viewpoint");
-  list->AddText(ImVec2(text_x, bar_top + 70), to_imgui(plot::kWorstViewpointColour),
-                "red: p\u0304_min");
   ImGui::Dummy(ImVec2(side + 60.0f, side + 36.0f));
 }
 

@@ -65,7 +65,7 @@ struct Painter {
 
   void label(const Eigen::Vector3d& p, const char* text, ImU32 colour) const {
     const std::optional<ImVec2> q = at(p);
-    if (!q) return;
+    if (!q || *text == '\0') return;
     const ImVec2 pos(q->x + 7, q->y - 9);
     const ImVec2 size = ImGui::CalcTextSize(text);
     list->AddRectFilled(ImVec2(pos.x - 2, pos.y - 1), ImVec2(pos.x + size.x + 2, pos.y + size.y),
@@ -94,13 +94,25 @@ void draw_sphere(const Painter& paint, const ViewerSession& session) {
     colours[v] = shaded(plot::value_colour(s.error_deg(v), 0.0, top), light);
     pixels[v] = paint.camera.project(s.vertices.col(v), paint.viewport);
   }
-  for (const std::array<int, 3>& t : s.triangles) {
+  // Every vertex once, indices only for the triangles facing the eye (a convex surface: they
+  // never overlap, so no depth sorting is needed).
+  std::vector<int> visible;
+  for (std::size_t k = 0; k < s.triangles.size(); ++k) {
+    const std::array<int, 3>& t = s.triangles[k];
     const Eigen::Vector3d c =
         (s.vertices.col(t[0]) + s.vertices.col(t[1]) + s.vertices.col(t[2])) / 3.0;
-    if (c.dot(eye - c) <= 0.0) continue;
-    if (!pixels[t[0]] || !pixels[t[1]] || !pixels[t[2]]) continue;
-    paint.list->PrimReserve(3, 3);
-    for (int k = 0; k < 3; ++k) paint.list->PrimVtx(to_im(*pixels[t[k]]), uv, colours[t[k]]);
+    if (c.dot(eye - c) > 0.0 && pixels[t[0]] && pixels[t[1]] && pixels[t[2]]) {
+      visible.push_back(static_cast<int>(k));
+    }
+  }
+  const int vertex_count = static_cast<int>(s.vertices.cols());
+  paint.list->PrimReserve(static_cast<int>(3 * visible.size()), vertex_count);
+  const ImDrawIdx first = static_cast<ImDrawIdx>(paint.list->_VtxCurrentIdx);
+  for (int v = 0; v < vertex_count; ++v) {
+    paint.list->PrimWriteVtx(pixels[v] ? to_im(*pixels[v]) : ImVec2(0, 0), uv, colours[v]);
+  }
+  for (const int k : visible) {
+    for (const int v : s.triangles[k]) paint.list->PrimWriteIdx(static_cast<ImDrawIdx>(first + v));
   }
 }
 
@@ -134,8 +146,8 @@ void draw_data_vectors(const Painter& paint, const ViewerSession& session) {
       continue;
     }
     const ImU32 colour = selected ? kSelectedColour : dark;
-    paint.segment(Eigen::Vector3d::Zero(), kVectorLength * n, kHalo, 5.0f);
-    paint.segment(Eigen::Vector3d::Zero(), kVectorLength * n, colour, 2.5f);
+    paint.segment(Eigen::Vector3d::Zero(), kVectorLength * n, kHalo, 6.5f);
+    paint.segment(Eigen::Vector3d::Zero(), kVectorLength * n, colour, 3.5f);
     if (const std::optional<ImVec2> q = paint.at(kVectorLength * n)) {
       paint.list->AddCircleFilled(*q, 5.0f, kHalo);
       paint.list->AddCircleFilled(*q, 4.0f, colour);
@@ -167,9 +179,9 @@ void draw_analysis(const Painter& paint, const ViewerSession& session) {
   const ImU32 red = to_imgui(plot::kWorstViewpointColour, alpha);
   const ImU32 magenta = to_imgui(plot::kPaperLmiColour, alpha);
   draw_viewpoint_axis(paint, report.paper_lmi.viewpoint, magenta, true, "paper LMI");
-  for (const Eigen::Vector3d& a : report.worst_viewpoints) {
-    paint.great_circle(a, red, 2.0f);
-    draw_viewpoint_axis(paint, a, red, false, "worst");
+  for (std::size_t k = 0; k < report.worst_viewpoints.size(); ++k) {
+    paint.great_circle(report.worst_viewpoints[k], red, 2.0f);
+    draw_viewpoint_axis(paint, report.worst_viewpoints[k], red, false, k == 0 ? "worst" : "");
   }
 }
 
@@ -194,7 +206,7 @@ void draw_probe(const Painter& paint, const std::optional<Eigen::Vector3d>& hove
 void draw_camera_inset(const ViewerSession& session, const OrbitCamera& camera,
                        const Viewport& viewport) {
   ImDrawList* list = ImGui::GetBackgroundDrawList();
-  const float side = 210.0f;
+  const float side = 170.0f;
   const ImVec2 lo(static_cast<float>(viewport.x + viewport.width) - side - 14.0f,
                   static_cast<float>(viewport.y) + 14.0f);
   const ImVec2 hi(lo.x + side, lo.y + side);

@@ -56,7 +56,7 @@ class OrbitCamera {
  public:
   static constexpr double kDefaultYawDeg = 35.0;
   static constexpr double kDefaultPitchDeg = 25.0;
-  static constexpr double kDefaultDistance = 4.2;  ///< world units (the sphere has radius 1)
+  static constexpr double kDefaultDistance = 5.0;  ///< world units (the sphere has radius 1)
   static constexpr double kMinDistance = 1.8;
   static constexpr double kMaxDistance = 12.0;
   static constexpr double kFieldOfViewDeg = 34.0;    ///< vertical

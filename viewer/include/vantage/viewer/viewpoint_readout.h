@@ -33,6 +33,6 @@ struct SphereShading {
 
 /// Mesh with `rings` >= 2 latitude bands and `segments` >= 3 longitude sectors, shaded for data
 /// vectors (3 x m, m >= 1). Throws InvalidArgument on bad arguments.
-SphereShading shade_sphere(const Eigen::Matrix3Xd& vectors, int rings = 48, int segments = 96);
+SphereShading shade_sphere(const Eigen::Matrix3Xd& vectors, int rings = 120, int segments = 240);
 
 }  // namespace vantage::viewer
