@@ -25,7 +25,7 @@ void Panels::draw(ViewerSession& session, const std::optional<Eigen::Vector3d>& 
   const ImGuiWindowFlags flags =
       ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
   const float surface_height = std::min(340.0f, 0.36f * height);
-  const float design_height = 0.64f * (height - surface_height);
+  const float design_height = 0.68f * (height - surface_height);
   ImGui::SetNextWindowPos(ImVec2(left, 0));
   ImGui::SetNextWindowSize(ImVec2(width, design_height));
   if (ImGui::Begin("Layout and design", nullptr, flags)) design_panel(session);

@@ -63,10 +63,11 @@ struct Painter {
     polyline(points, colour, thickness);
   }
 
-  void label(const Eigen::Vector3d& p, const char* text, ImU32 colour) const {
+  // `text` beside p; `below` puts it under the point (so two labels at one point stay apart).
+  void label(const Eigen::Vector3d& p, const char* text, ImU32 colour, bool below = false) const {
     const std::optional<ImVec2> q = at(p);
     if (!q || *text == '\0') return;
-    const ImVec2 pos(q->x + 7, q->y - 9);
+    const ImVec2 pos(q->x + 7, below ? q->y + 8 : q->y - 22);
     const ImVec2 size = ImGui::CalcTextSize(text);
     list->AddRectFilled(ImVec2(pos.x - 2, pos.y - 1), ImVec2(pos.x + size.x + 2, pos.y + size.y),
                         IM_COL32(20, 20, 24, 200), 3.0f);
@@ -158,6 +159,7 @@ void draw_data_vectors(const Painter& paint, const ViewerSession& session) {
 
 void draw_viewpoint_axis(const Painter& paint, const Eigen::Vector3d& a, ImU32 colour, bool ring,
                          const char* text) {
+  // ring: the paper's viewpoint, labelled below; filled: a worst viewpoint, labelled above.
   paint.segment(-kAxisLength * a, kAxisLength * a, colour, 2.5f);
   for (const double s : {1.0, -1.0}) {
     if (const std::optional<ImVec2> q = paint.at(s * a)) {
@@ -169,7 +171,7 @@ void draw_viewpoint_axis(const Painter& paint, const Eigen::Vector3d& a, ImU32 c
       }
     }
   }
-  paint.label(kAxisLength * a, text, colour);
+  paint.label(kAxisLength * a, text, colour, ring);
 }
 
 void draw_analysis(const Painter& paint, const ViewerSession& session) {
