@@ -92,8 +92,10 @@ int run_window(ViewerSession& session, const WindowOptions& options) {
     }
     const auto frame_start = std::chrono::steady_clock::now();
     session.poll();
-    if (view_pending && session.analysis_current())
-      view_pending = !session.apply_view(options.view);
+    if (view_pending && session.analysis_current()) {
+      session.apply_view(options.view);  // a failed analysis leaves the camera where it is
+      view_pending = false;
+    }
     build_frame(session, scene, panels, !screenshot, window);
     int fb_width = 0;
     int fb_height = 0;
