@@ -16,6 +16,7 @@ packages=(
   libglfw3-dev libimgui-dev libstb-dev
   libgtest-dev libgmock-dev googletest
   libbenchmark-dev
+  xvfb xauth libgl1-mesa-dri libglx-mesa0 fonts-dejavu-core
 )
 
 missing=()

@@ -1,0 +1,134 @@
+#include "vantage/viewer/layout_document.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "vantage/analysis/common.h"
+#include "vantage/io/layout_file.h"
+
+namespace vantage::viewer {
+namespace {
+
+const std::string kSatellite = std::string(VANTAGE_SOURCE_DIR) + "/examples/layouts/satellite.json";
+
+// Exact equality of everything a layout file holds.
+void expect_same_layout(const Layout& a, const Layout& b) {
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.description, b.description);
+  EXPECT_EQ(a.mode, b.mode);
+  ASSERT_EQ(a.entries.cols(), b.entries.cols());
+  EXPECT_TRUE((a.entries.array() == b.entries.array()).all());
+  ASSERT_EQ(a.weights.size(), b.weights.size());
+  EXPECT_TRUE((a.weights.array() == b.weights.array()).all());
+  ASSERT_EQ(a.candidates.cols(), b.candidates.cols());
+  EXPECT_TRUE((a.candidates.array() == b.candidates.array()).all());
+}
+
+std::filesystem::path scratch_file(const std::string& name) {
+  return std::filesystem::temp_directory_path() /
+         ("vantage_viewer_doc_" +
+          std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" + name);
+}
+
+TEST(LayoutDocument, EveryEditIsUndoneExactly) {
+  LayoutDocument doc(io::read_layout(kSatellite), kSatellite);
+  const Layout original = doc.layout();
+  const std::uint64_t r0 = doc.revision();
+  EXPECT_FALSE(doc.modified());
+
+  doc.set_entry(3, Eigen::Vector3d(0.1, -0.2, 0.3));
+  doc.remove_entry(0);
+  Layout grown = doc.layout();
+  grown.entries.conservativeResize(3, grown.entries.cols() + 1);
+  grown.entries.col(grown.entries.cols() - 1) = Eigen::Vector3d(0.0, 0.0, 1.5);
+  grown.weights.conservativeResize(grown.weights.size() + 1);
+  grown.weights(grown.weights.size() - 1) = 1.0;
+  doc.replace(grown);
+  EXPECT_EQ(doc.undo_depth(), 3u);
+  EXPECT_TRUE(doc.modified());
+  EXPECT_EQ(doc.layout().entries.cols(), original.entries.cols());
+
+  ASSERT_TRUE(doc.undo());
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(doc.layout().entries.col(3), Eigen::Vector3d(0.1, -0.2, 0.3));
+  ASSERT_TRUE(doc.undo());
+  expect_same_layout(doc.layout(), original);
+  EXPECT_FALSE(doc.undo());
+  EXPECT_EQ(doc.revision(), r0 + 6);  // three edits and three undos, each a new revision
+}
+
+TEST(LayoutDocument, ADragIsOneUndoStep) {
+  LayoutDocument doc(LayoutDocument::default_layout());
+  const Layout original = doc.layout();
+  doc.set_entry(0, Eigen::Vector3d(1.0, 0.1, 0.0));
+  for (int k = 2; k <= 10; ++k) doc.set_entry(0, Eigen::Vector3d(1.0, 0.1 * k, 0.0), true);
+  EXPECT_EQ(doc.undo_depth(), 1u);
+  EXPECT_EQ(doc.layout().entries.col(0), Eigen::Vector3d(1.0, 1.0, 0.0));
+  ASSERT_TRUE(doc.undo());
+  expect_same_layout(doc.layout(), original);
+}
+
+TEST(LayoutDocument, InvalidEditsThrowAndChangeNothing) {
+  LayoutDocument doc(LayoutDocument::default_layout());
+  const Layout original = doc.layout();
+  const std::uint64_t revision = doc.revision();
+  EXPECT_THROW(doc.set_entry(1, Eigen::Vector3d::Zero()), InvalidArgument);   // zero vector
+  EXPECT_THROW(doc.set_entry(7, Eigen::Vector3d::UnitX()), InvalidArgument);  // no entry 7
+  doc.remove_entry(2);
+  EXPECT_THROW(doc.remove_entry(1), InvalidArgument);  // would leave 1 vector
+  ASSERT_TRUE(doc.undo());
+  expect_same_layout(doc.layout(), original);
+  EXPECT_EQ(doc.revision(), revision + 2);
+  try {
+    doc.set_entry(1, Eigen::Vector3d(0.0, std::nan(""), 0.0));
+    FAIL() << "a NaN entry was accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("vectors[1]"), std::string::npos) << e.what();
+  }
+}
+
+TEST(LayoutDocument, BadFileKeepsTheLayoutAndSaysWhy) {
+  LayoutDocument doc(io::read_layout(kSatellite), kSatellite);
+  doc.set_entry(0, Eigen::Vector3d(0.5, 0.5, 0.5));
+  const Layout before = doc.layout();
+  const std::filesystem::path bad = scratch_file("bad.json");
+  std::ofstream(bad) << R"({"vectors": [[1, 0, 0], [0, 0, 0]]})";
+  try {
+    doc.load(bad.string());
+    FAIL() << "a zero vector was loaded";
+  } catch (const InvalidArgument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(bad.string()), std::string::npos) << what;
+    EXPECT_NE(what.find("vectors[1]"), std::string::npos) << what;
+  }
+  EXPECT_THROW(doc.load((bad.string() + ".missing")), InvalidArgument);
+  expect_same_layout(doc.layout(), before);
+  EXPECT_EQ(doc.path(), kSatellite);
+  EXPECT_EQ(doc.undo_depth(), 1u);
+  std::filesystem::remove(bad);
+}
+
+TEST(LayoutDocument, SaveNeverOverwritesUnlessAsked) {
+  LayoutDocument doc(LayoutDocument::default_layout());
+  const std::filesystem::path file = scratch_file("saved.json");
+  std::filesystem::remove(file);
+  doc.set_entry(2, Eigen::Vector3d(0.0, 0.6, 0.8));
+  doc.save(file.string(), false);
+  EXPECT_FALSE(doc.modified());
+  EXPECT_EQ(doc.path(), file.string());
+  expect_same_layout(io::read_layout(file.string()), doc.layout());
+
+  doc.set_entry(2, Eigen::Vector3d(0.0, 0.0, 2.0));
+  EXPECT_THROW(doc.save(file.string(), false), InvalidArgument);
+  EXPECT_TRUE(doc.modified());
+  EXPECT_EQ(io::read_layout(file.string()).entries.col(2), Eigen::Vector3d(0.0, 0.6, 0.8));
+  doc.save(file.string(), true);
+  EXPECT_EQ(io::read_layout(file.string()).entries.col(2), Eigen::Vector3d(0.0, 0.0, 2.0));
+  std::filesystem::remove(file);
+}
+
+}  // namespace
+}  // namespace vantage::viewer

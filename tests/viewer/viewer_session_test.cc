@@ -1,0 +1,174 @@
+#include "vantage/viewer/viewer_session.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "support/eigen_testing.h"
+#include "vantage/io/layout_file.h"
+#include "vantage/sdp/layout_analysis.h"
+#include "viewer/viewer_runner.h"
+
+namespace vantage::viewer {
+namespace {
+
+using std::chrono::seconds;
+
+const std::string kLayouts = std::string(VANTAGE_SOURCE_DIR) + "/examples/layouts/";
+constexpr auto kAnalysisWait = seconds(300);  // generous: the machine is shared
+// The worker and a fresh analyze_vectors run the same deterministic code on the same doubles
+// (the JSON file round-trips them exactly); allow only rounding-level differences.
+constexpr double kSameRun = 1e-12;
+// pbar_min is the certified global minimum of p_bar(a): no sphere vertex may beat it by more than
+// the certificate tolerance.
+constexpr double kCertificateSlack = 1e-7;
+
+ViewerSession open(const std::string& file) {
+  return ViewerSession(LayoutDocument(io::read_layout(kLayouts + file), kLayouts + file));
+}
+
+void expect_same_analysis(const sdp::LayoutAnalysis& got, const sdp::LayoutAnalysis& want) {
+  EXPECT_NEAR(got.t, want.t, kSameRun);
+  EXPECT_NEAR(got.pbar_min, want.pbar_min, kSameRun);
+  EXPECT_EIGEN_NEAR(got.worst_viewpoint, want.worst_viewpoint, kSameRun);
+  EXPECT_EQ(got.worst_viewpoints.size(), want.worst_viewpoints.size());
+  EXPECT_EIGEN_NEAR(got.worst_case_errors_deg, want.worst_case_errors_deg, kSameRun);
+  EXPECT_NEAR(got.certificate.t_upper, want.certificate.t_upper, kSameRun);
+  EXPECT_EQ(got.certificate.certified, want.certificate.certified);
+  EXPECT_NEAR(got.paper_lmi.pbar, want.paper_lmi.pbar, kSameRun);
+  EXPECT_EQ(got.solver.status, want.solver.status);
+}
+
+// Drags entry `index` through a few positions (one undo step), waits for the worker, saves, and
+// compares the worker's analysis with analyze_vectors on the saved file (what `vantage analyze`
+// runs).
+void drag_and_compare(const std::string& file, int index) {
+  ViewerSession session = open(file);
+  ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
+  const double before = session.analysis()->analysis.pbar_min;
+  const Eigen::Vector3d start = session.layout().entries.col(index);
+  for (int k = 1; k <= 4; ++k) {
+    ASSERT_TRUE(
+        session.set_entry(index, start + Eigen::Vector3d(0.05 * k, -0.03 * k, 0.02 * k), k > 1));
+  }
+  EXPECT_EQ(session.document().undo_depth(), 1u);
+  ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
+  ASSERT_TRUE(session.analysis_current());
+  ASSERT_EQ(session.analysis()->error, "");
+
+  testing::ViewerScratch scratch;
+  const std::string saved = scratch.path("dragged.json");
+  ASSERT_EQ(session.save(saved, false), SaveOutcome::kSaved);
+  const DataVectors data = data_vectors(io::read_layout(saved));
+  expect_same_analysis(session.analysis()->analysis,
+                       sdp::analyze_vectors(data.vectors, data.weights));
+  EXPECT_NE(session.analysis()->analysis.pbar_min, before);  // the drag changed the answer
+}
+
+TEST(ViewerSession, DraggedVectorIsReanalysedAsAnalyzeOnTheSavedFile) {
+  drag_and_compare("note3_four_vectors.json", 0);
+}
+
+TEST(ViewerSession, DraggedMarkerIsReanalysedAsAnalyzeOnTheSavedFile) {
+  drag_and_compare("satellite.json", 0);
+}
+
+TEST(ViewerSession, OnlyTheNewestRevisionIsShown) {
+  ViewerSession session = open("triad.json");
+  for (int k = 1; k <= 6; ++k) {
+    ASSERT_TRUE(session.set_entry(0, Eigen::Vector3d(1.0, 0.1 * k, 0.0)));
+  }
+  ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
+  EXPECT_EQ(session.analysis()->revision, session.document().revision());
+  EXPECT_TRUE(
+      (session.analysis()->layout.entries.array() == session.layout().entries.array()).all());
+}
+
+TEST(ViewerSession, AugmenterStepThenUndoRestoresExactly) {
+  ViewerSession session = open("note3_four_vectors.json");
+  const Layout original = session.layout();
+  ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
+  const double pbar_before = session.analysis()->analysis.pbar_min;
+  session.step_augmenter();
+  EXPECT_TRUE(session.augmenting());
+  ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
+  EXPECT_FALSE(session.message_is_error()) << session.message();
+  ASSERT_EQ(session.layout().entries.cols(), original.entries.cols() + 1);
+  EXPECT_GE(session.analysis()->analysis.pbar_min, pbar_before - kSameRun);  // never worse
+
+  ASSERT_TRUE(session.undo());
+  EXPECT_TRUE((session.layout().entries.array() == original.entries.array()).all());
+  EXPECT_TRUE((session.layout().weights.array() == original.weights.array()).all());
+  EXPECT_EQ(session.layout().name, original.name);
+  ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
+  EXPECT_NEAR(session.analysis()->analysis.pbar_min, pbar_before, kSameRun);
+}
+
+TEST(ViewerSession, AugmenterStepForAnOlderLayoutIsDiscarded) {
+  ViewerSession session = open("triad.json");
+  session.step_augmenter();
+  ASSERT_TRUE(session.set_entry(2, Eigen::Vector3d(0.0, 0.3, 1.0)));
+  ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
+  EXPECT_EQ(session.layout().entries.cols(), 3);
+  EXPECT_TRUE(session.message_is_error());
+  EXPECT_NE(session.message().find("discarded"), std::string::npos) << session.message();
+}
+
+TEST(ViewerSession, BadFileInTheLoadDialogKeepsEverything) {
+  ViewerSession session = open("satellite.json");
+  ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
+  const std::uint64_t revision = session.document().revision();
+  testing::ViewerScratch scratch;
+  const std::string bad =
+      scratch.write("bad.json", R"({"points": [[0, 0, 0], [0, 0, 0], [1, 2]]})");
+  EXPECT_FALSE(session.load(bad));
+  EXPECT_TRUE(session.message_is_error());
+  EXPECT_NE(session.message().find(bad), std::string::npos) << session.message();
+  EXPECT_EQ(session.document().revision(), revision);
+  EXPECT_EQ(session.document().path(), kLayouts + "satellite.json");
+  EXPECT_TRUE(session.analysis_current());
+  EXPECT_EQ(session.layout().entries.cols(), 12);
+}
+
+TEST(ViewerSession, SaveAsksBeforeOverwriting) {
+  ViewerSession session = open("triad.json");
+  testing::ViewerScratch scratch;
+  const std::string file = scratch.write("exists.json", "keep me");
+  EXPECT_EQ(session.save(file, false), SaveOutcome::kNeedsOverwriteOk);
+  EXPECT_EQ(testing::slurp(file), "keep me");
+  EXPECT_EQ(session.save(file, true), SaveOutcome::kSaved);
+  EXPECT_EQ(io::read_layout(file).entries.cols(), 3);
+  EXPECT_EQ(session.save(scratch.path("no/such/dir.json"), false), SaveOutcome::kFailed);
+  EXPECT_TRUE(session.message_is_error());
+}
+
+TEST(ViewerSession, ShadingAndReadoutAgreeWithTheCertifiedWorstCase) {
+  for (const char* file : {"triad.json", "satellite.json", "coplanar_fan.json"}) {
+    SCOPED_TRACE(file);
+    ViewerSession session = open(file);
+    ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
+    const sdp::LayoutAnalysis& report = session.analysis()->analysis;
+    const double top_deg = 180.0 / M_PI * std::acos(report.pbar_min);
+    EXPECT_LE(session.shading().error_deg.maxCoeff(), top_deg + kCertificateSlack * 180.0);
+    const ViewpointReadout r = read_viewpoint(session.data().vectors, report.worst_viewpoint);
+    EXPECT_NEAR(r.pbar, report.pbar_min, kCertificateSlack);
+    EXPECT_NEAR(r.max_error_deg, report.max_worst_case_error_deg, 1e-6);
+    EXPECT_NEAR(r.p(r.limiting), r.pbar, 0.0);
+  }
+}
+
+TEST(ViewerSession, ViewPresetsUseTheAnalysis) {
+  ViewerSession session = open("note3_four_vectors.json");
+  ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
+  ASSERT_TRUE(session.apply_view(ViewPreset::kWorst));
+  EXPECT_EIGEN_NEAR(session.camera.back(), session.analysis()->analysis.worst_viewpoint, 1e-9);
+  ASSERT_TRUE(session.apply_view(ViewPreset::kPaper));
+  EXPECT_EIGEN_NEAR(session.camera.back(), session.analysis()->analysis.paper_lmi.viewpoint, 1e-9);
+}
+
+}  // namespace
+}  // namespace vantage::viewer

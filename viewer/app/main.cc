@@ -1,0 +1,93 @@
+// vantage-viewer [LAYOUT] [--screenshot FILE.png [--frames N]] [--size WxH] [--view NAME]
+//
+// The interactive viewer (GLFW + Dear ImGui). Exit status: 0 done, 2 bad input or usage (one
+// line on stderr naming the file, field or option), 1 failure (no display or OpenGL context,
+// screenshot not written, analysis not finished in time).
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include "vantage/analysis/common.h"
+#include "vantage/io/layout_file.h"
+#include "vantage/viewer/viewer_session.h"
+#include "viewer_window.h"
+
+namespace {
+
+using vantage::viewer::app::WindowOptions;
+
+// "WxH" with 320 <= W, H <= 8192.
+bool parse_size(const std::string& text, int* width, int* height) {
+  int w = 0;
+  int h = 0;
+  char x = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X')) {
+    return false;
+  }
+  if (w < 320 || h < 320 || w > 8192 || h > 8192) return false;
+  *width = w;
+  *height = h;
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App cli{
+      "vantage-viewer: orbit a fiducial layout's sphere of viewpoints, see its worst "
+      "viewpoints and error surface, and improve it with the augmenter"};
+  std::string layout_path;
+  std::string size = "1400x900";
+  std::string view = "iso";
+  WindowOptions options;
+  cli.add_option("LAYOUT", layout_path, "layout file (JSON); default: the orthogonal triad");
+  cli.add_option("--screenshot", options.screenshot_path,
+                 "render, save the window to this PNG and exit (headless use, e.g. xvfb-run -a)");
+  cli.add_option("--frames", options.frames,
+                 "with --screenshot: frames drawn after the analysis is ready (>= 1)")
+      ->check(CLI::Range(1, 1000));
+  cli.add_option("--size", size, "window size WxH in pixels (320..8192 each)");
+  cli.add_option("--view", view, "starting view: " + vantage::viewer::view_preset_names());
+  cli.add_option("--timeout", options.timeout_seconds,
+                 "with --screenshot: seconds to wait for the analysis (>= 1)")
+      ->check(CLI::Range(1, 86400));
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "vantage-viewer: " << e.what() << "\n";
+    return 2;
+  }
+  if (!parse_size(size, &options.width, &options.height)) {
+    std::cerr << "vantage-viewer: --size: expected WxH with 320..8192 pixels each, got '" << size
+              << "'\n";
+    return 2;
+  }
+  const std::optional<vantage::viewer::ViewPreset> preset =
+      vantage::viewer::parse_view_preset(view);
+  if (!preset) {
+    std::cerr << "vantage-viewer: --view: expected one of " << vantage::viewer::view_preset_names()
+              << ", got '" << view << "'\n";
+    return 2;
+  }
+  options.view = *preset;
+
+  std::optional<vantage::viewer::LayoutDocument> document;
+  try {
+    document.emplace(layout_path.empty() ? vantage::viewer::LayoutDocument::default_layout()
+                                         : vantage::io::read_layout(layout_path),
+                     layout_path);
+  } catch (const std::exception& e) {
+    std::cerr << "vantage-viewer: " << e.what() << "\n";
+    return 2;
+  }
+  vantage::viewer::ViewerSession session(std::move(*document));
+  return vantage::viewer::app::run_window(session, options);
+}

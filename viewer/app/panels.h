@@ -1,0 +1,51 @@
+#pragma once
+
+// The panel column of vantage-viewer: the layout and design panel (augmenter, undo, edit,
+// remove, load/save, p_bar_min, certificate, ceiling, coplanarity), the viewpoint readout (p_i,
+// p_bar, Eq. 26 errors) and the Eq. (26) error surface with the current viewpoint on it.
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vantage/viewer/viewer_session.h"
+
+namespace vantage::viewer::app {
+
+class Panels {
+ public:
+  Panels();
+
+  /// Draws the column at x = `left` (pixels) spanning `height`. `hovered` is the viewpoint under
+  /// the mouse (the readout shows it, else the pinned one, else the worst viewpoint).
+  void draw(ViewerSession& session, const std::optional<Eigen::Vector3d>& hovered, float left,
+            float width, float height);
+
+  /// Keyboard shortcuts (call once per frame when ImGui does not want the keyboard).
+  void handle_keys(ViewerSession& session);
+
+ private:
+  void design_panel(ViewerSession& session);
+  void analysis_summary(const ViewerSession& session);
+  void entry_editor(ViewerSession& session);
+  void readout_panel(const ViewerSession& session, const std::optional<Eigen::Vector3d>& hovered);
+  void error_surface_panel(const ViewerSession& session,
+                           const std::optional<Eigen::Vector3d>& hovered);
+  void file_dialogs(ViewerSession& session);
+  std::optional<Eigen::Vector3d> shown_viewpoint(const ViewerSession& session,
+                                                 const std::optional<Eigen::Vector3d>& hovered,
+                                                 const char** what) const;
+
+  std::vector<double> surface_deg_;  // Eq. (26) on a kSurfaceCells^2 grid of (p, p_bar)
+  std::string load_path_;
+  std::string save_path_;
+  std::string dialog_error_;
+  bool open_load_ = false;
+  bool open_save_ = false;
+  bool confirm_overwrite_ = false;
+  int edited_entry_ = -1;
+  float edit_value_[3] = {0, 0, 0};
+};
+
+}  // namespace vantage::viewer::app

@@ -1,0 +1,96 @@
+#pragma once
+
+/// The viewer's global analysis, off the UI thread.
+///
+/// The viewer computes nothing itself: analyze_layout() calls io/analysis/sdp/design
+/// (data_vectors, sdp::analyze_vectors — the same call as `vantage analyze` — coplanarity and the
+/// ceiling), augment_once() calls design::augment_layout for one greedy step. AnalysisWorker runs
+/// them on one background thread. Each request carries the document revision it was made for;
+/// a newer request replaces a pending one, and a finished result whose revision is older than the
+/// newest request is dropped, so the UI only ever receives results for what it last asked.
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "vantage/analysis/layout.h"
+#include "vantage/design/augment.h"
+#include "vantage/sdp/layout_analysis.h"
+
+namespace vantage::viewer {
+
+/// Everything the viewer shows about one revision of the layout.
+struct AnalysisSnapshot {
+  std::uint64_t revision = 0;
+  Layout layout;                    ///< the layout analysed
+  DataVectors data;                 ///< its data vectors (free vectors in point mode)
+  sdp::LayoutAnalysis analysis;     ///< sdp::analyze_vectors(data.vectors, data.weights)
+  design::Coplanarity coplanarity;  ///< design::coplanarity(data.vectors)
+  double ceiling = 1.0;             ///< design::pbar_ceiling(m): cos(pi / (2 m))
+  double seconds = 0.0;             ///< wall time of the whole analysis
+  std::string error;                ///< non-empty when the analysis threw (then only layout is set)
+};
+
+/// One greedy augmenter step on a layout.
+struct AugmentOutcome {
+  std::uint64_t revision = 0;  ///< revision of the layout it started from
+  Layout augmented;            ///< the input with one vector or marker appended
+  design::AugmentStep step;
+  double seconds = 0.0;
+  std::string error;  ///< non-empty when the augmenter threw
+};
+
+/// Synchronous analysis, as `vantage analyze LAYOUT` (geometric pair weights, cross-check on).
+/// Never throws: errors go to AnalysisSnapshot::error.
+AnalysisSnapshot analyze_layout(const Layout& layout, std::uint64_t revision);
+
+/// Synchronous augmenter step: design::augment_layout with add = 1, no direct optimiser.
+/// Never throws: errors go to AugmentOutcome::error.
+AugmentOutcome augment_once(const Layout& layout, std::uint64_t revision);
+
+class AnalysisWorker {
+ public:
+  AnalysisWorker();
+  ~AnalysisWorker();  ///< finishes the job in progress (it cannot be interrupted), then joins
+  AnalysisWorker(const AnalysisWorker&) = delete;
+  AnalysisWorker& operator=(const AnalysisWorker&) = delete;
+
+  /// Asks for analyze_layout(layout, revision); replaces a pending analysis request.
+  void request_analysis(const Layout& layout, std::uint64_t revision);
+  /// Asks for augment_once(layout, revision); replaces a pending augment request.
+  void request_augment(const Layout& layout, std::uint64_t revision);
+
+  /// The newest finished analysis not taken yet, if any.
+  std::optional<AnalysisSnapshot> take_analysis();
+  /// The finished augmenter step not taken yet, if any.
+  std::optional<AugmentOutcome> take_augment();
+
+  /// True while a request is pending or running.
+  bool busy() const;
+  /// Blocks until nothing is pending or running, or `timeout` passes; true when idle.
+  bool wait_idle(std::chrono::milliseconds timeout) const;
+
+ private:
+  struct Request {
+    Layout layout;
+    std::uint64_t revision = 0;
+  };
+  void run();
+
+  mutable std::mutex mutex_;
+  mutable std::condition_variable changed_;
+  std::optional<Request> pending_analysis_;
+  std::optional<Request> pending_augment_;
+  std::uint64_t newest_analysis_revision_ = 0;
+  std::optional<AnalysisSnapshot> finished_analysis_;
+  std::optional<AugmentOutcome> finished_augment_;
+  bool running_ = false;
+  bool stop_ = false;
+  std::thread thread_;  // last: starts after the members above exist
+};
+
+}  // namespace vantage::viewer

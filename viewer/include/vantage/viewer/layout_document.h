@@ -1,0 +1,68 @@
+#pragma once
+
+/// The layout being edited in vantage-viewer, with its undo stack and its file.
+///
+/// Every edit builds the new layout, validates it (Layout::validate) and only then replaces the
+/// current one, pushing the old layout on the undo stack: an edit that would give an invalid
+/// layout throws InvalidArgument (naming the file field and index) and changes nothing. undo()
+/// restores the previous layout exactly (same entries, weights, candidates, name).
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "vantage/analysis/layout.h"
+
+namespace vantage::viewer {
+
+class LayoutDocument {
+ public:
+  /// Layouts kept for undo; the oldest are dropped beyond this.
+  static constexpr std::size_t kMaxUndo = 256;
+
+  /// Starts from `layout` (validated; throws InvalidArgument if bad), read from `path` ("" =
+  /// not from a file).
+  explicit LayoutDocument(Layout layout, std::string path = "");
+
+  /// The orthogonal triad Z = I (the paper's Fig. 2), the layout shown without a file.
+  static Layout default_layout();
+
+  const Layout& layout() const { return layout_; }
+  const std::string& path() const { return path_; }
+  /// Changed since it was loaded or last saved.
+  bool modified() const { return modified_; }
+  /// Increases by one on every change (edit, undo, load), never repeats: results computed for an
+  /// older revision are stale.
+  std::uint64_t revision() const { return revision_; }
+  std::size_t undo_depth() const { return undo_.size(); }
+
+  /// Sets entry `index` (a vector in direction mode, a marker position in point mode), keeping
+  /// its weight. continue_edit = true (a drag in progress) replaces the layout without pushing
+  /// another undo step, so one drag is undone at once.
+  void set_entry(int index, const Eigen::Vector3d& value, bool continue_edit = false);
+  /// Removes entry `index` and its weight (a marker dropout in point mode).
+  void remove_entry(int index);
+  /// Replaces the whole layout (e.g. by the augmenter's result) as one undoable step.
+  void replace(Layout layout);
+  /// Restores the layout before the last edit; false when there is nothing to undo.
+  bool undo();
+
+  /// Reads `path` (io::read_layout). On error throws InvalidArgument with the reader's message
+  /// and keeps everything as it was. On success the undo stack is cleared.
+  void load(const std::string& path);
+  /// Writes the layout to `path` (io::write_layout): an existing file is replaced only when
+  /// `overwrite` is set, otherwise InvalidArgument. On success path() becomes `path`.
+  void save(const std::string& path, bool overwrite);
+
+ private:
+  void commit(Layout next, bool push_undo);
+
+  Layout layout_;
+  std::string path_;
+  bool modified_ = false;
+  std::uint64_t revision_ = 1;
+  std::vector<Layout> undo_;
+};
+
+}  // namespace vantage::viewer

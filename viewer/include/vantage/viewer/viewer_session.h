@@ -1,0 +1,94 @@
+#pragma once
+
+/// The state of one vantage-viewer window, without the window: the layout document, the camera,
+/// the selection, the pinned viewpoint, the latest analysis and the augmenter, wired to the
+/// background AnalysisWorker. The drawing code (viewer/app) reads it and calls its actions; the
+/// tests drive it directly.
+
+#include <Eigen/Core>
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "vantage/viewer/analysis_worker.h"
+#include "vantage/viewer/camera.h"
+#include "vantage/viewer/layout_document.h"
+#include "vantage/viewer/viewpoint_readout.h"
+
+namespace vantage::viewer {
+
+/// Outcome of ViewerSession::save.
+enum class SaveOutcome {
+  kSaved,             ///< written
+  kNeedsOverwriteOk,  ///< the file exists and overwrite was not allowed: nothing written
+  kFailed,            ///< not written; message() says why
+};
+
+class ViewerSession {
+ public:
+  /// Starts on `document` and asks for its analysis.
+  explicit ViewerSession(LayoutDocument document);
+
+  const LayoutDocument& document() const { return document_; }
+  const Layout& layout() const { return document_.layout(); }
+  /// Data vectors of the current layout (free vectors in point mode), recomputed on every change.
+  const DataVectors& data() const { return data_; }
+  /// The sphere shaded for the current layout, recomputed on every change.
+  const SphereShading& shading() const { return shading_; }
+
+  /// The latest analysis received (possibly of an older revision while a new one runs).
+  const std::optional<AnalysisSnapshot>& analysis() const { return analysis_; }
+  /// True when analysis() is of the current revision.
+  bool analysis_current() const;
+  /// True while an analysis or augmenter step runs or waits in the worker.
+  bool working() const { return worker_.busy(); }
+  bool augmenting() const { return augment_requested_; }
+
+  /// The last message for the user (an error of an action, or what the augmenter did).
+  const std::string& message() const { return message_; }
+  bool message_is_error() const { return message_is_error_; }
+
+  // Actions. Each returns false, sets an error message and leaves the layout unchanged when the
+  // action is refused (bad index, invalid resulting layout, unreadable file, ...).
+  bool set_entry(int index, const Eigen::Vector3d& value, bool continue_edit = false);
+  bool remove_entry(int index);
+  bool undo();
+  bool load(const std::string& path);
+  SaveOutcome save(const std::string& path, bool overwrite);
+  /// Asks the worker for one augmenter step; its result is applied by poll() if the layout has not
+  /// changed meanwhile (else discarded with a message).
+  void step_augmenter();
+
+  /// Takes finished work from the worker (call once per frame). True when anything changed.
+  bool poll();
+  /// Polls until the current revision's analysis (and any augmenter step) has arrived or `timeout`
+  /// passes; true on success. For tests and screenshots.
+  bool wait_until_current(std::chrono::milliseconds timeout);
+
+  /// Camera placement for a preset; kWorst/kPaper need a current analysis (else: unchanged,
+  /// returns false).
+  bool apply_view(ViewPreset preset);
+
+  OrbitCamera camera;
+  int selected = -1;  ///< selected entry (vector or marker), -1 = none
+  /// A viewpoint the user pinned on the sphere (unit), shown in the readout when nothing is
+  /// hovered.
+  std::optional<Eigen::Vector3d> pinned_viewpoint;
+
+ private:
+  void changed();
+  void fail(const std::string& what);
+  void inform(const std::string& what);
+
+  LayoutDocument document_;
+  DataVectors data_;
+  SphereShading shading_;
+  std::optional<AnalysisSnapshot> analysis_;
+  bool augment_requested_ = false;
+  std::string message_;
+  bool message_is_error_ = false;
+  AnalysisWorker worker_;  // last: its thread stops before the members above go
+};
+
+}  // namespace vantage::viewer

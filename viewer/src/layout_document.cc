@@ -1,0 +1,96 @@
+#include "vantage/viewer/layout_document.h"
+
+#include <utility>
+
+#include "vantage/analysis/common.h"
+#include "vantage/io/layout_file.h"
+
+namespace vantage::viewer {
+namespace {
+
+void check_index(const Layout& layout, int index) {
+  if (index < 0 || index >= layout.entries.cols()) {
+    throw InvalidArgument(std::string(layout.entries_field()) + "[" + std::to_string(index) +
+                          "]: no such entry (the layout has " +
+                          std::to_string(layout.entries.cols()) + ")");
+  }
+}
+
+}  // namespace
+
+LayoutDocument::LayoutDocument(Layout layout, std::string path)
+    : layout_(std::move(layout)), path_(std::move(path)) {
+  layout_.validate();
+}
+
+Layout LayoutDocument::default_layout() {
+  Layout layout;
+  layout.name = "orthogonal triad (Fig. 2)";
+  layout.mode = LayoutMode::kVectors;
+  layout.entries = Eigen::Matrix3d::Identity();
+  layout.weights = Eigen::VectorXd::Ones(3);
+  layout.candidates.resize(3, 0);
+  return layout;
+}
+
+void LayoutDocument::commit(Layout next, bool push_undo) {
+  next.validate();
+  if (push_undo) {
+    undo_.push_back(std::move(layout_));
+    if (undo_.size() > kMaxUndo) undo_.erase(undo_.begin());
+  }
+  layout_ = std::move(next);
+  modified_ = true;
+  ++revision_;
+}
+
+void LayoutDocument::set_entry(int index, const Eigen::Vector3d& value, bool continue_edit) {
+  check_index(layout_, index);
+  Layout next = layout_;
+  next.entries.col(index) = value;
+  commit(std::move(next), !(continue_edit && !undo_.empty()));
+}
+
+void LayoutDocument::remove_entry(int index) {
+  check_index(layout_, index);
+  const Eigen::Index n = layout_.entries.cols();
+  Layout next = layout_;
+  next.entries.resize(3, n - 1);
+  next.weights.resize(n - 1);
+  for (Eigen::Index i = 0, k = 0; i < n; ++i) {
+    if (i == index) continue;
+    next.entries.col(k) = layout_.entries.col(i);
+    next.weights(k) = layout_.weights(i);
+    ++k;
+  }
+  commit(std::move(next), true);
+}
+
+void LayoutDocument::replace(Layout layout) { commit(std::move(layout), true); }
+
+bool LayoutDocument::undo() {
+  if (undo_.empty()) return false;
+  layout_ = std::move(undo_.back());
+  undo_.pop_back();
+  modified_ = true;
+  ++revision_;
+  return true;
+}
+
+void LayoutDocument::load(const std::string& path) {
+  Layout next = io::read_layout(path);
+  layout_ = std::move(next);
+  path_ = path;
+  undo_.clear();
+  modified_ = false;
+  ++revision_;
+}
+
+void LayoutDocument::save(const std::string& path, bool overwrite) {
+  if (path.empty()) throw InvalidArgument("save: no file name given");
+  io::write_layout(path, layout_, overwrite);
+  path_ = path;
+  modified_ = false;
+}
+
+}  // namespace vantage::viewer

@@ -1,0 +1,167 @@
+#include "vantage/viewer/viewer_session.h"
+
+#include <exception>
+#include <filesystem>
+#include <sstream>
+#include <thread>
+#include <utility>
+
+namespace vantage::viewer {
+
+ViewerSession::ViewerSession(LayoutDocument document) : document_(std::move(document)) {
+  changed();
+}
+
+void ViewerSession::changed() {
+  data_ = data_vectors(document_.layout());
+  shading_ = shade_sphere(data_.vectors);
+  if (selected >= document_.layout().entries.cols()) selected = -1;
+  worker_.request_analysis(document_.layout(), document_.revision());
+}
+
+void ViewerSession::fail(const std::string& what) {
+  message_ = what;
+  message_is_error_ = true;
+}
+
+void ViewerSession::inform(const std::string& what) {
+  message_ = what;
+  message_is_error_ = false;
+}
+
+bool ViewerSession::analysis_current() const {
+  return analysis_ && analysis_->revision == document_.revision();
+}
+
+bool ViewerSession::set_entry(int index, const Eigen::Vector3d& value, bool continue_edit) {
+  try {
+    document_.set_entry(index, value, continue_edit);
+  } catch (const std::exception& e) {
+    fail(e.what());
+    return false;
+  }
+  changed();
+  return true;
+}
+
+bool ViewerSession::remove_entry(int index) {
+  try {
+    document_.remove_entry(index);
+  } catch (const std::exception& e) {
+    fail(e.what());
+    return false;
+  }
+  inform("removed " + std::string(layout().mode == LayoutMode::kPoints ? "marker " : "vector ") +
+         std::to_string(index));
+  selected = -1;
+  changed();
+  return true;
+}
+
+bool ViewerSession::undo() {
+  if (!document_.undo()) {
+    fail("nothing to undo");
+    return false;
+  }
+  inform("undone");
+  changed();
+  return true;
+}
+
+bool ViewerSession::load(const std::string& path) {
+  try {
+    document_.load(path);
+  } catch (const std::exception& e) {
+    fail(e.what());
+    return false;
+  }
+  inform("loaded " + path);
+  selected = -1;
+  pinned_viewpoint.reset();
+  changed();
+  return true;
+}
+
+SaveOutcome ViewerSession::save(const std::string& path, bool overwrite) {
+  std::error_code ec;
+  if (!overwrite && std::filesystem::exists(path, ec)) return SaveOutcome::kNeedsOverwriteOk;
+  try {
+    document_.save(path, overwrite);
+  } catch (const std::exception& e) {
+    fail(e.what());
+    return SaveOutcome::kFailed;
+  }
+  inform("saved " + path);
+  return SaveOutcome::kSaved;
+}
+
+void ViewerSession::step_augmenter() {
+  augment_requested_ = true;
+  inform("augmenter: searching for the next " +
+         std::string(layout().mode == LayoutMode::kPoints ? "marker" : "vector") + "...");
+  worker_.request_augment(document_.layout(), document_.revision());
+}
+
+bool ViewerSession::poll() {
+  bool any = false;
+  if (std::optional<AnalysisSnapshot> snapshot = worker_.take_analysis()) {
+    analysis_ = std::move(snapshot);
+    any = true;
+  }
+  if (std::optional<AugmentOutcome> outcome = worker_.take_augment()) {
+    augment_requested_ = false;
+    any = true;
+    if (!outcome->error.empty()) {
+      fail("augmenter: " + outcome->error);
+    } else if (outcome->revision != document_.revision()) {
+      fail("augmenter: the layout changed while it ran; step discarded");
+    } else {
+      document_.replace(std::move(outcome->augmented));
+      std::ostringstream note;
+      note.precision(4);
+      note << "added " << outcome->step.added.transpose() << " in " << outcome->seconds
+           << " s: " << outcome->step.note;
+      inform(note.str());
+      changed();
+    }
+  }
+  return any;
+}
+
+bool ViewerSession::wait_until_current(std::chrono::milliseconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (true) {
+    poll();
+    if (analysis_current() && !augment_requested_) return true;
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+        deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) return false;
+    worker_.wait_idle(std::min(left, std::chrono::milliseconds(50)));
+  }
+}
+
+bool ViewerSession::apply_view(ViewPreset preset) {
+  switch (preset) {
+    case ViewPreset::kIso:
+      camera.reset();
+      return true;
+    case ViewPreset::kTop:
+      camera.look_along(Eigen::Vector3d::UnitZ());
+      return true;
+    case ViewPreset::kFront:
+      camera.look_along(Eigen::Vector3d::UnitX());
+      return true;
+    case ViewPreset::kSide:
+      camera.look_along(Eigen::Vector3d::UnitY());
+      return true;
+    case ViewPreset::kWorst:
+    case ViewPreset::kPaper:
+      if (!analysis_ || !analysis_->error.empty()) return false;
+      camera.look_along(preset == ViewPreset::kWorst ? analysis_->analysis.worst_viewpoint
+                                                     : analysis_->analysis.paper_lmi.viewpoint);
+      return true;
+  }
+  return false;
+}
+
+}  // namespace vantage::viewer
