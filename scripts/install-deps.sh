@@ -16,6 +16,8 @@ packages=(
   libglfw3-dev libimgui-dev libstb-dev
   libgtest-dev libgmock-dev googletest
   libbenchmark-dev
+  libyaml-cpp-dev
+  python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest
 )
 
 missing=()
