@@ -75,6 +75,16 @@ std::vector<Row> read_rows(std::string_view text) {
   return rows;
 }
 
+/// A header names the columns: none of x, y, z is a number. (A data row with a typo in one
+/// coordinate is not a header and is reported.)
+bool is_header(const Row& row) {
+  double unused = 0;
+  for (std::size_t c = 1; c < 4 && c < row.fields.size(); ++c) {
+    if (parse_number(row.fields[c], &unused)) return false;
+  }
+  return true;
+}
+
 std::string where(const Row& row, const std::string& name) {
   return "line " + std::to_string(row.line) + (name.empty() ? "" : " (" + name + ")");
 }
@@ -84,15 +94,12 @@ std::string where(const Row& row, const std::string& name) {
 CsvMarkers parse_csv_markers(std::string_view text, const std::string& source) {
   std::vector<Row> rows = read_rows(text);
   if (rows.empty()) fail(source, "no marker rows (expected name,x,y,z[,weight])");
-  double unused = 0;
-  const bool has_header =
-      !parse_number(rows.front().fields.size() > 1 ? rows.front().fields[1] : "", &unused);
   const std::size_t columns = rows.front().fields.size();
   if (columns < 4 || columns > 5) {
     fail(source, where(rows.front(), "") + ": expected 4 or 5 fields (name,x,y,z[,weight]), got " +
                      std::to_string(columns));
   }
-  if (has_header) rows.erase(rows.begin());
+  if (is_header(rows.front())) rows.erase(rows.begin());
   if (rows.empty()) fail(source, "no marker rows after the header");
 
   CsvMarkers out;

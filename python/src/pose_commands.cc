@@ -251,12 +251,18 @@ py::object pose(const py::object& model, const py::object& image, const std::str
   if (!image2.is_none()) in.image2 = rows_from_array<2>(image2, "image2");
   if (!weights.is_none()) in.weights = vector_from_array(weights, "weights");
   if (!focal.is_none()) {
+    if (!py::isinstance<py::float_>(focal) && !py::isinstance<py::int_>(focal)) {
+      throw InvalidArgument("focal: must be a finite number > 0");
+    }
     in.focal = focal.cast<double>();
     if (!(*in.focal > 0.0 && std::isfinite(*in.focal))) {
       throw InvalidArgument("focal: must be a finite number > 0");
     }
   }
   if (!free_vectors.is_none()) {
+    if (!py::isinstance<py::str>(free_vectors)) {
+      throw InvalidArgument("free_vectors: expected all or spanning");
+    }
     in.free_vectors = free_vectors.cast<std::string>();
     if (*in.free_vectors != "all" && *in.free_vectors != "spanning") {
       throw InvalidArgument("free_vectors: expected all or spanning");

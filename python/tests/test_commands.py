@@ -33,6 +33,8 @@ def test_analyze_result_attributes_are_the_json_fields_as_numpy(vantage):
     assert result.certificate.certified is True
     assert result.solver.backend == "csdp"
     assert isinstance(result.swaps[0].error_deg, float)
+    points = vantage.analyze(points=[[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]])
+    assert points.swaps[0].pair_i.dtype.kind == "i"  # marker indices stay integers
     assert set(result.to_dict()) == set(dir(result))
     with pytest.raises(AttributeError, match="no field 'pbar'"):
         result.pbar  # noqa: B018

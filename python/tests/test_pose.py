@@ -67,8 +67,9 @@ def test_pose_input_errors(vantage):
         vantage.pose(data["model"], data["image"], method="dlt")
     with pytest.raises(ValueError, match=r"image: expected an n x 2 array .* pass image.T"):
         vantage.pose(data["model"], data["image"].T)
-    with pytest.raises(ValueError, match="focal: must be a finite number > 0"):
-        vantage.pose(data["model"], data["image"], focal=-1)
+    for focal in (-1, float("nan"), "800"):
+        with pytest.raises(ValueError, match="focal: must be a finite number > 0"):
+            vantage.pose(data["model"], data["image"], focal=focal)
     with pytest.raises(ValueError, match="free_vectors: only affine, standard and full3d"):
         vantage.pose(data["model"], data["image"], method="oi-foam", free_vectors="all")
 

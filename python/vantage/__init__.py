@@ -30,8 +30,8 @@ from . import _vantage
 
 __all__ = [
     "Layout", "NumericalError", "Result", "analyze", "board", "data_vectors", "design",
-    "load_correspondences", "load_layout", "orient", "pbar_at_viewpoints", "pose", "pose_methods", "save_layout",
-    "weights",
+    "load_correspondences", "load_layout", "orient", "pbar_at_viewpoints", "pose",
+    "pose_methods", "save_layout", "weights", "__version__",
 ]
 
 
@@ -87,7 +87,7 @@ def _wrap(value):
     if isinstance(value, dict):
         return Result(value)
     if _numeric_list(value):
-        return _np.asarray(value, dtype=float)
+        return _np.asarray(value)
     if isinstance(value, list) and value and all(isinstance(v, dict) for v in value):
         return [Result(v) for v in value]
     return value

@@ -45,6 +45,8 @@ const BadCsv kBadCsvs[] = {
     {"ThreeFields", "a,0,0\nb,1,0\nc,0,1\n", "line 1: expected 4 or 5 fields"},
     {"SixFields", "a,0,0,0,1,9\n", "line 1: expected 4 or 5 fields"},
     {"RaggedRow", "a,0,0,0\nb,1,0,0,2\nc,0,1,0\n", "line 2 (b): expected 4 fields like the first"},
+    {"TypoInTheFirstRow", "a,0,O,0\nb,1,0,0\nc,0,1,0\nd,1,1,1\n",
+     "line 1 (a), y: expected a finite number, got \"O\""},
     {"NotANumber", "a,0,0,0\nb,1,zero,0\nc,0,1,0\n", "line 2 (b), y: expected a finite number"},
     {"EmptyNumber", "a,0,0,0\nb,1,,0\nc,0,1,0\n", "line 2 (b), y: expected a finite number"},
     {"NaN", "a,0,0,0\nb,1,0,nan\nc,0,1,0\n", "line 2 (b), z: expected a finite number"},

@@ -3,7 +3,7 @@
 /// Reading marker sets from CSV, the format every motion-capture tool exports:
 ///
 ///   # optional comment lines start with '#'
-///   name,x,y,z,weight            <- optional header (any first row whose x is not a number)
+///   name,x,y,z,weight            <- optional header (a first row where x, y, z are not numbers)
 ///   LED1,0.10,0.00,0.25,1
 ///   LED2,-0.10,0.05,0.25         <- weight column optional; all rows have the same columns
 ///
