@@ -8,6 +8,7 @@ INSTALL_DIR ?= $(CURDIR)/build-install
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 BUILD_TYPE ?= RelWithDebInfo
 FUZZ_SECONDS ?= 60
+FORMATS_FUZZ_SECONDS ?= 20
 
 .PHONY: all deps configure build demo test bench test-sanitize test-consumer fuzz format clean
 
@@ -29,6 +30,11 @@ demo: build
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+# The Python module alone (build/python/vantage; PYTHONPATH=build/python python3 -c "import vantage").
+.PHONY: python
+python: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target vantage_python
 
 bench: build
 	$(BUILD_DIR)/bench/vantage_bench --benchmark_min_time=0.2
@@ -58,9 +64,13 @@ fuzz: deps
 	rm -rf $(FUZZ_DIR)/corpus && mkdir -p $(FUZZ_DIR)/corpus
 	$(FUZZ_DIR)/fuzz/vantage_fuzz_layout -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 \
 	  $(FUZZ_DIR)/corpus examples/layouts
+	cmake --build $(FUZZ_DIR) -j $(JOBS) --target vantage_fuzz_layout_formats
+	rm -rf $(FUZZ_DIR)/corpus-formats && mkdir -p $(FUZZ_DIR)/corpus-formats
+	$(FUZZ_DIR)/fuzz/vantage_fuzz_layout_formats -max_total_time=$(FORMATS_FUZZ_SECONDS) \
+	  -print_final_stats=1 $(FUZZ_DIR)/corpus-formats examples/layouts
 
 format:
-	find analysis sdp design cli io viewer examples tests bench fuzz \
+	find analysis sdp design cli io viewer examples tests bench fuzz python \
 	  \( -name '*.h' -o -name '*.cc' \) 2>/dev/null | xargs clang-format -i
 
 clean:

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "command.h"
+#include "layout_input.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/layout.h"
 #include "vantage/design/augment.h"
@@ -19,6 +20,7 @@ namespace {
 
 struct AnalyzeArgs {
   std::string file;
+  LayoutInput input;
   std::string pair_weighting = "geometric";
   int swaps = 5;
   bool crosscheck = true;
@@ -39,7 +41,7 @@ std::string vector_label(const DataVectors& data, int k) {
 
 int run_analyze(const AnalyzeArgs& args) {
   if (args.swaps < 1) throw InvalidArgument("--swaps: must be >= 1");
-  const Layout layout = io::read_layout(args.file);
+  const Layout layout = args.input.read(args.file);
   const DataVectors data =
       data_vectors(layout, args.pair_weighting == "arithmetic" ? PairWeighting::kArithmeticMean
                                                                : PairWeighting::kGeometricMean);
@@ -145,6 +147,7 @@ Command add_analyze_command(CLI::App& root) {
       "Worst viewpoint of a layout (Theorem 6, global over all sign cells, certified), p-bar_min, "
       "worst-case errors (Eq. 30), the paper's single LMI, NLopt cross-check, swap sensitivity");
   sub->add_option("LAYOUT", args->file, "layout JSON file (vectors or points)")->required();
+  args->input.add_options(sub);
   sub->add_option("--swaps", args->swaps, "number of worst swap pairs to report (Prop. 2)")
       ->capture_default_str();
   sub->add_option("--pair-weighting", args->pair_weighting,

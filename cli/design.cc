@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "command.h"
+#include "layout_input.h"
 #include "vantage/analysis/common.h"
 #include "vantage/design/augment.h"
 #include "vantage/io/layout_file.h"
@@ -23,6 +24,7 @@ constexpr double kCandidateSeparation = 1e-9;
 
 struct DesignArgs {
   std::string file;
+  LayoutInput input;
   int add = 0;
   bool candidates_only = false;
   double margin = design::AugmentOptions{}.margin;
@@ -272,7 +274,7 @@ int run_design(const DesignArgs& args) {
   if (!(args.margin >= 0.0) || !std::isfinite(args.margin)) {
     bad("--margin: must be finite and >= 0, got " + format_number(args.margin));
   }
-  const Layout layout = io::read_layout(args.file);
+  const Layout layout = args.input.read(args.file);
   const Eigen::Index n_candidates = layout.candidates.cols();
   if (args.candidates_only && n_candidates == 0) {
     bad("--candidates-only: " + args.file + " has no \"candidates\"");
@@ -327,6 +329,7 @@ Command add_design_command(CLI::App& root) {
       "optimiser for comparison");
   sub->add_option("LAYOUT", args->file, "layout JSON file (vectors or points, optional candidates)")
       ->required();
+  args->input.add_options(sub);
   sub->add_option("--add", args->add,
                   "K: directions (vector layouts) or markers (point layouts) "
                   "to add, >= 1")

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "command.h"
+#include "layout_input.h"
 #include "vantage/design/weights.h"
 #include "vantage/io/layout_file.h"
 
@@ -15,6 +16,7 @@ namespace {
 
 struct WeightsArgs {
   std::string file;
+  LayoutInput input;
   bool json = false;
 };
 
@@ -36,7 +38,7 @@ Json suggestion_json(const design::WeightsSuggestion& s) {
 }
 
 int run_weights(const WeightsArgs& args) {
-  const Layout layout = io::read_layout(args.file);
+  const Layout layout = args.input.read(args.file);
   const design::Weights w =
       against_source(args.file, [&] { return design::layout_weights(layout); });
   const bool solved = w.status != design::Weights::Status::kSolverFailed;
@@ -106,6 +108,7 @@ Command add_weights_command(CLI::App& root) {
   sub->add_option("LAYOUT", args->file,
                   "layout JSON file (points: marker positions; vectors: the z_i themselves)")
       ->required();
+  args->input.add_options(sub);
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
   return {sub, [args] { return run_weights(*args); }};
 }

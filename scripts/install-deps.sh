@@ -17,6 +17,8 @@ packages=(
   libgtest-dev libgmock-dev googletest
   libbenchmark-dev
   xvfb xauth libgl1-mesa-dri libglx-mesa0 fonts-dejavu-core
+  libyaml-cpp-dev
+  python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest
 )
 
 missing=()

@@ -1,0 +1,30 @@
+#include "layout_input.h"
+
+#include "vantage/io/layout_formats.h"
+
+namespace vantage::cli {
+
+void LayoutInput::add_options(CLI::App* sub) {
+  sub->add_option("--format", format,
+                  "layout file format; auto: by extension (.json, .csv name,x,y,z[,weight], "
+                  ".yaml/.yml AprilTag tag_bundles)")
+      ->check(CLI::IsMember({"auto", "json", "csv", "apriltag"}))
+      ->capture_default_str();
+  sub->add_option("--tag-points", tag_points,
+                  "AprilTag bundles: the markers are each tag's four corners or its centre")
+      ->check(CLI::IsMember({"corners", "centres", "centers"}))
+      ->capture_default_str();
+  sub->add_option("--bundle", bundle,
+                  "AprilTag bundles: the name of the bundle to read (needed when the file has "
+                  "several)");
+}
+
+Layout LayoutInput::read(const std::string& path) const {
+  io::LayoutReadOptions options;
+  options.format = io::layout_format_from_string(format, "--format");
+  options.apriltag.tag_points = io::tag_points_from_string(tag_points, "--tag-points");
+  options.apriltag.bundle = bundle;
+  return io::load_layout(path, options);
+}
+
+}  // namespace vantage::cli

@@ -1,0 +1,28 @@
+#pragma once
+
+// The layout-file options shared by every subcommand that reads a layout (analyze, design,
+// weights, plot): --format and the AprilTag options. One line registers them on a subcommand,
+// one line reads the layout with them.
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "vantage/analysis/layout.h"
+
+namespace vantage::cli {
+
+/// The parsed layout options of one subcommand.
+struct LayoutInput {
+  std::string format = "auto";
+  std::string tag_points = "corners";
+  std::string bundle;
+
+  /// Adds --format, --tag-points and --bundle to `sub`.
+  void add_options(CLI::App* sub);
+
+  /// Reads the layout at `path` in the chosen (or detected) format; InvalidArgument names the
+  /// file, field and index (or the option) on bad input.
+  Layout read(const std::string& path) const;
+};
+
+}  // namespace vantage::cli

@@ -1,0 +1,47 @@
+#pragma once
+
+/// One entry point for every layout file format vantage reads: layout JSON (layout_file.h),
+/// CSV marker sets (csv_layout.h) and AprilTag bundles (apriltag_bundle.h). The format comes
+/// from the file's extension unless given: .json -> JSON, .csv -> CSV, .yaml/.yml -> AprilTag.
+/// Layouts are always written as JSON (layout_file.h).
+
+#include <string>
+#include <string_view>
+
+#include "vantage/analysis/layout.h"
+#include "vantage/io/apriltag_bundle.h"
+
+namespace vantage::io {
+
+/// A layout file format.
+enum class LayoutFormat {
+  kAuto,      ///< from the extension
+  kJson,      ///< vantage layout JSON
+  kCsv,       ///< name,x,y,z[,weight]
+  kAprilTag,  ///< ROS apriltag tags.yaml, tag_bundles
+};
+
+/// "auto" | "json" | "csv" | "apriltag"; throws InvalidArgument naming `option` otherwise.
+LayoutFormat layout_format_from_string(const std::string& name, const std::string& option);
+
+/// "auto", "json", "csv" or "apriltag".
+const char* to_string(LayoutFormat format);
+
+/// The format of `path` by its extension (case-insensitive). Throws InvalidArgument
+/// "<path>: cannot tell the layout format from the extension ..." for any other extension.
+LayoutFormat layout_format_of(const std::string& path);
+
+/// How to read a layout file.
+struct LayoutReadOptions {
+  LayoutFormat format = LayoutFormat::kAuto;
+  AprilTagOptions apriltag;  ///< used for AprilTag bundles only
+};
+
+/// Parses `text` in `format` (kAuto: by the extension of `source`).
+Layout parse_layout_as(std::string_view text, const std::string& source,
+                       const LayoutReadOptions& options = {});
+
+/// Reads the layout file at `path` in any supported format (errors name the path).
+Layout load_layout(const std::string& path, const LayoutReadOptions& options = {});
+
+}  // namespace vantage::io

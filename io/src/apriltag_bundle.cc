@@ -1,0 +1,153 @@
+#include "vantage/io/apriltag_bundle.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <map>
+
+#include "entry_labels.h"
+#include "json_fields.h"
+#include "vantage/analysis/common.h"
+
+namespace vantage::io {
+
+namespace {
+
+using internal::fail;
+
+// A quaternion shorter than this cannot be normalised into a rotation meaningfully.
+constexpr double kMinQuaternionNorm = 1e-12;
+
+YAML::Node parse_yaml(std::string_view text, const std::string& source) {
+  try {
+    return YAML::Load(std::string(text));
+  } catch (const YAML::Exception& e) {
+    fail(source, "not valid YAML: line " + std::to_string(e.mark.line + 1) + ", column " +
+                     std::to_string(e.mark.column + 1) + ": " + e.msg);
+  }
+}
+
+double read_number(const YAML::Node& tag, const std::string& source, const std::string& where,
+                   const char* field) {
+  const YAML::Node value = tag[field];
+  if (!value) fail(source, where + ": missing field \"" + field + "\"");
+  double x = 0;
+  if (!value.IsScalar() || !YAML::convert<double>::decode(value, x) || !std::isfinite(x)) {
+    fail(source, where + "." + field + ": expected a finite number");
+  }
+  return x;
+}
+
+/// The index of the bundle to read.
+std::size_t choose_bundle(const YAML::Node& bundles, const std::string& source,
+                          const std::string& wanted) {
+  std::string names;
+  for (std::size_t b = 0; b < bundles.size(); ++b) {
+    const YAML::Node name = bundles[b].IsMap() ? bundles[b]["name"] : YAML::Node();
+    const std::string text = name && name.IsScalar() ? name.Scalar() : "";
+    if (!wanted.empty() && text == wanted) return b;
+    names += (b ? ", " : "") + (text.empty() ? "tag_bundles[" + std::to_string(b) + "]" : text);
+  }
+  if (wanted.empty() && bundles.size() == 1) return 0;
+  if (wanted.empty()) {
+    fail(source, "tag_bundles: " + std::to_string(bundles.size()) +
+                     " bundles; choose one with --bundle (" + names + ")");
+  }
+  fail(source, "tag_bundles: no bundle named \"" + wanted + "\" (" + names + ")");
+}
+
+}  // namespace
+
+TagPoints tag_points_from_string(const std::string& name, const std::string& option) {
+  if (name == "corners") return TagPoints::kCorners;
+  if (name == "centres" || name == "centers") return TagPoints::kCentres;
+  throw InvalidArgument(option + ": expected corners or centres, got \"" + name + "\"");
+}
+
+namespace {
+
+AprilTagMarkers read_markers(std::string_view text, const std::string& source,
+                             const AprilTagOptions& options) {
+  const YAML::Node root = parse_yaml(text, source);
+  if (!root.IsMap()) fail(source, "the top level must be a YAML map with \"tag_bundles\"");
+  const YAML::Node bundles = root["tag_bundles"];
+  if (!bundles) fail(source, "tag_bundles: missing (the tags.yaml of apriltag_ros)");
+  if (!bundles.IsSequence() || bundles.size() == 0) {
+    fail(source, "tag_bundles: expected a non-empty list of bundles");
+  }
+  const std::size_t b = choose_bundle(bundles, source, options.bundle);
+  const std::string prefix = "tag_bundles[" + std::to_string(b) + "]";
+  const YAML::Node bundle = bundles[b];
+  if (!bundle.IsMap()) fail(source, prefix + ": expected a map with name and layout");
+  const YAML::Node tags = bundle["layout"];
+  if (!tags || !tags.IsSequence()) fail(source, prefix + ".layout: expected a list of tags");
+
+  const bool corners = options.tag_points == TagPoints::kCorners;
+  const int per_tag = corners ? 4 : 1;
+  AprilTagMarkers out;
+  Layout& layout = out.layout;
+  const YAML::Node name = bundle["name"];
+  layout.name = name && name.IsScalar() ? name.Scalar() : "";
+  layout.mode = LayoutMode::kPoints;
+  layout.entries.resize(3, static_cast<Eigen::Index>(tags.size() * per_tag));
+  layout.candidates.resize(3, 0);
+  std::vector<std::string> labels;
+  std::map<long, std::size_t> seen;
+  for (std::size_t k = 0; k < tags.size(); ++k) {
+    const std::string where = prefix + ".layout[" + std::to_string(k) + "]";
+    const YAML::Node tag = tags[k];
+    if (!tag.IsMap()) fail(source, where + ": expected a map {id, size, x, y, z, qw, qx, qy, qz}");
+    const double id_value = read_number(tag, source, where, "id");
+    if (id_value < 0 || id_value != std::floor(id_value) || id_value > 1e9) {
+      fail(source, where + ".id: expected a non-negative integer");
+    }
+    const long id = static_cast<long>(id_value);
+    const auto [previous, inserted] = seen.emplace(id, k);
+    if (!inserted) {
+      fail(source, where + ".id: tag " + std::to_string(id) + " repeats layout[" +
+                       std::to_string(previous->second) + "]");
+    }
+    const double size = read_number(tag, source, where, "size");
+    if (size <= 0) fail(source, where + ".size: must be > 0");
+    const Eigen::Vector3d p(read_number(tag, source, where, "x"),
+                            read_number(tag, source, where, "y"),
+                            read_number(tag, source, where, "z"));
+    Eigen::Quaterniond q(
+        read_number(tag, source, where, "qw"), read_number(tag, source, where, "qx"),
+        read_number(tag, source, where, "qy"), read_number(tag, source, where, "qz"));
+    if (!(q.norm() >= kMinQuaternionNorm)) fail(source, where + ".qw: zero quaternion");
+    const Eigen::Matrix3d R_bundle_tag = q.normalized().toRotationMatrix();
+    const double s = size / 2;
+    const Eigen::Vector3d corner_tag[4] = {{-s, -s, 0}, {s, -s, 0}, {s, s, 0}, {-s, s, 0}};
+    for (int c = 0; c < per_tag; ++c) {
+      const Eigen::Index j = static_cast<Eigen::Index>(k) * per_tag + c;
+      layout.entries.col(j) = corners ? Eigen::Vector3d(R_bundle_tag * corner_tag[c] + p) : p;
+      out.tag_ids.push_back(static_cast<int>(id));
+      out.corners.push_back(corners ? c : -1);
+      labels.push_back(where + " (tag " + std::to_string(id) +
+                       (corners ? ", corner " + std::to_string(c) : std::string()) + ")");
+    }
+  }
+  layout.weights = Eigen::VectorXd::Ones(layout.entries.cols());
+  internal::validate_labelled(layout, source, labels);
+  return out;
+}
+
+}  // namespace
+
+AprilTagMarkers parse_apriltag_markers(std::string_view text, const std::string& source,
+                                       const AprilTagOptions& options) {
+  try {
+    return read_markers(text, source, options);
+  } catch (const YAML::Exception& e) {
+    fail(source, std::string("unexpected YAML structure: ") + e.what());
+  }
+}
+
+Layout parse_apriltag_layout(std::string_view text, const std::string& source,
+                             const AprilTagOptions& options) {
+  return parse_apriltag_markers(text, source, options).layout;
+}
+
+}  // namespace vantage::io

@@ -1,0 +1,67 @@
+#include "vantage/io/layout_formats.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include "json_fields.h"
+#include "vantage/analysis/common.h"
+#include "vantage/io/csv_layout.h"
+#include "vantage/io/layout_file.h"
+
+namespace vantage::io {
+
+LayoutFormat layout_format_from_string(const std::string& name, const std::string& option) {
+  if (name == "auto") return LayoutFormat::kAuto;
+  if (name == "json") return LayoutFormat::kJson;
+  if (name == "csv") return LayoutFormat::kCsv;
+  if (name == "apriltag") return LayoutFormat::kAprilTag;
+  throw InvalidArgument(option + ": expected auto, json, csv or apriltag, got \"" + name + "\"");
+}
+
+const char* to_string(LayoutFormat format) {
+  switch (format) {
+    case LayoutFormat::kAuto:
+      return "auto";
+    case LayoutFormat::kJson:
+      return "json";
+    case LayoutFormat::kCsv:
+      return "csv";
+    case LayoutFormat::kAprilTag:
+      return "apriltag";
+  }
+  return "unknown";
+}
+
+LayoutFormat layout_format_of(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".json") return LayoutFormat::kJson;
+  if (extension == ".csv") return LayoutFormat::kCsv;
+  if (extension == ".yaml" || extension == ".yml") return LayoutFormat::kAprilTag;
+  internal::fail(path, "cannot tell the layout format from the extension \"" + extension +
+                           "\" (.json, .csv, .yaml or .yml); give --format json|csv|apriltag");
+}
+
+Layout parse_layout_as(std::string_view text, const std::string& source,
+                       const LayoutReadOptions& options) {
+  const LayoutFormat format =
+      options.format == LayoutFormat::kAuto ? layout_format_of(source) : options.format;
+  switch (format) {
+    case LayoutFormat::kCsv:
+      return parse_csv_layout(text, source);
+    case LayoutFormat::kAprilTag:
+      return parse_apriltag_layout(text, source, options.apriltag);
+    case LayoutFormat::kJson:
+    case LayoutFormat::kAuto:
+      break;
+  }
+  return parse_layout(text, source);
+}
+
+Layout load_layout(const std::string& path, const LayoutReadOptions& options) {
+  return parse_layout_as(read_text_file(path), path, options);
+}
+
+}  // namespace vantage::io

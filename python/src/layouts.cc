@@ -1,0 +1,183 @@
+#include "layouts.h"
+
+#include <pybind11/stl.h>
+
+#include "arrays.h"
+#include "results.h"
+#include "vantage/analysis/common.h"
+#include "vantage/analysis/error_bounds.h"
+#include "vantage/io/calibration_board.h"
+#include "vantage/io/layout_file.h"
+#include "vantage/io/layout_formats.h"
+
+namespace vantage::python {
+
+namespace {
+
+std::string text_of(const py::handle& value, const char* name) {
+  if (!py::isinstance<py::str>(value)) {
+    throw InvalidArgument(std::string(name) + ": expected a string");
+  }
+  return value.cast<std::string>();
+}
+
+/// format=, tag_points=, bundle= (the CLI's --format, --tag-points, --bundle).
+io::LayoutReadOptions read_options_from(const py::kwargs& kwargs) {
+  io::LayoutReadOptions options;
+  for (const auto& item : kwargs) {
+    const std::string key = py::str(item.first);
+    if (item.second.is_none()) continue;
+    if (key == "format") {
+      options.format = io::layout_format_from_string(text_of(item.second, "format"), "format");
+    } else if (key == "tag_points") {
+      options.apriltag.tag_points =
+          io::tag_points_from_string(text_of(item.second, "tag_points"), "tag_points");
+    } else if (key == "bundle") {
+      options.apriltag.bundle = text_of(item.second, "bundle");
+    } else {
+      throw InvalidArgument(key + ": unknown argument (format, tag_points, bundle read files)");
+    }
+  }
+  return options;
+}
+
+Layout make_layout(const py::object& vectors, const py::object& points, const py::object& weights,
+                   const py::object& candidates, const std::string& name,
+                   const std::string& description) {
+  if (vectors.is_none() == points.is_none()) {
+    throw InvalidArgument(
+        vectors.is_none() ? "vectors/points: missing; give vectors= (directions) or points= "
+                            "(marker positions)"
+                          : "vectors/points: give exactly one of vectors= or points=, not both");
+  }
+  Layout layout;
+  layout.name = name;
+  layout.description = description;
+  layout.mode = points.is_none() ? LayoutMode::kVectors : LayoutMode::kPoints;
+  layout.entries = rows_from_array<3>(points.is_none() ? vectors : points, layout.entries_field());
+  layout.weights = weights.is_none() ? Eigen::VectorXd::Ones(layout.entries.cols())
+                                     : vector_from_array(weights, "weights");
+  layout.candidates =
+      candidates.is_none() ? Eigen::Matrix3Xd(3, 0) : rows_from_array<3>(candidates, "candidates");
+  layout.validate();
+  return layout;
+}
+
+py::object layout_dict(const Layout& layout) {
+  return to_python(Json::parse(io::layout_to_json(layout)));
+}
+
+}  // namespace
+
+Layout layout_from_arguments(const py::object& layout, const py::object& vectors,
+                             const py::object& points, const py::object& weights,
+                             const py::object& candidates, const py::kwargs& read_options,
+                             std::string* source) {
+  source->clear();
+  if (layout.is_none()) {
+    if (read_options.size() > 0) read_options_from(read_options);  // rejects unknown names
+    return make_layout(vectors, points, weights, candidates, "", "");
+  }
+  if (!vectors.is_none() || !points.is_none() || !weights.is_none() || !candidates.is_none()) {
+    throw InvalidArgument(
+        "layout: give a layout or vectors=/points= (with weights=, candidates=), not both");
+  }
+  if (py::isinstance<Layout>(layout)) return layout.cast<Layout>();
+  *source = path_from(layout);
+  const io::LayoutReadOptions options = read_options_from(read_options);
+  return without_gil([&] { return io::load_layout(*source, options); });
+}
+
+void bind_layouts(py::module_& module) {
+  py::class_<Layout>(module, "Layout",
+                     "A fiducial layout: marker positions (points) or data vectors (vectors), "
+                     "with weights and optional candidates. Arrays are n x 3.")
+      .def(py::init([](const py::object& vectors, const py::object& points,
+                       const py::object& weights, const py::object& candidates,
+                       const std::string& name, const std::string& description) {
+             return make_layout(vectors, points, weights, candidates, name, description);
+           }),
+           py::kw_only(), py::arg("vectors") = py::none(), py::arg("points") = py::none(),
+           py::arg("weights") = py::none(), py::arg("candidates") = py::none(),
+           py::arg("name") = "", py::arg("description") = "")
+      .def_readonly("name", &Layout::name)
+      .def_readonly("description", &Layout::description)
+      .def_property_readonly("mode", [](const Layout& l) { return to_string(l.mode); })
+      .def_property_readonly(
+          "entries", [](const Layout& l) { return array_from_columns(l.entries); },
+          "n x 3: the points (point mode) or vectors (direction mode)")
+      .def_property_readonly("weights",
+                             [](const Layout& l) { return array_from_vector(l.weights); })
+      .def_property_readonly("candidates",
+                             [](const Layout& l) { return array_from_columns(l.candidates); })
+      .def("to_dict", &layout_dict, "The layout as the dict of its JSON file")
+      .def("__len__", [](const Layout& l) { return l.entries.cols(); })
+      .def("__repr__", [](const Layout& l) {
+        return "<vantage.Layout '" + l.name + "': " + std::to_string(l.entries.cols()) + " " +
+               to_string(l.mode) + ">";
+      });
+
+  module.def(
+      "load_layout",
+      [](const py::object& path, const py::kwargs& kwargs) {
+        std::string source;
+        return layout_from_arguments(path, py::none(), py::none(), py::none(), py::none(), kwargs,
+                                     &source);
+      },
+      py::arg("path"),
+      "Reads a layout file: .json (vantage layout), .csv (name,x,y,z[,weight]) or .yaml/.yml "
+      "(AprilTag tag_bundles). Keywords: format='auto'|'json'|'csv'|'apriltag', "
+      "tag_points='corners'|'centres', bundle=NAME.");
+  module.def(
+      "save_layout",
+      [](const Layout& layout, const py::object& path, bool overwrite) {
+        io::write_layout(path_from(path), layout, overwrite);
+      },
+      py::arg("layout"), py::arg("path"), py::kw_only(), py::arg("overwrite") = false,
+      "Writes the layout as JSON; refuses to replace an existing file unless overwrite=True.");
+  module.def(
+      "board",
+      [](const std::string& type, int rows, int cols, double square, double marker,
+         double spacing) {
+        io::BoardOptions options;
+        options.type = io::board_type_from_string(type, "type");
+        options.rows = rows;
+        options.cols = cols;
+        options.square = square;
+        options.marker = marker;
+        options.spacing = spacing;
+        return io::calibration_board(options);
+      },
+      py::arg("type"), py::kw_only(), py::arg("rows"), py::arg("cols"), py::arg("square"),
+      py::arg("marker") = 0.0, py::arg("spacing") = io::BoardOptions{}.spacing,
+      "The layout of a calibration target (as `vantage layout board`): 'chessboard' or "
+      "'charuco' inner corners (rows x cols squares), 'aprilgrid' tag corners (rows x cols tags, "
+      "Kalibr spacing ratio).");
+  module.def(
+      "data_vectors",
+      [](const Layout& layout, const std::string& pair_weighting) {
+        if (pair_weighting != "geometric" && pair_weighting != "arithmetic") {
+          throw InvalidArgument("pair_weighting: expected geometric or arithmetic");
+        }
+        const DataVectors data =
+            data_vectors(layout, pair_weighting == "arithmetic" ? PairWeighting::kArithmeticMean
+                                                                : PairWeighting::kGeometricMean);
+        return py::make_tuple(array_from_columns(data.vectors), array_from_vector(data.weights));
+      },
+      py::arg("layout"), py::kw_only(), py::arg("pair_weighting") = "geometric",
+      "(vectors, weights): the data vectors the analysis uses, m x 3 (point mode: the free "
+      "vectors z_j - z_i, i < j, Prop. 8) and their weights.");
+  module.def(
+      "pbar_at_viewpoints",
+      [](const py::object& vectors, const py::object& viewpoints) {
+        const Eigen::Matrix3Xd z = rows_from_array<3>(vectors, "vectors");
+        const Eigen::Matrix3Xd a = rows_from_array<3>(viewpoints, "viewpoints");
+        return array_from_vector(without_gil([&] { return pbar_at_viewpoints(z, a); }));
+      },
+      py::arg("vectors"), py::arg("viewpoints"),
+      "p-bar(a) = sqrt(1 - min_i (a.n_i)^2), n_i = z_i / |z_i|, at each unit viewpoint a (rows of "
+      "viewpoints, k x 3) "
+      "for the data vectors (m x 3): the figure of merit whose minimum analyze() reports.");
+}
+
+}  // namespace vantage::python

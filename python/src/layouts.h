@@ -1,0 +1,29 @@
+#pragma once
+
+// Layouts in the Python module: the vantage.Layout class, load_layout / save_layout / board /
+// data_vectors / pbar_at_viewpoints, and the one place that turns the `layout | vectors= |
+// points=` arguments of analyze, design and weights into a vantage::Layout.
+
+#include <pybind11/pybind11.h>
+
+#include <string>
+
+#include "vantage/analysis/layout.h"
+
+namespace vantage::python {
+
+namespace py = pybind11;
+
+/// The layout the caller means: `layout` (a vantage.Layout, or a path read in any supported
+/// format with `format`, `tag_points`, `bundle`) or exactly one of `vectors` / `points` (n x 3)
+/// with optional `weights` and `candidates`. Sets *source to the path (or "" for arrays).
+/// Throws InvalidArgument (ValueError) with the reader's message on bad input.
+Layout layout_from_arguments(const py::object& layout, const py::object& vectors,
+                             const py::object& points, const py::object& weights,
+                             const py::object& candidates, const py::kwargs& read_options,
+                             std::string* source);
+
+/// Registers vantage.Layout and the layout functions.
+void bind_layouts(py::module_& module);
+
+}  // namespace vantage::python

@@ -1,0 +1,20 @@
+// The compiled part of the Python package `vantage` (vantage/_vantage): thin bindings over the
+// C++ libraries. vantage/__init__.py re-exports them and wraps results in vantage.Result.
+
+#include <pybind11/pybind11.h>
+
+#include "layout_commands.h"
+#include "layouts.h"
+#include "pose_commands.h"
+#include "results.h"
+
+PYBIND11_MODULE(_vantage, module) {
+  module.doc() =
+      "vantage: how good is a fiducial layout for pose from a single affine image (McInroy, "
+      "Erwin & Robertson), and how to make it better.";
+  module.attr("__version__") = VANTAGE_VERSION;
+  vantage::python::register_errors(module);
+  vantage::python::bind_layouts(module);
+  vantage::python::bind_layout_commands(module);
+  vantage::python::bind_pose_commands(module);
+}

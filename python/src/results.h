@@ -1,0 +1,55 @@
+#pragma once
+
+// How the Python module hands results back: every result is built as the same JSON object the
+// CLI prints with --json (field names are the public contract), then converted to Python
+// objects (dict, list, float, int, bool, str, None). vantage/__init__.py wraps the dict in a
+// Result whose attributes are its fields, numeric lists as numpy arrays.
+//
+// A numerical failure (the CLI's exit status 1) raises vantage.NumericalError carrying
+// `status`, `message` and the full `result`.
+
+#include <pybind11/pybind11.h>
+
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+
+namespace vantage::python {
+
+namespace py = pybind11;
+using Json = nlohmann::ordered_json;
+
+/// The JSON value as plain Python objects.
+py::object to_python(const Json& value);
+
+/// Thrown by a binding when the computation finished but failed numerically; translated into
+/// vantage.NumericalError.
+class NumericalFailure : public std::runtime_error {
+ public:
+  NumericalFailure(std::string status, const std::string& message, Json result)
+      : std::runtime_error(message), status(std::move(status)), result(std::move(result)) {}
+
+  std::string status;
+  Json result;
+};
+
+/// Returns `result` as Python objects, or throws NumericalFailure(status, message, result) when
+/// `failed`.
+py::object result_or_raise(bool failed, const std::string& status, const std::string& message,
+                           const Json& result);
+
+/// Defines vantage.NumericalError (a RuntimeError) in `module` and translates NumericalFailure.
+void register_errors(py::module_& module);
+
+/// Runs `call` with the GIL released (for the long computations; `call` touches no Python
+/// object).
+template <typename Call>
+auto without_gil(Call&& call) {
+  py::gil_scoped_release release;
+  return call();
+}
+
+/// A number, or None/null when it is not finite (as the CLI prints it).
+Json json_number(double x);
+
+}  // namespace vantage::python

@@ -1,0 +1,100 @@
+#include "vantage/io/csv_layout.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "support/eigen_testing.h"
+#include "vantage/analysis/common.h"
+
+namespace vantage::io {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+std::string csv_error_of(const std::string& text) {
+  try {
+    parse_csv_layout(text, "bad.csv");
+  } catch (const InvalidArgument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+struct BadCsv {
+  const char* name;
+  const char* text;
+  const char* expected;  // the line and column the one error line must name
+};
+
+class BadCsvFile : public ::testing::TestWithParam<BadCsv> {};
+
+TEST_P(BadCsvFile, GivesOneLineNamingFileLineAndColumn) {
+  const std::string message = csv_error_of(GetParam().text);
+  ASSERT_FALSE(message.empty()) << "accepted: " << GetParam().text;
+  EXPECT_THAT(message, HasSubstr("bad.csv: "));
+  EXPECT_THAT(message, HasSubstr(GetParam().expected));
+  EXPECT_THAT(message, Not(HasSubstr("\n")));
+}
+
+const BadCsv kBadCsvs[] = {
+    {"Empty", "", "no marker rows"},
+    {"OnlyComments", "# nothing\n\n# here\n", "no marker rows"},
+    {"OnlyHeader", "name,x,y,z\n", "no marker rows after the header"},
+    {"ThreeFields", "a,0,0\nb,1,0\nc,0,1\n", "line 1: expected 4 or 5 fields"},
+    {"SixFields", "a,0,0,0,1,9\n", "line 1: expected 4 or 5 fields"},
+    {"RaggedRow", "a,0,0,0\nb,1,0,0,2\nc,0,1,0\n", "line 2 (b): expected 4 fields like the first"},
+    {"TypoInTheFirstRow", "a,0,O,0\nb,1,0,0\nc,0,1,0\nd,1,1,1\n",
+     "line 1 (a), y: expected a finite number, got \"O\""},
+    {"NotANumber", "a,0,0,0\nb,1,zero,0\nc,0,1,0\n", "line 2 (b), y: expected a finite number"},
+    {"EmptyNumber", "a,0,0,0\nb,1,,0\nc,0,1,0\n", "line 2 (b), y: expected a finite number"},
+    {"NaN", "a,0,0,0\nb,1,0,nan\nc,0,1,0\n", "line 2 (b), z: expected a finite number"},
+    {"Overflow", "a,0,0,0\nb,1e999,0,0\nc,0,1,0\n", "line 2 (b), x: expected a finite number"},
+    {"TrailingJunk", "a,0,0,0\nb,1m,0,0\nc,0,1,0\n", "line 2 (b), x: expected a finite number"},
+    {"EmptyName", "a,0,0,0\n,1,0,0\nc,0,1,0\n", "line 2, name: empty marker name"},
+    {"RepeatedName", "a,0,0,0\nb,1,0,0\na,0,1,0\n",
+     "line 3 (a), name: repeats the marker of line 1"},
+    {"ZeroWeight", "# c\nname,x,y,z,weight\na,0,0,0,1\nb,1,0,0,0\nc,0,1,0,1\n",
+     "line 4 (b), weight: must be > 0"},
+    {"NegativeWeight", "a,0,0,0,-2\nb,1,0,0,1\nc,0,1,0,1\n", "line 1 (a), weight: must be > 0"},
+    {"CoincidentMarkers", "a,0,0,0\nb,1,0,0\nc,1,0,0\n", "line 3 (c): coincides with line 2 (b)"},
+    {"TwoMarkers", "a,0,0,0\nb,1,0,0\n", "points: need at least 3 points"},
+};
+
+INSTANTIATE_TEST_SUITE_P(CsvLayout, BadCsvFile, ::testing::ValuesIn(kBadCsvs),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(CsvLayout, ReadsMarkersWithoutHeaderOrWeights) {
+  const CsvMarkers m = parse_csv_markers("a,0,0,0\nb,1,0,0\nc,0,2,0.5\n", "dir/body.csv");
+  EXPECT_EQ(m.layout.mode, LayoutMode::kPoints);
+  EXPECT_EQ(m.layout.name, "body");
+  EXPECT_THAT(m.names, ElementsAre("a", "b", "c"));
+  Eigen::Matrix3Xd expected(3, 3);
+  expected << 0, 1, 0, 0, 0, 2, 0, 0, 0.5;
+  EXPECT_EIGEN_NEAR(m.layout.entries, expected, 0.0);
+  EXPECT_EIGEN_NEAR(m.layout.weights, Eigen::VectorXd::Ones(3), 0.0);
+  EXPECT_EQ(m.layout.candidates.cols(), 0);
+}
+
+TEST(CsvLayout, HeaderCommentsBlanksQuotesCrlfAndBomAreTolerated) {
+  const std::string text =
+      "\xEF\xBB\xBF# exported by a tracker\r\n"
+      "Name, X, Y, Z, Weight\r\n"
+      "\r\n"
+      "\"m 1\", 1.5 , -2, 3e-1, 2\r\n"
+      "   # a comment between rows\r\n"
+      "m2,0,0,0,0.5\r\n"
+      "m3,0,1,0,1";
+  const CsvMarkers m = parse_csv_markers(text, "t.csv");
+  EXPECT_THAT(m.names, ElementsAre("m 1", "m2", "m3"));
+  EXPECT_EIGEN_NEAR(m.layout.entries.col(0), Eigen::Vector3d(1.5, -2, 0.3), 0.0);
+  EXPECT_EIGEN_NEAR(m.layout.weights, Eigen::Vector3d(2, 0.5, 1), 0.0);
+}
+
+TEST(CsvLayout, ErrorLinesCountCommentsAndBlanks) {
+  EXPECT_THAT(csv_error_of("# 1\n\nname,x,y,z\na,0,0,0\nb,0,0,q\n"), HasSubstr("line 5 (b), z"));
+}
+
+}  // namespace
+}  // namespace vantage::io

@@ -1,0 +1,93 @@
+#include "vantage/io/layout_formats.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "support/eigen_testing.h"
+#include "vantage/analysis/common.h"
+#include "vantage/io/layout_file.h"
+
+namespace vantage::io {
+namespace {
+
+using ::testing::HasSubstr;
+
+const std::string kExamples = std::string(VANTAGE_SOURCE_DIR) + "/examples/layouts/";
+
+// The cube's corners are rotations of exact decimal offsets by 7-digit quaternions.
+constexpr double kCubeTolerance = 1e-7;
+
+TEST(LayoutFormats, ExtensionChoosesTheFormat) {
+  EXPECT_EQ(layout_format_of("a/b.json"), LayoutFormat::kJson);
+  EXPECT_EQ(layout_format_of("b.CSV"), LayoutFormat::kCsv);
+  EXPECT_EQ(layout_format_of("tags.yaml"), LayoutFormat::kAprilTag);
+  EXPECT_EQ(layout_format_of("tags.yml"), LayoutFormat::kAprilTag);
+  try {
+    layout_format_of("markers.txt");
+    FAIL() << "no error";
+  } catch (const InvalidArgument& e) {
+    EXPECT_THAT(std::string(e.what()), HasSubstr("markers.txt: cannot tell the layout format"));
+    EXPECT_THAT(std::string(e.what()), HasSubstr("--format"));
+  }
+}
+
+TEST(LayoutFormats, FormatNamesRoundTrip) {
+  for (LayoutFormat f :
+       {LayoutFormat::kAuto, LayoutFormat::kJson, LayoutFormat::kCsv, LayoutFormat::kAprilTag}) {
+    EXPECT_EQ(layout_format_from_string(to_string(f), "--format"), f);
+  }
+  EXPECT_THROW(layout_format_from_string("xml", "--format"), InvalidArgument);
+}
+
+TEST(LayoutFormats, OverrideReadsAnyExtension) {
+  LayoutReadOptions options;
+  options.format = LayoutFormat::kCsv;
+  const Layout layout = parse_layout_as("a,0,0,0\nb,1,0,0\nc,0,1,0\n", "markers.txt", options);
+  EXPECT_EQ(layout.entries.cols(), 3);
+  EXPECT_THROW(parse_layout_as("a,0,0,0\nb,1,0,0\nc,0,1,0\n", "markers.txt"), InvalidArgument);
+}
+
+TEST(LayoutFormats, CsvExampleMatchesTheJsonItStandsFor) {
+  const Layout csv = load_layout(kExamples + "mocap_rigid_body.csv");
+  EXPECT_EQ(csv.name, "mocap_rigid_body");
+  ASSERT_EQ(csv.entries.cols(), 5);
+  EXPECT_EIGEN_NEAR(csv.entries.col(4), Eigen::Vector3d(0.010, 0.015, 0.085), 0.0);
+  EXPECT_EIGEN_NEAR(csv.weights, (Eigen::VectorXd(5) << 1, 1, 0.5, 1, 0.5).finished(), 0.0);
+  // Written as JSON and read back: the same layout.
+  const Layout again = parse_layout(layout_to_json(csv), "again.json");
+  EXPECT_EIGEN_NEAR(again.entries, csv.entries, 0.0);
+  EXPECT_EIGEN_NEAR(again.weights, csv.weights, 0.0);
+}
+
+TEST(LayoutFormats, AprilTagCubeCornersLieOnTheCubeFaces) {
+  const Layout cube = load_layout(kExamples + "apriltag_cube.yaml");
+  EXPECT_EQ(cube.name, "cube");
+  ASSERT_EQ(cube.entries.cols(), 12);
+  for (int tag = 0; tag < 3; ++tag) {
+    // Tag 0 on the top face (z = 0.05), tag 1 on +x, tag 2 on +y; corners +-0.04 off centre.
+    const int face_axis = tag == 0 ? 2 : tag - 1;
+    for (int c = 0; c < 4; ++c) {
+      const Eigen::Vector3d x = cube.entries.col(4 * tag + c);
+      EXPECT_NEAR(x(face_axis), 0.05, kCubeTolerance) << tag << " " << c;
+      for (int i = 0; i < 3; ++i) {
+        if (i != face_axis) {
+          EXPECT_NEAR(std::abs(x(i)), 0.04, kCubeTolerance) << tag << " " << c;
+        }
+      }
+    }
+  }
+  LayoutReadOptions centres;
+  centres.apriltag.tag_points = TagPoints::kCentres;
+  const Layout centred = load_layout(kExamples + "apriltag_cube.yaml", centres);
+  Eigen::Matrix3Xd expected(3, 3);
+  expected << 0, 0.05, 0, 0, 0, 0.05, 0.05, 0, 0;
+  EXPECT_EIGEN_NEAR(centred.entries, expected, 0.0);
+}
+
+TEST(LayoutFormats, JsonStillReadsAsBefore) {
+  const Layout json = load_layout(kExamples + "triad.json");
+  EXPECT_EIGEN_NEAR(json.entries, read_layout(kExamples + "triad.json").entries, 0.0);
+}
+
+}  // namespace
+}  // namespace vantage::io
