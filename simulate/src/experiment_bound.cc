@@ -41,6 +41,29 @@ NamedLayout random_layout(int index, std::uint64_t seed) {
   return layout;
 }
 
+/// The markdown table of the example layouts (rows of to_json(BoundCheck) plus "layout").
+std::string examples_table(const Json& layout_rows) {
+  std::string table;
+  table +=
+      "| layout | m | p̄_min | bound (deg) | max error (deg) | max_ratio | affine free vectors "
+      "| affine rot max (deg) | p95 | > bound | > own bound |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const Json& row : layout_rows) {
+    const Json& a = row["affine_relation"][0];
+    table +=
+        "| " + row["layout"].get<std::string>() + " | " +
+        std::to_string(row["vectors"].get<long>()) + " | " +
+        cell(row["pbar_min"].get<double>(), 6) + " | " + cell(row["bound_deg"].get<double>(), 6) +
+        " | " + cell(row["max_error_deg"].get<double>(), 6) + " | " +
+        cell(row["max_ratio"].get<double>(), 12) + " | " + a["free_vectors"].get<std::string>() +
+        " | " + cell(a["rot_err_deg"]["max"].get<double>()) + " | " +
+        cell(a["rot_err_deg"]["p95"].get<double>()) + " | " +
+        std::to_string(a["exceeds_bound"].get<long>()) + " | " +
+        std::to_string(a["exceeds_own_bound"].get<long>()) + " |\n";
+  }
+  return table;
+}
+
 }  // namespace
 
 ExperimentResult run_bound(const ExperimentOptions& options, long trials) {
@@ -142,23 +165,7 @@ ExperimentResult run_bound(const ExperimentOptions& options, long trials) {
                       std::to_string(examples) + " examples), " + std::to_string(trials) +
                       " random viewpoints + " + std::to_string(kWorstTrials) +
                       " at the worst viewpoint each, noise-free affine images\n\n";
-  table +=
-      "| layout | m | p̄_min | bound (deg) | max error (deg) | max_ratio | affine free vectors "
-      "| affine rot max (deg) | p95 | > bound | > own bound |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const Json& row : layout_rows) {
-    const Json& a = row["affine_relation"][0];
-    table +=
-        "| " + row["layout"].get<std::string>() + " | " +
-        std::to_string(row["vectors"].get<long>()) + " | " +
-        cell(row["pbar_min"].get<double>(), 6) + " | " + cell(row["bound_deg"].get<double>(), 6) +
-        " | " + cell(row["max_error_deg"].get<double>(), 6) + " | " +
-        cell(row["max_ratio"].get<double>(), 12) + " | " + a["free_vectors"].get<std::string>() +
-        " | " + cell(a["rot_err_deg"]["max"].get<double>()) + " | " +
-        cell(a["rot_err_deg"]["p95"].get<double>()) + " | " +
-        std::to_string(a["exceeds_bound"].get<long>()) + " | " +
-        std::to_string(a["exceeds_own_bound"].get<long>()) + " |\n";
-  }
+  table += examples_table(layout_rows);
   table += "\nAll layouts: max_ratio " + cell(worst_ratio, 15) + ", max |measured - Eq. 26| " +
            cell(worst_mismatch, 3) + " deg over " + std::to_string(total_trials) +
            " trials; the affine estimator's rotation error exceeded the per-vector bound in " +

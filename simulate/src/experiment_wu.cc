@@ -23,9 +23,9 @@ ExperimentResult wu_sweep(const ExperimentOptions& options, long trials, const s
   result.files.push_back(output_path(options, file));
   write_sweep_csv(result.files.back(), cells);
   std::string table = title + ", " + std::to_string(trials) +
-                      " trials per cell (mean rotation error deg / mean |e_p|/|p| / median time "
+                      " trials per cell (mean rotation error deg / mean ‖e_p‖/‖p‖ / median time "
                       "us; wrong_but_ok = rotation error > 90 deg with an ok status)\n\n"
-                      "| n | SNR (dB) | estimator | rot mean (deg) | rot median | |e_p|/|p| mean "
+                      "| n | SNR (dB) | estimator | rot mean (deg) | rot median | ‖e_p‖/‖p‖ mean "
                       "| time median (us) | failures | wrong_but_ok |\n"
                       "|---|---|---|---|---|---|---|---|---|\n";
   Json rows = Json::array();
