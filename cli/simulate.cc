@@ -250,11 +250,12 @@ Report run_layout(const SimulateArgs& args) {
   if (setup.scene.camera == CameraModel::kAffine) {
     const BoundLayout layout = prepare_bound_layout(entries, vectors);
     report.bound_trials.resize(report.run.trial_index.size());
-    parallel_for(
-        static_cast<long>(report.run.trial_index.size()), setup.mc.threads, false, [&](long k) {
-          TrialRandom random = TrialRandom::for_trial(setup.mc.seed, report.run.trial_index[k]);
-          report.bound_trials[k] = check_bound_trial(layout, generator(0, random));
-        });
+    parallel_for(static_cast<long>(report.run.trial_index.size()), setup.mc.threads,
+                 setup.mc.progress, [&](long k) {
+                   TrialRandom random =
+                       TrialRandom::for_trial(setup.mc.seed, report.run.trial_index[k]);
+                   report.bound_trials[k] = check_bound_trial(layout, generator(0, random));
+                 });
     report.has_bound = true;
     report.bound = summarize_bound_check(layout, report.bound_trials);
   }

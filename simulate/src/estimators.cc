@@ -76,31 +76,28 @@ Estimate solve_standard(const Scene& s) {
   return e;
 }
 
-Estimate from_pose(const PoseResult& pose) {
+/// A pose result with R_camera_object, p_camera_object and a status; ok when status == ok.
+template <typename Result, typename Status>
+Estimate from_pose(const Result& pose, Status ok) {
   Estimate e;
   e.R = pose.R_camera_object;
   e.p = pose.p_camera_object;
   e.has_translation = true;
   e.status = to_string(pose.status);
-  e.ok = pose.status == OrientationStatus::kOk;
+  e.ok = pose.status == ok;
   return e;
 }
 
-Estimate solve_full3d(const Scene& s) { return from_pose(full_3d_pose(s.model, s.measured)); }
+Estimate solve_full3d(const Scene& s) {
+  return from_pose(full_3d_pose(s.model, s.measured), OrientationStatus::kOk);
+}
 
 Estimate solve_oi(const Scene& s, OrientationMethod step) {
   OrthogonalIterationOptions options;
   options.rotation_step = step;
   options.focal_length = s.focal;
-  const OrthogonalIterationResult pose =
-      orthogonal_iteration_pose(s.model, centred_image(s), {}, options);
-  Estimate e;
-  e.R = pose.R_camera_object;
-  e.p = pose.p_camera_object;
-  e.has_translation = true;
-  e.status = to_string(pose.status);
-  e.ok = pose.status == OrthogonalIterationStatus::kConverged;
-  return e;
+  return from_pose(orthogonal_iteration_pose(s.model, centred_image(s), {}, options),
+                   OrthogonalIterationStatus::kConverged);
 }
 
 Estimate solve_haralick_2d(const Scene& s) {
@@ -117,7 +114,7 @@ Estimate solve_haralick_2d(const Scene& s) {
 Estimate solve_haralick_3d(const Scene& s) {
   OrientationOptions options;
   options.method = OrientationMethod::kSvd;
-  return from_pose(absolute_pose(s.model, s.measured, {}, options));
+  return from_pose(absolute_pose(s.model, s.measured, {}, options), OrientationStatus::kOk);
 }
 
 Estimate solve_two_view(const Scene& s) {

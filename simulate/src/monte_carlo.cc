@@ -103,6 +103,7 @@ void parallel_for(long count, int threads, bool progress, const std::function<vo
     }
   };
   // With a progress bar the calling thread only draws it; otherwise it is one of the workers.
+  progress = progress && stderr_is_terminal();
   std::vector<std::thread> pool;
   for (int w = progress ? 0 : 1; w < workers; ++w) pool.emplace_back(work);
   if (progress) {
