@@ -280,7 +280,13 @@ Report merge_files(const std::vector<std::string>& files) {
     if (!shard.is_object() || !shard.contains("config") || !shard.contains("per_trial")) {
       throw InvalidArgument(file + ": per_trial: missing (run the shard with --shard K/N --json)");
     }
-    if (runs.empty()) config = shard["config"];
+    const Json& c = shard["config"];
+    if (!c.is_object() || !c.contains("trials") || !c["trials"].is_number_integer() ||
+        !c.contains("seed") || !c["seed"].is_number_unsigned() || !c.contains("layout") ||
+        !c["layout"].contains("entries") || !c["layout"]["entries"].is_array()) {
+      throw InvalidArgument(file + ": config: not the config of a vantage simulate run");
+    }
+    if (runs.empty()) config = c;
     if (shard["config"] != config) {
       throw InvalidArgument(file + ": config: differs from " + files.front() +
                             " (not a shard of the same run)");
@@ -323,7 +329,12 @@ Report merge_files(const std::vector<std::string>& files) {
 int run_simulate(const SimulateArgs& args) {
   check_args(args);
   const bool merging = !args.merge.empty();
-  const Report report = merging ? merge_files(args.merge) : run_layout(args);
+  Report report;
+  try {
+    report = merging ? merge_files(args.merge) : run_layout(args);
+  } catch (const Json::exception& e) {  // a shard file whose fields have the wrong types
+    throw InvalidArgument("--merge: malformed shard file: " + std::string(e.what()));
+  }
   if (!args.csv.empty()) write_csv(args.csv, report.run);
   if (args.json) {
     print_json(report_json(report, args.per_trial || !args.shard.empty()));

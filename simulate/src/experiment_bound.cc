@@ -5,6 +5,7 @@
 
 #include "experiment_support.h"
 #include "vantage/simulate/bound_check.h"
+#include "vantage/simulate/progress.h"
 #include "vantage/simulate/report_json.h"
 #include "vantage/simulate/scene.h"
 
@@ -93,7 +94,9 @@ ExperimentResult run_bound(const ExperimentOptions& options, long trials) {
   long affine_exceed_own = 0;
   double worst_pose_ratio = 0.0;
   Json layout_rows = Json::array();
+  ProgressBar bar(static_cast<long>(layouts.size()), options.progress, "layouts");
   for (std::size_t l = 0; l < layouts.size(); ++l) {
+    bar.update(static_cast<long>(l));
     const NamedLayout& named = layouts[l];
     const BoundLayout layout = prepare_bound_layout(named.entries, named.vectors);
     const long count = trials + kWorstTrials;
