@@ -143,6 +143,7 @@ BoundTrial check_bound_trial(const BoundLayout& layout, const Scene& scene) {
   const auto rot_err = [&](const char* name) {
     const Estimator* estimator = find_estimator(name);
     VANTAGE_CHECK(estimator != nullptr, std::string("registry lacks ") + name);
+    if (!estimator->applies(clean)) return kNaN;  // e.g. too many markers to enumerate
     return rotation_angle_between(estimator->solve(clean).R, scene.R_true);
   };
   trial.affine_rot_err_rad = rot_err("affine");

@@ -69,11 +69,13 @@ BoundLayout prepare_bound_layout(const Eigen::Matrix3Xd& entries, bool vectors);
 
 /// One trial of the check.
 struct BoundTrial {
-  double pbar = 0.0;                  ///< p_bar(a) at this trial's viewpoint (Eq. 24)
-  double max_error_rad = 0.0;         ///< largest measured angle(v_i, v_e_i) over the data vectors
-  double max_mismatch_rad = 0.0;      ///< largest |angle(v_i, v_e_i) - Eq. 26|
-  double affine_rot_err_rad = 0.0;    ///< "affine" estimator on the noise-free image
-  double spanning_rot_err_rad = 0.0;  ///< "affine-spanning" (NaN in direction mode)
+  double pbar = 0.0;              ///< p_bar(a) at this trial's viewpoint (Eq. 24)
+  double max_error_rad = 0.0;     ///< largest measured angle(v_i, v_e_i) over the data vectors
+  double max_mismatch_rad = 0.0;  ///< largest |angle(v_i, v_e_i) - Eq. 26|
+  /// "affine" estimator on the noise-free image (NaN when it does not apply, e.g. more than
+  /// kMaxAffineVectors + 1 markers)
+  double affine_rot_err_rad = 0.0;
+  double spanning_rot_err_rad = 0.0;  ///< "affine-spanning" (NaN in direction mode, or as above)
 };
 
 /// The check on the noise-free image of `scene` (an affine layout scene of layout.entries:
