@@ -35,6 +35,8 @@ Command add_design_command(CLI::App& root);
 Command add_weights_command(CLI::App& root);
 Command add_pose_command(CLI::App& root);
 Command add_layout_command(CLI::App& root);
+Command add_simulate_command(CLI::App& root);
+Command add_experiment_command(CLI::App& root);
 
 /// "qmethod" | "svd" | "foam" (already checked by CLI11) to the enum.
 OrientationMethod parse_orientation_method(const std::string& name);

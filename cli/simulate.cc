@@ -1,0 +1,402 @@
+// `vantage simulate LAYOUT --trials N [--camera affine|pinhole] [--noise-px S | --snr-db X]
+// [--noise gaussian|uniform] [--range R] [--focal F] [--principal-point U V] [--offset X Y]
+// [--viewpoint worst|random] [--methods a,b] [--seed S] [--threads T] [--shard K/N]
+// [--per-trial] [--csv FILE] [--json] [--quiet]` and `vantage simulate --merge A.json B.json ...`:
+// Monte Carlo runs of every applicable estimator on one layout, the bound check of Eq. (26) and
+// Eq. (30) (affine camera), and the exact merge of sharded runs.
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "command.h"
+#include "vantage/analysis/layout.h"
+#include "vantage/io/layout_file.h"
+#include "vantage/sdp/worst_viewpoint.h"
+#include "vantage/simulate/bound_check.h"
+#include "vantage/simulate/monte_carlo.h"
+#include "vantage/simulate/report_json.h"
+
+namespace vantage::cli {
+namespace {
+
+using namespace vantage::simulate;
+
+struct SimulateArgs {
+  std::string file;
+  long trials = 1000;
+  std::string camera = "affine";
+  double noise_px = 0.0;
+  double snr_db = 0.0;
+  std::string noise = "gaussian";
+  double range = 10.0;
+  double focal = 1000.0;
+  std::vector<double> principal_point = {0.0, 0.0};
+  std::vector<double> offset = {0.0, 0.0};
+  std::string viewpoint = "random";
+  std::vector<std::string> methods;
+  std::uint64_t seed = 1;
+  int threads = 0;
+  std::string shard;
+  bool per_trial = false;
+  std::string csv;
+  bool json = false;
+  bool quiet = false;
+  std::vector<std::string> merge;
+  CLI::Option* noise_option = nullptr;
+  CLI::Option* snr_option = nullptr;
+};
+
+/// Everything a run is a function of: shards merge only when these agree.
+struct Setup {
+  Layout layout;
+  LayoutSceneOptions scene;
+  MonteCarloOptions mc;
+  std::vector<std::string> methods;
+  Json config;
+};
+
+Json layout_json(const Layout& layout) {
+  Json entries = Json::array();
+  for (Eigen::Index i = 0; i < layout.entries.cols(); ++i) {
+    entries.push_back(json_list(layout.entries.col(i)));
+  }
+  return {{"name", layout.name}, {"mode", to_string(layout.mode)}, {"entries", entries}};
+}
+
+void check_args(const SimulateArgs& args) {
+  if (!args.merge.empty()) {
+    if (!args.file.empty()) throw InvalidArgument("--merge: give shard files, not a LAYOUT");
+    return;
+  }
+  if (args.file.empty()) throw InvalidArgument("LAYOUT: required (or --merge FILES)");
+  if (args.trials < 1) throw InvalidArgument("--trials: must be >= 1");
+  if (args.threads < 0) throw InvalidArgument("--threads: must be >= 0");
+  if (args.noise_option->count() && args.snr_option->count()) {
+    throw InvalidArgument("--snr-db: give either --noise-px or --snr-db, not both");
+  }
+}
+
+Setup make_setup(const SimulateArgs& args) {
+  Setup setup;
+  setup.layout = io::read_layout(args.file);
+  LayoutSceneOptions& scene = setup.scene;
+  scene.camera = args.camera == "pinhole" ? CameraModel::kPinhole : CameraModel::kAffine;
+  scene.focal_px = args.focal;
+  scene.range = args.range;
+  scene.principal_point = Eigen::Vector2d(args.principal_point[0], args.principal_point[1]);
+  scene.lateral_offset = Eigen::Vector2d(args.offset[0], args.offset[1]);
+  scene.noise = parse_noise_kind(args.noise, "--noise");
+  scene.noise_px = args.noise_px;
+  if (args.snr_option->count()) scene.snr_db = args.snr_db;
+  std::string why;
+  if (!scene.is_valid(&why)) {
+    const std::string field = why.substr(0, why.find(':'));
+    const std::map<std::string, std::string> option = {{"focal_px", "--focal"},
+                                                       {"range", "--range"},
+                                                       {"principal_point", "--principal-point"},
+                                                       {"lateral_offset", "--offset"},
+                                                       {"noise_px", "--noise-px"},
+                                                       {"snr_db", "--snr-db"}};
+    throw InvalidArgument(option.at(field) + why.substr(why.find(':')));
+  }
+  const bool vectors = setup.layout.mode == LayoutMode::kVectors;
+  if (vectors && scene.camera == CameraModel::kPinhole) {
+    throw InvalidArgument("--camera: pinhole needs a point layout; " + args.file +
+                          " holds direction vectors");
+  }
+  if (args.viewpoint == "worst") {
+    const DataVectors data = data_vectors(setup.layout);
+    scene.viewpoint = sdp::global_worst_viewpoint(data.vectors).viewpoint;
+  }
+  setup.mc.trials = args.trials;
+  setup.mc.seed = args.seed;
+  setup.mc.threads = args.threads;
+  if (!args.shard.empty()) setup.mc.shard = parse_shard(args.shard, "--shard");
+  if (setup.mc.shard.count > args.trials) {
+    throw InvalidArgument("--shard: N must not exceed --trials");
+  }
+  setup.mc.progress = !args.json && !args.quiet;
+  setup.methods = args.methods;
+  setup.config = {{"layout", layout_json(setup.layout)},
+                  {"camera", args.camera},
+                  {"focal_px", args.focal},
+                  {"range", args.range},
+                  {"principal_point", args.principal_point},
+                  {"offset", args.offset},
+                  {"noise", args.noise},
+                  {"noise_px", scene.snr_db ? Json(nullptr) : Json(args.noise_px)},
+                  {"snr_db", scene.snr_db ? Json(*scene.snr_db) : Json(nullptr)},
+                  {"viewpoint", args.viewpoint},
+                  {"methods", args.methods},
+                  {"seed", args.seed},
+                  {"trials", args.trials}};
+  return setup;
+}
+
+/// The report of a run (or of merged shards): the estimators, the bound check, and optionally
+/// the per-trial values that make shards mergeable.
+struct Report {
+  Json config;
+  MonteCarloRun run;
+  bool has_bound = false;
+  BoundCheck bound;
+  std::vector<BoundTrial> bound_trials;
+  std::string shard = "1/1";
+};
+
+Json report_json(const Report& report, bool per_trial) {
+  Json out;
+  out["layout"] = report.config["layout"]["name"];
+  out["mode"] = report.config["layout"]["mode"];
+  out["trials"] = static_cast<long>(report.run.trial_index.size());
+  out["total_trials"] = report.run.total_trials;
+  out["seed"] = report.run.seed;
+  out["shard"] = report.shard;
+  out["estimators"] = estimators_json(summarize(report.run));
+  if (report.has_bound) out["bound_check"] = to_json(report.bound);
+  out["config"] = report.config;
+  if (per_trial) {
+    Json trials = per_trial_json(report.run);
+    if (report.has_bound) trials["bound_check"] = bound_trials_json(report.bound_trials);
+    out["per_trial"] = trials;
+  }
+  return out;
+}
+
+void write_csv(const std::string& path, const MonteCarloRun& run) {
+  std::ofstream out(path);
+  if (!out) throw InvalidArgument("--csv: cannot write " + path);
+  out.precision(17);
+  out << "trial,estimator,rot_err_deg,trans_err,trans_err_rel,trans_err_deg,scale_err,time_us,"
+         "status,ok\n";
+  const auto number = [](double x) {
+    std::ostringstream s;
+    s.precision(17);
+    if (std::isfinite(x)) s << x;
+    return s.str();
+  };
+  for (std::size_t k = 0; k < run.trial_index.size(); ++k) {
+    for (std::size_t e = 0; e < run.names.size(); ++e) {
+      const TrialError& t = run.errors[e][k];
+      out << run.trial_index[k] << ',' << run.names[e] << ',' << number(t.rot_err_deg) << ','
+          << number(t.trans_err) << ',' << number(t.trans_err_rel) << ',' << number(t.trans_err_deg)
+          << ',' << number(t.scale_err) << ',' << number(t.time_us) << ',' << t.status << ','
+          << (t.ok ? 1 : 0) << '\n';
+    }
+  }
+}
+
+std::string summary_row(const std::string& what, const Summary& s) {
+  return what + "  median " + format_number(s.median, 4) + "  mean " + format_number(s.mean, 4) +
+         "  p95 " + format_number(s.p95, 4) + "  max " + format_number(s.max, 4) + "\n";
+}
+
+void print_text(const Report& report) {
+  std::cout << "vantage simulate: " << report.config["layout"]["name"].get<std::string>() << " ("
+            << report.config["layout"]["mode"].get<std::string>() << "), "
+            << report.run.trial_index.size() << " of " << report.run.total_trials
+            << " trials (shard " << report.shard << "), seed " << report.run.seed << ", camera "
+            << report.config["camera"].get<std::string>() << "\n\n";
+  for (const EstimatorSummary& s : summarize(report.run)) {
+    std::cout << s.name << ": " << s.trials << " trials, " << s.failures << " failures, "
+              << s.wrong_but_ok << " wrong but ok (rotation error > 90 deg with an ok status)\n"
+              << summary_row("  rotation error (deg)   ", s.rot_err_deg);
+    if (s.trans_err_rel.count > 0) {
+      std::cout << summary_row("  |e_p| / |p|            ", s.trans_err_rel);
+    }
+    std::cout << summary_row("  time per solve (us)    ", s.time_us) << "  statuses  ";
+    for (const auto& [status, count] : s.by_status) std::cout << status << " " << count << "  ";
+    std::cout << "\n";
+  }
+  if (!report.has_bound) return;
+  const BoundCheck& b = report.bound;
+  std::cout << "\nbound check (noise-free affine images, every data vector, Eq. 26 / Eq. 30): "
+            << (b.passed ? "passed" : "FAILED") << "\n"
+            << "  " << b.trials << " trials x " << b.vectors << " vectors, p-bar_min "
+            << format_number(b.pbar_min, 9) << ", bound arccos p-bar_min "
+            << format_number(b.bound_deg, 9) << " deg\n"
+            << "  max error " << format_number(b.max_error_deg, 9) << " deg, max_ratio "
+            << format_number(b.max_ratio, 12) << ", max |measured - Eq. 26| "
+            << format_number(b.max_abs_eq26_mismatch_deg, 3) << " deg\n";
+  for (const PoseRelation& r : b.relations) {
+    std::cout << "  " << r.estimator << " (" << r.free_vectors << ", own bound "
+              << format_number(r.own_bound_deg, 6) << " deg): rotation error max "
+              << format_number(r.rot_err_deg.max, 4) << " p95 "
+              << format_number(r.rot_err_deg.p95, 4) << " deg; above the bound in "
+              << r.exceeds_bound << ", above its own bound in " << r.exceeds_own_bound << " of "
+              << b.trials << " trials\n";
+  }
+}
+
+Report run_layout(const SimulateArgs& args) {
+  const Setup setup = make_setup(args);
+  const bool vectors = setup.layout.mode == LayoutMode::kVectors;
+  const Eigen::Matrix3Xd& entries = setup.layout.entries;
+  const SceneGenerator generator = [&](long, TrialRandom& random) {
+    return make_layout_scene(entries, vectors, setup.scene, random);
+  };
+  TrialRandom probe_random = TrialRandom::for_trial(setup.mc.seed, 0);
+  const std::vector<Estimator> estimators =
+      select_estimators(setup.methods, generator(0, probe_random), "--methods");
+  Report report;
+  report.config = setup.config;
+  report.shard = std::to_string(setup.mc.shard.index) + "/" + std::to_string(setup.mc.shard.count);
+  report.run = run_monte_carlo(generator, estimators, setup.mc);
+  if (setup.scene.camera == CameraModel::kAffine) {
+    const BoundLayout layout = prepare_bound_layout(entries, vectors);
+    report.bound_trials.resize(report.run.trial_index.size());
+    parallel_for(static_cast<long>(report.run.trial_index.size()), setup.mc.threads,
+                 setup.mc.progress, [&](long k) {
+                   TrialRandom random =
+                       TrialRandom::for_trial(setup.mc.seed, report.run.trial_index[k]);
+                   report.bound_trials[k] = check_bound_trial(layout, generator(0, random));
+                 });
+    report.has_bound = true;
+    report.bound = summarize_bound_check(layout, report.bound_trials);
+  }
+  return report;
+}
+
+Json read_json_file(const std::string& path) {
+  const std::string text = io::read_text_file(path);
+  try {
+    return Json::parse(text);
+  } catch (const Json::parse_error&) {
+    throw InvalidArgument(path + ": not a JSON file");
+  }
+}
+
+Report merge_files(const std::vector<std::string>& files) {
+  std::vector<MonteCarloRun> runs;
+  std::vector<std::vector<BoundTrial>> bounds;
+  Json config;
+  for (const std::string& file : files) {
+    const Json shard = read_json_file(file);
+    if (!shard.is_object() || !shard.contains("config") || !shard.contains("per_trial")) {
+      throw InvalidArgument(file + ": per_trial: missing (run the shard with --shard K/N --json)");
+    }
+    const Json& c = shard["config"];
+    if (!c.is_object() || !c.contains("trials") || !c["trials"].is_number_integer() ||
+        !c.contains("seed") || !c["seed"].is_number_unsigned() || !c.contains("layout") ||
+        !c["layout"].contains("entries") || !c["layout"]["entries"].is_array()) {
+      throw InvalidArgument(file + ": config: not the config of a vantage simulate run");
+    }
+    if (runs.empty()) config = c;
+    if (shard["config"] != config) {
+      throw InvalidArgument(file + ": config: differs from " + files.front() +
+                            " (not a shard of the same run)");
+    }
+    runs.push_back(run_from_json(shard["per_trial"], config["trials"].get<long>(),
+                                 config["seed"].get<std::uint64_t>(), file));
+    if (shard["per_trial"].contains("bound_check")) {
+      bounds.push_back(bound_trials_from_json(shard["per_trial"]["bound_check"], file));
+      if (bounds.back().size() != runs.back().trial_index.size()) {
+        throw InvalidArgument(file + ": per_trial.bound_check: one entry per trial expected");
+      }
+    }
+  }
+  Report report;
+  report.config = config;
+  report.shard = "merged";
+  report.run = merge_runs(runs, files);
+  if (bounds.size() == runs.size()) {
+    std::vector<std::pair<long, BoundTrial>> ordered;
+    for (std::size_t s = 0; s < runs.size(); ++s) {
+      for (std::size_t k = 0; k < bounds[s].size(); ++k) {
+        ordered.push_back({runs[s].trial_index[k], bounds[s][k]});
+      }
+    }
+    std::sort(ordered.begin(), ordered.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& entry : ordered) report.bound_trials.push_back(entry.second);
+    Eigen::Matrix3Xd entries(3, config["layout"]["entries"].size());
+    for (Eigen::Index i = 0; i < entries.cols(); ++i) {
+      for (int r = 0; r < 3; ++r) entries(r, i) = config["layout"]["entries"][i][r].get<double>();
+    }
+    const BoundLayout layout =
+        prepare_bound_layout(entries, config["layout"]["mode"].get<std::string>() == "vectors");
+    report.has_bound = true;
+    report.bound = summarize_bound_check(layout, report.bound_trials);
+  }
+  return report;
+}
+
+int run_simulate(const SimulateArgs& args) {
+  check_args(args);
+  const bool merging = !args.merge.empty();
+  Report report;
+  try {
+    report = merging ? merge_files(args.merge) : run_layout(args);
+  } catch (const Json::exception& e) {  // a shard file whose fields have the wrong types
+    throw InvalidArgument("--merge: malformed shard file: " + std::string(e.what()));
+  }
+  if (!args.csv.empty()) write_csv(args.csv, report.run);
+  if (args.json) {
+    print_json(report_json(report, args.per_trial || !args.shard.empty()));
+  } else {
+    print_text(report);
+  }
+  return report.has_bound && !report.bound.passed ? kExitFailure : kExitOk;
+}
+
+}  // namespace
+
+Command add_simulate_command(CLI::App& root) {
+  auto args = std::make_shared<SimulateArgs>();
+  CLI::App* sub = root.add_subcommand(
+      "simulate",
+      "Monte Carlo: every applicable estimator on random views of a layout, with the bound check "
+      "of Eq. (26) / Eq. (30); --shard K/N and --merge spread a study over machines");
+  sub->add_option("LAYOUT", args->file, "layout JSON file (points or vectors)");
+  sub->add_option("--trials", args->trials, "number of trials, >= 1")->capture_default_str();
+  sub->add_option("--camera", args->camera,
+                  "affine (scaled orthographic, Eq. 14) or pinhole (points only)")
+      ->check(CLI::IsMember({"affine", "pinhole"}))
+      ->capture_default_str();
+  args->noise_option = sub->add_option("--noise-px", args->noise_px,
+                                       "image noise standard deviation, pixels (default 0)");
+  args->snr_option = sub->add_option(
+      "--snr-db", args->snr_db,
+      "noise by SNR instead: sigma = peak-to-peak image extent / 10^(SNR/20) (Haralick et al.)");
+  sub->add_option("--noise", args->noise, "noise distribution: gaussian or uniform (same sigma)")
+      ->check(CLI::IsMember({"gaussian", "uniform"}))
+      ->capture_default_str();
+  sub->add_option("--range", args->range,
+                  "depth of the object origin in object sizes (max marker distance), > 0; "
+                  "> 1 for pinhole")
+      ->capture_default_str();
+  sub->add_option("--focal", args->focal, "focal length, pixels, > 0")->capture_default_str();
+  sub->add_option("--principal-point", args->principal_point, "principal point U V, pixels")
+      ->expected(2);
+  sub->add_option("--offset", args->offset, "lateral offset X Y of the object, object sizes")
+      ->expected(2);
+  sub->add_option("--viewpoint", args->viewpoint,
+                  "random (uniform rotations) or worst (the certified worst viewpoint, random "
+                  "roll)")
+      ->check(CLI::IsMember({"random", "worst"}))
+      ->capture_default_str();
+  sub->add_option(
+         "--methods", args->methods,
+         "estimators to run (comma-separated; default: every applicable one): " + estimator_names())
+      ->delimiter(',');
+  sub->add_option("--seed", args->seed, "run seed")->capture_default_str();
+  sub->add_option("--threads", args->threads, "worker threads, 0 = all cores")
+      ->capture_default_str();
+  sub->add_option("--shard", args->shard,
+                  "run the K-th of N deterministic slices of the trials (K/N); the JSON carries "
+                  "the per-trial values for --merge");
+  sub->add_flag("--per-trial", args->per_trial, "include the per-trial values in the JSON");
+  sub->add_option("--csv", args->csv, "write one row per trial and estimator to FILE");
+  sub->add_option("--merge", args->merge, "merge the JSON outputs of --shard runs")
+      ->expected(1, -1);
+  sub->add_flag("--json", args->json, "print one JSON object instead of the report");
+  sub->add_flag("--quiet", args->quiet, "no progress bar");
+  return {sub, [args] { return run_simulate(*args); }};
+}
+
+}  // namespace vantage::cli

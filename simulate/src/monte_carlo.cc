@@ -1,0 +1,220 @@
+#include "vantage/simulate/monte_carlo.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "vantage/analysis/absolute_orientation.h"
+#include "vantage/analysis/common.h"
+#include "vantage/simulate/progress.h"
+
+namespace vantage::simulate {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / M_PI;
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+bool fail(std::string* why, const std::string& message) {
+  if (why) *why = message;
+  return false;
+}
+
+double angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+}  // namespace
+
+Shard parse_shard(const std::string& text, const std::string& argument) {
+  const auto slash = text.find('/');
+  Shard shard;
+  try {
+    std::size_t used_k = 0;
+    std::size_t used_n = 0;
+    if (slash == std::string::npos) throw std::invalid_argument("no slash");
+    shard.index = std::stoi(text.substr(0, slash), &used_k);
+    shard.count = std::stoi(text.substr(slash + 1), &used_n);
+    if (used_k != slash || used_n != text.size() - slash - 1) throw std::invalid_argument("junk");
+  } catch (const std::exception&) {
+    throw InvalidArgument(argument + ": must be K/N with integers 1 <= K <= N, got '" + text + "'");
+  }
+  if (shard.count < 1 || shard.index < 1 || shard.index > shard.count) {
+    throw InvalidArgument(argument + ": must be K/N with 1 <= K <= N, got '" + text + "'");
+  }
+  return shard;
+}
+
+bool MonteCarloOptions::is_valid(std::string* why) const {
+  if (trials < 1) return fail(why, "trials: must be >= 1");
+  if (threads < 0) return fail(why, "threads: must be >= 0");
+  if (shard.count < 1 || shard.index < 1 || shard.index > shard.count) {
+    return fail(why, "shard: must satisfy 1 <= index <= count");
+  }
+  if (shard.count > trials) return fail(why, "shard: count must not exceed trials");
+  return true;
+}
+
+std::pair<long, long> shard_range(long total, const Shard& shard) {
+  // floor(total k / count) without overflow: total = q count + r.
+  const long q = total / shard.count;
+  const long r = total % shard.count;
+  const auto bound = [&](long k) { return q * k + r * k / shard.count; };
+  return {bound(shard.index - 1), bound(shard.index)};
+}
+
+TrialError trial_error(const Estimate& estimate, const Scene& scene) {
+  TrialError error;
+  error.rot_err_deg = rotation_angle_between(estimate.R, scene.R_true) * kRadToDeg;
+  const bool translation = estimate.has_translation && scene.has_translation;
+  error.trans_err = translation ? (estimate.p - scene.p_true).norm() : kNaN;
+  error.trans_err_rel = error.trans_err / scene.p_true.norm();
+  error.trans_err_deg = translation ? angle_between(estimate.p, scene.p_true) * kRadToDeg : kNaN;
+  error.scale_err =
+      std::isnan(estimate.alpha) ? kNaN : std::abs(estimate.alpha / scene.alpha_true - 1.0);
+  error.status = estimate.status;
+  error.ok = estimate.ok;
+  return error;
+}
+
+void parallel_for(long count, int threads, bool progress, const std::function<void(long k)>& body) {
+  const int workers = static_cast<int>(std::max<long>(
+      1, std::min<long>(
+             count, threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency()))));
+  std::atomic<long> next{0};
+  std::atomic<long> done{0};
+  std::atomic<bool> stop{false};
+  std::exception_ptr first_error;
+  std::mutex error_mutex;
+  const auto work = [&] {
+    for (long k = next++; k < count && !stop; k = next++) {
+      try {
+        body(k);
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(error_mutex);
+        if (!first_error) first_error = std::current_exception();
+        stop = true;
+      }
+      ++done;
+    }
+  };
+  // With a progress bar the calling thread only draws it; otherwise it is one of the workers.
+  progress = progress && stderr_is_terminal();
+  std::vector<std::thread> pool;
+  for (int w = progress ? 0 : 1; w < workers; ++w) pool.emplace_back(work);
+  if (progress) {
+    ProgressBar bar(count, true);
+    while (done < count && !stop) {
+      bar.update(done);
+      std::this_thread::sleep_for(ProgressBar::kInterval / 2);
+    }
+    bar.update(done);
+  } else {
+    work();
+  }
+  for (std::thread& t : pool) t.join();
+  if (first_error) std::rethrow_exception(first_error);
+}
+
+MonteCarloRun run_monte_carlo(const SceneGenerator& generator,
+                              const std::vector<Estimator>& estimators,
+                              const MonteCarloOptions& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw InvalidArgument("run_monte_carlo: " + why);
+  MonteCarloRun run;
+  run.total_trials = options.trials;
+  run.seed = options.seed;
+  const auto [first, last] = shard_range(options.trials, options.shard);
+  for (long t = first; t < last; ++t) run.trial_index.push_back(t);
+  for (const Estimator& e : estimators) run.names.push_back(e.name);
+  run.errors.assign(estimators.size(), std::vector<TrialError>(run.trial_index.size()));
+
+  parallel_for(static_cast<long>(run.trial_index.size()), options.threads, options.progress,
+               [&](long k) {
+                 const long trial = run.trial_index[k];
+                 TrialRandom random = TrialRandom::for_trial(options.seed, trial);
+                 const Scene scene = generator(trial, random);
+                 for (std::size_t e = 0; e < estimators.size(); ++e) {
+                   const auto start = std::chrono::steady_clock::now();
+                   const Estimate estimate = estimators[e].solve(scene);
+                   const auto stop = std::chrono::steady_clock::now();
+                   TrialError error = trial_error(estimate, scene);
+                   error.time_us = std::chrono::duration<double, std::micro>(stop - start).count();
+                   run.errors[e][k] = std::move(error);
+                 }
+               });
+  return run;
+}
+
+std::vector<EstimatorSummary> summarize(const MonteCarloRun& run) {
+  std::vector<EstimatorSummary> summaries;
+  for (std::size_t e = 0; e < run.names.size(); ++e) {
+    const std::vector<TrialError>& errors = run.errors[e];
+    EstimatorSummary s;
+    s.name = run.names[e];
+    s.trials = static_cast<long>(errors.size());
+    const auto column = [&](double TrialError::*field) {
+      std::vector<double> values;
+      values.reserve(errors.size());
+      for (const TrialError& error : errors) values.push_back(error.*field);
+      return summarize(values);
+    };
+    s.rot_err_deg = column(&TrialError::rot_err_deg);
+    s.trans_err = column(&TrialError::trans_err);
+    s.trans_err_rel = column(&TrialError::trans_err_rel);
+    s.trans_err_deg = column(&TrialError::trans_err_deg);
+    s.scale_err = column(&TrialError::scale_err);
+    s.time_us = column(&TrialError::time_us);
+    for (const TrialError& error : errors) {
+      ++s.by_status[error.status];
+      if (!error.ok) ++s.failures;
+      if (error.ok && error.rot_err_deg > kWrongButOkDeg) ++s.wrong_but_ok;
+    }
+    summaries.push_back(std::move(s));
+  }
+  return summaries;
+}
+
+MonteCarloRun merge_runs(const std::vector<MonteCarloRun>& shards,
+                         const std::vector<std::string>& sources) {
+  if (shards.empty()) throw InvalidArgument("merge: no shard given");
+  VANTAGE_CHECK(sources.size() == shards.size(), "one source name per shard");
+  const MonteCarloRun& head = shards.front();
+  std::vector<std::pair<long, std::pair<std::size_t, std::size_t>>> order;
+  for (std::size_t s = 0; s < shards.size(); ++s) {
+    const MonteCarloRun& shard = shards[s];
+    if (shard.seed != head.seed || shard.total_trials != head.total_trials ||
+        shard.names != head.names) {
+      throw InvalidArgument(sources[s] + ": not a shard of the same run as " + sources[0] +
+                            " (seed, trials or estimators differ)");
+    }
+    for (std::size_t k = 0; k < shard.trial_index.size(); ++k) {
+      order.push_back({shard.trial_index[k], {s, k}});
+    }
+  }
+  std::sort(order.begin(), order.end());
+  MonteCarloRun merged;
+  merged.total_trials = head.total_trials;
+  merged.seed = head.seed;
+  merged.names = head.names;
+  merged.errors.assign(head.names.size(), {});
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    if (i > 0 && order[i].first == order[i - 1].first) {
+      throw InvalidArgument(sources[order[i].second.first] + ": trial " +
+                            std::to_string(order[i].first) + " is also in " +
+                            sources[order[i - 1].second.first] + " (overlapping shards)");
+    }
+    merged.trial_index.push_back(order[i].first);
+    const auto [s, k] = order[i].second;
+    for (std::size_t e = 0; e < head.names.size(); ++e) {
+      merged.errors[e].push_back(shards[s].errors[e][k]);
+    }
+  }
+  return merged;
+}
+
+}  // namespace vantage::simulate
