@@ -93,6 +93,12 @@ void weighted_means(const Eigen::Matrix3Xd& model,
   *measured_mean /= weight_sum;
 }
 
+/// The baselines solve one Theorem-1 problem, so kAuto means all pairs for them (no cliff).
+FreeVectorSet without_enumeration(const AffinePoseOptions& options) {
+  return options.free_vectors == FreeVectorSet::kAuto ? FreeVectorSet::kAllPairs
+                                                      : options.free_vectors;
+}
+
 OrientationOptions theorem1_options(const AffinePoseOptions& options) {
   OrientationOptions theorem1;
   theorem1.eigen = options.orientation.eigen;
@@ -187,7 +193,7 @@ AffinePoseResult standard_affine_pose(const Eigen::Matrix3Xd& model_object,
                                       const AffinePoseOptions& options) {
   validate_points<2>(model_object, image, weights, options, "image");
   const FreeVectors free = build_free_vectors<2>(
-      model_object, image, weights, free_vector_pairs(model_object, options.free_vectors),
+      model_object, image, weights, free_vector_pairs(model_object, without_enumeration(options)),
       options.pair_weighting);
   Eigen::Matrix3Xd v = Eigen::Matrix3Xd::Zero(3, free.z_object.cols());
   v.topRows<2>() = free.d;
@@ -220,12 +226,9 @@ AffinePoseResult standard_affine_pose(const Eigen::Matrix3Xd& model_object,
 PoseResult full_3d_pose(const Eigen::Matrix3Xd& model_object, const Eigen::Matrix3Xd& measured,
                         const Eigen::VectorXd& weights, const AffinePoseOptions& options) {
   validate_points<3>(model_object, measured, weights, options, "measured");
-  const FreeVectorSet set = options.free_vectors == FreeVectorSet::kAuto
-                                ? FreeVectorSet::kAllPairs  // no enumeration: no cost cliff
-                                : options.free_vectors;
-  const FreeVectorsOf<3> free =
-      build_free_vectors<3>(model_object, measured, weights, free_vector_pairs(model_object, set),
-                            options.pair_weighting);
+  const FreeVectorsOf<3> free = build_free_vectors<3>(
+      model_object, measured, weights,
+      free_vector_pairs(model_object, without_enumeration(options)), options.pair_weighting);
   const Eigen::Matrix3Xd& z = free.z_object;
   const Eigen::Matrix3Xd& m = free.d;
   const Eigen::VectorXd& w = free.weights;

@@ -239,7 +239,8 @@ AffinePoseResult affine_pose(const Eigen::Matrix3Xd& model_object, const Eigen::
 
 /// The paper's "standard approach" (Sec. IV): free vectors augmented with v_z = 0, Theorem 1 for
 /// R, alpha from Eq. (4), p_x, p_y from Eq. (36) (= the first two rows of Eq. 13), p_z from
-/// Eq. (37). Same preconditions as affine_pose() (no limit on the number of vectors).
+/// Eq. (37). Same preconditions as affine_pose() (no limit on the number of vectors; kAuto means
+/// all pairs here, since nothing is enumerated).
 /// ambiguous is always false (one pattern).
 AffinePoseResult standard_affine_pose(const Eigen::Matrix3Xd& model_object,
                                       const Eigen::Matrix2Xd& image,
