@@ -87,6 +87,22 @@ RefinedPoseResult refined_pose(Model model, const Eigen::Matrix3Xd& z,
     result.branches = 2;
     result.iterations += other.iterations;
     if (other.sse < best.sse) std::swap(best, other);
+    internal::LmPose planar;
+    if (pinhole && internal::homography_start(z, centred, options.camera.focal_length, plane,
+                                              &planar.R, &planar.p)) {
+      internal::LmPose third = refine(model, z, centred, weights, options, planar);
+      result.iterations += third.iterations;
+      ++result.branches;
+      const auto distinct = [&](const internal::LmPose& a, const internal::LmPose& b) {
+        return rotation_angle_between(a.R, b.R) > options.branches.same_pose_angle;
+      };
+      if (third.sse < best.sse) {
+        if (distinct(third, best)) other = best;
+        best = third;
+      } else if (distinct(third, best) && (third.sse < other.sse || !distinct(best, other))) {
+        other = third;
+      }
+    }
     if (rotation_angle_between(best.R, other.R) > options.branches.same_pose_angle &&
         std::isfinite(other.sse)) {
       result.alternative = PoseAlternative{other.R, other.p, rms(other.sse)};

@@ -19,7 +19,9 @@
 /// necker_planarity) has two poses that the affine image cannot tell apart, the Necker pair
 /// R' = diag(1, 1, -1) R (I - 2 n n^T) (n the plane normal). Both are refined; the one with the
 /// smaller residual is returned and the other is `alternative` (when it converged to a distinct
-/// pose); `ambiguous` follows BranchOptions (pose_estimate.h): always for exactly planar models
+/// pose); perspective_pose() also refines the pose of the plane's homography (exact on
+/// noise-free images, no Necker pair), so a planar target has three starts. `ambiguous` follows
+/// BranchOptions (pose_estimate.h): always for exactly planar models
 /// under the affine model (the pair is exact there), and under the pinhole model only when
 /// perspective does not separate the two beyond the ratio.
 ///
