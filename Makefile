@@ -75,3 +75,14 @@ format:
 
 clean:
 	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(FUZZ_DIR) $(INSTALL_DIR)
+
+# Optional: vantage's pose estimators against OpenCV's solvePnP (bench/peers). Installs
+# libopencv-dev first (not part of `make deps`: `make test` and `make demo` never need OpenCV),
+# re-configures so that CMake finds it, builds and prints the table of docs/benchmarks.md.
+.PHONY: bench-peers
+bench-peers: configure
+	@if [ "$$(id -u)" -eq 0 ]; then apt-get install -y libopencv-dev; \
+	  else sudo apt-get install -y libopencv-dev; fi
+	cmake -S . -B $(BUILD_DIR)
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target vantage_pose_peers
+	$(BUILD_DIR)/bench/peers/vantage_pose_peers --trials 500

@@ -1,17 +1,21 @@
-// `vantage pose CORRESPONDENCES --method affine|standard|full3d|oi-foam|oi-svd|two-view
-// [--focal F] [--free-vectors all|spanning] [--json]`: one pose estimator on a correspondence
-// file. Affine image (McInroy et al.): Prop. 8 and the paper's two baselines; perspective image:
-// orthogonal iteration with FOAM or SVD (Wu & Wu); two views: Haralick's linear algorithm.
+// `vantage pose CORRESPONDENCES --method affine|affine-refined|perspective|standard|full3d|
+// oi-foam|oi-svd|two-view [--focal F] [--principal-point CX CY] [--free-vectors auto|all|spanning]
+// [--json]`: one pose estimator on a correspondence file. Affine image (McInroy et al.): Prop. 8,
+// its refinement on the affine model and the paper's two baselines; perspective image: the
+// pinhole refinement (LM from Prop. 8) and orthogonal iteration (Wu & Wu); two views: Haralick's
+// linear algorithm. Every method prints the same pose fields (pose_fields below).
 
 #include <cmath>
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <vector>
 
 #include "command.h"
 #include "vantage/analysis/affine_pose.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/orthogonal_iteration.h"
+#include "vantage/analysis/refined_pose.h"
 #include "vantage/analysis/two_view.h"
 #include "vantage/io/correspondence_file.h"
 
@@ -24,13 +28,22 @@ struct PoseArgs {
   std::string file;
   std::string method;
   double focal = 0.0;
-  std::string free_vectors = "all";
+  std::vector<double> principal_point;
+  std::string free_vectors = "auto";
   bool json = false;
   CLI::Option* focal_option = nullptr;
+  CLI::Option* principal_point_option = nullptr;
   CLI::Option* free_vectors_option = nullptr;
 
   bool focal_given() const { return focal_option->count() > 0; }
+  bool principal_point_given() const { return principal_point_option->count() > 0; }
   bool free_vectors_given() const { return free_vectors_option->count() > 0; }
+  bool affine_family() const {
+    return method == "affine" || method == "standard" || method == "affine-refined";
+  }
+  bool perspective_family() const {
+    return method == "perspective" || method == "oi-foam" || method == "oi-svd";
+  }
 };
 
 /// What one method produced: the JSON object, the readable report and whether it failed.
@@ -43,6 +56,13 @@ struct Outcome {
 /// A number, or null when it is not finite (NaN and infinities are never printed).
 Json json_number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 
+/// A vector with null for each entry that is not finite (an unknown depth p_z).
+Json json_finite_list(const Eigen::VectorXd& v) {
+  Json out = Json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(json_number(v(i)));
+  return out;
+}
+
 std::string purpose(const PoseArgs& args) { return "vantage pose --method " + args.method; }
 
 /// Runs a library call; its InvalidArgument is reported against the file.
@@ -51,34 +71,69 @@ auto against_file(const io::CorrespondenceFile& file, Call&& call) {
   return against_source(file.source, std::forward<Call>(call));
 }
 
-void reject_weights(const io::CorrespondenceFile& file, const PoseArgs& args) {
-  if (file.weights.size() != 0) {
-    throw InvalidArgument(file.source + ": weights: not used by " + purpose(args) +
-                          " (the two-view algorithm is unweighted)");
+/// The camera: the file's "camera" with --focal / --principal-point overriding it. Perspective
+/// methods without any focal length read the image as normalised coordinates (f = 1).
+Camera camera_of(const PoseArgs& args, const io::CorrespondenceFile& file) {
+  Camera camera = file.camera;
+  if (args.focal_given()) camera.focal_length = args.focal;
+  if (args.principal_point_given()) {
+    camera.principal_point << args.principal_point[0], args.principal_point[1];
   }
+  if (args.perspective_family() && !camera.has_focal_length()) camera.focal_length = 1.0;
+  return camera;
 }
 
-AffinePoseOptions affine_options(const PoseArgs& args) {
+FreeVectorSet free_vector_set(const PoseArgs& args) {
+  if (args.free_vectors == "all") return FreeVectorSet::kAllPairs;
+  if (args.free_vectors == "spanning") return FreeVectorSet::kMaxSpanningTree;
+  return FreeVectorSet::kAuto;
+}
+
+AffinePoseOptions affine_options(const PoseArgs& args, const io::CorrespondenceFile& file) {
   AffinePoseOptions options;
-  options.free_vectors =
-      args.free_vectors == "spanning" ? FreeVectorSet::kMaxSpanningTree : FreeVectorSet::kAllPairs;
-  options.focal_length = args.focal_given() ? args.focal : 0.0;
+  options.free_vectors = free_vector_set(args);
+  options.camera = camera_of(args, file);
   return options;
 }
 
-/// Prop. 4 enumerates 2^m sign patterns of the m free vectors: refuse before the library does,
-/// with the command-line way out.
+/// Prop. 4 enumerates 2^m sign patterns of the m free vectors: refuse an explicit set beyond the
+/// limit before the library does, with the command-line way out.
 void check_free_vector_count(const io::CorrespondenceFile& file, const AffinePoseOptions& options) {
+  if (options.free_vectors == FreeVectorSet::kAuto) return;
   const Eigen::Index n = file.model.cols();
-  const Eigen::Index m = options.free_vectors == FreeVectorSet::kAllPairs ? n * (n - 1) / 2 : n - 1;
+  const Eigen::Index m = free_vector_count(n, options.free_vectors);
   const int limit = options.orientation.max_vectors;
   if (m > limit) {
     std::ostringstream out;
     out << file.source << ": model: " << n << " points give " << m
         << " free vectors, more than the limit " << limit << " (Prop. 4 solves 2^" << m
-        << " problems); use --free-vectors spanning";
+        << " problems); use --free-vectors auto or spanning";
     throw InvalidArgument(out.str());
   }
+}
+
+/// The fields every method prints: R, p, status, ambiguous, reprojection_rms_px, alternative.
+void pose_fields(const PoseEstimate& pose, Json* out) {
+  (*out)["R"] = json_rows(pose.R_camera_object);
+  (*out)["p"] = json_finite_list(pose.p_camera_object);
+  (*out)["status"] = to_string(pose.status);
+  (*out)["ambiguous"] = pose.ambiguous;
+  (*out)["reprojection_rms_px"] = json_number(pose.reprojection_rms_px);
+  if (!pose.message.empty()) (*out)["message"] = pose.message;
+  if (pose.alternative) {
+    Json alternative;
+    alternative["R"] = json_rows(pose.alternative->R_camera_object);
+    alternative["p"] = json_finite_list(pose.alternative->p_camera_object);
+    alternative["reprojection_rms_px"] = json_number(pose.alternative->reprojection_rms_px);
+    (*out)["alternative"] = alternative;
+  }
+}
+
+Json camera_json(const Camera& camera) {
+  Json out;
+  out["focal"] = camera.has_focal_length() ? Json(camera.focal_length) : Json(nullptr);
+  out["principal_point"] = json_list(camera.principal_point);
+  return out;
 }
 
 std::string header(const PoseArgs& args, Eigen::Index n, const std::string& what) {
@@ -90,9 +145,31 @@ std::string status_line(const std::string& status, const std::string& message) {
   return "status       " + status + (message.empty() ? "" : " (" + message + ")") + "\n";
 }
 
+/// The readable lines of pose_fields.
+std::string pose_text(const PoseEstimate& pose) {
+  std::ostringstream text;
+  text << status_line(to_string(pose.status), pose.message) << "R_camera_object\n"
+       << format_matrix(pose.R_camera_object, 4) << "p_camera_object  ";
+  if (std::isfinite(pose.p_camera_object.z())) {
+    text << format_vector(pose.p_camera_object) << "\n";
+  } else {
+    text << format_vector(pose.p_camera_object.head<2>()) << "  (p_z unknown: give --focal)\n";
+  }
+  text << "reprojection " << format_number(pose.reprojection_rms_px) << " px rms\n";
+  if (pose.alternative) {
+    text << "alternative  " << format_number(pose.alternative->reprojection_rms_px)
+         << " px rms, rotation "
+         << format_number(
+                rotation_angle_between(pose.R_camera_object, pose.alternative->R_camera_object) *
+                kRadiansToDegrees)
+         << " deg away" << (pose.ambiguous ? ": ambiguous" : ": rejected") << "\n";
+  }
+  return text.str();
+}
+
 Outcome run_affine(const PoseArgs& args, const io::CorrespondenceFile& file) {
   file.require({"model", "image"}, purpose(args));
-  const AffinePoseOptions options = affine_options(args);
+  const AffinePoseOptions options = affine_options(args, file);
   const bool standard = args.method == "standard";
   if (!standard) check_free_vector_count(file, options);
   const AffinePoseResult pose = against_file(file, [&] {
@@ -103,20 +180,15 @@ Outcome run_affine(const PoseArgs& args, const io::CorrespondenceFile& file) {
   const bool has_runner_up = std::isfinite(o.runner_up_residual);
 
   Outcome outcome;
-  outcome.failed = pose.status == AffineStatus::kDegenerate;
+  outcome.failed = pose.status != PoseStatus::kOk;
   Json& out = outcome.json;
   out["method"] = args.method;
   out["n"] = file.model.cols();
-  out["R"] = json_rows(pose.R_camera_object);
-  Json p = json_list(pose.p_camera_object);
-  if (!pose.depth_known) p[2] = nullptr;
-  out["p"] = p;
+  pose_fields(pose, &out);
   out["alpha"] = json_number(pose.alpha);
   out["depth_known"] = pose.depth_known;
-  out["focal"] = args.focal_given() ? Json(args.focal) : Json(nullptr);
-  out["status"] = to_string(pose.status);
-  if (!pose.message.empty()) out["message"] = pose.message;
-  out["residual"] = json_number(pose.residual);
+  out["camera"] = camera_json(options.camera);
+  out["objective"] = json_number(pose.objective);
   out["orientation_residual"] = json_number(o.residual);
   out["free_vectors"] = to_string(options.free_vectors);
   out["free_vector_count"] = pose.pairs.cols();
@@ -125,9 +197,6 @@ Outcome run_affine(const PoseArgs& args, const io::CorrespondenceFile& file) {
   out["runner_up_residual"] = json_number(o.runner_up_residual);
   out["runner_up_angle_deg"] =
       has_runner_up ? json_number(o.runner_up_angle * kRadiansToDegrees) : Json(nullptr);
-  if (pose.status == AffineStatus::kAmbiguous) {
-    out["runner_up_R"] = json_rows(o.runner_up_R_camera_object);
-  }
   out["clamped"] = o.clamped;
   out["in_plane"] = o.in_plane;
   out["eigen_gap"] = json_number(o.eigen_gap);
@@ -135,19 +204,13 @@ Outcome run_affine(const PoseArgs& args, const io::CorrespondenceFile& file) {
   std::ostringstream text;
   text << header(args, file.model.cols(),
                  standard ? "standard approach (Theorem 1 with v_z = 0, Eq. 36): "
-                            "alpha * image = P (R * model + p)"
+                            "alpha * (image - c) = P (R * model + p)"
                           : "Prop. 8 (free vectors, Lemma 7, Eq. 36): "
-                            "alpha * image = P (R * model + p)")
-       << status_line(to_string(pose.status), pose.message) << "R_camera_object\n"
-       << format_matrix(pose.R_camera_object, 4) << "p_camera_object  ";
-  if (pose.depth_known) {
-    text << format_vector(pose.p_camera_object) << "  (p_z = alpha * focal, Eq. 37)\n";
-  } else {
-    text << format_vector(pose.p_camera_object.head<2>()) << "  (p_z unknown: give --focal)\n";
-  }
-  text << "alpha        " << format_number(pose.alpha, 10) << "  (object units per image unit)\n"
-       << "residual     " << format_number(pose.residual)
-       << "  (J of Eq. 35: sum w |P (R z + p) - alpha q|^2)\n"
+                            "alpha * (image - c) = P (R * model + p)")
+       << pose_text(pose) << "alpha        " << format_number(pose.alpha, 10)
+       << "  (object units per pixel; p_z = alpha * focal, Eq. 37)\n"
+       << "objective    " << format_number(pose.objective)
+       << "  (J of Eq. 35: sum w |P (R z + p) - alpha (q - c)|^2)\n"
        << "free vectors " << pose.pairs.cols() << " (" << to_string(options.free_vectors) << "), "
        << o.sign_patterns << " sign patterns, " << o.in_plane << " in the image plane, "
        << o.clamped << " clamped\n";
@@ -162,9 +225,49 @@ Outcome run_affine(const PoseArgs& args, const io::CorrespondenceFile& file) {
   return outcome;
 }
 
+Outcome run_refined(const PoseArgs& args, const io::CorrespondenceFile& file) {
+  file.require({"model", "image"}, purpose(args));
+  RefinedPoseOptions options;
+  options.start = affine_options(args, file);
+  options.camera = options.start.camera;
+  check_free_vector_count(file, options.start);
+  const bool perspective = args.method == "perspective";
+  const RefinedPoseResult pose = against_file(file, [&] {
+    return perspective ? perspective_pose(file.model, file.image, file.weights, options)
+                       : affine_refined_pose(file.model, file.image, file.weights, options);
+  });
+
+  Outcome outcome;
+  outcome.failed = pose.status != PoseStatus::kOk;
+  Json& out = outcome.json;
+  out["method"] = args.method;
+  out["n"] = file.model.cols();
+  pose_fields(pose, &out);
+  out["alpha"] = json_number(pose.alpha);
+  out["camera"] = camera_json(options.camera);
+  out["iterations"] = pose.iterations;
+  out["branches"] = pose.branches;
+  out["planarity"] = json_number(pose.planarity);
+  out["start_reprojection_rms_px"] = json_number(pose.start_reprojection_rms_px);
+
+  std::ostringstream text;
+  text << header(args, file.model.cols(),
+                 perspective ? "pinhole refinement (LM on SO(3) x R^3 from Prop. 8): "
+                               "image = c + f (x, y) / z of R * model + p"
+                             : "affine refinement (LM on SO(3) x R^3 from Prop. 8): "
+                               "alpha * (image - c) = P (R * model + p)")
+       << pose_text(pose) << "alpha        " << format_number(pose.alpha, 10)
+       << "  (object units per pixel)\n"
+       << "branches     " << pose.branches << " (planarity " << format_number(pose.planarity)
+       << "), " << pose.iterations << " iterations, start "
+       << format_number(pose.start_reprojection_rms_px) << " px rms\n";
+  outcome.text = text.str();
+  return outcome;
+}
+
 Outcome run_full3d(const PoseArgs& args, const io::CorrespondenceFile& file) {
   file.require({"model", "measured"}, purpose(args));
-  const AffinePoseOptions options = affine_options(args);
+  const AffinePoseOptions options = affine_options(args, file);
   const PoseResult pose = against_file(
       file, [&] { return full_3d_pose(file.model, file.measured, file.weights, options); });
   const Eigen::Index n = file.model.cols();
@@ -176,13 +279,15 @@ Outcome run_full3d(const PoseArgs& args, const io::CorrespondenceFile& file) {
   out["n"] = n;
   out["R"] = json_rows(pose.R_camera_object);
   out["p"] = json_list(pose.p_camera_object);
-  out["alpha"] = json_number(pose.alpha);
   out["status"] = to_string(pose.status);
+  out["ambiguous"] = false;
+  out["reprojection_rms_px"] = nullptr;  // 3-D measurements: no image
   if (!pose.message.empty()) out["message"] = pose.message;
-  out["residual"] = json_number(pose.residual);
+  out["alpha"] = json_number(pose.alpha);
+  out["objective"] = json_number(pose.residual);
   out["free_vectors"] = to_string(options.free_vectors);
   out["free_vector_count"] =
-      options.free_vectors == FreeVectorSet::kAllPairs ? n * (n - 1) / 2 : n - 1;
+      options.free_vectors == FreeVectorSet::kMaxSpanningTree ? n - 1 : n * (n - 1) / 2;
   out["eigen_gap"] = json_number(pose.eigen_gap);
 
   std::ostringstream text;
@@ -193,7 +298,7 @@ Outcome run_full3d(const PoseArgs& args, const io::CorrespondenceFile& file) {
        << format_matrix(pose.R_camera_object, 4) << "p_camera_object  "
        << format_vector(pose.p_camera_object) << "\n"
        << "alpha        " << format_number(pose.alpha, 10) << "\n"
-       << "residual     " << format_number(pose.residual)
+       << "objective    " << format_number(pose.residual)
        << "  (J of Eq. 12: sum w |R z + p - alpha q|^2)\n"
        << "eigen gap    " << format_number(pose.eigen_gap)
        << "  (lambda1 - lambda2 of D: conditioning)\n";
@@ -206,39 +311,35 @@ Outcome run_orthogonal_iteration(const PoseArgs& args, const io::CorrespondenceF
   OrthogonalIterationOptions options;
   options.rotation_step =
       args.method == "oi-svd" ? OrientationMethod::kSvd : OrientationMethod::kFoam;
-  if (args.focal_given()) options.focal_length = args.focal;
+  options.camera = camera_of(args, file);
   const OrthogonalIterationResult pose = against_file(file, [&] {
     return orthogonal_iteration_pose(file.model, file.image, file.weights, options);
   });
 
   Outcome outcome;
-  outcome.failed = pose.status != OrthogonalIterationStatus::kConverged;
+  outcome.failed = pose.status != PoseStatus::kOk;
   Json& out = outcome.json;
   out["method"] = args.method;
   out["n"] = file.model.cols();
-  out["R"] = json_rows(pose.R_camera_object);
-  out["p"] = json_list(pose.p_camera_object);
+  pose_fields(pose, &out);
   out["alpha"] = nullptr;
-  out["focal"] = options.focal_length;
-  out["status"] = to_string(pose.status);
-  if (!pose.message.empty()) out["message"] = pose.message;
-  out["residual"] = json_number(pose.error);
-  out["initial_residual"] = json_number(pose.initial_error);
+  out["camera"] = camera_json(options.camera);
+  out["objective"] = json_number(pose.objective);
+  out["initial_objective"] = json_number(pose.initial_objective);
   out["iterations"] = pose.iterations;
+  out["branches"] = pose.branches;
   out["rotation_step"] = to_string(options.rotation_step);
   out["points_behind_camera"] = pose.points_behind_camera;
 
   std::ostringstream text;
   text << header(args, file.model.cols(),
                  std::string("orthogonal iteration with the ") + to_string(options.rotation_step) +
-                     " step (Wu & Wu): image ~ (R * model + p) projected, focal " +
-                     format_number(options.focal_length))
-       << status_line(to_string(pose.status), pose.message) << "R_camera_object\n"
-       << format_matrix(pose.R_camera_object, 4) << "p_camera_object  "
-       << format_vector(pose.p_camera_object) << "\n"
-       << "residual     " << format_number(pose.error) << "  (object-space collinearity error E; "
-       << format_number(pose.initial_error) << " at the weak-perspective start)\n"
-       << "iterations   " << pose.iterations << "\n"
+                     " step (Wu & Wu): image = c + f (x, y) / z of R * model + p, f " +
+                     format_number(options.camera.focal_length))
+       << pose_text(pose) << "objective    " << format_number(pose.objective)
+       << "  (object-space collinearity error E; " << format_number(pose.initial_objective)
+       << " at the weak-perspective start)\n"
+       << "iterations   " << pose.iterations << " over " << pose.branches << " branch(es)\n"
        << "behind       " << pose.points_behind_camera << " points behind the camera\n";
   outcome.text = text.str();
   return outcome;
@@ -246,7 +347,10 @@ Outcome run_orthogonal_iteration(const PoseArgs& args, const io::CorrespondenceF
 
 Outcome run_two_view(const PoseArgs& args, const io::CorrespondenceFile& file) {
   file.require({"image1", "image2"}, purpose(args));
-  reject_weights(file, args);
+  if (file.weights.size() != 0) {
+    throw InvalidArgument(file.source + ": weights: not used by " + purpose(args) +
+                          " (the two-view algorithm is unweighted)");
+  }
   TwoViewOptions options;
   if (args.focal_given()) options.focal_length = args.focal;
   const TwoViewResult pose =
@@ -260,12 +364,14 @@ Outcome run_two_view(const PoseArgs& args, const io::CorrespondenceFile& file) {
   out["n"] = n;
   out["R"] = json_rows(pose.R_camera2_camera1);
   out["p"] = json_list(pose.t_camera2_camera1);
+  out["status"] = to_string(pose.status);
+  out["ambiguous"] = false;
+  out["reprojection_rms_px"] = nullptr;  // the fit is epipolar, not a reprojection
+  if (!pose.message.empty()) out["message"] = pose.message;
   out["T"] = json_list(pose.t_camera2_camera1);
   out["alpha"] = nullptr;
   out["focal"] = options.focal_length;
-  out["status"] = to_string(pose.status);
-  if (!pose.message.empty()) out["message"] = pose.message;
-  out["residual"] = json_number(pose.residual);
+  out["epipolar_rms"] = json_number(pose.residual);
   out["essential"] = json_rows(pose.essential);
   out["null_space_ratio"] = json_number(pose.null_space_ratio);
   out["points_in_front"] = pose.points_in_front;
@@ -276,7 +382,7 @@ Outcome run_two_view(const PoseArgs& args, const io::CorrespondenceFile& file) {
        << status_line(to_string(pose.status), pose.message) << "R_camera2_camera1\n"
        << format_matrix(pose.R_camera2_camera1, 4) << "T (unit)     "
        << format_vector(pose.t_camera2_camera1) << "\n"
-       << "residual     " << format_number(pose.residual) << "  (rms epipolar residual m2^T E m1)\n"
+       << "epipolar     " << format_number(pose.residual) << "  (rms epipolar residual m2^T E m1)\n"
        << "null space   " << format_number(pose.null_space_ratio)
        << "  (sigma_9 / sigma_8: 0 for exact data)\n"
        << "in front     " << pose.points_in_front << " of " << n << " points in both views\n";
@@ -294,11 +400,21 @@ void check_args(const PoseArgs& args) {
       throw InvalidArgument("--focal: not used by --method full3d (3-D measurements)");
     }
   }
+  if (args.principal_point_given()) {
+    if (!(std::isfinite(args.principal_point[0]) && std::isfinite(args.principal_point[1]))) {
+      throw InvalidArgument("--principal-point: must be two finite numbers (pixels)");
+    }
+    if (args.method == "full3d" || args.method == "two-view") {
+      throw InvalidArgument("--principal-point: not used by --method " + args.method);
+    }
+  }
   const bool uses_free_vectors =
-      args.method == "affine" || args.method == "standard" || args.method == "full3d";
+      args.affine_family() || args.method == "full3d" || args.method == "perspective";
   if (args.free_vectors_given() && !uses_free_vectors) {
     throw InvalidArgument(
-        "--free-vectors: only affine, standard and full3d use free vectors, not " + args.method);
+        "--free-vectors: only affine, affine-refined, perspective, standard and full3d use free "
+        "vectors, not " +
+        args.method);
   }
 }
 
@@ -308,6 +424,8 @@ int run_pose(const PoseArgs& args) {
   Outcome outcome;
   if (args.method == "affine" || args.method == "standard") {
     outcome = run_affine(args, file);
+  } else if (args.method == "affine-refined" || args.method == "perspective") {
+    outcome = run_refined(args, file);
   } else if (args.method == "full3d") {
     outcome = run_full3d(args, file);
   } else if (args.method == "two-view") {
@@ -329,27 +447,37 @@ Command add_pose_command(CLI::App& root) {
   auto args = std::make_shared<PoseArgs>();
   CLI::App* sub = root.add_subcommand(
       "pose",
-      "Pose from one image (affine: Prop. 8 and the paper's baselines; perspective: orthogonal "
-      "iteration) or relative pose from two views");
+      "Pose from one image (affine: Prop. 8, its refinement and the paper's baselines; "
+      "perspective: pinhole refinement and orthogonal iteration) or relative pose from two views");
   sub->add_option("CORRESPONDENCES", args->file,
-                  "JSON file {\"model\": [[x,y,z]...], \"image\": [[u,v]...], \"weights\": [...]} "
-                  "(\"measured\" [[x,y,z]...] for full3d, \"image1\"/\"image2\" for two-view)")
+                  "JSON file {\"model\": [[x,y,z]...], \"image\": [[u,v]...], \"weights\": [...], "
+                  "\"camera\": {\"focal\": F, \"principal_point\": [cx, cy]}} (pixels; "
+                  "\"measured\" [[x,y,z]...] for full3d, \"image1\"/\"image2\" for two-view)")
       ->required();
   sub->add_option("--method", args->method,
-                  "affine (Prop. 8), standard (Theorem 1 with v_z = 0), full3d (Theorem 1 + "
-                  "Eq. 13 on 3-D measurements), oi-foam / oi-svd (orthogonal iteration), "
-                  "two-view (Haralick's linear algorithm)")
+                  "affine (Prop. 8, the paper's estimator), affine-refined (exact on affine "
+                  "images), perspective (pinhole maximum likelihood: the best answer for real "
+                  "cameras), standard (Theorem 1 with v_z = 0), full3d (Theorem 1 + Eq. 13 on 3-D "
+                  "measurements), oi-foam / oi-svd (orthogonal iteration), two-view (Haralick)")
       ->required()
-      ->check(CLI::IsMember({"affine", "standard", "full3d", "oi-foam", "oi-svd", "two-view"}));
+      ->check(CLI::IsMember({"affine", "affine-refined", "perspective", "standard", "full3d",
+                             "oi-foam", "oi-svd", "two-view"}));
   args->focal_option = sub->add_option(
       "--focal", args->focal,
-      "focal length in image units, > 0: affine/standard give p_z = alpha f (Eq. 37); "
-      "oi-*/two-view divide the image points by it (default 1: normalised coordinates)");
+      "focal length in pixels, > 0 (overrides the file's camera.focal): affine methods give "
+      "p_z = alpha f (Eq. 37); perspective, oi-* and two-view project with it (without any "
+      "focal length they read the image as normalised coordinates, f = 1)");
+  args->principal_point_option =
+      sub->add_option("--principal-point", args->principal_point,
+                      "principal point CX CY in pixels (overrides the file's "
+                      "camera.principal_point; default 0 0)")
+          ->expected(2);
   args->free_vectors_option =
       sub->add_option("--free-vectors", args->free_vectors,
-                      "free vectors of affine/standard/full3d: all (every pair, the paper) or "
-                      "spanning (n - 1 pairs of the maximum spanning tree)")
-          ->check(CLI::IsMember({"all", "spanning"}))
+                      "free vectors of the affine estimate: auto (all pairs up to 5 points, then "
+                      "a spanning set of at most 12), all (every pair, the paper) or spanning "
+                      "(n - 1 pairs of the maximum spanning tree)")
+          ->check(CLI::IsMember({"auto", "all", "spanning"}))
           ->capture_default_str();
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
   return {sub, [args] { return run_pose(*args); }};

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "vantage/analysis/common.h"
 
@@ -96,21 +97,13 @@ DataVectors data_vectors(const Layout& layout, PairWeighting weighting) {
     out.weights = layout.weights;
     return out;
   }
-  const int n = static_cast<int>(layout.entries.cols());
-  const int m = n * (n - 1) / 2;
-  out.vectors.resize(3, m);
-  out.weights.resize(m);
-  out.pairs.reserve(m);
-  int k = 0;
-  for (int i = 0; i < n; ++i) {
-    for (int j = i + 1; j < n; ++j, ++k) {
-      out.vectors.col(k) = layout.entries.col(j) - layout.entries.col(i);
-      const double wi = layout.weights(i), wj = layout.weights(j);
-      out.weights(k) = weighting == PairWeighting::kGeometricMean ? std::sqrt(wi) * std::sqrt(wj)
-                                                                  : 0.5 * (wi + wj);
-      out.pairs.emplace_back(i, j);
-    }
-  }
+  const Eigen::Matrix2Xi pairs = free_vector_pairs(layout.entries, FreeVectorSet::kAllPairs);
+  FreeVectorsOf<3> free =
+      build_free_vectors<3>(layout.entries, layout.entries, layout.weights, pairs, weighting);
+  out.vectors = std::move(free.z_object);
+  out.weights = std::move(free.weights);
+  out.pairs.reserve(pairs.cols());
+  for (Eigen::Index k = 0; k < pairs.cols(); ++k) out.pairs.emplace_back(pairs(0, k), pairs(1, k));
   return out;
 }
 

@@ -3,33 +3,33 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
+#include "pose_refinement.h"
+#include "vantage/analysis/affine_pose.h"
 #include "vantage/analysis/common.h"
 
 namespace vantage {
-
-const char* to_string(OrthogonalIterationStatus status) {
-  switch (status) {
-    case OrthogonalIterationStatus::kConverged:
-      return "converged";
-    case OrthogonalIterationStatus::kMaxIterations:
-      return "max_iterations";
-    case OrthogonalIterationStatus::kDegenerate:
-      return "degenerate";
-  }
-  return "unknown";
-}
 
 bool OrthogonalIterationOptions::is_valid(std::string* why) const {
   auto fail = [&](const char* text) {
     if (why) *why = text;
     return false;
   };
-  if (!(focal_length > 0.0 && std::isfinite(focal_length)))
-    return fail("focal_length must be positive and finite");
+  std::string inner;
+  if (!camera.is_valid(&inner)) {
+    if (why) *why = "camera." + inner;
+    return false;
+  }
+  if (!camera.has_focal_length()) return fail("camera.focal_length must be > 0 (pixels)");
   if (!(absolute_tolerance >= 0.0)) return fail("absolute_tolerance must be >= 0");
   if (!(relative_tolerance >= 0.0)) return fail("relative_tolerance must be >= 0");
+  if (!(pose_tolerance >= 0.0)) return fail("pose_tolerance must be >= 0");
+  if (!branches.is_valid(&inner)) {
+    if (why) *why = "branches." + inner;
+    return false;
+  }
   if (max_iterations < 0) return fail("max_iterations must be >= 0");
   if (!(degenerate_tolerance >= 0.0 && degenerate_tolerance < 1.0))
     return fail("degenerate_tolerance must be in [0, 1)");
@@ -74,9 +74,27 @@ inline double weight(const Eigen::VectorXd& weights, Eigen::Index i) {
   return weights.size() == 0 ? 1.0 : weights(i);
 }
 
-/// The line of sight m_i = (u / f, v / f, 1).
-inline Eigen::Vector3d ray(const Eigen::Matrix2Xd& image, Eigen::Index i, double inverse_focal) {
-  return Eigen::Vector3d(image(0, i) * inverse_focal, image(1, i) * inverse_focal, 1.0);
+/// The line of sight m_i = ((u - c_x) / f, (v - c_y) / f, 1).
+inline Eigen::Vector3d ray(const Eigen::Matrix2Xd& image, Eigen::Index i, const Camera& camera) {
+  const double inverse_focal = 1.0 / camera.focal_length;
+  return Eigen::Vector3d((image(0, i) - camera.principal_point.x()) * inverse_focal,
+                         (image(1, i) - camera.principal_point.y()) * inverse_focal, 1.0);
+}
+
+/// Pinhole RMS image residual in pixels (+infinity with a point at or behind the camera).
+double reprojection_rms(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& image,
+                        const Eigen::VectorXd& weights, const Camera& camera,
+                        const Eigen::Matrix3d& R, const Eigen::Vector3d& p) {
+  double sse = 0.0;
+  double weight_sum = 0.0;
+  for (Eigen::Index i = 0; i < model.cols(); ++i) {
+    const Eigen::Vector3d x = R * model.col(i) + p;
+    if (!(x.z() > 0.0)) return std::numeric_limits<double>::infinity();
+    const Eigen::Vector2d q = camera.principal_point + camera.focal_length / x.z() * x.head<2>();
+    sse += weight(weights, i) * (q - image.col(i)).squaredNorm();
+    weight_sum += weight(weights, i);
+  }
+  return std::sqrt(sse / weight_sum);
 }
 
 /// Everything the iteration needs that does not change with R.
@@ -85,17 +103,18 @@ struct Setup {
   Eigen::Matrix<double, 3, 9> translation_factor;        // p(R) = factor * vec(R), Eq. (10)
   double f_min_eigenvalue = 0.0;                         // of F = sum w (I - V)
   double weight_sum = 0.0;
+  double spread = 0.0;  // sum w |x - x_bar|^2
 };
 
 Setup make_setup(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& image,
-                 const Eigen::VectorXd& weights, double inverse_focal) {
+                 const Eigen::VectorXd& weights, const Camera& camera) {
   Setup s;
   Eigen::Matrix3d F = Eigen::Matrix3d::Zero();
   // sum_i w_i x_ik (V_i - I) for k = 0, 1, 2: the blocks of the factor before F^-1.
   Eigen::Matrix<double, 3, 9> blocks = Eigen::Matrix<double, 3, 9>::Zero();
   for (Eigen::Index i = 0; i < model.cols(); ++i) {
     const double w = weight(weights, i);
-    const Eigen::Vector3d m = ray(image, i, inverse_focal);
+    const Eigen::Vector3d m = ray(image, i, camera);
     const Eigen::Matrix3d v_minus_i =
         m * m.transpose() / m.squaredNorm() - Eigen::Matrix3d::Identity();
     F -= w * v_minus_i;
@@ -104,6 +123,8 @@ Setup make_setup(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& image,
     s.weight_sum += w;
   }
   s.model_mean /= s.weight_sum;
+  for (Eigen::Index i = 0; i < model.cols(); ++i)
+    s.spread += weight(weights, i) * (model.col(i) - s.model_mean).squaredNorm();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(F, Eigen::EigenvaluesOnly);
   s.f_min_eigenvalue = eigen.eigenvalues()(0);
   const Eigen::Matrix3d f_inverse = F.inverse();
@@ -121,7 +142,7 @@ inline Eigen::Vector3d optimal_translation(const Setup& s, const Eigen::Matrix3d
 /// One pass over the points: returns E(R, p) and sets H = sum w (x_i - x_bar) q_i^T with
 /// q_i = V_i (R x_i + p), the cross-covariance of the next absolute-orientation step.
 double collinearity_pass(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& image,
-                         const Eigen::VectorXd& weights, double inverse_focal,
+                         const Eigen::VectorXd& weights, const Camera& camera,
                          const Eigen::Vector3d& model_mean, const Eigen::Matrix3d& R,
                          const Eigen::Vector3d& p, Eigen::Matrix3d* H) {
   double error = 0.0;
@@ -129,7 +150,7 @@ double collinearity_pass(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& 
   for (Eigen::Index i = 0; i < model.cols(); ++i) {
     const double w = weight(weights, i);
     const Eigen::Vector3d x = R * model.col(i) + p;
-    const Eigen::Vector3d m = ray(image, i, inverse_focal);
+    const Eigen::Vector3d m = ray(image, i, camera);
     const Eigen::Vector3d q = m * (m.dot(x) / m.squaredNorm());
     error += w * (x - q).squaredNorm();
     H->noalias() += w * (model.col(i) - model_mean) * q.transpose();
@@ -153,18 +174,17 @@ Eigen::Matrix3d weak_perspective_start(const Eigen::Matrix3Xd& model, const Eige
                                        const Eigen::VectorXd& weights,
                                        const OrthogonalIterationOptions& options,
                                        const Eigen::Vector3d& model_mean, bool* degenerate) {
-  const double inverse_focal = 1.0 / options.focal_length;
   Eigen::Vector3d ray_mean = Eigen::Vector3d::Zero();
   double weight_sum = 0.0;
   for (Eigen::Index i = 0; i < model.cols(); ++i) {
-    ray_mean += weight(weights, i) * ray(image, i, inverse_focal);
+    ray_mean += weight(weights, i) * ray(image, i, options.camera);
     weight_sum += weight(weights, i);
   }
   ray_mean /= weight_sum;
   Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
   for (Eigen::Index i = 0; i < model.cols(); ++i) {
     H.noalias() += weight(weights, i) * (model.col(i) - model_mean) *
-                   (ray(image, i, inverse_focal) - ray_mean).transpose();
+                   (ray(image, i, options.camera) - ray_mean).transpose();
   }
   double gap = 0.0;
   const Eigen::Matrix3d R = optimal_rotation(H, step_options(options), &gap);
@@ -176,50 +196,54 @@ OrthogonalIterationResult iterate(const Eigen::Matrix3Xd& model, const Eigen::Ma
                                   const Eigen::VectorXd& weights, const Setup& setup,
                                   const Eigen::Matrix3d& initial_R,
                                   const OrthogonalIterationOptions& options) {
-  using Status = OrthogonalIterationStatus;
   OrthogonalIterationResult result;
-  const double inverse_focal = 1.0 / options.focal_length;
   if (!(setup.f_min_eigenvalue > options.degenerate_tolerance * setup.weight_sum)) {
-    result.status = Status::kDegenerate;
+    result.status = PoseStatus::kDegenerate;
     result.message =
         "all lines of sight are (nearly) parallel: sum w_i (I - V_i) is singular, the "
         "translation is undetermined";
     return result;
   }
   const OrientationOptions step = step_options(options);
+  const Camera& camera = options.camera;
 
   Eigen::Matrix3d R = initial_R;
   Eigen::Vector3d p = optimal_translation(setup, R);
   Eigen::Matrix3d H;
-  double error =
-      collinearity_pass(model, image, weights, inverse_focal, setup.model_mean, R, p, &H);
-  result.initial_error = error;
-  result.status = Status::kMaxIterations;
+  double error = collinearity_pass(model, image, weights, camera, setup.model_mean, R, p, &H);
+  result.initial_objective = error;
+  result.status = PoseStatus::kMaxIterations;
   while (true) {
-    if (error <= options.absolute_tolerance) {
-      result.status = Status::kConverged;
+    if (error <= options.absolute_tolerance * setup.spread) {
+      result.status = PoseStatus::kOk;
       break;
     }
     if (result.iterations >= options.max_iterations) break;
     double gap = 0.0;
+    const Eigen::Matrix3d previous_R = R;
+    const Eigen::Vector3d previous_p = p;
     R = optimal_rotation(H, step, &gap);
     if (step_is_degenerate(H, gap, options.degenerate_tolerance)) {
-      result.status = Status::kDegenerate;
+      result.status = PoseStatus::kDegenerate;
       result.message =
           "the absolute-orientation step is degenerate (relative eigen gap below "
           "degenerate_tolerance): collinear or coincident model points?";
     }
     p = optimal_translation(setup, R);
     const double previous = error;
-    error = collinearity_pass(model, image, weights, inverse_focal, setup.model_mean, R, p, &H);
+    error = collinearity_pass(model, image, weights, camera, setup.model_mean, R, p, &H);
     ++result.iterations;
-    if (result.status == Status::kDegenerate) break;
-    if (std::abs(previous - error) <= options.relative_tolerance * previous) {
-      result.status = Status::kConverged;
+    if (result.status == PoseStatus::kDegenerate) break;
+    const bool objective_still =
+        std::abs(previous - error) <= options.relative_tolerance * previous;
+    const bool pose_still = rotation_angle_between(previous_R, R) <= options.pose_tolerance &&
+                            (p - previous_p).norm() <= options.pose_tolerance * p.norm();
+    if (objective_still || pose_still) {
+      result.status = PoseStatus::kOk;
       break;
     }
   }
-  if (result.status == Status::kMaxIterations) {
+  if (result.status == PoseStatus::kMaxIterations) {
     std::ostringstream out;
     out << "stopped after max_iterations = " << options.max_iterations
         << " rotation steps with E = " << error;
@@ -227,11 +251,67 @@ OrthogonalIterationResult iterate(const Eigen::Matrix3Xd& model, const Eigen::Ma
   }
   result.R_camera_object = R;
   result.p_camera_object = p;
-  result.error = error;
+  result.objective = error;
+  result.reprojection_rms_px = reprojection_rms(model, image, weights, camera, R, p);
   for (Eigen::Index i = 0; i < model.cols(); ++i) {
     if (!((R * model.col(i) + p).z() > 0.0)) ++result.points_behind_camera;
   }
   return result;
+}
+
+/// The start of a (near-)planar model: Prop. 8 (affine_pose), whose rotation carries the tilt.
+/// The weak-perspective start cannot: with coplanar points the centred model and the centred
+/// rays both lie in planes, so its cross-covariance only determines a rotation about the axis.
+/// *found is false when the affine estimate is degenerate or refuses the input (coincident
+/// model points, which orthogonal iteration itself accepts).
+Eigen::Matrix3d planar_start(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& image,
+                             const Eigen::VectorXd& weights,
+                             const OrthogonalIterationOptions& options, bool* found) {
+  AffinePoseOptions affine;
+  affine.camera = options.camera;
+  try {
+    const AffinePoseResult start = affine_pose(model, image, weights, affine);
+    *found = start.status == PoseStatus::kOk;
+    return start.R_camera_object;
+  } catch (const InvalidArgument&) {
+    *found = false;
+    return Eigen::Matrix3d::Identity();
+  }
+}
+
+/// Iterates from `start` and from its Necker mirror and keeps the better of the two (smaller E,
+/// then fewer points behind the camera), recording the other as the alternative.
+OrthogonalIterationResult with_necker_branch(const Eigen::Matrix3Xd& model,
+                                             const Eigen::Matrix2Xd& image,
+                                             const Eigen::VectorXd& weights, const Setup& setup,
+                                             const internal::PlaneFit& plane,
+                                             const Eigen::Matrix3d& start,
+                                             const OrthogonalIterationOptions& options) {
+  OrthogonalIterationResult first = iterate(model, image, weights, setup, start, options);
+  Eigen::Matrix3d mirror_R;
+  Eigen::Vector3d unused;
+  internal::necker_mirror(plane, start, Eigen::Vector3d::Zero(), &mirror_R, &unused);
+  OrthogonalIterationResult second = iterate(model, image, weights, setup, mirror_R, options);
+  const auto worse = [](const OrthogonalIterationResult& a, const OrthogonalIterationResult& b) {
+    if (a.status == PoseStatus::kDegenerate) return b.status != PoseStatus::kDegenerate;
+    if (a.points_behind_camera != b.points_behind_camera)
+      return a.points_behind_camera > b.points_behind_camera;
+    return a.objective > b.objective;
+  };
+  if (worse(first, second)) std::swap(first, second);
+  first.iterations += second.iterations;
+  first.branches = 2;
+  if (second.status != PoseStatus::kDegenerate &&
+      rotation_angle_between(first.R_camera_object, second.R_camera_object) >
+          options.branches.same_pose_angle) {
+    first.alternative =
+        PoseAlternative{second.R_camera_object, second.p_camera_object, second.reprojection_rms_px};
+    first.ambiguous = options.branches.ambiguous(first);
+  }
+  if (first.ambiguous && first.status == PoseStatus::kOk) {
+    first.message = "the Necker branch fits about as well (see alternative)";
+  }
+  return first;
 }
 
 }  // namespace
@@ -241,20 +321,27 @@ OrthogonalIterationResult orthogonal_iteration_pose(const Eigen::Matrix3Xd& mode
                                                     const Eigen::VectorXd& weights,
                                                     const OrthogonalIterationOptions& options) {
   validate(model_object, image, weights, options, 3);
-  const Setup setup = make_setup(model_object, image, weights, 1.0 / options.focal_length);
+  const Setup setup = make_setup(model_object, image, weights, options.camera);
   bool degenerate = false;
   const Eigen::Matrix3d start =
       weak_perspective_start(model_object, image, weights, options, setup.model_mean, &degenerate);
   if (degenerate) {
     OrthogonalIterationResult result;
     result.R_camera_object = start;
-    result.status = OrthogonalIterationStatus::kDegenerate;
+    result.status = PoseStatus::kDegenerate;
     result.message =
         "the weak-perspective start is degenerate: the centred model or the centred image "
         "points span less than a plane (coincident or collinear points?)";
     return result;
   }
-  return iterate(model_object, image, weights, setup, start, options);
+  const internal::PlaneFit plane = internal::fit_plane(model_object, weights);
+  if (plane.planarity > options.branches.necker_planarity) {
+    return iterate(model_object, image, weights, setup, start, options);
+  }
+  bool found = false;
+  const Eigen::Matrix3d affine_start = planar_start(model_object, image, weights, options, &found);
+  return with_necker_branch(model_object, image, weights, setup, plane,
+                            found ? affine_start : start, options);
 }
 
 OrthogonalIterationResult orthogonal_iteration_pose(const Eigen::Matrix3Xd& model_object,
@@ -268,7 +355,7 @@ OrthogonalIterationResult orthogonal_iteration_pose(const Eigen::Matrix3Xd& mode
       !(R0.determinant() > 0.0)) {
     throw InvalidArgument("initial_R_camera_object is not a rotation matrix");
   }
-  const Setup setup = make_setup(model_object, image, weights, 1.0 / options.focal_length);
+  const Setup setup = make_setup(model_object, image, weights, options.camera);
   return iterate(model_object, image, weights, setup, R0, options);
 }
 
@@ -296,8 +383,8 @@ double object_space_error(const Eigen::Matrix3Xd& model_object, const Eigen::Mat
   if (!R_camera_object.allFinite()) throw InvalidArgument("R_camera_object is not finite");
   if (!p_camera_object.allFinite()) throw InvalidArgument("p_camera_object is not finite");
   Eigen::Matrix3d unused;
-  return collinearity_pass(model_object, image, weights, 1.0 / options.focal_length,
-                           Eigen::Vector3d::Zero(), R_camera_object, p_camera_object, &unused);
+  return collinearity_pass(model_object, image, weights, options.camera, Eigen::Vector3d::Zero(),
+                           R_camera_object, p_camera_object, &unused);
 }
 
 }  // namespace vantage

@@ -1,5 +1,7 @@
 #include "vantage/io/correspondence_file.h"
 
+#include <cmath>
+
 #include "json_fields.h"
 #include "vantage/io/layout_file.h"
 
@@ -27,13 +29,36 @@ void check_count(const std::string& source, const std::string& field, Eigen::Ind
   }
 }
 
+/// "camera": {"focal": F > 0, "principal_point": [cx, cy]}, pixels, both keys optional.
+void read_camera(const nlohmann::json& camera, const std::string& source,
+                 CorrespondenceFile* file) {
+  if (!camera.is_object())
+    fail(source, "camera: must be an object {\"focal\", \"principal_point\"}");
+  internal::reject_unknown_fields(camera, source + ": camera", {"focal", "principal_point"});
+  if (camera.contains("focal")) {
+    const nlohmann::json& focal = camera["focal"];
+    if (!focal.is_number() || !(focal.get<double>() > 0.0) || !std::isfinite(focal.get<double>())) {
+      fail(source, "camera.focal: must be a finite number > 0 (pixels)");
+    }
+    file->camera.focal_length = focal.get<double>();
+    file->has_focal = true;
+  }
+  if (camera.contains("principal_point")) {
+    const Eigen::VectorXd c =
+        internal::read_numbers(camera["principal_point"], source, "camera.principal_point");
+    if (c.size() != 2) fail(source, "camera.principal_point: must be [cx, cy]");
+    file->camera.principal_point = c;
+    file->has_principal_point = true;
+  }
+}
+
 }  // namespace
 
 CorrespondenceFile parse_correspondences(std::string_view text, const std::string& source) {
   const nlohmann::json root = internal::parse_object(text, source);
-  internal::reject_unknown_fields(
-      root, source,
-      {"name", "description", "model", "measured", "image", "image1", "image2", "weights"});
+  internal::reject_unknown_fields(root, source,
+                                  {"name", "description", "model", "measured", "image", "image1",
+                                   "image2", "weights", "camera"});
   for (const char* text_field : {"name", "description"}) {
     if (root.contains(text_field)) internal::read_string(root[text_field], source, text_field);
   }
@@ -81,6 +106,7 @@ CorrespondenceFile parse_correspondences(std::string_view text, const std::strin
       }
     }
   }
+  if (root.contains("camera")) read_camera(root["camera"], source, &file);
   return file;
 }
 

@@ -46,7 +46,8 @@ Scene make_scene(std::mt19937& rng, int n, double alpha) {
 }
 
 void expect_pose(const AffinePoseResult& result, const Scene& s, int n) {
-  EXPECT_EQ(result.status, AffineStatus::kOk) << result.message;
+  EXPECT_EQ(result.status, PoseStatus::kOk) << result.message;
+  EXPECT_FALSE(result.ambiguous);
   EXPECT_THAT(result.R_camera_object, IsRotation());
   EXPECT_LT(rotation_angle_between(result.R_camera_object, s.R), kNoiseFreeRadians) << n;
   EXPECT_NEAR(result.alpha, s.alpha, kNoiseFreeRelative * s.alpha);
@@ -61,7 +62,8 @@ TEST(AffinePose, NoiseFreePointsReturnPoseWithAllPairs) {
     const int n = 4 + trial % 3;
     const Scene s = make_scene(rng, n, 0.5 + 0.2 * trial);
     AffinePoseOptions options;
-    options.focal_length = 2.0;
+    options.free_vectors = FreeVectorSet::kAllPairs;
+    options.camera.focal_length = 2.0;
     options.pair_weighting =
         trial % 2 == 0 ? PairWeighting::kGeometricMean : PairWeighting::kArithmeticMean;
     const Eigen::VectorXd w = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
@@ -69,8 +71,10 @@ TEST(AffinePose, NoiseFreePointsReturnPoseWithAllPairs) {
     expect_pose(result, s, n);
     EXPECT_EQ(result.pairs.cols(), n * (n - 1) / 2);
     EXPECT_TRUE(result.depth_known);
-    EXPECT_NEAR(result.p_camera_object.z(), result.alpha * options.focal_length, 0.0);  // Eq. 37
-    EXPECT_LT(result.residual, 1e-18 * n);
+    EXPECT_NEAR(result.p_camera_object.z(), result.alpha * options.camera.focal_length,
+                0.0);  // Eq. 37
+    EXPECT_LT(result.objective, 1e-18 * n);
+    EXPECT_LT(result.reprojection_rms_px, 1e-8);
   }
 }
 
@@ -85,7 +89,7 @@ TEST(AffinePose, NoiseFreePointsReturnPoseWithSpanningTree) {
     expect_pose(result, s, n);
     EXPECT_EQ(result.pairs.cols(), n - 1);
     EXPECT_FALSE(result.depth_known);
-    EXPECT_EQ(result.p_camera_object.z(), 0.0);
+    EXPECT_TRUE(std::isnan(result.p_camera_object.z()));
     EXPECT_EQ(result.orientation.sign_patterns, std::uint64_t{1} << (n - 2));  // one in plane
   }
 }
@@ -115,7 +119,7 @@ TEST(AffinePose, SpanningTreeConnectsEveryPointWithTheLongestVectors) {
     const int i = tree.pairs(0, k), j = tree.pairs(1, k);
     has_farthest |= (i == fi && j == fj);
     EXPECT_NEAR(tree.weights(k), std::sqrt(w(i) * w(j)), 1e-15);
-    EXPECT_EIGEN_NEAR(tree.z_object.col(k), model.col(i) - model.col(j), 0.0);
+    EXPECT_EIGEN_NEAR(tree.z_object.col(k), model.col(j) - model.col(i), 0.0);  // z_j - z_i
   }
   EXPECT_TRUE(has_farthest);
   options.pair_weighting = PairWeighting::kArithmeticMean;
@@ -131,12 +135,38 @@ TEST(AffinePose, ThreePointsGiveTheTwoFoldAmbiguity) {
   for (int trial = 0; trial < 5; ++trial) {
     const Scene s = make_scene(rng, 3, 1.0);
     const AffinePoseResult result = affine_pose(s.model, s.image);
-    EXPECT_EQ(result.status, AffineStatus::kAmbiguous);
-    const double best =
-        std::min(rotation_angle_between(result.R_camera_object, s.R),
-                 rotation_angle_between(result.orientation.runner_up_R_camera_object, s.R));
+    EXPECT_EQ(result.status, PoseStatus::kOk);
+    EXPECT_TRUE(result.ambiguous);
+    ASSERT_TRUE(result.alternative.has_value());
+    const double best = std::min(rotation_angle_between(result.R_camera_object, s.R),
+                                 rotation_angle_between(result.alternative->R_camera_object, s.R));
     EXPECT_LT(best, kNoiseFreeRadians);
   }
+}
+
+TEST(AffinePose, AutoFreeVectorsNeverThrowAndStayBounded) {
+  // kAuto: all pairs up to 5 points (10 vectors), then the longest edges of the maximum
+  // spanning tree, at most kAutoSpanningLimit: no cost cliff and no throw at any n.
+  std::mt19937 rng(kSeed + 27);
+  for (const int n : {3, 5, 6, 8, 13, 14, 30}) {
+    const Scene s = make_scene(rng, n, 1.0);
+    const AffinePoseResult result = affine_pose(s.model, s.image);
+    const Eigen::Index expected = n <= 5 ? n * (n - 1) / 2 : std::min(n - 1, kAutoSpanningLimit);
+    EXPECT_EQ(result.pairs.cols(), expected) << n;
+    EXPECT_EQ(free_vector_count(n, FreeVectorSet::kAuto), expected);
+    EXPECT_LE(result.orientation.sign_patterns, std::uint64_t{1} << kAutoSpanningLimit);
+    if (n > 3) expect_pose(result, s, n);  // the farthest pair is kept: exact LUB scale
+  }
+}
+
+TEST(AffinePose, PrincipalPointShiftsOnlyTheTranslation) {
+  std::mt19937 rng(kSeed + 28);
+  const Scene s = make_scene(rng, 6, 0.8);
+  AffinePoseOptions options;
+  options.camera.principal_point = Eigen::Vector2d(320.0, 240.0);
+  const Eigen::Matrix2Xd shifted = s.image.colwise() + options.camera.principal_point;
+  const AffinePoseResult result = affine_pose(s.model, shifted, {}, options);
+  expect_pose(result, s, 6);
 }
 
 TEST(StandardApproach, ExactOnlyWhenTheDepthsVanish) {
@@ -151,7 +181,9 @@ TEST(StandardApproach, ExactOnlyWhenTheDepthsVanish) {
   EXPECT_EQ(standard.orientation.sign_patterns, 1u);
   EXPECT_TRUE(std::isinf(standard.orientation.ambiguity_margin));
   EXPECT_GT(rotation_angle_between(standard.R_camera_object, s.R), 1e-3);
-  EXPECT_GT(standard.residual, prop8.residual);
+  EXPECT_GT(standard.objective, prop8.objective);
+  EXPECT_FALSE(standard.ambiguous);
+  EXPECT_FALSE(standard.alternative.has_value());
   // A planar model parallel to the image plane: the standard approach is exact.
   Eigen::Matrix3Xd planar = testing::random_points(rng, n);
   planar.row(2).setZero();
@@ -195,8 +227,11 @@ TEST(AffinePose, BadInputThrowsNamingTheArgument) {
   std::mt19937 rng(kSeed + 26);
   const Scene s = make_scene(rng, 8, 1.0);
   using ::testing::HasSubstr;
-  // 8 points, all pairs: 28 free vectors exceed the limit of 24.
-  EXPECT_THAT(message_of([&] { affine_pose(s.model, s.image); }), HasSubstr("max_vectors"));
+  // 8 points, all pairs: 28 free vectors exceed the limit of 24 (the default kAuto never does).
+  AffinePoseOptions all_pairs;
+  all_pairs.free_vectors = FreeVectorSet::kAllPairs;
+  EXPECT_THAT(message_of([&] { affine_pose(s.model, s.image, {}, all_pairs); }),
+              HasSubstr("max_vectors"));
   EXPECT_THAT(message_of([&] { affine_pose(s.model, s.image.leftCols(7)); }),
               HasSubstr("image has 7"));
   EXPECT_THAT(message_of([&] { affine_pose(s.model.leftCols(2), s.image.leftCols(2)); }),
@@ -211,9 +246,9 @@ TEST(AffinePose, BadInputThrowsNamingTheArgument) {
   EXPECT_THAT(message_of([&] { affine_pose(s.model, s.image, -Eigen::VectorXd::Ones(8)); }),
               HasSubstr("weights[0]"));
   AffinePoseOptions bad;
-  bad.focal_length = -1.0;
+  bad.camera.focal_length = -1.0;
   EXPECT_THAT(message_of([&] { affine_pose(s.model, s.image, {}, bad); }),
-              HasSubstr("focal_length"));
+              HasSubstr("camera.focal_length"));
   EXPECT_THAT(message_of([&] { full_3d_pose(s.model, Eigen::Matrix3Xd::Zero(3, 8)); }),
               HasSubstr("measured"));
 }

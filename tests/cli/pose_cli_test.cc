@@ -92,18 +92,26 @@ nlohmann::json run_json(const std::string& args, int expected_status = 0) {
 }
 
 void expect_contract_fields(const nlohmann::json& json, const std::string& method) {
-  for (const char* field : {"method", "R", "p", "alpha", "status", "residual"}) {
+  // The fixed contract of every method (scripts depend on it).
+  for (const char* field : {"method", "R", "p", "status", "ambiguous", "reprojection_rms_px"}) {
     EXPECT_TRUE(json.contains(field)) << method << ": " << field;
   }
   EXPECT_EQ(json["method"], method);
   ASSERT_EQ(json["R"].size(), 3u);
   for (const auto& row : json["R"]) EXPECT_EQ(row.size(), 3u);
   EXPECT_EQ(json["p"].size(), 3u);
-  EXPECT_TRUE(json["residual"].is_number()) << method;
-  if (json["status"] == "ok" || json["status"] == "converged") {
+  EXPECT_TRUE(json["ambiguous"].is_boolean()) << method;
+  EXPECT_TRUE(json["reprojection_rms_px"].is_number() || json["reprojection_rms_px"].is_null());
+  if (json["status"] == "ok" && !json["ambiguous"].get<bool>()) {
     EXPECT_FALSE(json.contains("message")) << method;
   } else {
     EXPECT_TRUE(json.contains("message")) << method;
+  }
+  if (json.contains("alternative")) {
+    const auto& alternative = json["alternative"];
+    EXPECT_EQ(alternative["R"].size(), 3u) << method;
+    EXPECT_EQ(alternative["p"].size(), 3u) << method;
+    EXPECT_TRUE(alternative.contains("reprojection_rms_px")) << method;
   }
 }
 
@@ -124,7 +132,7 @@ TEST(PoseCli, AffineRecoversTheExamplePose) {
     EXPECT_EQ(json["in_plane"], 1);  // model[5] - model[1], in both free-vector sets
     EXPECT_GT(json["ambiguity_margin"].get<double>(), 0.0);
   }
-  const auto all = run_json("'" + kAffine + "' --method affine");
+  const auto all = run_json("'" + kAffine + "' --method affine --free-vectors all");
   EXPECT_EQ(all["free_vector_count"], 15);    // 6 points, all pairs
   EXPECT_EQ(all["sign_patterns"], 1u << 14);  // one of the 15 lies in the image plane
   const auto tree = run_json("'" + kAffine + "' --method affine --free-vectors spanning");
@@ -135,7 +143,7 @@ TEST(PoseCli, AffineRecoversTheExamplePose) {
 TEST(PoseCli, AffineWithoutFocalLeavesTheDepthUnknown) {
   const auto json = run_json("'" + kAffine + "' --method affine");
   EXPECT_EQ(json["depth_known"], false);
-  EXPECT_TRUE(json["focal"].is_null());
+  EXPECT_TRUE(json["camera"]["focal"].is_null());
   EXPECT_TRUE(json["p"][2].is_null());
   EXPECT_NEAR(json["p"][0].get<double>(), kAffineP[0], kExactTolerance);
   EXPECT_NEAR(json["p"][1].get<double>(), kAffineP[1], kExactTolerance);
@@ -159,7 +167,9 @@ TEST(PoseCli, StandardApproachIsTheBiasedBaseline) {
   EXPECT_NEAR(standard["alpha"].get<double>(), kAffineAlpha, 0.05 * kAffineAlpha);
   expect_vector_near(standard["p"], kAffineP, 0.05);
   const auto affine = run_json("'" + kAffine + "' --method affine --focal 1000");
-  EXPECT_GT(standard["residual"].get<double>(), affine["residual"].get<double>());
+  EXPECT_GT(standard["objective"].get<double>(), affine["objective"].get<double>());
+  EXPECT_GT(standard["reprojection_rms_px"].get<double>(),
+            affine["reprojection_rms_px"].get<double>());
 }
 
 TEST(PoseCli, Full3dRecoversTheExamplePose) {
@@ -178,7 +188,7 @@ TEST(PoseCli, OrthogonalIterationRecoversTheExamplePose) {
   for (const char* method : {"oi-foam", "oi-svd"}) {
     const auto json = run_json("'" + kPerspective + "' --method " + std::string(method));
     expect_contract_fields(json, method);
-    EXPECT_EQ(json["status"], "converged");
+    EXPECT_EQ(json["status"], "ok");
     EXPECT_TRUE(json["alpha"].is_null());
     EXPECT_GT(json["iterations"].get<int>(), 0);
     EXPECT_EQ(json["points_behind_camera"], 0);
@@ -195,10 +205,65 @@ TEST(PoseCli, OrthogonalIterationDividesPixelsByTheFocalLength) {
   ScratchDir scratch;
   const std::string path = scratch.write("pixels.json", file.dump());
   const auto json = run_json("'" + path + "' --method oi-foam --focal 800");
-  EXPECT_EQ(json["status"], "converged");
-  EXPECT_EQ(json["focal"], kFocal);
+  EXPECT_EQ(json["status"], "ok");
+  EXPECT_EQ(json["camera"]["focal"], kFocal);
   EXPECT_LT(max_difference(json["R"], kPerspectiveR), kIterativeTolerance);
   expect_vector_near(json["p"], kPerspectiveP, kIterativeTolerance);
+}
+
+/// The perspective example in pixels of a camera with focal length f and principal point c,
+/// written with a "camera" field when `with_camera`.
+std::string pixel_file(ScratchDir& scratch, double f, double cx, double cy, bool with_camera) {
+  auto file = nlohmann::json::parse(testing::read_file(kPerspective));
+  for (auto& point : file["image"]) {
+    point[0] = cx + f * point[0].get<double>();
+    point[1] = cy + f * point[1].get<double>();
+  }
+  if (with_camera) file["camera"] = {{"focal", f}, {"principal_point", {cx, cy}}};
+  return scratch.write(with_camera ? "camera.json" : "bare.json", file.dump());
+}
+
+TEST(PoseCli, PerspectiveMethodsReadTheCameraFromTheFileOrTheOptions) {
+  ScratchDir scratch;
+  const std::string with_camera = pixel_file(scratch, 800.0, 320.0, 240.0, true);
+  const std::string bare = pixel_file(scratch, 800.0, 320.0, 240.0, false);
+  auto wrong_focal = nlohmann::json::parse(testing::read_file(with_camera));
+  wrong_focal["camera"]["focal"] = 500.0;
+  const std::string wrong = scratch.write("wrong.json", wrong_focal.dump());
+  // The perspective example is noise-free: the pinhole refinement is exact; OI stops on the
+  // pose-change rule.
+  for (const char* method : {"perspective", "oi-foam"}) {
+    for (const std::string& args :
+         {"'" + with_camera + "'", "'" + bare + "' --focal 800 --principal-point 320 240",
+          // options override the file: a wrong file focal length corrected on the command line
+          "'" + wrong + "' --focal 800"}) {
+      const auto json = run_json(args + " --method " + method);
+      expect_contract_fields(json, method);
+      EXPECT_EQ(json["status"], "ok") << args;
+      EXPECT_EQ(json["camera"]["focal"], 800.0);
+      EXPECT_LT(max_difference(json["R"], kPerspectiveR), kIterativeTolerance) << method << args;
+      expect_vector_near(json["p"], kPerspectiveP, kIterativeTolerance);
+      EXPECT_LT(json["reprojection_rms_px"].get<double>(), 1e-6);
+    }
+  }
+  // Today's files (normalised coordinates, no camera) keep working: f = 1.
+  const auto normalised = run_json("'" + kPerspective + "' --method perspective");
+  EXPECT_EQ(normalised["camera"]["focal"], 1.0);
+  EXPECT_LT(max_difference(normalised["R"], kPerspectiveR), kExactTolerance);
+  // A wrong principal point is a different camera: the fit is no longer exact.
+  const auto shifted = run_json("'" + with_camera + "' --method perspective --principal-point 0 0");
+  EXPECT_GT(shifted["reprojection_rms_px"].get<double>(), 1.0);
+}
+
+TEST(PoseCli, AffineRefinedIsExactOnTheAffineExample) {
+  const auto json = run_json("'" + kAffine + "' --method affine-refined --focal 1000");
+  expect_contract_fields(json, "affine-refined");
+  EXPECT_EQ(json["status"], "ok");
+  EXPECT_EQ(json["ambiguous"], false);
+  EXPECT_LT(max_difference(json["R"], kAffineR), kExactTolerance);
+  expect_vector_near(json["p"], kAffineP, kExactTolerance);
+  EXPECT_NEAR(json["alpha"].get<double>(), kAffineAlpha, kExactTolerance * kAffineAlpha);
+  EXPECT_LT(json["reprojection_rms_px"].get<double>(), 1e-9);
 }
 
 TEST(PoseCli, TwoViewRecoversTheExampleMotion) {
@@ -222,6 +287,8 @@ TEST(PoseCli, ReadableReportByDefault) {
       {"'" + kAffine + "' --method standard --focal 1000", "runner-up    none"},
       {"'" + kAffine + "' --method full3d", "alpha        0.01"},
       {"'" + kPerspective + "' --method oi-svd", "iterations   "},
+      {"'" + kPerspective + "' --method perspective", "branches     1"},
+      {"'" + kAffine + "' --method affine-refined", "reprojection "},
       {"'" + kTwoView + "' --method two-view", "10 of 10 points"},
   };
   for (const auto& c : cases) {
@@ -251,11 +318,12 @@ TEST(PoseCli, CoplanarModelIsAmbiguousButAnswered) {
   ScratchDir scratch;
   const std::string path = scratch.write("coplanar.json", file.dump());
   const auto json = run_json("'" + path + "' --method affine");
-  EXPECT_EQ(json["status"], "ambiguous");
-  EXPECT_TRUE(json.contains("message"));
-  ASSERT_TRUE(json.contains("runner_up_R"));
+  expect_contract_fields(json, "affine");
+  EXPECT_EQ(json["status"], "ok");
+  EXPECT_EQ(json["ambiguous"], true);
+  ASSERT_TRUE(json.contains("alternative"));
   const double best =
-      std::min(max_difference(json["R"], R), max_difference(json["runner_up_R"], R));
+      std::min(max_difference(json["R"], R), max_difference(json["alternative"]["R"], R));
   EXPECT_LT(best, kExactTolerance);
   EXPECT_GT(json["runner_up_angle_deg"].get<double>(), 1.0);
 }
@@ -265,7 +333,8 @@ TEST(PoseCli, EstimatorFailureExitsOneAndStillPrintsTheResult) {
   const std::string collinear = scratch.write(
       "collinear.json",
       R"({"model": [[0,0,0],[1,0,0],[2,0,0],[3,0,0]], "image": [[0,0],[0.5,0.1],[1,0.2],[1.5,0.3]]})");
-  for (const char* method : {"affine", "standard", "oi-foam", "oi-svd"}) {
+  for (const char* method :
+       {"affine", "standard", "oi-foam", "oi-svd", "affine-refined", "perspective"}) {
     const auto json = run_json("'" + collinear + "' --method " + std::string(method), 1);
     expect_contract_fields(json, method);
     EXPECT_EQ(json["status"], "degenerate") << method;
@@ -353,7 +422,23 @@ const BadCall kBadCalls[] = {
     {"TooManyFreeVectors",
      R"({"model": [[0,0,0],[1,0,0],[0,1,0],[0,0,1],[1,1,0],[1,0,1],[0,1,1],[1,1,1]],
          "image": [[0,0],[1,0],[0,1],[0,0],[1,1],[1,0],[0,1],[1,1]]})",
-     "in.json --method affine", "use --free-vectors spanning"},
+     "in.json --method affine --free-vectors all", "use --free-vectors auto or spanning"},
+    {"CameraFocalNegative",
+     R"({"model": [[0,0,0],[1,0,0],[0,1,0]], "image": [[0,0],[1,0],[0,1]],
+         "camera": {"focal": -5}})",
+     "in.json --method perspective", "in.json: camera.focal: must be a finite number > 0"},
+    {"CameraPrincipalPointArity",
+     R"({"model": [[0,0,0],[1,0,0],[0,1,0]], "image": [[0,0],[1,0],[0,1]],
+         "camera": {"principal_point": [1, 2, 3]}})",
+     "in.json --method affine", "in.json: camera.principal_point: must be [cx, cy]"},
+    {"CameraUnknownKey",
+     R"({"model": [[0,0,0],[1,0,0],[0,1,0]], "image": [[0,0],[1,0],[0,1]],
+         "camera": {"fx": 5}})",
+     "in.json --method affine", "unknown field \"fx\""},
+    {"PrincipalPointOneNumber", nullptr, "AFFINE --method perspective --principal-point 3",
+     "--principal-point"},
+    {"PrincipalPointForTwoView", nullptr, "AFFINE --method two-view --principal-point 3 4",
+     "--principal-point: not used"},
 };
 
 INSTANTIATE_TEST_SUITE_P(PoseCli, PoseCliBadInput, ::testing::ValuesIn(kBadCalls),

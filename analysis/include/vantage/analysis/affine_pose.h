@@ -26,6 +26,9 @@
 #include <string>
 
 #include "vantage/analysis/absolute_orientation.h"
+#include "vantage/analysis/camera.h"
+#include "vantage/analysis/free_vectors.h"
+#include "vantage/analysis/pose_estimate.h"
 #include "vantage/analysis/quaternion.h"
 
 namespace vantage {
@@ -186,78 +189,59 @@ struct ProjectionFractions {
 ProjectionFractions projection_fractions(const Eigen::Matrix3Xd& z_object,
                                          const Eigen::Matrix2Xd& d_image, double alpha);
 
-/// Which free vectors z_i - z_j Prop. 8 builds from n points.
-enum class FreeVectorSet {
-  kAllPairs,  ///< all n (n - 1) / 2 pairs i < j, as in the paper (n <= 7 with 24 vectors)
-  /// n - 1 pairs forming the maximum spanning tree of the object distances |z_i - z_j| (Prim):
-  /// connects every point with the longest, least noise-sensitive vectors; 2^(n-1) patterns.
-  kMaxSpanningTree,
-};
-
-/// "all_pairs" or "max_spanning_tree".
-const char* to_string(FreeVectorSet set);
-
-/// Weight of the free vector z_i - z_j (Prop. 8's proof).
-enum class PairWeighting {
-  kGeometricMean,   ///< sqrt(w_i w_j)
-  kArithmeticMean,  ///< (w_i + w_j) / 2
-};
-
-/// "geometric_mean" or "arithmetic_mean".
-const char* to_string(PairWeighting weighting);
-
 /// Options of affine_pose(), standard_affine_pose() and full_3d_pose().
 struct AffinePoseOptions {
   AffineOrientationOptions orientation;
-  FreeVectorSet free_vectors = FreeVectorSet::kAllPairs;
+  /// kAuto never throws for the number of points; an explicit kAllPairs set larger than
+  /// orientation.max_vectors throws InvalidArgument.
+  FreeVectorSet free_vectors = FreeVectorSet::kAuto;
   PairWeighting pair_weighting = PairWeighting::kGeometricMean;
-  /// Focal length in image units for the depth p_z = alpha f (Eq. 37); 0 = unknown, p_z = 0.
-  double focal_length = 0.0;
+  /// Pixels: image = c + (1 / alpha) P (R z + p). Without a focal length p_z is NaN; with one,
+  /// p_z = alpha f (Eq. 37).
+  Camera camera;
 
   bool is_valid(std::string* why = nullptr) const;
 };
 
-/// Free vectors of Prop. 8 built from points.
-struct FreeVectors {
-  Eigen::Matrix3Xd z_object;  ///< z_i - z_j
-  Eigen::Matrix2Xd d_image;   ///< q_i - q_j (or 3-D measured differences: see full_3d_pose)
-  Eigen::VectorXd weights;    ///< w_ij per options.pair_weighting
-  Eigen::Matrix2Xi pairs;     ///< (i, j) of each column
-};
+/// Free vectors of Prop. 8 built from image points (d = image differences).
+using FreeVectors = FreeVectorsOf<2>;
 
 /// The free vectors and weights Prop. 8 uses for these points. Sizes as in affine_pose().
 FreeVectors affine_free_vectors(const Eigen::Matrix3Xd& model_object, const Eigen::Matrix2Xd& image,
                                 const Eigen::VectorXd& weights, const AffinePoseOptions& options);
 
-/// Result of Prop. 8 and of the 2-D standard approach.
-struct AffinePoseResult {
-  Eigen::Matrix3d R_camera_object = Eigen::Matrix3d::Identity();
-  /// p_x, p_y from Eq. (36); p_z = alpha f (Eq. 37) when a focal length is given, else 0.
-  Eigen::Vector3d p_camera_object = Eigen::Vector3d::Zero();
-  double alpha = 1.0;        ///< scale: alpha q_i ~= P (R z_i + p)
-  bool depth_known = false;  ///< true when p_z came from Eq. (37)
-  /// J of Eq. (35) at the estimate: sum w_i |P (R z_i + p) - alpha q_i|^2 (object units^2).
-  double residual = 0.0;
+/// Result of Prop. 8 and of the 2-D standard approach. PoseEstimate's fields:
+///  - status: kDegenerate when Prop. 4's winner is (AffineStatus::kDegenerate), else kOk;
+///  - ambiguous: Prop. 4's runner-up fits as well (AffineStatus::kAmbiguous: for coplanar points
+///    the Necker pair, which the affine model cannot tell apart); alternative: the runner-up
+///    rotation with its Eq. (36) translation, whenever Prop. 4 had one;
+///  - reprojection_rms_px = sqrt(objective / (alpha^2 sum w)): the affine model's image residual.
+struct AffinePoseResult : PoseEstimate {
+  double alpha = 1.0;        ///< scale, object units per pixel: alpha (q_i - c) ~= P (R z_i + p)
+  bool depth_known = false;  ///< true when p_z came from Eq. (37) (a focal length was given)
+  /// J of Eq. (35) at the estimate: sum w_i |P (R z_i + p) - alpha (q_i - c)|^2 (object units^2).
+  double objective = 0.0;
   /// Prop. 4 / Lemma 7 on the free vectors (sign_patterns, ambiguity_margin, clamped, ...).
   /// For the standard approach: one pattern (v_z = 0), runner-up +infinity.
   AffineOrientationResult orientation;
   Eigen::Matrix2Xi pairs;  ///< the free vectors used, (i, j) per column
-  AffineStatus status = AffineStatus::kOk;
-  std::string message;
 };
 
 /// Prop. 8: pose and scale from n >= 3 image points of a known model: free vectors (options),
 /// Lemma 7 for R and alpha, p_x, p_y from Eq. (36) with the point weights, p_z from Eq. (37).
-/// model_object: 3 x n finite, no two points equal; image: 2 x n finite; weights: n positive or
-/// empty; the number of free vectors must not exceed options.orientation.max_vectors. Three
-/// points are always coplanar, so n = 3 gives the two-fold ambiguity (status kAmbiguous).
+/// model_object: 3 x n finite, no two points equal; image: 2 x n finite, pixels; weights: n
+/// positive or empty; an explicit free-vector set must not exceed
+/// options.orientation.max_vectors. Three points are always coplanar, so n = 3 gives the
+/// two-fold ambiguity (ambiguous = true).
 AffinePoseResult affine_pose(const Eigen::Matrix3Xd& model_object, const Eigen::Matrix2Xd& image,
                              const Eigen::VectorXd& weights = {},
                              const AffinePoseOptions& options = {});
 
 /// The paper's "standard approach" (Sec. IV): free vectors augmented with v_z = 0, Theorem 1 for
 /// R, alpha from Eq. (4), p_x, p_y from Eq. (36) (= the first two rows of Eq. 13), p_z from
-/// Eq. (37). Same preconditions as affine_pose() (no limit on the number of vectors).
+/// Eq. (37). Same preconditions as affine_pose() (no limit on the number of vectors; kAuto means
+/// all pairs here, since nothing is enumerated).
+/// ambiguous is always false (one pattern).
 AffinePoseResult standard_affine_pose(const Eigen::Matrix3Xd& model_object,
                                       const Eigen::Matrix2Xd& image,
                                       const Eigen::VectorXd& weights = {},
@@ -265,7 +249,8 @@ AffinePoseResult standard_affine_pose(const Eigen::Matrix3Xd& model_object,
 
 /// The paper's "full 3-D" baseline (Sec. IV): free vectors of 3-D measured points (measured
 /// alpha q_i ~= R z_i + p), Theorem 1 for R and alpha (Eq. 4), p from Eq. (13). Uses
-/// options.free_vectors, pair_weighting and orientation.degenerate_gap only. residual is J of
+/// options.free_vectors (kAuto: all pairs), pair_weighting and orientation.degenerate_gap only.
+/// residual is J of
 /// Eq. (12). (absolute_pose() is the centred equivalent.) n >= 3 points, as in affine_pose().
 PoseResult full_3d_pose(const Eigen::Matrix3Xd& model_object, const Eigen::Matrix3Xd& measured,
                         const Eigen::VectorXd& weights = {}, const AffinePoseOptions& options = {});

@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "vantage/analysis/free_vectors.h"
+
 namespace vantage {
 
 /// Which kind of entries a layout holds.
@@ -21,12 +23,6 @@ enum class LayoutMode {
 
 /// "vectors" or "points".
 const char* to_string(LayoutMode mode);
-
-/// How a free vector z_j - z_i is weighted from its markers' weights (Prop. 8).
-enum class PairWeighting {
-  kGeometricMean,   ///< sqrt(w_i w_j) — the default, as in DESIGN.md
-  kArithmeticMean,  ///< (w_i + w_j) / 2
-};
 
 /// A layout in the object frame.
 struct Layout {
@@ -63,7 +59,8 @@ struct DataVectors {
 };
 
 /// The layout's data vectors: its entries in direction mode, all free vectors z_j - z_i (i < j,
-/// in lexicographic order of (i, j)) in point mode. Validates the layout first.
+/// in lexicographic order of (i, j), built by build_free_vectors of free_vectors.h) in point
+/// mode. Validates the layout first.
 DataVectors data_vectors(const Layout& layout,
                          PairWeighting weighting = PairWeighting::kGeometricMean);
 

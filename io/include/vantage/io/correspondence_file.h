@@ -7,7 +7,10 @@
 ///    "image":    [[u, v], ...],      image points of the model (affine and perspective pose)
 ///    "image1":   [[u, v], ...],      two-view: the same points in the first image
 ///    "image2":   [[u, v], ...],      two-view: ... and in the second
-///    "weights":  [w, ...]}           optional, positive, one per correspondence
+///    "weights":  [w, ...],           optional, positive, one per correspondence
+///    "camera":   {"focal": F, "principal_point": [cx, cy]}}   optional, pixels: image points
+///                                    are pixels of a pinhole camera with focal length F > 0 and
+///                                    principal point c (default [0, 0]); both keys optional
 ///
 /// Every field is optional in the file; each command states which it needs through require().
 /// Errors are one line "<source>: <field>[<index>]: <problem>" in a vantage::InvalidArgument.
@@ -15,6 +18,8 @@
 #include <Eigen/Core>
 #include <string>
 #include <string_view>
+
+#include "vantage/analysis/camera.h"
 
 namespace vantage::io {
 
@@ -27,6 +32,11 @@ struct CorrespondenceFile {
   Eigen::Matrix2Xd image1;
   Eigen::Matrix2Xd image2;
   Eigen::VectorXd weights;  ///< empty when absent (all weights 1)
+  /// "camera" in pixels; focal_length 0 when the file gives none, principal point (0, 0) when
+  /// absent.
+  Camera camera;
+  bool has_focal = false;            ///< "camera" has "focal"
+  bool has_principal_point = false;  ///< "camera" has "principal_point"
   bool has_model = false;
   bool has_measured = false;
   bool has_image = false;
