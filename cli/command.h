@@ -57,7 +57,11 @@ auto against_source(const std::string& source, Call&& call) {
 Json json_rows(const Eigen::MatrixXd& m);
 Json json_list(const Eigen::VectorXd& v);
 
-/// Prints one JSON object on stdout (two-space indented).
+/// True when `text` is well-formed UTF-8 (file names need not be).
+bool is_valid_utf8(const std::string& text);
+
+/// Prints one JSON object on stdout (two-space indented; invalid UTF-8 in strings, e.g. a file
+/// name, is replaced by U+FFFD instead of failing).
 void print_json(const Json& object);
 
 /// Fixed-width text for the readable reports: "[ x y z ]" and a number with `digits`

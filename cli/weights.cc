@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "command.h"
+#include "limits.h"
 #include "vantage/design/weights.h"
 #include "vantage/io/layout_file.h"
 
@@ -16,6 +17,7 @@ namespace {
 struct WeightsArgs {
   std::string file;
   bool json = false;
+  bool allow_large = false;
 };
 
 Json suggestion_json(const design::WeightsSuggestion& s) {
@@ -36,7 +38,9 @@ Json suggestion_json(const design::WeightsSuggestion& s) {
 }
 
 int run_weights(const WeightsArgs& args) {
-  const Layout layout = io::read_layout(args.file);
+  const Layout layout = read_layout_within_limits(args.file, args.allow_large);
+  check_limit(args.file + ": " + layout.entries_field(), layout.entries.cols(), kMaxWeightsEntries,
+              "weights", args.allow_large);
   const design::Weights w =
       against_source(args.file, [&] { return design::layout_weights(layout); });
   const bool solved = w.status != design::Weights::Status::kSolverFailed;
@@ -106,6 +110,7 @@ Command add_weights_command(CLI::App& root) {
   sub->add_option("LAYOUT", args->file,
                   "layout JSON file (points: marker positions; vectors: the z_i themselves)")
       ->required();
+  add_allow_large_flag(sub, args->allow_large);
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
   return {sub, [args] { return run_weights(*args); }};
 }

@@ -591,6 +591,9 @@ AugmentResult augment_layout(const Layout& layout, const AugmentOptions& options
   bool certified = result.initial.certified;
   WorstCase current = result.initial;
   for (int s = 0; s < options.add; ++s) {
+    if (options.progress) {
+      options.progress("step " + std::to_string(s + 1) + "/" + std::to_string(options.add));
+    }
     bool out_of_candidates = false;
     AugmentStep st = designer.step(current, &out_of_candidates);
     if (out_of_candidates) {
@@ -615,6 +618,7 @@ AugmentResult augment_layout(const Layout& layout, const AugmentOptions& options
   }
   if (options.run_direct && options.add > 0 &&
       result.status != AugmentResult::Status::kNoCandidates) {
+    if (options.progress) options.progress("direct optimiser");
     result.direct = run_direct(layout, options, result, &designer);
     if (result.direct.status == DirectResult::Status::kOk) {
       certified = certified && result.direct.worst.certified;

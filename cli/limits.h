@@ -1,0 +1,41 @@
+#pragma once
+
+// The bounds every `vantage` subcommand checks before any work (README "Limits"): one line on
+// stderr naming the bound and exit status 2; --allow-large lifts the soft bounds for a user who
+// wants to wait (and has the memory), the hard bounds stay.
+
+#include <CLI/CLI.hpp>
+#include <cstddef>
+#include <string>
+
+#include "vantage/analysis/layout.h"
+
+namespace vantage::cli {
+
+/// Input file size: 64 MiB (about a million vectors); with --allow-large 1 GiB.
+constexpr std::size_t kMaxFileBytes = std::size_t{64} << 20;
+constexpr std::size_t kMaxFileBytesAllowLarge = std::size_t{1} << 30;
+
+/// `analyze`: data vectors (vectors, or the n (n - 1) / 2 free vectors of n points).
+constexpr long kMaxAnalyzeVectors = 2000;
+/// `design`: data vectors after the additions, and the additions themselves.
+constexpr long kMaxDesignVectors = 500;
+constexpr int kMaxDesignAdd = 20;
+/// `weights`: entries (vectors or points); the LP is O(n), the file size bound comes first.
+constexpr long kMaxWeightsEntries = 2'000'000;
+
+/// Adds --allow-large to `sub`, storing into `flag`.
+void add_allow_large_flag(CLI::App* sub, bool& flag);
+
+/// Reads the layout at `path` within the file size bound (FileTooLarge names --allow-large).
+Layout read_layout_within_limits(const std::string& path, bool allow_large);
+
+/// Throws InvalidArgument "<what>: <count> exceeds the limit of <limit> for `vantage
+/// <command>` (--allow-large lifts it)" when count > limit and not allow_large.
+void check_limit(const std::string& what, long count, long limit, const std::string& command,
+                 bool allow_large);
+
+/// The number of data vectors a layout gives: its vectors, or n (n - 1) / 2 for n points.
+long data_vector_count(const Layout& layout);
+
+}  // namespace vantage::cli
