@@ -18,6 +18,12 @@ namespace {
 // nlohmann's exception id for a number beyond double range (1e999).
 constexpr int kNumberOverflow = 406;
 
+// nlohmann's "last read" may start before the value ("1,N"): the value's own characters.
+std::string value_text(const std::string& last_read) {
+  const auto start = last_read.find_last_of(",[{: \t\r\n");
+  return start == std::string::npos ? last_read : last_read.substr(start + 1);
+}
+
 // The lexer stops at the first character that cannot continue a literal: "N" for NaN, "I" or
 // "-I" for Infinity, "na" for nan, "i" for inf.
 bool spells_non_finite(const std::string& token) {
@@ -66,8 +72,9 @@ class TrackingSax {
     frames_.pop_back();
     return value(dom_.end_array());
   }
-  bool parse_error(std::size_t, const std::string& token,
+  bool parse_error(std::size_t, const std::string& last_read,
                    const nlohmann::detail::exception& error) {
+    const std::string token = value_text(last_read);
     const std::string at = where();
     const std::string prefix = at.empty() ? "" : at + ": ";
     if (error.id == kNumberOverflow) {

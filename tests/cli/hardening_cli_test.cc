@@ -9,6 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <random>
+#include <regex>
 #include <sstream>
 
 #include "support/cli_runner.h"
@@ -142,12 +143,12 @@ TEST(HardeningCli, LimitsAreCheckedBeforeAnyWork) {
                    "--add: 1000000 exceeds the limit of 20 for `vantage design` (--allow-large");
   // /dev/zero as a layout: the read stops at the file size bound.
   expect_bad_input(run_vantage("analyze /dev/zero", scratch), "/dev/zero: larger than 67108864");
-  // 64 points give 2016 free vectors, beyond analyze's 2000.
+  // 46 points give 1035 free vectors, beyond analyze's 1000.
   nlohmann::json many;
-  for (int k = 0; k < 64; ++k) many["points"].push_back({k, k * k % 17, k % 5});
+  for (int k = 0; k < 46; ++k) many["points"].push_back({k, k * k % 17, k % 5});
   scratch.write("many.json", many.dump());
   expect_bad_input(run_vantage("analyze many.json", scratch),
-                   "many.json: data vectors: 2016 exceeds the limit of 2000");
+                   "many.json: data vectors: 1035 exceeds the limit of 1000");
   // 50 000 points: an int would overflow in 49 999 * 50 000; now a clear bound, exit 2.
   std::ostringstream huge;
   huge << "{\"points\": [";
@@ -175,6 +176,33 @@ TEST(HardeningCli, WeightsOnAHundredThousandVectors) {
   EXPECT_EQ(json["status"], "positive");
   EXPECT_EQ(json["weights"].size(), 100000u);
   EXPECT_GT(json["min_weight"].get<double>(), 0.0);
+}
+
+// Runs `vantage <args>` under script(1), which gives it a terminal; returns what the terminal
+// showed (stdout and stderr together).
+std::string run_on_terminal(const std::string& args, const ScratchDir& scratch) {
+  const std::string out = scratch.path("terminal.txt");
+  const std::string command = "cd '" + scratch.dir().string() + "' && script -qec \"'" +
+                              VANTAGE_CLI + "' " + args + "\" /dev/null > '" + out +
+                              "' 2>&1 < /dev/null";
+  EXPECT_EQ(std::system(command.c_str()), 0);
+  const std::string text = testing::read_file(out);
+  fs::remove(out);
+  return text;
+}
+
+TEST(HardeningCli, ProgressOnlyOnATerminal) {
+  // Three point-mode steps and the direct optimiser run for seconds, so a progress line
+  // appears on a terminal; --quiet silences it (and without a terminal stderr stays empty:
+  // run_json checks that everywhere).
+  ScratchDir scratch;
+  const std::string design = "design '" + kSatellite + "' --add 3";
+  const std::regex progress("vantage design: (step [0-9]/3|direct optimiser), [0-9]+ s");
+  const std::string shown = run_on_terminal(design, scratch);
+  EXPECT_TRUE(std::regex_search(shown, progress)) << shown;
+  const std::string quiet = run_on_terminal(design + " --quiet", scratch);
+  EXPECT_THAT(quiet, HasSubstr("final p-bar_min"));
+  EXPECT_FALSE(std::regex_search(quiet, progress)) << quiet;
 }
 
 // ---- Writes: all or nothing -----------------------------------------------------------------
