@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/scaling.h"
 
 namespace vantage {
 
@@ -290,20 +291,6 @@ OrientationStatus classify(const RotationSolve& solve, const Eigen::Matrix3d& H,
 // exactly) before the moments are formed: their sums of squares would over- or underflow (a
 // point at 1e308, or data in units of 1e-200) and fake coincident points.
 constexpr int kSafeExponent = 256;
-
-// e with max |x_ij| * 2^-e in [0.5, 1); 0 for all-zero (or non-finite) data.
-int binary_exponent(const Eigen::Matrix3Xd& x) {
-  const double largest = x.cwiseAbs().maxCoeff();
-  if (!(largest > 0.0) || !std::isfinite(largest)) return 0;
-  int e = 0;
-  std::frexp(largest, &e);
-  return e;
-}
-
-// x * 2^-e in two exact steps (2^-e alone may be subnormal).
-Eigen::Matrix3Xd scaled_by_power_of_two(const Eigen::Matrix3Xd& x, int e) {
-  return (x * std::ldexp(1.0, -e / 2)) * std::ldexp(1.0, -(e - e / 2));
-}
 
 bool needs_rescaling(int ez, int ev) {
   return std::abs(ez) > kSafeExponent || std::abs(ev) > kSafeExponent;

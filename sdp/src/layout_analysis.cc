@@ -6,6 +6,7 @@
 
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/error_bounds.h"
+#include "vantage/analysis/scaling.h"
 
 namespace vantage::sdp {
 
@@ -17,16 +18,6 @@ constexpr double kRightAngleDeg = 90.0;
 void append(std::string* message, const std::string& part) {
   if (!message->empty()) *message += "; ";
   *message += part;
-}
-
-// x * 2^-e with max |x_ij| * 2^-e in [0.5, 1), in two exact steps (2^-e alone may be
-// subnormal).
-Eigen::Matrix3Xd power_of_two_scaled(const Eigen::Matrix3Xd& x) {
-  const double largest = x.cwiseAbs().maxCoeff();
-  if (!(largest > 0.0)) return x;
-  int e = 0;
-  std::frexp(largest, &e);
-  return (x * std::ldexp(1.0, -e / 2)) * std::ldexp(1.0, -(e - e / 2));
 }
 
 // Unit columns all within kParallelTolerance of one line.
@@ -66,7 +57,7 @@ LayoutAnalysis analyze_vectors(const Eigen::Matrix3Xd& vectors, const Eigen::Vec
   }
   // Every part of the analysis depends on directions and relative lengths only: scale by a power
   // of two (exactly) so that no norm over- or underflows, whatever the data's units.
-  const Eigen::Matrix3Xd scaled = power_of_two_scaled(vectors);
+  const Eigen::Matrix3Xd scaled = scaled_by_power_of_two(vectors, binary_exponent(vectors));
   for (Eigen::Index i = 0; i < scaled.cols(); ++i) {
     if (!(scaled.col(i).norm() > 0.0)) {
       throw InvalidArgument("vectors[" + std::to_string(i) +
