@@ -79,8 +79,8 @@ void check_write_target(const DesignArgs& args) {
   if (!is_valid_utf8(args.write)) {
     bad("--write: the file name is not valid UTF-8 (the report could not name it)");
   }
-  struct stat out {
-  }, in{};
+  struct stat out = {};
+  struct stat in = {};
   if (!args.overwrite && ::stat(args.write.c_str(), &out) == 0 &&
       ::stat(args.file.c_str(), &in) == 0 && out.st_dev == in.st_dev && out.st_ino == in.st_ino) {
     bad("--write: " + args.write + " is the input layout; refusing to overwrite it without " +

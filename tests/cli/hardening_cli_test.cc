@@ -275,6 +275,16 @@ TEST(HardeningCli, SkippedCrossCheckClaimsNothing) {
   EXPECT_THAT(run.out, Not(HasSubstr("agrees")));
 }
 
+TEST(HardeningCli, NoNegativeZeroInViewpoints) {
+  // The fan's worst viewpoints lie in its plane: their z components are zero up to rounding
+  // (of either sign) and must print as 0.000000.
+  ScratchDir scratch;
+  const auto run = run_vantage("analyze '" + kLayouts + "coplanar_fan.json'", scratch);
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr(" 0.000000 ]"));
+  EXPECT_THAT(run.out, Not(HasSubstr("-0.000000")));
+}
+
 TEST(HardeningCli, EmptyPaperCellPrintsItsStatus) {
   ScratchDir scratch;
   scratch.write("cell.json", R"({"vectors": [[1,0,0],[-1,1e-9,0],[0,0,1]]})");
