@@ -39,7 +39,8 @@ Command add_pose_command(CLI::App& root);
 OrientationMethod parse_orientation_method(const std::string& name);
 
 /// Throws InvalidArgument "<source>: <message>", with the library's argument names replaced by
-/// the file's field names (model_object -> model), so that every error names the file.
+/// the file's field names (model_object and z_object -> model, q_camera and v_camera ->
+/// measured, d_image -> image), so that every error names the file.
 [[noreturn]] void rethrow_against(const std::string& source, const std::exception& error);
 
 /// Runs a library call on data read from `source`; its InvalidArgument (too few points,

@@ -44,9 +44,9 @@ void check_point(const Eigen::Vector3d& p, const std::string& field, Eigen::Inde
 }
 
 // Points closer than kCoincidenceRelative times the largest coordinate magnitude (or than
-// Layout::kMinLength) coincide: their
-// free vector is at the rounding level of the coordinates (2^-52 relative), so its direction is
-// noise. Relative, so that scaling a layout by 1e-200 or 1e200 changes nothing.
+// Layout::kMinLength) coincide: their free vector is at the rounding level of the coordinates
+// (2^-52 relative), so its direction is noise. Relative, so that scaling a layout by 1e-100 or
+// 1e100 changes nothing.
 constexpr double kCoincidenceRelative = 1e-12;
 
 // Sweeps the points in order of their coordinate of largest spread, comparing each with the
