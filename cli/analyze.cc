@@ -2,21 +2,32 @@
 // certified), p-bar_min, the worst-case errors of Eq. (30), the paper's single LMI beside it, the
 // NLopt cross-check and the swap sensitivity of Prop. 2.
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <numeric>
+#include <regex>
 
 #include "command.h"
 #include "layout_input.h"
+#include "limits.h"
+#include "progress.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/layout.h"
 #include "vantage/design/augment.h"
-#include "vantage/io/layout_file.h"
 #include "vantage/sdp/layout_analysis.h"
 
 namespace vantage::cli {
 
 namespace {
+
+// The default report shows this many worst vectors (all of them with --verbose or when there
+// are at most kShownVectors + 2).
+constexpr long kShownVectors = 5;
+// Swap errors at or below this (degrees) are "0": noise-free, a swap either leaves the rotation
+// exactly unchanged or moves it far (swap_sensitivity.h), so rounding is the only scale here.
+constexpr double kZeroSwapDeg = 1e-6;
 
 struct AnalyzeArgs {
   std::string file;
@@ -25,6 +36,9 @@ struct AnalyzeArgs {
   int swaps = 5;
   bool crosscheck = true;
   bool json = false;
+  bool verbose = false;
+  bool quiet = false;
+  bool allow_large = false;
 };
 
 Json viewpoints_json(const std::vector<Eigen::Vector3d>& viewpoints) {
@@ -34,103 +48,201 @@ Json viewpoints_json(const std::vector<Eigen::Vector3d>& viewpoints) {
 }
 
 /// "v3" for a vector, "p2-p7" for the free vector from marker 2 to marker 7.
-std::string vector_label(const DataVectors& data, int k) {
+std::string vector_label(const DataVectors& data, long k) {
   if (data.pairs.empty()) return "v" + std::to_string(k);
   return "p" + std::to_string(data.pairs[k].first) + "-p" + std::to_string(data.pairs[k].second);
 }
 
+/// The library names data vector k "vectors[k]"; in point mode that is a free vector of the
+/// file's points: name those.
+[[noreturn]] void rethrow_for_layout(const std::string& source, const Layout& layout,
+                                     const DataVectors& data, const InvalidArgument& error) {
+  std::string message = error.what();
+  std::smatch match;
+  if (layout.mode == LayoutMode::kPoints &&
+      std::regex_search(message, match, std::regex(R"(vectors\[(\d+)\])"))) {
+    const auto& pair = data.pairs[std::stoul(match[1].str())];
+    message = match.prefix().str() + "points[" + std::to_string(pair.second) + "] - points[" +
+              std::to_string(pair.first) + "] (a free vector)" + match.suffix().str();
+  }
+  throw InvalidArgument(source + ": " + message);
+}
+
+/// The one place a LayoutAnalysis becomes JSON (the README contract).
+Json analysis_json(const Layout& layout, const DataVectors& data, const sdp::LayoutAnalysis& r,
+                   double ceiling) {
+  Json out;
+  out["name"] = layout.name;
+  out["mode"] = to_string(layout.mode);
+  out["n_vectors"] = data.vectors.cols();
+  out["worst_viewpoint"] = json_list(r.worst_viewpoint);
+  out["worst_viewpoints"] = viewpoints_json(r.worst_viewpoints);
+  out["t"] = r.t;
+  out["pbar_min"] = r.pbar_min;
+  out["ceiling"] = ceiling;
+  out["degenerate"] = r.degenerate;
+  out["worst_case_errors_deg"] = json_list(r.worst_case_errors_deg);
+  out["max_worst_case_error_deg"] = r.max_worst_case_error_deg;
+  out["certificate"] = {{"t_upper", r.certificate.t_upper},
+                        {"t_lower", r.certificate.t_lower},
+                        {"certified", r.certificate.certified}};
+  out["paper_lmi"] = {{"viewpoint", json_list(r.paper_lmi.viewpoint)},
+                      {"t", r.paper_lmi.t},
+                      {"pbar", r.paper_lmi.pbar},
+                      {"status", sdp::to_string(r.paper_lmi.status)}};
+  if (r.crosscheck.ran) {
+    out["crosscheck"] = {
+        {"method", r.crosscheck.method}, {"t", r.crosscheck.t}, {"agrees", r.crosscheck.agrees}};
+  } else {
+    out["crosscheck"] = {{"method", "skipped"}};
+  }
+  Json swaps = Json::array();
+  for (const SwapError& s : r.swaps) {
+    Json swap = {{"i", s.i}, {"j", s.j}, {"error_deg", s.error_deg}, {"ambiguous", s.ambiguous}};
+    if (!data.pairs.empty()) {
+      swap["pair_i"] = {data.pairs[s.i].first, data.pairs[s.i].second};
+      swap["pair_j"] = {data.pairs[s.j].first, data.pairs[s.j].second};
+    }
+    swaps.push_back(swap);
+  }
+  out["swaps"] = swaps;
+  out["solver"] = {{"backend", sdp::to_string(r.solver.backend)},
+                   {"status", sdp::to_string(r.solver.status)},
+                   {"cells_solved", r.solver.cells_solved},
+                   {"patches", r.solver.patches},
+                   {"sdp_status", sdp::to_string(r.solver.sdp_status)}};
+  if (!r.message.empty()) out["message"] = r.message;
+  return out;
+}
+
+/// Indices of the data vectors by decreasing worst-case error (ties by index).
+std::vector<long> by_decreasing_error(const Eigen::VectorXd& errors) {
+  std::vector<long> order(static_cast<std::size_t>(errors.size()));
+  std::iota(order.begin(), order.end(), 0L);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](long a, long b) { return errors(a) > errors(b); });
+  return order;
+}
+
+void print_vectors(const DataVectors& data, const sdp::LayoutAnalysis& r, bool verbose) {
+  const long m = data.vectors.cols();
+  const bool all = verbose || m <= kShownVectors + 2;
+  const long shown = all ? m : kShownVectors;
+  std::cout << "\nworst-case error per vector at a (deg, Eq. 30), worst first";
+  if (all) {
+    std::cout << ":\n";
+  } else {
+    std::cout << ": " << shown << " of " << m << " (--verbose or --json for all)\n";
+  }
+  const std::vector<long> order = by_decreasing_error(r.worst_case_errors_deg);
+  for (long k = 0; k < shown; ++k) {
+    const long v = order[static_cast<std::size_t>(k)];
+    std::cout << "  " << vector_label(data, v) << "  "
+              << format_number(r.worst_case_errors_deg(v), 6) << "\n";
+  }
+}
+
+void print_swaps(const DataVectors& data, const sdp::LayoutAnalysis& r) {
+  const long m = data.vectors.cols();
+  const bool all_zero = std::all_of(r.swaps.begin(), r.swaps.end(), [](const SwapError& s) {
+    return !s.ambiguous && s.error_deg <= kZeroSwapDeg;
+  });
+  if (all_zero) {
+    std::cout << "\nswap sensitivity (Prop. 2): 0 deg for every one of the " << m * (m - 1) / 2
+              << " pairs:\n  swapping the measurements of any two data vectors leaves Theorem "
+                 "1's noise-free rotation unchanged\n";
+    return;
+  }
+  std::cout << "\nswap sensitivity (Prop. 2), worst pairs (rotation error when two measurements "
+               "are swapped):\n";
+  for (const SwapError& s : r.swaps) {
+    std::cout << "  " << vector_label(data, s.i) << " <-> " << vector_label(data, s.j) << "  "
+              << format_number(s.error_deg, 6) << " deg"
+              << (s.ambiguous ? "  (ambiguous: the swapped optimum is not unique)" : "") << "\n";
+  }
+}
+
+std::string paper_lmi_line(const sdp::LayoutAnalysis& r) {
+  using Status = sdp::CellViewpoint::Status;
+  switch (r.paper_lmi.status) {
+    case Status::kOk:
+      return "pbar " + format_number(r.paper_lmi.pbar, 6) + " at " +
+             format_vector(r.paper_lmi.viewpoint) + "  (one sign cell only; >= the global value)";
+    case Status::kEmptyCell:
+      return "empty_cell: its sign cell holds no viewpoint with every a.n_i > 0, so it gives no "
+             "answer";
+    case Status::kSolverFailed:
+      break;
+  }
+  return std::string(sdp::to_string(r.paper_lmi.status)) + ": the SDP gave no solution";
+}
+
+void print_report(const AnalyzeArgs& args, const Layout& layout, const DataVectors& data,
+                  const sdp::LayoutAnalysis& r, double ceiling) {
+  const long m = data.vectors.cols();
+  std::cout << "vantage analyze: " << (layout.name.empty() ? args.file : layout.name) << "\n"
+            << "  " << to_string(layout.mode) << " mode, " << layout.entries.cols() << " "
+            << to_string(layout.mode) << " -> " << m << " data vectors\n\n";
+  if (r.degenerate) {
+    std::cout << "DEGENERATE             every data vector is parallel to one line: the rotation "
+                 "about it is not determined\n";
+  }
+  std::cout << "pbar_min = sqrt(1-t^2) " << format_number(r.pbar_min, 9) << "   (ceiling for " << m
+            << " vectors: " << format_number(ceiling, 6) << ")\n"
+            << "max worst-case error   " << format_number(r.max_worst_case_error_deg, 6)
+            << " deg (Eq. 30)" << (r.degenerate ? ", and the rotation about the line is free" : "")
+            << "\n"
+            << "worst viewpoint a      " << format_vector(r.worst_viewpoint) << "\n";
+  for (std::size_t k = 1; k < r.worst_viewpoints.size(); ++k) {
+    std::cout << "  also (tie)           " << format_vector(r.worst_viewpoints[k]) << "\n";
+  }
+  std::cout << "certificate            t in [" << format_number(r.certificate.t_lower, 12) << ", "
+            << format_number(r.certificate.t_upper, 12) << "], " << sdp::to_string(r.solver.status)
+            << ", " << r.solver.cells_solved << " cells solved, confirmed on "
+            << sdp::to_string(r.solver.backend) << " (" << sdp::to_string(r.solver.sdp_status)
+            << ")\n";
+  print_vectors(data, r, args.verbose);
+  print_swaps(data, r);
+  std::cout << "\nt = min_i |a.n_i|      " << format_number(r.t, 9) << "\n"
+            << "paper's single LMI     " << paper_lmi_line(r) << "\n"
+            << "cross-check            ";
+  if (r.crosscheck.ran) {
+    std::cout << r.crosscheck.method << " t " << format_number(r.crosscheck.t, 9)
+              << (r.crosscheck.agrees ? "  agrees" : "  DISAGREES") << "\n";
+  } else {
+    std::cout << "skipped (--no-crosscheck)\n";
+  }
+}
+
 int run_analyze(const AnalyzeArgs& args) {
   if (args.swaps < 1) throw InvalidArgument("--swaps: must be >= 1");
-  const Layout layout = args.input.read(args.file);
-  const DataVectors data =
-      data_vectors(layout, args.pair_weighting == "arithmetic" ? PairWeighting::kArithmeticMean
-                                                               : PairWeighting::kGeometricMean);
+  const Layout layout = args.input.read(args.file, args.allow_large);
+  check_limit(args.file + ": data vectors", data_vector_count(layout), kMaxAnalyzeVectors,
+              "analyze", args.allow_large);
+  const DataVectors data = against_source(args.file, [&] {
+    return data_vectors(layout, args.pair_weighting == "arithmetic"
+                                    ? PairWeighting::kArithmeticMean
+                                    : PairWeighting::kGeometricMean);
+  });
   sdp::LayoutAnalysisOptions options;
   options.swap_count = args.swaps;
   options.run_crosscheck = args.crosscheck;
-  const sdp::LayoutAnalysis report = against_source(
-      args.file, [&] { return sdp::analyze_vectors(data.vectors, data.weights, options); });
-  const long m = data.vectors.cols();
-  const double ceiling = design::pbar_ceiling(static_cast<int>(m));
-  const bool trusted =
-      report.solver.status == "certified" && (!args.crosscheck || report.crosscheck.agrees);
+  sdp::LayoutAnalysis report;
+  try {
+    Progress progress("analyze", !args.json && !args.quiet);  // cleared before the report
+    options.progress = progress.callback();
+    report = sdp::analyze_vectors(data.vectors, data.weights, options);
+  } catch (const InvalidArgument& e) {
+    rethrow_for_layout(args.file, layout, data, e);
+  }
+  const double ceiling = design::pbar_ceiling(static_cast<int>(data.vectors.cols()));
 
   if (args.json) {
-    Json out;
-    out["name"] = layout.name;
-    out["mode"] = to_string(layout.mode);
-    out["n_vectors"] = m;
-    out["worst_viewpoint"] = json_list(report.worst_viewpoint);
-    out["worst_viewpoints"] = viewpoints_json(report.worst_viewpoints);
-    out["t"] = report.t;
-    out["pbar_min"] = report.pbar_min;
-    out["ceiling"] = ceiling;
-    out["worst_case_errors_deg"] = json_list(report.worst_case_errors_deg);
-    out["max_worst_case_error_deg"] = report.max_worst_case_error_deg;
-    out["certificate"] = {{"t_upper", report.certificate.t_upper},
-                          {"t_lower", report.certificate.t_lower},
-                          {"certified", report.certificate.certified}};
-    out["paper_lmi"] = {{"viewpoint", json_list(report.paper_lmi.viewpoint)},
-                        {"t", report.paper_lmi.t},
-                        {"pbar", report.paper_lmi.pbar},
-                        {"status", report.paper_lmi.status}};
-    out["crosscheck"] = {{"method", report.crosscheck.method},
-                         {"t", report.crosscheck.t},
-                         {"agrees", report.crosscheck.agrees}};
-    Json swaps = Json::array();
-    for (const SwapError& s : report.swaps) {
-      Json swap = {{"i", s.i}, {"j", s.j}, {"error_deg", s.error_deg}, {"ambiguous", s.ambiguous}};
-      if (!data.pairs.empty()) {
-        swap["pair_i"] = {data.pairs[s.i].first, data.pairs[s.i].second};
-        swap["pair_j"] = {data.pairs[s.j].first, data.pairs[s.j].second};
-      }
-      swaps.push_back(swap);
-    }
-    out["swaps"] = swaps;
-    out["solver"] = {{"backend", report.solver.backend},
-                     {"status", report.solver.status},
-                     {"cells_solved", report.solver.cells_solved},
-                     {"patches", report.solver.patches},
-                     {"sdp_status", report.solver.sdp_status}};
-    if (!report.message.empty()) out["message"] = report.message;
-    print_json(out);
+    print_json(analysis_json(layout, data, report, ceiling));
   } else {
-    std::cout << "vantage analyze: " << (layout.name.empty() ? args.file : layout.name) << "\n"
-              << "  " << to_string(layout.mode) << " mode, " << layout.entries.cols() << " "
-              << to_string(layout.mode) << " -> " << m << " data vectors\n\n"
-              << "worst viewpoint a      " << format_vector(report.worst_viewpoint) << "\n";
-    for (std::size_t k = 1; k < report.worst_viewpoints.size(); ++k) {
-      std::cout << "  also (tie)           " << format_vector(report.worst_viewpoints[k]) << "\n";
-    }
-    std::cout << "t = min_i |a.n_i|      " << format_number(report.t, 9) << "\n"
-              << "pbar_min = sqrt(1-t^2) " << format_number(report.pbar_min, 9)
-              << "   (ceiling for " << m << " vectors: " << format_number(ceiling, 6) << ")\n"
-              << "max worst-case error   " << format_number(report.max_worst_case_error_deg, 6)
-              << " deg (Eq. 30)\n"
-              << "certificate            t in [" << format_number(report.certificate.t_lower, 12)
-              << ", " << format_number(report.certificate.t_upper, 12) << "], "
-              << report.solver.status << ", " << report.solver.cells_solved << " cells solved, "
-              << "confirmed on " << report.solver.backend << " (" << report.solver.sdp_status
-              << ")\n"
-              << "paper's single LMI     pbar " << format_number(report.paper_lmi.pbar, 6) << " at "
-              << format_vector(report.paper_lmi.viewpoint)
-              << "  (one sign cell only; >= the global value)\n"
-              << "cross-check            " << report.crosscheck.method << " t "
-              << format_number(report.crosscheck.t, 9)
-              << (report.crosscheck.agrees ? "  agrees" : "  DISAGREES") << "\n\n"
-              << "worst-case error per vector at a (deg, Eq. 30):\n";
-    for (long k = 0; k < m; ++k) {
-      std::cout << "  " << vector_label(data, static_cast<int>(k)) << "  "
-                << format_number(report.worst_case_errors_deg(k), 6) << "\n";
-    }
-    std::cout << "\nswap sensitivity (Prop. 2), worst pairs:\n";
-    for (const SwapError& s : report.swaps) {
-      std::cout << "  " << vector_label(data, s.i) << " <-> " << vector_label(data, s.j) << "  "
-                << format_number(s.error_deg, 6) << " deg"
-                << (s.ambiguous ? "  (ambiguous: the swapped optimum is not unique)" : "") << "\n";
-    }
+    print_report(args, layout, data, report, ceiling);
   }
-  if (!trusted) {
+  if (!report.trusted() || report.degenerate) {
     std::cerr << "vantage: warning: "
               << (report.message.empty() ? "result not certified" : report.message) << std::endl;
     return kExitFailure;
@@ -156,6 +268,10 @@ Command add_analyze_command(CLI::App& root) {
       ->check(CLI::IsMember({"geometric", "arithmetic"}))
       ->capture_default_str();
   sub->add_flag("!--no-crosscheck", args->crosscheck, "skip the NLopt cross-check");
+  sub->add_flag("--verbose", args->verbose,
+                "list the worst-case error of every data vector (default: the worst 5)");
+  add_allow_large_flag(sub, args->allow_large);
+  sub->add_flag("--quiet", args->quiet, "no progress line on stderr (shown only on a terminal)");
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
   return {sub, [args] { return run_analyze(*args); }};
 }

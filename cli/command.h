@@ -42,7 +42,8 @@ Command add_experiment_command(CLI::App& root);
 OrientationMethod parse_orientation_method(const std::string& name);
 
 /// Throws InvalidArgument "<source>: <message>", with the library's argument names replaced by
-/// the file's field names (model_object -> model), so that every error names the file.
+/// the file's field names (model_object and z_object -> model, q_camera and v_camera ->
+/// measured, d_image -> image), so that every error names the file.
 [[noreturn]] void rethrow_against(const std::string& source, const std::exception& error);
 
 /// Runs a library call on data read from `source`; its InvalidArgument (too few points,
@@ -60,7 +61,11 @@ auto against_source(const std::string& source, Call&& call) {
 Json json_rows(const Eigen::MatrixXd& m);
 Json json_list(const Eigen::VectorXd& v);
 
-/// Prints one JSON object on stdout (two-space indented).
+/// True when `text` is well-formed UTF-8 (file names need not be).
+bool is_valid_utf8(const std::string& text);
+
+/// Prints one JSON object on stdout (two-space indented; invalid UTF-8 in strings, e.g. a file
+/// name, is replaced by U+FFFD instead of failing).
 void print_json(const Json& object);
 
 /// Fixed-width text for the readable reports: "[ x y z ]" and a number with `digits`

@@ -2,17 +2,22 @@
 // [--write OUT.json] [--overwrite] [--json]`: the inductive augmenter of McInroy et al.
 // (Sec. III.E, text around Fig. 3) done on the global worst viewpoint (DESIGN.md notes 3-4).
 
+#include <sys/stat.h>
+
 #include <cmath>
-#include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "command.h"
 #include "layout_input.h"
+#include "limits.h"
+#include "progress.h"
 #include "vantage/analysis/common.h"
 #include "vantage/design/augment.h"
 #include "vantage/io/layout_file.h"
+#include "vantage/io/text_file.h"
 
 namespace vantage::cli {
 
@@ -21,6 +26,11 @@ namespace {
 // A point-mode candidate closer than this (times the search box's largest side) to a marker or
 // to another candidate would give a zero free vector: the augmenter's own separation threshold.
 constexpr double kCandidateSeparation = 1e-9;
+// Largest --margin: the search box is then 201 times the layout's extent, and the augmenter's
+// separation threshold (kCandidateSeparation times the box) still 2e-7 of the layout. Larger
+// margins would make that threshold swallow the layout itself (--margin 1e8: 0.2 of it, and
+// every candidate "coincides" with a marker): out of range, not a coincidence.
+constexpr double kMaxMargin = 100.0;
 
 struct DesignArgs {
   std::string file;
@@ -30,8 +40,11 @@ struct DesignArgs {
   double margin = design::AugmentOptions{}.margin;
   bool direct = true;
   std::string write;
+  bool write_given = false;  // --write appeared, possibly with an empty name
   bool overwrite = false;
   bool json = false;
+  bool quiet = false;
+  bool allow_large = false;
 };
 
 [[noreturn]] void bad(const std::string& message) { throw InvalidArgument(message); }
@@ -63,24 +76,24 @@ void check_point_candidates(const std::string& source, const Layout& layout, dou
 // Every check that can fail before the (possibly long) search, so that a bad call costs
 // nothing and writes nothing.
 void check_write_target(const DesignArgs& args) {
-  if (args.write.empty()) return;
-  namespace fs = std::filesystem;
-  const fs::path out(args.write);
-  std::error_code ec;
-  if (fs::exists(out, ec) && fs::equivalent(out, fs::path(args.file), ec) && !args.overwrite) {
-    bad("--write: " + args.write +
-        " is the input layout; refusing to overwrite it without "
+  if (!args.write_given) return;
+  if (args.write.empty()) bad("--write: empty file name");
+  if (!is_valid_utf8(args.write)) {
+    bad("--write: the file name is not valid UTF-8 (the report could not name it)");
+  }
+  struct stat out = {};
+  struct stat in = {};
+  if (!args.overwrite && ::stat(args.write.c_str(), &out) == 0 &&
+      ::stat(args.file.c_str(), &in) == 0 && out.st_dev == in.st_dev && out.st_ino == in.st_ino) {
+    bad("--write: " + args.write + " is the input layout; refusing to overwrite it without " +
         "--overwrite");
   }
-  if (fs::exists(out, ec)) {
-    if (fs::is_directory(out, ec)) bad("--write: " + args.write + " is a directory");
-    if (!args.overwrite) {
-      bad("--write: " + args.write + " exists already; refusing to overwrite it (--overwrite)");
-    }
-  }
-  const fs::path parent = out.parent_path();
-  if (!parent.empty() && !fs::is_directory(parent, ec)) {
-    bad("--write: directory " + parent.string() + " does not exist");
+  try {
+    io::check_write_target(args.write, args.overwrite);
+  } catch (const InvalidArgument& e) {
+    bad(std::string("--write: ") + e.what() +
+        (std::string(e.what()).find("exists already") != std::string::npos ? " (--overwrite)"
+                                                                           : ""));
   }
 }
 
@@ -271,10 +284,19 @@ void print_report(const DesignArgs& args, const Layout& layout, const design::Au
 
 int run_design(const DesignArgs& args) {
   if (args.add < 1) bad("--add: must be >= 1, got " + std::to_string(args.add));
-  if (!(args.margin >= 0.0) || !std::isfinite(args.margin)) {
-    bad("--margin: must be finite and >= 0, got " + format_number(args.margin));
+  check_limit("--add", args.add, kMaxDesignAdd, "design", args.allow_large);
+  if (!(args.margin >= 0.0 && args.margin <= kMaxMargin)) {
+    bad("--margin: must be in [0, " + format_number(kMaxMargin) + "], got " +
+        format_number(args.margin));
   }
-  const Layout layout = args.input.read(args.file);
+  check_write_target(args);
+  const Layout layout = args.input.read(args.file, args.allow_large);
+  const long final_count =
+      layout.mode == LayoutMode::kPoints
+          ? static_cast<long>(free_vector_count(layout.entries.cols() + args.add))
+          : static_cast<long>(layout.entries.cols()) + args.add;
+  check_limit(args.file + ": data vectors after --add " + std::to_string(args.add), final_count,
+              kMaxDesignVectors, "design", args.allow_large);
   const Eigen::Index n_candidates = layout.candidates.cols();
   if (args.candidates_only && n_candidates == 0) {
     bad("--candidates-only: " + args.file + " has no \"candidates\"");
@@ -284,26 +306,31 @@ int run_design(const DesignArgs& args) {
         " candidates of " + args.file + " (--candidates-only uses each at most once)");
   }
   check_point_candidates(args.file, layout, args.margin);
-  check_write_target(args);
+  std::optional<io::WriteLock> lock;
+  if (args.write_given) lock.emplace(args.write);
 
   design::AugmentOptions options;
   options.add = args.add;
   options.candidates_only = args.candidates_only;
   options.margin = args.margin;
   options.run_direct = args.direct;
-  const design::AugmentResult r =
-      against_source(args.file, [&] { return design::augment_layout(layout, options); });
+  design::AugmentResult r;
+  {
+    Progress progress("design", !args.json && !args.quiet);  // cleared before the report
+    options.progress = progress.callback();
+    r = against_source(args.file, [&] { return design::augment_layout(layout, options); });
+  }
 
   const bool ok = r.status == design::AugmentResult::Status::kOk;
-  if (ok && !args.write.empty()) io::write_layout(args.write, layout_to_write(r), args.overwrite);
+  if (ok && args.write_given) io::write_layout(args.write, layout_to_write(r), args.overwrite);
 
   if (args.json) {
     Json out = design_json(args, layout, r);
-    if (ok && !args.write.empty()) out["written"] = args.write;
+    if (ok && args.write_given) out["written"] = args.write;
     print_json(out);
   } else {
     print_report(args, layout, r);
-    if (ok && !args.write.empty()) std::cout << "written: " << args.write << "\n";
+    if (ok && args.write_given) std::cout << "written: " << args.write << "\n";
   }
   if (!ok) {
     std::cerr << "vantage: design: " << design::to_string(r.status) << ": " << r.message;
@@ -312,7 +339,7 @@ int run_design(const DesignArgs& args) {
     if (parts == "direct") {
       std::cerr << "; the greedy steps are certified (--no-direct skips the comparison)";
     }
-    std::cerr << (args.write.empty() ? "" : "; nothing written") << std::endl;
+    std::cerr << (args.write_given ? "; nothing written" : "") << std::endl;
     return kExitFailure;
   }
   return kExitOk;
@@ -349,8 +376,13 @@ Command add_design_command(CLI::App& root) {
   sub->add_flag("--overwrite", args->overwrite,
                 "let --write replace an existing file (even the input layout)")
       ->needs(write);
+  add_allow_large_flag(sub, args->allow_large);
+  sub->add_flag("--quiet", args->quiet, "no progress line on stderr (shown only on a terminal)");
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
-  return {sub, [args] { return run_design(*args); }};
+  return {sub, [args, write] {
+            args->write_given = write->count() > 0;
+            return run_design(*args);
+          }};
 }
 
 }  // namespace vantage::cli

@@ -1,6 +1,8 @@
 #include "layout_input.h"
 
+#include "limits.h"
 #include "vantage/io/layout_formats.h"
+#include "vantage/io/text_file.h"
 
 namespace vantage::cli {
 
@@ -19,12 +21,18 @@ void LayoutInput::add_options(CLI::App* sub) {
                   "several)");
 }
 
-Layout LayoutInput::read(const std::string& path) const {
+Layout LayoutInput::read(const std::string& path, bool allow_large) const {
   io::LayoutReadOptions options;
+  options.max_bytes = allow_large ? kMaxFileBytesAllowLarge : kMaxFileBytes;
   options.format = io::layout_format_from_string(format, "--format");
   options.apriltag.tag_points = io::tag_points_from_string(tag_points, "--tag-points");
   options.apriltag.bundle = bundle;
-  return io::load_layout(path, options);
+  try {
+    return io::load_layout(path, options);
+  } catch (const io::FileTooLarge& e) {
+    throw io::FileTooLarge(std::string(e.what()) +
+                           (allow_large ? "" : " (--allow-large raises it to 1 GiB)"));
+  }
 }
 
 }  // namespace vantage::cli

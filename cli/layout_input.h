@@ -20,9 +20,10 @@ struct LayoutInput {
   /// Adds --format, --tag-points and --bundle to `sub`.
   void add_options(CLI::App* sub);
 
-  /// Reads the layout at `path` in the chosen (or detected) format; InvalidArgument names the
-  /// file, field and index (or the option) on bad input.
-  Layout read(const std::string& path) const;
+  /// Reads the layout at `path` in the chosen (or detected) format, at most kMaxFileBytes (with
+  /// allow_large kMaxFileBytesAllowLarge, limits.h); InvalidArgument names the file, field and
+  /// index (or the option) on bad input, io::FileTooLarge names --allow-large.
+  Layout read(const std::string& path, bool allow_large = false) const;
 };
 
 }  // namespace vantage::cli

@@ -7,6 +7,7 @@
 
 #include "command.h"
 #include "vantage/analysis/common.h"
+#include "vantage/io/text_file.h"
 
 namespace {
 
@@ -15,6 +16,25 @@ void print_error(const std::string& kind, std::string message) {
   for (char& c : message)
     if (c == '\n' || c == '\r') c = ' ';
   std::cerr << "vantage: " << kind << ": " << message << std::endl;
+}
+
+/// The first word when it is neither an option nor a subcommand ("vantage frob"), else empty.
+std::string unknown_subcommand(CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return "";
+  const std::string word = argv[1];
+  for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+    if (sub->check_name(word)) return "";
+  }
+  return word;
+}
+
+/// "analyze, orient, ..." in registration order.
+std::string subcommand_names(CLI::App& app) {
+  std::string names;
+  for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  }
+  return names;
 }
 
 }  // namespace
@@ -34,6 +54,12 @@ int main(int argc, char** argv) {
       add_simulate_command(app), add_experiment_command(app),
   };
 
+  const std::string unknown = unknown_subcommand(app, argc, argv);
+  if (!unknown.empty()) {
+    print_error("error", "unknown subcommand \"" + unknown + "\"; the subcommands are " +
+                             subcommand_names(app) + " (see vantage --help)");
+    return kExitBadInput;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -49,6 +75,9 @@ int main(int argc, char** argv) {
   } catch (const vantage::InvalidArgument& e) {
     print_error("error", e.what());
     return kExitBadInput;
+  } catch (const vantage::io::WriteError& e) {
+    print_error("error", e.what());
+    return kExitFailure;
   } catch (const std::exception& e) {
     print_error("internal error", e.what());
     return kExitFailure;

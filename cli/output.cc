@@ -1,17 +1,27 @@
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
+#include <utility>
 
 #include "command.h"
 
 namespace vantage::cli {
 
 void rethrow_against(const std::string& source, const std::exception& error) {
+  // The library's argument names and the file fields they come from (longest first, so that
+  // "model_object" is not half-replaced by "object").
+  static const std::pair<const char*, const char*> kFileFields[] = {
+      {"model_object", "model"}, {"z_object", "model"}, {"q_camera", "measured"},
+      {"v_camera", "measured"},  {"d_image", "image"},
+  };
   std::string message = error.what();
-  const std::string library_name = "model_object";
-  for (auto at = message.find(library_name); at != std::string::npos;
-       at = message.find(library_name, at)) {
-    message.replace(at, library_name.size(), "model");
+  for (const auto& [library_name, field] : kFileFields) {
+    const std::string name = library_name;
+    for (auto at = message.find(name); at != std::string::npos;
+         at = message.find(name, at + std::string(field).size())) {
+      message.replace(at, name.size(), field);
+    }
   }
   throw InvalidArgument(source + ": " + message);
 }
@@ -32,20 +42,34 @@ Json json_list(const Eigen::VectorXd& v) {
   return list;
 }
 
-void print_json(const Json& object) { std::cout << object.dump(2) << std::endl; }
+bool is_valid_utf8(const std::string& text) {
+  try {
+    static_cast<void>(Json(text).dump());
+  } catch (const Json::type_error&) {
+    return false;
+  }
+  return true;
+}
+
+void print_json(const Json& object) {
+  // File names need not be UTF-8: replace invalid bytes (U+FFFD) rather than fail after the work.
+  std::cout << object.dump(2, ' ', false, Json::error_handler_t::replace) << std::endl;
+}
 
 std::string format_number(double x, int digits) {
   std::ostringstream out;
   out.precision(digits);
-  out << x;
+  out << (x == 0.0 ? 0.0 : x);  // never "-0"
   return out.str();
 }
 
 std::string format_vector(const Eigen::VectorXd& v, int digits) {
   std::string out = "[";
   for (Eigen::Index i = 0; i < v.size(); ++i) {
+    // A value that rounds to zero prints as 0.000000, never -0.000000.
+    const double x = std::abs(v(i)) < 0.5 * std::pow(10.0, -digits) ? 0.0 : v(i);
     char buffer[64];
-    std::snprintf(buffer, sizeof(buffer), " %*.*f", digits + 4, digits, v(i));
+    std::snprintf(buffer, sizeof(buffer), " %*.*f", digits + 4, digits, x);
     out += buffer;
   }
   return out + " ]";

@@ -7,6 +7,7 @@
 
 #include "command.h"
 #include "layout_input.h"
+#include "limits.h"
 #include "vantage/design/weights.h"
 #include "vantage/io/layout_file.h"
 
@@ -18,6 +19,7 @@ struct WeightsArgs {
   std::string file;
   LayoutInput input;
   bool json = false;
+  bool allow_large = false;
 };
 
 Json suggestion_json(const design::WeightsSuggestion& s) {
@@ -38,7 +40,9 @@ Json suggestion_json(const design::WeightsSuggestion& s) {
 }
 
 int run_weights(const WeightsArgs& args) {
-  const Layout layout = args.input.read(args.file);
+  const Layout layout = args.input.read(args.file, args.allow_large);
+  check_limit(args.file + ": " + layout.entries_field(), layout.entries.cols(), kMaxWeightsEntries,
+              "weights", args.allow_large);
   const design::Weights w =
       against_source(args.file, [&] { return design::layout_weights(layout); });
   const bool solved = w.status != design::Weights::Status::kSolverFailed;
@@ -109,6 +113,7 @@ Command add_weights_command(CLI::App& root) {
                   "layout JSON file (points: marker positions; vectors: the z_i themselves)")
       ->required();
   args->input.add_options(sub);
+  add_allow_large_flag(sub, args->allow_large);
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
   return {sub, [args] { return run_weights(*args); }};
 }

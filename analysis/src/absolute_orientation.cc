@@ -8,6 +8,7 @@
 
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/internal/checks.h"
+#include "vantage/analysis/scaling.h"
 
 namespace vantage {
 
@@ -265,6 +266,15 @@ OrientationStatus classify(const RotationSolve& solve, const Eigen::Matrix3d& H,
   return OrientationStatus::kOk;
 }
 
+// Data whose largest magnitude is beyond 2^+-kSafeExponent are rescaled (by powers of two, so
+// exactly) before the moments are formed: their sums of squares would over- or underflow (a
+// point at 1e308, or data in units of 1e-200) and fake coincident points.
+constexpr int kSafeExponent = 256;
+
+bool needs_rescaling(int ez, int ev) {
+  return std::abs(ez) > kSafeExponent || std::abs(ev) > kSafeExponent;
+}
+
 }  // namespace
 
 Eigen::Matrix4d orientation_matrix_d(const Eigen::Matrix3Xd& z_object,
@@ -284,6 +294,17 @@ OrientationResult absolute_orientation(const Eigen::Matrix3Xd& z_object,
                                        const Eigen::VectorXd& weights,
                                        const OrientationOptions& options) {
   validate_shapes(z_object, v_camera, weights, options);
+  const int ez = binary_exponent(z_object), ev = binary_exponent(v_camera);
+  if (needs_rescaling(ez, ev)) {
+    // alpha' v' = R z' with z' = z 2^-ez, v' = v 2^-ev.
+    OrientationResult r =
+        absolute_orientation(scaled_by_power_of_two(z_object, ez),
+                             scaled_by_power_of_two(v_camera, ev), weights, options);
+    r.alpha = std::ldexp(r.alpha, ez - ev);
+    r.residual = std::ldexp(r.residual, 2 * ez);
+    r.eigen_gap = std::ldexp(r.eigen_gap, ez + ev);
+    return r;
+  }
   const Moments m = moments(z_object, v_camera, weights);
   if (!(m.vv > 0.0)) internal::fail("measured", "every measured vector is zero");
 
@@ -304,6 +325,18 @@ OrientationResult absolute_orientation(const Eigen::Matrix3Xd& z_object,
 PoseResult absolute_pose(const Eigen::Matrix3Xd& z_object, const Eigen::Matrix3Xd& q_camera,
                          const Eigen::VectorXd& weights, const OrientationOptions& options) {
   validate_shapes(z_object, q_camera, weights, options);
+  const int ez = binary_exponent(z_object), eq = binary_exponent(q_camera);
+  if (needs_rescaling(ez, eq)) {
+    // alpha' q' = R z' + p' with z' = z 2^-ez, q' = q 2^-eq.
+    PoseResult r = absolute_pose(scaled_by_power_of_two(z_object, ez),
+                                 scaled_by_power_of_two(q_camera, eq), weights, options);
+    r.alpha = std::ldexp(r.alpha, ez - eq);
+    r.p_camera_object *= std::ldexp(1.0, ez / 2);
+    r.p_camera_object *= std::ldexp(1.0, ez - ez / 2);
+    r.residual = std::ldexp(r.residual, 2 * ez);
+    r.eigen_gap = std::ldexp(r.eigen_gap, ez + eq);
+    return r;
+  }
   const Moments m = moments(z_object, q_camera, weights);
   const Moments c = centred(m);
   if (!(c.vv > 0.0))

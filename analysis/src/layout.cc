@@ -1,8 +1,10 @@
 #include "vantage/analysis/layout.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "vantage/analysis/common.h"
 
@@ -42,6 +44,43 @@ void check_point(const Eigen::Vector3d& p, const std::string& field, Eigen::Inde
   }
 }
 
+// Points closer than kCoincidenceRelative times the largest coordinate magnitude (or than
+// Layout::kMinLength) coincide: their free vector is at the rounding level of the coordinates
+// (2^-52 relative), so its direction is noise. Relative, so that scaling a layout by 1e-100 or
+// 1e100 changes nothing.
+constexpr double kCoincidenceRelative = 1e-12;
+
+// Sweeps the points in order of their coordinate of largest spread, comparing each with the
+// following ones within the threshold along that axis: O(n log n) for spread-out layouts instead
+// of all n^2 / 2 pairs. Reports the coinciding pair (i < j) with the smallest j, then i.
+void check_coincidence(const Eigen::Matrix3Xd& points, const std::string& field) {
+  const Eigen::Index n = points.cols();
+  const double scale = points.cwiseAbs().maxCoeff();
+  const double threshold = std::max(kCoincidenceRelative * scale, Layout::kMinLength);
+  Eigen::Index axis = 0;
+  (points.rowwise().maxCoeff() - points.rowwise().minCoeff()).maxCoeff(&axis);
+  std::vector<Eigen::Index> order(static_cast<std::size_t>(n));
+  for (Eigen::Index i = 0; i < n; ++i) order[static_cast<std::size_t>(i)] = i;
+  std::sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) {
+    return points(axis, a) < points(axis, b) || (points(axis, a) == points(axis, b) && a < b);
+  });
+  Eigen::Index best_i = -1, best_j = -1;
+  for (std::size_t a = 0; a < order.size(); ++a) {
+    for (std::size_t b = a + 1; b < order.size(); ++b) {
+      const Eigen::Index p = order[a], q = order[b];
+      if (points(axis, q) - points(axis, p) > threshold) break;
+      if (!((points.col(q) - points.col(p)).stableNorm() < threshold)) continue;
+      const Eigen::Index i = std::min(p, q), j = std::max(p, q);
+      if (best_j < 0 || j < best_j || (j == best_j && i < best_i)) {
+        best_i = i;
+        best_j = j;
+      }
+    }
+  }
+  if (best_j >= 0)
+    fail(field, best_j, "coincides with " + field + "[" + std::to_string(best_i) + "]");
+}
+
 }  // namespace
 
 void Layout::validate() const {
@@ -61,15 +100,7 @@ void Layout::validate() const {
       check_direction(entries.col(i), field, i);
     }
   }
-  if (points) {
-    for (Eigen::Index j = 1; j < n; ++j) {
-      for (Eigen::Index i = 0; i < j; ++i) {
-        if ((entries.col(j) - entries.col(i)).stableNorm() < kMinLength) {
-          fail(field, j, "coincides with " + field + "[" + std::to_string(i) + "]");
-        }
-      }
-    }
-  }
+  if (points) check_coincidence(entries, field);
   if (weights.size() != n) {
     throw InvalidArgument("weights: expected " + std::to_string(n) + " entries (one per " +
                           (mode == LayoutMode::kPoints ? "point" : "vector") + "), got " +
@@ -89,6 +120,11 @@ void Layout::validate() const {
   }
 }
 
+Eigen::Index free_vector_count(Eigen::Index points) {
+  if (points < 2) return 0;
+  return points % 2 == 0 ? points / 2 * (points - 1) : points * ((points - 1) / 2);
+}
+
 DataVectors data_vectors(const Layout& layout, PairWeighting weighting) {
   layout.validate();
   DataVectors out;
@@ -96,6 +132,12 @@ DataVectors data_vectors(const Layout& layout, PairWeighting weighting) {
     out.vectors = layout.entries;
     out.weights = layout.weights;
     return out;
+  }
+  const Eigen::Index n = layout.entries.cols();
+  const Eigen::Index m = free_vector_count(n);
+  if (m > Layout::kMaxFreeVectors) {
+    throw InvalidArgument("points: " + std::to_string(n) + " points give " + std::to_string(m) +
+                          " free vectors, more than " + std::to_string(Layout::kMaxFreeVectors));
   }
   const Eigen::Matrix2Xi pairs = free_vector_pairs(layout.entries, FreeVectorSet::kAllPairs);
   FreeVectorsOf<3> free =

@@ -69,6 +69,9 @@ AugmentResult augment_layout(const Layout& layout, const AugmentOptions& options
   bool certified = result.initial.certified;
   WorstCase current = result.initial;
   for (int s = 0; s < options.add; ++s) {
+    if (options.progress) {
+      options.progress("step " + std::to_string(s + 1) + "/" + std::to_string(options.add));
+    }
     bool out_of_candidates = false;
     AugmentStep st = designer.step(current, &out_of_candidates);
     if (out_of_candidates) {
@@ -93,6 +96,7 @@ AugmentResult augment_layout(const Layout& layout, const AugmentOptions& options
   }
   if (options.run_direct && options.add > 0 &&
       result.status != AugmentResult::Status::kNoCandidates) {
+    if (options.progress) options.progress("direct optimiser");
     result.direct = options.candidates_only
                         ? internal::exhaustive_candidates(layout, options, &designer)
                         : internal::multistart_search(layout, options, result, &designer);

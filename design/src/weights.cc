@@ -1,93 +1,34 @@
 #include "vantage/design/weights.h"
 
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
+#include "max_min_lp.h"
 #include "vantage/analysis/common.h"
 
 namespace vantage::design {
 
 namespace {
 
-// Singular values of [Z / scale; 1^T] below this fraction of the largest count as zero.
-constexpr double kRankTolerance = 1e-10;
-// Z w = 0, 1^T w = n is inconsistent when its least-squares residual exceeds this (times n).
-constexpr double kConsistencyTolerance = 1e-9;
-// In a boundary solution, weights below this multiple of zero_tolerance are the forced zeros
-// (the interior-point optimum lies in the relative interior of the optimal face, so the free
-// weights stay well away from 0).
+// In a boundary solution, a z_i whose dual slack exceeds this multiple of zero_tolerance lies
+// strictly beyond the supporting plane through the origin: its weight is forced to 0. (CSDP
+// path: a weight below this multiple; the interior-point optimum lies in the relative interior
+// of the optimal face, so the free weights stay well away from 0.)
 constexpr double kForcedZeroFactor = 1e3;
+// Up to this many entries every symmetric partner is tried; beyond it only the partners of the
+// kPartnerCandidates entries with the largest dual slack (farthest beyond the plane that
+// separates the z_i from the origin), so that the search stays O(n).
+constexpr int kPartnerSearchAll = 64;
+constexpr int kPartnerCandidates = 32;
 
-struct MaxMin {
-  enum class Kind { kSolved, kAffineInfeasible, kSolverFailed } kind = Kind::kSolverFailed;
-  Eigen::VectorXd w;  // sum n
-  double s = 0.0;     // min_i w_i
-  sdp::SdpStatus sdp_status = sdp::SdpStatus::kOptimal;
-  int lp_solves = 0;
-};
+using internal::MaxMinSolution;
 
-// max s s.t. Z w = 0, 1^T w = n, w_i >= s (s free).
-MaxMin solve_max_min(const Eigen::Matrix3Xd& z, const sdp::SdpOptions& sdp_options) {
-  MaxMin out;
-  const int n = static_cast<int>(z.cols());
-  const double scale = z.cwiseAbs().maxCoeff();
-  if (!(scale > 0.0)) {
-    out.kind = MaxMin::Kind::kSolved;
-    out.w = Eigen::VectorXd::Ones(n);
-    out.s = 1.0;
-    return out;
+MaxMinSolution solve_max_min(const Eigen::Matrix3Xd& z, const WeightsOptions& options) {
+  if (options.solver == WeightsOptions::Solver::kCsdp) {
+    return internal::solve_max_min_csdp(z, options.sdp);
   }
-  Eigen::MatrixXd a(4, n);
-  a.topRows<3>() = z / scale;
-  a.row(3).setOnes();
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(4);
-  b(3) = n;
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  const Eigen::VectorXd& sigma = svd.singularValues();
-  int rank = 0;
-  for (int k = 0; k < sigma.size(); ++k) {
-    if (sigma(k) > kRankTolerance * sigma(0)) ++rank;
-  }
-  Eigen::VectorXd w0 = Eigen::VectorXd::Zero(n);
-  for (int k = 0; k < rank; ++k) {
-    w0 += svd.matrixV().col(k) * (svd.matrixU().col(k).dot(b) / sigma(k));
-  }
-  if ((a * w0 - b).norm() > kConsistencyTolerance * n) {
-    out.kind = MaxMin::Kind::kAffineInfeasible;
-    return out;
-  }
-  const int d = n - rank;
-  if (d == 0) {
-    out.kind = MaxMin::Kind::kSolved;
-    out.w = w0;
-    out.s = w0.minCoeff();
-    return out;
-  }
-  const Eigen::MatrixXd basis = svd.matrixV().rightCols(d);
-  // y = [u; s]; block: w0_i + sum_j B_ij u_j - s >= 0; minimise -s.
-  sdp::LmiProblem lp(d + 1);
-  const int block = lp.add_diagonal_block(n);
-  lp.set_objective(d, -1.0);
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < d; ++j) {
-      if (basis(i, j) != 0.0) lp.add_variable_entry(j, block, i, i, basis(i, j));
-    }
-    lp.add_variable_entry(d, block, i, i, -1.0);
-    if (w0(i) != 0.0) lp.add_constant_entry(block, i, i, -w0(i));
-  }
-  const sdp::SdpResult r = sdp::solve_lmi(lp, sdp_options);
-  out.lp_solves = 1;
-  out.sdp_status = r.status;
-  if (!sdp::has_solution(r.status)) {
-    out.kind = MaxMin::Kind::kSolverFailed;
-    return out;
-  }
-  out.kind = MaxMin::Kind::kSolved;
-  out.w = w0 + basis * r.y.head(d);
-  out.s = out.w.minCoeff();
-  return out;
+  return internal::solve_max_min_dual(z);
 }
 
 std::string format_vector(const Eigen::Vector3d& v) {
@@ -101,6 +42,7 @@ struct Classified {
   Weights::Status status = Weights::Status::kSolverFailed;
   Eigen::VectorXd weights;
   double s = 0.0;
+  Eigen::VectorXd slack;  // dual slacks (active-set solver), empty otherwise
   std::vector<int> zero_forced;
   sdp::SdpStatus sdp_status = sdp::SdpStatus::kOptimal;
   int lp_solves = 0;
@@ -110,11 +52,12 @@ struct Classified {
 // weights are max-min and the forced ones exactly 0.
 Classified classify(const Eigen::Matrix3Xd& z, const WeightsOptions& options) {
   Classified out;
-  const MaxMin m = solve_max_min(z, options.sdp);
+  const MaxMinSolution m = solve_max_min(z, options);
   out.lp_solves = m.lp_solves;
   out.sdp_status = m.sdp_status;
-  if (m.kind == MaxMin::Kind::kSolverFailed) return out;
-  if (m.kind == MaxMin::Kind::kAffineInfeasible) {
+  out.slack = m.slack;
+  if (m.kind == MaxMinSolution::Kind::kSolverFailed) return out;
+  if (m.kind == MaxMinSolution::Kind::kAffineInfeasible) {
     out.status = Weights::Status::kInfeasible;
     out.s = -1.0;
     return out;
@@ -132,8 +75,9 @@ Classified classify(const Eigen::Matrix3Xd& z, const WeightsOptions& options) {
   out.status = Weights::Status::kBoundary;
   const int n = static_cast<int>(z.cols());
   std::vector<int> support;
+  const double forced = kForcedZeroFactor * options.zero_tolerance;
   for (int i = 0; i < n; ++i) {
-    if (m.w(i) <= kForcedZeroFactor * options.zero_tolerance) {
+    if (m.slack.size() > 0 ? m.slack(i) > forced : m.w(i) <= forced) {
       out.zero_forced.push_back(i);
     } else {
       support.push_back(i);
@@ -156,6 +100,20 @@ Classified classify(const Eigen::Matrix3Xd& z, const WeightsOptions& options) {
   for (int i : inner.zero_forced) out.zero_forced.push_back(support[i]);
   std::sort(out.zero_forced.begin(), out.zero_forced.end());
   return out;
+}
+
+// The entries whose symmetric partners are tried: all of them for small layouts (or without
+// slacks), else those with the largest dual slack, in index order.
+std::vector<int> partner_candidates(const Eigen::VectorXd& slack, int n) {
+  std::vector<int> order(n);
+  for (int i = 0; i < n; ++i) order[i] = i;
+  if (n <= kPartnerSearchAll || slack.size() != n) return order;
+  std::partial_sort(
+      order.begin(), order.begin() + kPartnerCandidates, order.end(),
+      [&](int a, int b) { return slack(a) > slack(b) || (slack(a) == slack(b) && a < b); });
+  order.resize(kPartnerCandidates);
+  std::sort(order.begin(), order.end());
+  return order;
 }
 
 }  // namespace
@@ -264,7 +222,7 @@ Weights nullspace_weights(const Eigen::Matrix3Xd& z, const WeightsOptions& optio
 
   WeightsSuggestion best_partner;
   bool have_partner = false;
-  for (int i = 0; i < n; ++i) {
+  for (int i : partner_candidates(c.slack, n)) {
     if (!(z.col(i).norm() > 0.0)) continue;
     WeightsSuggestion partner;
     partner.kind = WeightsSuggestion::Kind::kSymmetricPartner;

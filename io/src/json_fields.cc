@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
+#include <vector>
 
 #include "vantage/analysis/common.h"
 
@@ -11,18 +13,124 @@ void fail(const std::string& source, const std::string& what) {
   throw InvalidArgument(source + ": " + what);
 }
 
-nlohmann::json parse_object(std::string_view text, const std::string& source) {
-  nlohmann::json root;
-  try {
-    root = nlohmann::json::parse(text.begin(), text.end());
-  } catch (const nlohmann::json::exception& e) {
-    // Syntax errors and numbers beyond double range (1e999) both land here. e.what() is
-    // "[json.exception.parse_error.101] parse error at ...": keep the readable part.
-    std::string what = e.what();
+namespace {
+
+// nlohmann's exception id for a number beyond double range (1e999).
+constexpr int kNumberOverflow = 406;
+
+// nlohmann's "last read" may start before the value ("1,N"): the value's own characters.
+std::string value_text(const std::string& last_read) {
+  const auto start = last_read.find_last_of(",[{: \t\r\n");
+  return start == std::string::npos ? last_read : last_read.substr(start + 1);
+}
+
+// The lexer stops at the first character that cannot continue a literal: "N" for NaN, "I" or
+// "-I" for Infinity, "na" for nan, "i" for inf.
+bool spells_non_finite(const std::string& token) {
+  const std::string t = !token.empty() && token[0] == '-' ? token.substr(1) : token;
+  return !t.empty() && (t[0] == 'N' || t[0] == 'I' || t[0] == 'i' || t.rfind("na", 0) == 0);
+}
+
+// Builds the DOM like nlohmann's own parser while tracking where it is ("vectors[1][2]"), so
+// that duplicate keys and numbers out of range are reported with the field and index.
+class TrackingSax {
+ public:
+  TrackingSax(nlohmann::json& root, const std::string& source) : dom_(root), source_(source) {}
+
+  bool null() { return value(dom_.null()); }
+  bool boolean(bool b) { return value(dom_.boolean(b)); }
+  bool number_integer(nlohmann::json::number_integer_t x) { return value(dom_.number_integer(x)); }
+  bool number_unsigned(nlohmann::json::number_unsigned_t x) {
+    return value(dom_.number_unsigned(x));
+  }
+  bool number_float(nlohmann::json::number_float_t x, const std::string& text) {
+    return value(dom_.number_float(x, text));
+  }
+  bool string(std::string& text) { return value(dom_.string(text)); }
+  bool binary(nlohmann::json::binary_t& bytes) { return value(dom_.binary(bytes)); }
+  bool start_object(std::size_t size) {
+    frames_.push_back({false, 0, {}, {}});
+    return dom_.start_object(size);
+  }
+  bool key(std::string& name) {
+    Frame& frame = frames_.back();
+    if (!frame.keys.insert(name).second) {
+      fail(source_, where(name) + ": duplicate key (each field may appear once)");
+    }
+    frame.key = name;
+    return dom_.key(name);
+  }
+  bool end_object() {
+    frames_.pop_back();
+    return value(dom_.end_object());
+  }
+  bool start_array(std::size_t size) {
+    frames_.push_back({true, 0, {}, {}});
+    return dom_.start_array(size);
+  }
+  bool end_array() {
+    frames_.pop_back();
+    return value(dom_.end_array());
+  }
+  bool parse_error(std::size_t, const std::string& last_read,
+                   const nlohmann::detail::exception& error) {
+    const std::string token = value_text(last_read);
+    const std::string at = where();
+    const std::string prefix = at.empty() ? "" : at + ": ";
+    if (error.id == kNumberOverflow) {
+      fail(source_, prefix + "number out of range (" + token + ")");
+    }
+    if (spells_non_finite(token)) {
+      fail(source_, prefix + "not a finite number (NaN and Infinity are not JSON numbers)");
+    }
+    // e.what() is "[json.exception.parse_error.101] parse error at ...": keep the readable part.
+    std::string what = error.what();
     const auto bracket = what.find("] ");
     if (bracket != std::string::npos) what = what.substr(bracket + 2);
-    fail(source, "not valid JSON: " + what);
+    fail(source_, "not valid JSON: " + prefix + what);
   }
+
+ private:
+  struct Frame {
+    bool array = false;
+    std::size_t index = 0;  // the element being read (arrays)
+    std::string key;        // the value being read (objects)
+    std::set<std::string> keys;
+  };
+
+  bool value(bool result) {
+    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+    return result;
+  }
+
+  // "vectors[1][2]" of the value being read (or of `pending_key` in the innermost object).
+  std::string where(const std::string& pending_key = {}) const {
+    std::string out;
+    for (std::size_t k = 0; k < frames_.size(); ++k) {
+      const Frame& f = frames_[k];
+      const bool last = k + 1 == frames_.size();
+      if (f.array) {
+        out += "[" + std::to_string(f.index) + "]";
+      } else {
+        const std::string& name = last && !pending_key.empty() ? pending_key : f.key;
+        if (name.empty()) continue;
+        out += (out.empty() ? "" : ".") + name;
+      }
+    }
+    return out;
+  }
+
+  nlohmann::detail::json_sax_dom_parser<nlohmann::json> dom_;
+  const std::string& source_;
+  std::vector<Frame> frames_;
+};
+
+}  // namespace
+
+nlohmann::json parse_object(std::string_view text, const std::string& source) {
+  nlohmann::json root;
+  TrackingSax sax(root, source);
+  nlohmann::json::sax_parse(text.begin(), text.end(), &sax);
   if (!root.is_object()) fail(source, "the top level must be a JSON object {...}");
   return root;
 }

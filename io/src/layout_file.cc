@@ -1,24 +1,11 @@
 #include "vantage/io/layout_file.h"
 
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-
 #include "json_fields.h"
 #include "vantage/analysis/common.h"
 
 namespace vantage::io {
 
 using internal::fail;
-
-std::string read_text_file(const std::string& path) {
-  if (std::filesystem::is_directory(path)) fail(path, "is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, "cannot open file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 Layout parse_layout(std::string_view text, const std::string& source) {
   const nlohmann::json root = internal::parse_object(text, source);
@@ -54,7 +41,9 @@ Layout parse_layout(std::string_view text, const std::string& source) {
   return layout;
 }
 
-Layout read_layout(const std::string& path) { return parse_layout(read_text_file(path), path); }
+Layout read_layout(const std::string& path, std::size_t max_bytes) {
+  return parse_layout(read_text_file(path, max_bytes), path);
+}
 
 std::string layout_to_json(const Layout& layout) {
   auto rows = [](const Eigen::Matrix3Xd& m) {
@@ -74,14 +63,7 @@ std::string layout_to_json(const Layout& layout) {
 
 void write_layout(const std::string& path, const Layout& layout, bool overwrite) {
   layout.validate();
-  if (!overwrite && std::filesystem::exists(path)) {
-    fail(path, "exists already; refusing to overwrite it");
-  }
-  const std::string text = layout_to_json(layout);
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) fail(path, "cannot open file for writing");
-  out << text;
-  if (!out.flush()) fail(path, "write failed");
+  write_text_file(path, layout_to_json(layout), overwrite);
 }
 
 }  // namespace vantage::io

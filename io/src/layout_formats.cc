@@ -61,7 +61,7 @@ Layout parse_layout_as(std::string_view text, const std::string& source,
 }
 
 Layout load_layout(const std::string& path, const LayoutReadOptions& options) {
-  return parse_layout_as(read_text_file(path), path, options);
+  return parse_layout_as(read_text_file(path, options.max_bytes), path, options);
 }
 
 }  // namespace vantage::io

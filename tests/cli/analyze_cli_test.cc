@@ -105,7 +105,7 @@ const BadLayoutCall kBadLayouts[] = {
     {"BothModes", R"({"vectors": [[1,0,0],[0,1,0]], "points": [[1,0,0],[0,1,0]]})", "not both"},
     {"NeitherMode", R"({"weights": [1, 2]})", "vectors/points: missing"},
     {"WrongArity", R"({"vectors": [[1,0,0],[0,1,0,4]]})", "vectors[1]: expected 3 numbers"},
-    {"HugeNumber", R"({"vectors": [[1,0,0],[0,1,-1e500]]})", "number overflow"},
+    {"HugeNumber", R"({"vectors": [[1,0,0],[0,1,-1e500]]})", "vectors[1][2]: number out of range"},
     {"ZeroLength", R"({"vectors": [[1,0,0],[0,1,0],[0,0,0]]})", "vectors[2]: zero-length"},
     {"Coincident", R"({"points": [[1,2,3],[0,0,0],[1,2,3]]})",
      "points[2]: coincides with points[0]"},

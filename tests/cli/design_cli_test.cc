@@ -235,7 +235,7 @@ const BadCall kBadCalls[] = {
     {"AddNegative", kTriadText, "in.json --add -2 --write out.json", "--add"},
     {"AddNotANumber", kTriadText, "in.json --add two --write out.json", "--add"},
     {"NegativeMargin", kTriadText, "in.json --add 1 --margin -0.5 --write out.json",
-     "--margin: must be finite and >= 0"},
+     "--margin: must be in [0, 100]"},
     {"CandidatesOnlyWithoutCandidates", kTriadText,
      "in.json --add 1 --candidates-only --write out.json", "in.json has no \"candidates\""},
     {"MoreThanTheCandidates", kPointsWithCandidates,

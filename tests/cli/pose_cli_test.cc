@@ -388,7 +388,7 @@ const BadCall kBadCalls[] = {
     {"FreeVectorsForOi", nullptr, "AFFINE --method oi-foam --free-vectors all", "--free-vectors"},
     {"MissingFile", nullptr, "in.json --method affine", "in.json: cannot open file"},
     {"NaNInFile", R"({"model": [[0,0,NaN]], "image": [[0,0]]})", "in.json --method affine",
-     "in.json: not valid JSON"},
+     "in.json: model[0][2]: not a finite number"},
     {"OverflowInFile", R"({"model": [[0,0,1e999]], "image": [[0,0]]})", "in.json --method affine",
      "in.json"},
     {"AffineWithoutImage", R"({"model": [[0,0,0],[1,0,0],[0,1,0]]})", "in.json --method affine",

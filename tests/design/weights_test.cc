@@ -221,6 +221,96 @@ TEST(NullspaceWeights, OriginOnHullBoundaryForcesZeros) {
   EXPECT_FALSE(w.suggestions.empty()) << "a boundary layout still gets the paper's fixes";
 }
 
+// The dual active-set solver and the CSDP primal are independent implementations of one LP: they
+// must agree on s* and on the classification, with valid weights from both.
+TEST(NullspaceWeights, ActiveSetAgreesWithCsdp) {
+  std::mt19937 rng(kSeed + 5);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  WeightsOptions csdp;
+  csdp.solver = WeightsOptions::Solver::kCsdp;
+  csdp.suggest = false;
+  WeightsOptions active;
+  active.suggest = false;
+  int compared = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const int n = 4 + trial % 40;
+    const double shift = 0.05 * (trial % 12);  // from balanced to far outside
+    Eigen::Matrix3Xd z(3, n);
+    for (int i = 0; i < n; ++i) {
+      z.col(i) = Eigen::Vector3d(gauss(rng), gauss(rng), gauss(rng)) + Eigen::Vector3d(shift, 0, 0);
+    }
+    const Weights a = nullspace_weights(z, active);
+    const Weights c = nullspace_weights(z, csdp);
+    ASSERT_NE(c.status, Weights::Status::kSolverFailed) << c.message;
+    EXPECT_EQ(a.status, c.status) << "trial " << trial;
+    EXPECT_NEAR(a.lp_optimum, c.lp_optimum, kLpTolerance) << "trial " << trial;
+    if (a.feasible) expect_valid_weights(z, a);
+    ++compared;
+  }
+  EXPECT_EQ(compared, 60);
+}
+
+TEST(NullspaceWeights, PlanarAndCollinearLayoutsOnBothSolvers) {
+  // z in the plane z = 0 (the dual is unbounded along e_z with a zero objective there), and on
+  // one line through the origin.
+  Eigen::Matrix3Xd planar(3, 5);
+  planar << 1, -1, 0, 0, 0.5,  //
+      0, 0, 1, -2, 0.5,        //
+      0, 0, 0, 0, 0;
+  Eigen::Matrix3Xd line(3, 3);
+  line << 1, -2, 3,  //
+      2, -4, 6,      //
+      0, 0, 0;
+  WeightsOptions csdp;
+  csdp.solver = WeightsOptions::Solver::kCsdp;
+  for (const Eigen::Matrix3Xd& z : {planar, line}) {
+    const Weights a = nullspace_weights(z);
+    const Weights c = nullspace_weights(z, csdp);
+    EXPECT_EQ(a.status, Weights::Status::kPositive);
+    EXPECT_NEAR(a.lp_optimum, c.lp_optimum, kLpTolerance);
+    expect_valid_weights(z, a);
+  }
+}
+
+TEST(NullspaceWeights, HundredThousandEntriesInLinearMemory) {
+  // The old CSDP path built an n x n null-space basis (80 GB here); the dual needs O(n).
+  constexpr int kEntries = 100000;
+  std::mt19937 rng(kSeed + 9);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  Eigen::Matrix3Xd z(3, kEntries);
+  for (int i = 0; i < kEntries; ++i) {
+    z.col(i) = Eigen::Vector3d(gauss(rng), gauss(rng), gauss(rng)) + Eigen::Vector3d(0.2, 0, 0);
+  }
+  const Weights w = nullspace_weights(z);
+  ASSERT_EQ(w.status, Weights::Status::kPositive) << w.message;
+  ASSERT_EQ(w.weights.size(), kEntries);
+  EXPECT_GE(w.weights.minCoeff(), 0.0);
+  EXPECT_NEAR(w.weights.sum(), kEntries, 1e-6);
+  // Eq. (11) relative to the size of the terms summed.
+  const double terms = (z.colwise().norm().transpose().array() * w.weights.array()).sum();
+  EXPECT_LE((z * w.weights).norm(), 1e-12 * terms);
+  // Optimality is checked independently where CSDP is quick: on the first 200 entries.
+  const Eigen::Matrix3Xd head = z.leftCols(200);
+  WeightsOptions csdp;
+  csdp.solver = WeightsOptions::Solver::kCsdp;
+  csdp.suggest = false;
+  EXPECT_NEAR(nullspace_weights(head).lp_optimum, nullspace_weights(head, csdp).lp_optimum,
+              kLpTolerance);
+  // Infeasible at this size: the fixes stay O(n) (partners of the 32 farthest entries only).
+  const Eigen::Matrix3Xd outside = z.array() + 3.0;
+  const Weights far = nullspace_weights(outside);
+  EXPECT_EQ(far.status, Weights::Status::kInfeasible);
+  ASSERT_FALSE(far.suggestions.empty());
+  EXPECT_GT(far.suggestions.front().min_weight, 0.0);
+  EXPECT_LE(far.lp_solves, 40);
+}
+
+TEST(NullspaceWeights, CsdpRefusesLargeLayouts) {
+  WeightsOptions csdp;
+  csdp.solver = WeightsOptions::Solver::kCsdp;
+  EXPECT_THROW(nullspace_weights(Eigen::Matrix3Xd::Ones(3, 2001), csdp), InvalidArgument);
+}
+
 TEST(NullspaceWeights, RejectsBadInput) {
   Eigen::Matrix3Xd z = Eigen::Matrix3Xd::Identity(3, 3);
   z(1, 1) = std::numeric_limits<double>::quiet_NaN();

@@ -43,7 +43,8 @@ TEST(CorrespondenceFile, BadFilesNameTheField) {
               HasSubstr("weights[0]: must be > 0"));
   EXPECT_THAT(error_of(R"({"model": [[0,0,0]], "weights": [1, 2]})"),
               HasSubstr("weights: has 2 entries but model has 1"));
-  EXPECT_THAT(error_of(R"({"model": [[0,0,1e400]]})"), HasSubstr("number overflow"));
+  EXPECT_THAT(error_of(R"({"model": [[0,0,1e400]]})"),
+              HasSubstr("model[0][2]: number out of range"));
   EXPECT_THAT(error_of(R"({"modle": []})"), HasSubstr("unknown field \"modle\""));
   EXPECT_THAT(error_of("nope"), HasSubstr("not valid JSON"));
   const CorrespondenceFile only_model = parse_correspondences(R"({"model": [[0,0,0]]})", "c.json");

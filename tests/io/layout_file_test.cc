@@ -52,9 +52,21 @@ const BadLayout kBadLayouts[] = {
     {"WrongArity", R"({"vectors": [[1,0,0],[0,1]]})", "vectors[1]: expected 3 numbers, got 2"},
     {"EntryNotAList", R"({"vectors": [[1,0,0], 5]})", "vectors[1]: expected 3 numbers"},
     {"NotANumber", R"({"vectors": [[1,0,0],[0,"y",0]]})", "vectors[1][1]: expected a number"},
-    // JSON has no NaN or Inf literals; a number beyond double range fails in the JSON reader.
-    {"Overflow", R"({"vectors": [[1,0,0],[0,1e999,0]]})", "number overflow parsing '1e999'"},
-    {"NaNLiteral", R"({"vectors": [[1,0,0],[0,NaN,0]]})", "not valid JSON"},
+    // JSON has no NaN or Inf literals and 1e999 is beyond double range: the reader names where.
+    {"Overflow", R"({"vectors": [[1,0,0],[0,1,1e999]]})", "vectors[1][2]: number out of range"},
+    {"NegativeOverflow", R"({"weights": [1, -1e400], "vectors": [[1,0,0],[0,1,0]]})",
+     "weights[1]: number out of range"},
+    {"NaNLiteral", R"({"vectors": [[1,0,0],[0,1,NaN]]})", "vectors[1][2]: not a finite number"},
+    {"InfinityLiteral", R"({"vectors": [[1,0,0],[Infinity,1,0]]})",
+     "vectors[1][0]: not a finite number"},
+    {"MinusInfinityLiteral", R"({"vectors": [[1,0,0],[0,-Infinity,0]]})",
+     "vectors[1][1]: not a finite number"},
+    {"LowercaseNan", R"({"points": [[1,0,0],[0,1,0],[0,0,nan]]})",
+     "points[2][2]: not a finite number"},
+    {"DuplicateKey", R"({"vectors": [[1,0,0],[0,1,0]], "vectors": [[0,0,1],[0,1,0]]})",
+     "vectors: duplicate key"},
+    {"DuplicateName", R"({"name": "a", "vectors": [[1,0,0],[0,1,0]], "name": "b"})",
+     "name: duplicate key"},
     {"ZeroLengthVector", R"({"vectors": [[1,0,0],[0,0,0],[0,0,1]]})",
      "vectors[1]: zero-length vector"},
     {"CoincidentPoints", R"({"points": [[1,0,0],[0,1,0],[1,0,0]]})",
@@ -79,6 +91,11 @@ const BadLayout kBadLayouts[] = {
     {"TwoPoints", R"({"points": [[0,0,0],[1,0,0]]})", "points: need at least 3 points"},
     {"NearlyCoincidentPoints", R"({"points": [[0,0,0],[1,0,0],[1e-200,0,0]]})",
      "points[2]: coincides with points[0]"},
+    // Coincidence is relative to the layout's own scale: 1e-13 apart at coordinates ~1.
+    {"CoincidentRelativeToScale", R"({"points": [[0,0,0],[1,0,0],[2,2,2],[1,1e-13,0]]})",
+     "points[3]: coincides with points[1]"},
+    {"FirstCoincidenceReported", R"({"points": [[5,0,0],[0,0,0],[1,1,1],[0,0,0],[5,0,0]]})",
+     "points[3]: coincides with points[1]"},
     {"HugePoint", R"({"points": [[1e308,0,0],[-1e308,0,0],[0,1,0]]})",
      "points[0]: coordinates beyond"},
     {"TinyVector", R"({"vectors": [[1,0,0],[1e-320,0,0]]})", "vectors[1]: length outside"},
@@ -126,6 +143,65 @@ TEST(LayoutFile, RoundTripsThroughWrite) {
   EXPECT_EIGEN_NEAR(again.entries, layout.entries, 0.0);
   EXPECT_EIGEN_NEAR(again.weights, layout.weights, 0.0);
   EXPECT_EIGEN_NEAR(again.candidates, layout.candidates, 0.0);
+}
+
+TEST(LayoutFile, CoincidenceIsScaleInvariant) {
+  // The same layout in units from 1e-140 to 1e140: accepted at every scale (an absolute
+  // threshold would call the small ones coincident), and the same near-coincidence (1e-13 of
+  // the extent) rejected at every scale.
+  for (const double scale : {1e-140, 1e-100, 1.0, 1e100, 1e140}) {
+    Layout layout;
+    layout.mode = LayoutMode::kPoints;
+    layout.entries.resize(3, 4);
+    layout.entries << 0, 1, 0, 0,  //
+        0, 0, 1, 0,                //
+        0, 0, 0, 1;
+    layout.entries *= scale;
+    layout.weights = Eigen::VectorXd::Ones(4);
+    EXPECT_NO_THROW(layout.validate()) << scale;
+    layout.entries.col(3) = layout.entries.col(1) + Eigen::Vector3d(0, 1e-13 * scale, 0);
+    EXPECT_THROW(layout.validate(), InvalidArgument) << scale;
+  }
+}
+
+TEST(LayoutFile, ManyPointsValidateWithoutQuadraticWork) {
+  // 200 000 points on a 2-D grid (many share a coordinate): the sweep finds no coincidence
+  // and finds the one planted duplicate, naming the later index.
+  constexpr int kSide = 400, kPoints = kSide * 500;
+  Layout layout;
+  layout.mode = LayoutMode::kPoints;
+  layout.entries.resize(3, kPoints);
+  for (int k = 0; k < kPoints; ++k) layout.entries.col(k) << k % kSide, k / kSide, 0.0;
+  layout.weights = Eigen::VectorXd::Ones(kPoints);
+  EXPECT_NO_THROW(layout.validate());
+  layout.entries.col(kPoints - 1) = layout.entries.col(12345);
+  try {
+    layout.validate();
+    FAIL() << "duplicate not found";
+  } catch (const InvalidArgument& e) {
+    EXPECT_THAT(std::string(e.what()), HasSubstr("points[" + std::to_string(kPoints - 1) +
+                                                 "]: coincides with points[12345]"));
+  }
+}
+
+TEST(LayoutFile, FreeVectorCountCannotOverflow) {
+  EXPECT_EQ(free_vector_count(0), 0);
+  EXPECT_EQ(free_vector_count(3), 3);
+  EXPECT_EQ(free_vector_count(50000), Eigen::Index{1249975000});  // > INT_MAX / 2
+  EXPECT_EQ(free_vector_count(Eigen::Index{3'000'000'001}),
+            Eigen::Index{3'000'000'001} * Eigen::Index{1'500'000'000});
+  // 50 000 points would need 1.25e9 free vectors: a clear error, not int overflow or bad_alloc.
+  Layout layout;
+  layout.mode = LayoutMode::kPoints;
+  layout.entries = Eigen::Matrix3Xd::Zero(3, 50000);
+  for (int k = 0; k < 50000; ++k) layout.entries(0, k) = k;
+  layout.weights = Eigen::VectorXd::Ones(50000);
+  try {
+    data_vectors(layout);
+    FAIL() << "no error";
+  } catch (const InvalidArgument& e) {
+    EXPECT_THAT(std::string(e.what()), HasSubstr("50000 points give 1249975000 free vectors"));
+  }
 }
 
 TEST(LayoutFile, WriteRefusesToOverwriteUnlessTold) {

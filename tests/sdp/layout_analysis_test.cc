@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "support/eigen_testing.h"
@@ -24,15 +25,97 @@ TEST(AnalyzeVectors, OrthogonalTriadReport) {
   // Every p_i equals p-bar at (1,1,1)/sqrt(3): the error is acos(p-bar) = 35.26 degrees.
   EXPECT_NEAR(r.max_worst_case_error_deg, std::acos(std::sqrt(2.0 / 3.0)) * 180.0 / M_PI, 1e-9);
   EXPECT_NEAR(r.paper_lmi.t, r.t, kSdp);
-  EXPECT_EQ(r.paper_lmi.status, "ok");
+  EXPECT_EQ(r.paper_lmi.status, CellViewpoint::Status::kOk);
+  EXPECT_TRUE(r.crosscheck.ran);
   EXPECT_EQ(r.crosscheck.method, "nlopt_multistart_mma");
   EXPECT_TRUE(r.crosscheck.agrees) << r.crosscheck.message;
   EXPECT_EQ(r.swaps.size(), 3u);
-  EXPECT_EQ(r.solver.backend, "csdp");
-  EXPECT_EQ(r.solver.status, "certified");
-  EXPECT_EQ(r.solver.sdp_status, "optimal");
+  EXPECT_EQ(r.solver.backend, SdpBackend::kCsdp);
+  EXPECT_EQ(r.solver.status, WorstViewpoint::Status::kCertified);
+  EXPECT_EQ(r.solver.sdp_status, SdpStatus::kOptimal);
   EXPECT_GT(r.solver.cells_solved, 0);
+  EXPECT_FALSE(r.degenerate);
+  EXPECT_TRUE(r.trusted());
   EXPECT_TRUE(r.message.empty()) << r.message;
+}
+
+TEST(AnalyzeVectors, SkippedCrossCheckClaimsNothing) {
+  LayoutAnalysisOptions options;
+  options.run_crosscheck = false;
+  const LayoutAnalysis r = analyze_vectors(Eigen::Matrix3d::Identity(), {}, options);
+  EXPECT_FALSE(r.crosscheck.ran);
+  EXPECT_FALSE(r.crosscheck.agrees);
+  EXPECT_TRUE(r.trusted()) << "a skipped cross-check neither confirms nor spoils the result";
+  EXPECT_TRUE(r.message.empty()) << r.message;
+}
+
+TEST(AnalyzeVectors, ParallelVectorsAreDegenerateNotPerfect) {
+  // Duplicated, antiparallel and rescaled copies of one direction (and the free vectors of
+  // collinear points are the same): p-bar_min = 0, so the worst-case error is acos(0) = 90
+  // degrees, not 0, and the rotation about the line is free.
+  Eigen::Matrix3Xd z(3, 4);
+  z << 1, -2, 1, 0.5,  //
+      1, -2, 1, 0.5,   //
+      0, 0, 0, 0;
+  LayoutAnalysisOptions options;
+  options.run_crosscheck = false;
+  const LayoutAnalysis r = analyze_vectors(z, {}, options);
+  EXPECT_TRUE(r.degenerate);
+  EXPECT_NEAR(r.pbar_min, 0.0, 1e-9);
+  EXPECT_EQ(r.max_worst_case_error_deg, 90.0);
+  EXPECT_EQ(r.worst_case_errors_deg, Eigen::VectorXd::Constant(4, 90.0));
+  EXPECT_NE(r.message.find("degenerate"), std::string::npos) << r.message;
+  // Not degenerate: one vector off the line by 1e-3.
+  z(2, 3) = 1e-3;
+  EXPECT_FALSE(analyze_vectors(z, {}, options).degenerate);
+}
+
+TEST(AnalyzeVectors, ScaleInvariant) {
+  // The data's units do not matter: 1e-300 to 1e300 give the same answer (norms of 1e300
+  // vectors overflow unless the analysis rescales them first).
+  std::mt19937 rng(testing::kSeed + 3);
+  const Eigen::Matrix3Xd z = testing::random_points(rng, 8, 1.0);
+  LayoutAnalysisOptions options;
+  options.run_crosscheck = false;
+  const LayoutAnalysis reference = analyze_vectors(z, {}, options);
+  for (const double scale : {1e-300, 1e-200, 1e200, 1e300}) {
+    const LayoutAnalysis r = analyze_vectors(z * scale, {}, options);
+    EXPECT_NEAR(r.t, reference.t, 1e-12) << scale;
+    EXPECT_EIGEN_NEAR(r.worst_viewpoint, reference.worst_viewpoint, 1e-9);
+    EXPECT_NEAR(r.swaps.front().error_deg, reference.swaps.front().error_deg, 1e-9) << scale;
+  }
+}
+
+TEST(AnalyzeVectors, ErrorsNameTheDataVector) {
+  Eigen::Matrix3Xd z = Eigen::Matrix3Xd::Identity(3, 4);
+  z.col(3) << 1, 1, 0;
+  z(1, 2) = std::numeric_limits<double>::infinity();
+  try {
+    analyze_vectors(z);
+    FAIL() << "no error";
+  } catch (const InvalidArgument& e) {
+    EXPECT_STREQ(e.what(), "vectors[2]: not a finite number");
+  }
+  z(1, 2) = 0.0;
+  z.col(1).setZero();
+  try {
+    analyze_vectors(z);
+    FAIL() << "no error";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("vectors[1]: zero", 0), 0u) << e.what();
+  }
+}
+
+TEST(AnalyzeVectors, EmptyPaperCellIsAStatusNotAnAnswer) {
+  // (1, 0, 0) and (-1, 1e-9, 0) keep their signs (y > 0 breaks the tie), and only viewpoints
+  // within ~1e-9 of the y axis see both on the positive side: the paper's cell is empty to
+  // CSDP's accuracy.
+  Eigen::Matrix3Xd z(3, 3);
+  z << 1, -1, 0,   //
+      0, 1e-9, 0,  //
+      0, 0, 1;
+  const LayoutAnalysis r = analyze_vectors(z);
+  EXPECT_EQ(r.paper_lmi.status, CellViewpoint::Status::kEmptyCell);
 }
 
 TEST(AnalyzeVectors, RandomLayoutIsConsistent) {

@@ -29,6 +29,8 @@ struct Layout {
   static constexpr double kMinLength = 1e-150;  ///< squares of lengths stay normal doubles
   static constexpr double kMaxLength = 1e150;   ///< squares and differences stay finite
   static constexpr double kMaxWeight = 1e100;   ///< weighted sums of squares stay finite
+  /// Most free vectors data_vectors() builds (about 4 500 points; 240 MB of vectors).
+  static constexpr Eigen::Index kMaxFreeVectors = 10'000'000;
 
   std::string name;
   std::string description;  ///< free text, kept when the layout is written back
@@ -40,7 +42,9 @@ struct Layout {
   /// Throws InvalidArgument naming the field and index of the first violation: fewer than 2
   /// vectors or 3 points (point mode needs at least 2 free vectors), non-finite values, a vector
   /// whose length is 0 or outside [kMinLength, kMaxLength] (so it normalises safely), point
-  /// coordinates beyond kMaxLength, coincident points (a free vector shorter than kMinLength),
+  /// coordinates beyond kMaxLength, coincident points (closer than 1e-12 times the largest
+  /// coordinate magnitude, or than kMinLength: scale-invariant; checked in O(n log n) for
+  /// spread-out points),
   /// weights of the wrong length, non-finite, <= 0 or above kMaxWeight, bad candidates.
   /// Field names are those of the file format: "vectors", "points", "weights", "candidates".
   void validate() const;
@@ -58,9 +62,13 @@ struct DataVectors {
   std::vector<std::pair<int, int>> pairs;
 };
 
+/// n (n - 1) / 2 without overflow: the number of free vectors of n points.
+Eigen::Index free_vector_count(Eigen::Index points);
+
 /// The layout's data vectors: its entries in direction mode, all free vectors z_j - z_i (i < j,
 /// in lexicographic order of (i, j), built by build_free_vectors of free_vectors.h) in point
-/// mode. Validates the layout first.
+/// mode. Validates the layout first; throws InvalidArgument when point mode would give more than
+/// Layout::kMaxFreeVectors.
 DataVectors data_vectors(const Layout& layout,
                          PairWeighting weighting = PairWeighting::kGeometricMean);
 

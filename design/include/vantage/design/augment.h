@@ -28,6 +28,7 @@
 /// free vectors p - z_i (Prop. 8) to the analysis.
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -97,6 +98,10 @@ struct AugmentOptions {
   unsigned seed = 1;
   /// Coplanarity::nearly_coplanar threshold on the smallest singular value, >= 0.
   double coplanarity_threshold = 0.1;
+
+  /// Called with the stage about to run ("step 2/5", "direct optimiser"), e.g. to show
+  /// progress; empty: nothing is called.
+  std::function<void(const std::string& stage)> progress;
 
   /// True when every field is in range; otherwise *why names the field and the constraint.
   bool is_valid(std::string* why = nullptr) const;

@@ -12,12 +12,17 @@
 ///
 ///   maximise s   over (w, s)   subject to   Z w = 0,  1^T w = n,  w_i >= s  (i = 1..n),
 ///
-/// solved on the SDP layer (an LP is an LMI with one diagonal block; vantage::sdp::solve_lmi).
-/// The equalities are eliminated first (w = w0 + B u, B a basis of the null space of [Z; 1^T]),
-/// and s is free, so the LP is always strictly feasible and bounded (s <= 1); its optimum s*
-/// classifies the layout: s* > 0 strictly positive weights exist, s* = 0 weights exist only with
-/// some w_i = 0 (the origin is on the boundary of conv{z_i}), s* < 0 no weights exist (the
-/// origin is outside conv{z_i}).
+/// solved through its dual, which has three variables (c the centroid of the z_i):
+///
+///   minimise c.u  over u in R^3  subject to  (z_i - c).u <= 1,   s* = 1 + min c.u,
+///
+/// by an active-set (simplex) method started at the strictly feasible u = 0: O(n) memory and
+/// O(n) per step, so 100 000 entries take well under a second. The returned w is the basic
+/// optimum the dual's multipliers give: w_i = s* for all but at most three entries. s is free,
+/// so the LP is feasible exactly when 0 is in the affine hull of the z_i, and bounded (s <= 1);
+/// its optimum s* classifies the layout: s* > 0 strictly positive weights exist, s* = 0 weights
+/// exist only with some w_i = 0 (the origin is on the boundary of conv{z_i}), s* < 0 no weights
+/// exist (the origin is outside conv{z_i}).
 ///
 /// Which z_i: in point mode the marker positions themselves (Eq. 11 is a condition on positions
 /// in the object frame). In direction mode the data vectors themselves, read as the z_i of
@@ -41,11 +46,19 @@ namespace vantage::design {
 /// Options of nullspace_weights().
 struct WeightsOptions {
   /// |s*| at or below this counts as s* = 0 (boundary), in weight units (the weights sum to n).
-  /// CSDP solves the LP to relative accuracy ~1e-8. In (0, 1e-2].
+  /// The active-set solver is exact up to rounding, CSDP to relative accuracy ~1e-8. In (0, 1e-2].
   double zero_tolerance = 1e-6;
-  /// Compute and verify the paper's fixes when weights are not strictly positive.
+  /// Compute and verify the paper's fixes when weights are not strictly positive. Up to 64
+  /// entries every symmetric partner is tried, beyond that the 32 entries farthest beyond the
+  /// plane separating the z_i from the origin (largest dual slack).
   bool suggest = true;
-  sdp::SdpOptions sdp;  ///< backend options of the LP
+  /// How the LP is solved.
+  enum class Solver {
+    kDualActiveSet,  ///< the three-variable dual (default; any n)
+    kCsdp,  ///< the primal on the SDP layer: O(n^2) memory, n <= 2000; an independent check
+  };
+  Solver solver = Solver::kDualActiveSet;
+  sdp::SdpOptions sdp;  ///< backend options of the LP (Solver::kCsdp)
 
   /// True when every field is in range; otherwise *why names the field and the constraint.
   bool is_valid(std::string* why = nullptr) const;
@@ -110,7 +123,7 @@ const char* to_string(Weights::Status status);
 
 /// Max-min non-negative weights with sum_i w_i z_i = 0 (Eq. 11) for the columns of z (3 x n,
 /// n >= 1, finite). allow_shift enables the kShiftOrigin suggestion (point mode).
-/// Throws InvalidArgument on non-finite z or invalid options.
+/// Throws InvalidArgument on non-finite z, invalid options, or n > 2000 with Solver::kCsdp.
 Weights nullspace_weights(const Eigen::Matrix3Xd& z, const WeightsOptions& options = {},
                           bool allow_shift = false);
 

@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "vantage/analysis/layout.h"
+#include "vantage/io/text_file.h"
 
 namespace vantage::io {
 
@@ -23,17 +24,16 @@ namespace vantage::io {
 /// vectors, coincident points, weights of the wrong length or <= 0, fewer than 2 entries.
 Layout parse_layout(std::string_view text, const std::string& source);
 
-/// Reads and parses the layout file at `path` (errors name the path).
-Layout read_layout(const std::string& path);
+/// Reads (at most `max_bytes`, see read_text_file) and parses the layout file at `path` (errors
+/// name the path).
+Layout read_layout(const std::string& path, std::size_t max_bytes = kMaxFileBytes);
 
 /// The layout as JSON text in the file format (two-space indented, trailing newline).
 std::string layout_to_json(const Layout& layout);
 
-/// Writes the layout to `path`. Refuses (InvalidArgument) to replace an existing file unless
-/// `overwrite` is set. Validates the layout first, so nothing is written for a bad layout.
+/// Writes the layout to `path` all or nothing (write_text_file). Refuses (InvalidArgument) to
+/// replace an existing file unless `overwrite` is set. Validates the layout first, so nothing is
+/// written for a bad layout.
 void write_layout(const std::string& path, const Layout& layout, bool overwrite = false);
-
-/// The whole content of a file; throws InvalidArgument "<path>: cannot open file" if unreadable.
-std::string read_text_file(const std::string& path);
 
 }  // namespace vantage::io

@@ -5,11 +5,13 @@
 /// from the file's extension unless given: .json -> JSON, .csv -> CSV, .yaml/.yml -> AprilTag.
 /// Layouts are always written as JSON (layout_file.h).
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
 #include "vantage/analysis/layout.h"
 #include "vantage/io/apriltag_bundle.h"
+#include "vantage/io/text_file.h"
 
 namespace vantage::io {
 
@@ -34,7 +36,8 @@ LayoutFormat layout_format_of(const std::string& path);
 /// How to read a layout file.
 struct LayoutReadOptions {
   LayoutFormat format = LayoutFormat::kAuto;
-  AprilTagOptions apriltag;  ///< used for AprilTag bundles only
+  AprilTagOptions apriltag;               ///< used for AprilTag bundles only
+  std::size_t max_bytes = kMaxFileBytes;  ///< larger files are refused (io::FileTooLarge)
 };
 
 /// Parses `text` in `format` (kAuto: by the extension of `source`).

@@ -2,10 +2,11 @@
 
 /// One call that runs the whole worst-viewpoint analysis of a set of data vectors: Theorem 6
 /// (global, certified, every optimum up to sign), the paper's single LMI beside it, Eq. (30)
-/// worst-case errors, the NLopt cross-check and Prop. 2 swap sensitivity. The fields mirror the
-/// `vantage analyze --json` contract.
+/// worst-case errors, the NLopt cross-check and Prop. 2 swap sensitivity. Statuses are the
+/// library's enums; `vantage analyze --json` converts them (cli/analyze.cc, one place).
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,15 +19,25 @@ namespace vantage::sdp {
 struct LayoutAnalysisOptions {
   WorstViewpointOptions worst_viewpoint;  ///< confirm_with_sdp is forced on by analyze_vectors
   CrossCheckOptions crosscheck;
-  bool run_crosscheck = true;  ///< false skips NLopt (crosscheck.method = "skipped")
+  bool run_crosscheck = true;  ///< false skips NLopt (crosscheck.ran = false)
   int swap_count = 5;          ///< worst swap pairs reported, >= 1
+  /// Called with the stage about to run ("cross-check", ...), e.g. to show progress.
+  std::function<void(const std::string& stage)> progress;
 
   /// True when every field is in range; otherwise *why names the field and the constraint.
   bool is_valid(std::string* why = nullptr) const;
 };
 
+/// Every data vector parallel to one line (|n_i x n_0| below this for unit vectors): collinear
+/// points, or duplicated and antiparallel vectors. Then t = 1, p-bar_min = 0, the LUB scale is
+/// undefined and the rotation about the common line is not determined.
+constexpr double kParallelTolerance = 1e-12;
+
 /// Everything `vantage analyze` reports for one set of vectors.
 struct LayoutAnalysis {
+  /// All data vectors are parallel (kParallelTolerance): the pose is not determined. The
+  /// worst-case errors are then arccos(p-bar_min) = 90 degrees (not 0), and `message` says why.
+  bool degenerate = false;
   Eigen::Vector3d worst_viewpoint = Eigen::Vector3d::UnitZ();  ///< upper hemisphere
   std::vector<Eigen::Vector3d> worst_viewpoints;               ///< every global optimum up to sign
   double t = 0.0;                                              ///< max_a min_i |a.n_i| (Eq. 31)
@@ -44,11 +55,13 @@ struct LayoutAnalysis {
     Eigen::Vector3d viewpoint = Eigen::Vector3d::UnitZ();
     double t = 0.0;
     double pbar = 1.0;
-    std::string status;  ///< to_string(CellViewpoint::Status)
+    /// kEmptyCell: the all-positive cell is empty and viewpoint/t/pbar mean nothing.
+    CellViewpoint::Status status = CellViewpoint::Status::kSolverFailed;
   } paper_lmi;
 
   struct CrossCheckSummary {
-    std::string method;  ///< "nlopt_multistart_mma" or "skipped"
+    bool ran = false;    ///< false with run_crosscheck = false: the other fields are unset
+    std::string method;  ///< "nlopt_multistart_mma" (when ran)
     double t = 0.0;
     bool agrees = false;
     std::string message;  ///< non-empty (loud) on disagreement
@@ -57,14 +70,17 @@ struct LayoutAnalysis {
   std::vector<SwapError> swaps;  ///< worst pairs, decreasing error_deg
 
   struct Solver {
-    std::string backend;  ///< "csdp"
-    std::string status;   ///< to_string(WorstViewpoint::Status): "certified", ...
+    SdpBackend backend = SdpBackend::kCsdp;
+    WorstViewpoint::Status status = WorstViewpoint::Status::kNotCertified;
     long cells_solved = 0;
     long patches = 0;
-    std::string sdp_status;  ///< to_string(SdpStatus) of the confirming cell LMI
+    SdpStatus sdp_status = SdpStatus::kBackendError;  ///< of the confirming cell LMI
   } solver;
 
-  std::string message;  ///< empty when certified, confirmed and cross-checked
+  /// Certified, confirmed and (when run) the cross-check agrees: the numbers can be trusted.
+  bool trusted() const;
+
+  std::string message;  ///< empty when trusted and not degenerate
 };
 
 /// Runs the analysis on data vectors (3 x m, m >= 2, non-zero finite columns; their lengths only

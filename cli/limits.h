@@ -1,0 +1,41 @@
+#pragma once
+
+// The bounds every `vantage` subcommand checks before any work (README "Limits"): one line on
+// stderr naming the bound and exit status 2; --allow-large lifts the soft bounds for a user who
+// wants to wait (and has the memory), the hard bounds stay.
+
+#include <CLI/CLI.hpp>
+#include <cstddef>
+#include <string>
+
+#include "vantage/analysis/layout.h"
+#include "vantage/io/text_file.h"
+
+namespace vantage::cli {
+
+/// Input file size: 64 MiB (about a million vectors); with --allow-large 1 GiB.
+constexpr std::size_t kMaxFileBytes = io::kMaxFileBytes;
+constexpr std::size_t kMaxFileBytesAllowLarge = std::size_t{1} << 30;
+
+/// `analyze`: data vectors (vectors, or the n (n - 1) / 2 free vectors of n points). Measured on
+/// this machine: 500 random vectors 2.2 s CPU, 2000 vectors 60 s; 1000 stays near 10 s.
+constexpr long kMaxAnalyzeVectors = 1000;
+/// `design`: data vectors after the additions (one --add step on 200 random vectors: 4.6 s CPU,
+/// about 1700 global solves), and the additions themselves (--add 100 on the triad: 40 s).
+constexpr long kMaxDesignVectors = 200;
+constexpr int kMaxDesignAdd = 20;
+/// `weights`: entries (vectors or points); the LP is O(n), the file size bound comes first.
+constexpr long kMaxWeightsEntries = 2'000'000;
+
+/// Adds --allow-large to `sub`, storing into `flag`.
+void add_allow_large_flag(CLI::App* sub, bool& flag);
+
+/// Throws InvalidArgument "<what>: <count> exceeds the limit of <limit> for `vantage
+/// <command>` (--allow-large lifts it)" when count > limit and not allow_large.
+void check_limit(const std::string& what, long count, long limit, const std::string& command,
+                 bool allow_large);
+
+/// The number of data vectors a layout gives: its vectors, or n (n - 1) / 2 for n points.
+long data_vector_count(const Layout& layout);
+
+}  // namespace vantage::cli

@@ -1,0 +1,318 @@
+// The contract under hostile input (issue 13): bounded resources, all-or-nothing writes,
+// diagnostics in the user's words, reports that cannot mislead.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <regex>
+#include <sstream>
+
+#include "support/cli_runner.h"
+
+namespace vantage {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::expect_bad_input;
+using ::testing::HasSubstr;
+using ::testing::Not;
+using testing::run_vantage;
+using testing::ScratchDir;
+
+const std::string kLayouts = std::string(VANTAGE_SOURCE_DIR) + "/examples/layouts/";
+const std::string kTriad = kLayouts + "triad.json";
+const std::string kSatellite = kLayouts + "satellite.json";
+const std::string kCube = std::string(VANTAGE_SOURCE_DIR) + "/examples/correspondences/cube.json";
+const char* kTriadText = R"({"vectors": [[1,0,0],[0,1,0],[0,0,1]]})";
+
+// Runs `<prefix> vantage <args>` in `scratch` (prefix: a shell command that wraps the run).
+testing::CliRun run_wrapped(const std::string& prefix, const std::string& args,
+                            const ScratchDir& scratch) {
+  const std::string out = scratch.path("stdout.txt"), err = scratch.path("stderr.txt");
+  const std::string command = "cd '" + scratch.dir().string() + "' && " + prefix + " '" +
+                              VANTAGE_CLI + "' " + args + " > '" + out + "' 2> '" + err +
+                              "' < /dev/null";
+  const int raw = std::system(command.c_str());
+  testing::CliRun run;
+  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  run.out = testing::read_file(out);
+  run.err = testing::read_file(err);
+  fs::remove(out);
+  fs::remove(err);
+  return run;
+}
+
+// Every entry of the scratch directory except the given input files.
+std::vector<std::string> outputs(const ScratchDir& scratch, std::vector<std::string> inputs) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(scratch.dir())) {
+    const std::string name = e.path().filename().string();
+    if (std::find(inputs.begin(), inputs.end(), name) == inputs.end()) names.push_back(name);
+  }
+  return names;
+}
+
+// ---- Diagnostics: the user's words --------------------------------------------------------
+
+TEST(HardeningCli, UnknownSubcommandIsNamed) {
+  ScratchDir scratch;
+  const auto run = run_vantage("frob", scratch);
+  expect_bad_input(run, "unknown subcommand \"frob\"");
+  EXPECT_THAT(run.err, HasSubstr("analyze"));
+}
+
+TEST(HardeningCli, FileNameTooLongIsBadInput) {
+  ScratchDir scratch;
+  const std::string name = std::string(300, 'n') + ".json";
+  expect_bad_input(run_vantage("analyze " + name, scratch), "File name too long");
+  expect_bad_input(run_vantage("weights " + name, scratch), "File name too long");
+  scratch.write("in.json", kTriadText);
+  expect_bad_input(run_vantage("design in.json --add 1 --write " + name, scratch),
+                   "File name too long");
+}
+
+TEST(HardeningCli, JsonReaderNamesFieldAndIndex) {
+  ScratchDir scratch;
+  scratch.write("dup.json", R"({"vectors": [[1,0,0],[0,1,0]], "vectors": [[0,0,1],[1,0,0]]})");
+  expect_bad_input(run_vantage("analyze dup.json", scratch), "dup.json: vectors: duplicate key");
+  scratch.write("nan.json", R"({"vectors": [[1,0,0],[0,1,NaN]]})");
+  expect_bad_input(run_vantage("weights nan.json", scratch),
+                   "nan.json: vectors[1][2]: not a finite number");
+  scratch.write("big.json", R"({"vectors": [[1,0,0],[0,1,1e999]]})");
+  expect_bad_input(run_vantage("design big.json --add 1", scratch),
+                   "big.json: vectors[1][2]: number out of range");
+}
+
+TEST(HardeningCli, OrientNamesTheFileFields) {
+  ScratchDir scratch;
+  scratch.write("empty.json", R"({"model": [], "measured": []})");
+  const auto run = run_vantage("orient empty.json", scratch);
+  EXPECT_EQ(run.status, 2);
+  EXPECT_THAT(run.err, HasSubstr("model"));
+  EXPECT_THAT(run.err, Not(HasSubstr("z_object")));
+}
+
+TEST(HardeningCli, OrientIsScaleInvariant) {
+  // The cube example in units of 1e-200 and 1e200, and with a point moved to 1e308 (which
+  // stays an outlier, not "coincident points"): the same rotation as the original units.
+  ScratchDir scratch;
+  const nlohmann::json cube = nlohmann::json::parse(testing::read_file(kCube));
+  const nlohmann::json reference = testing::run_json("orient '" + kCube + "'", scratch);
+  for (const double scale : {1e-200, 1e200}) {
+    nlohmann::json scaled = cube;
+    for (const char* field : {"model", "measured"}) {
+      for (auto& point : scaled[field]) {
+        for (auto& x : point) x = x.get<double>() * scale;
+      }
+    }
+    scratch.write("scaled.json", scaled.dump());
+    const nlohmann::json json = testing::run_json("orient scaled.json", scratch);
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        EXPECT_NEAR(json["R"][i][j].get<double>(), reference["R"][i][j].get<double>(), 1e-12)
+            << scale;
+      }
+    }
+    EXPECT_NEAR(json["alpha"].get<double>(), reference["alpha"].get<double>(), 1e-12) << scale;
+  }
+  nlohmann::json outlier = cube;
+  outlier["measured"][0][0] = 1e308;
+  scratch.write("outlier.json", outlier.dump());
+  const auto run = run_vantage("orient outlier.json --json", scratch);
+  EXPECT_THAT(run.err, Not(HasSubstr("coincide")));
+  EXPECT_NE(run.status, 2) << run.err;
+}
+
+TEST(HardeningCli, MarginOutOfRangeIsRejectedAsSuch) {
+  ScratchDir scratch;
+  const auto run = run_vantage("design '" + kSatellite + "' --add 1 --margin 1e8", scratch);
+  expect_bad_input(run, "--margin: must be in [0, 100]");
+  EXPECT_THAT(run.err, Not(HasSubstr("coincides")));
+}
+
+// ---- Resources ------------------------------------------------------------------------------
+
+TEST(HardeningCli, LimitsAreCheckedBeforeAnyWork) {
+  ScratchDir scratch;
+  expect_bad_input(run_vantage("design '" + kTriad + "' --add 1000000", scratch),
+                   "--add: 1000000 exceeds the limit of 20 for `vantage design` (--allow-large");
+  // /dev/zero as a layout: the read stops at the file size bound.
+  expect_bad_input(run_vantage("analyze /dev/zero", scratch), "/dev/zero: larger than 67108864");
+  // 46 points give 1035 free vectors, beyond analyze's 1000.
+  nlohmann::json many;
+  for (int k = 0; k < 46; ++k) many["points"].push_back({k, k * k % 17, k % 5});
+  scratch.write("many.json", many.dump());
+  expect_bad_input(run_vantage("analyze many.json", scratch),
+                   "many.json: data vectors: 1035 exceeds the limit of 1000");
+  // 50 000 points: an int would overflow in 49 999 * 50 000; now a clear bound, exit 2.
+  std::ostringstream huge;
+  huge << "{\"points\": [";
+  for (int k = 0; k < 50000; ++k) huge << (k ? "," : "") << "[" << k << ",0,0]";
+  huge << "]}";
+  scratch.write("huge.json", huge.str());
+  expect_bad_input(run_vantage("analyze huge.json", scratch), "1249975000 exceeds the limit");
+  expect_bad_input(run_vantage("design huge.json --add 1", scratch), "exceeds the limit");
+}
+
+TEST(HardeningCli, WeightsOnAHundredThousandVectors) {
+  ScratchDir scratch;
+  std::mt19937 rng(20261126);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  std::ostringstream text;
+  text.precision(17);
+  text << "{\"vectors\": [";
+  for (int k = 0; k < 100000; ++k) {
+    text << (k ? "," : "") << "[" << gauss(rng) + 0.2 << "," << gauss(rng) << "," << gauss(rng)
+         << "]";
+  }
+  text << "]}";
+  scratch.write("large.json", text.str());
+  const nlohmann::json json = testing::run_json("weights large.json", scratch);
+  EXPECT_EQ(json["status"], "positive");
+  EXPECT_EQ(json["weights"].size(), 100000u);
+  EXPECT_GT(json["min_weight"].get<double>(), 0.0);
+}
+
+// Runs `vantage <args>` under script(1), which gives it a terminal; returns what the terminal
+// showed (stdout and stderr together).
+std::string run_on_terminal(const std::string& args, const ScratchDir& scratch) {
+  const std::string out = scratch.path("terminal.txt");
+  const std::string command = "cd '" + scratch.dir().string() + "' && script -qec \"'" +
+                              VANTAGE_CLI + "' " + args + "\" /dev/null > '" + out +
+                              "' 2>&1 < /dev/null";
+  EXPECT_EQ(std::system(command.c_str()), 0);
+  const std::string text = testing::read_file(out);
+  fs::remove(out);
+  return text;
+}
+
+TEST(HardeningCli, ProgressOnlyOnATerminal) {
+  // Three point-mode steps and the direct optimiser run for seconds, so a progress line
+  // appears on a terminal; --quiet silences it (and without a terminal stderr stays empty:
+  // run_json checks that everywhere).
+  ScratchDir scratch;
+  const std::string design = "design '" + kSatellite + "' --add 3";
+  const std::regex progress("vantage design: (step [0-9]/3|direct optimiser), [0-9]+ s");
+  const std::string shown = run_on_terminal(design, scratch);
+  EXPECT_TRUE(std::regex_search(shown, progress)) << shown;
+  const std::string quiet = run_on_terminal(design + " --quiet", scratch);
+  EXPECT_THAT(quiet, HasSubstr("final p-bar_min"));
+  EXPECT_FALSE(std::regex_search(quiet, progress)) << quiet;
+}
+
+// ---- Writes: all or nothing -----------------------------------------------------------------
+
+TEST(HardeningCli, WriteTargetsAreCheckedFirst) {
+  ScratchDir scratch;
+  scratch.write("in.json", kTriadText);
+  expect_bad_input(run_vantage("design in.json --add 1 --write ''", scratch),
+                   "--write: empty file name");
+  fs::create_symlink(scratch.path("elsewhere.json"), scratch.path("dangling.json"));
+  expect_bad_input(run_vantage("design in.json --add 1 --write dangling.json --overwrite", scratch),
+                   "symbolic link");
+  EXPECT_FALSE(fs::exists(scratch.path("elsewhere.json")));
+  expect_bad_input(
+      run_vantage("design in.json --add 1 --write \"$(printf 'bad\\377.json')\"", scratch),
+      "not valid UTF-8");
+  EXPECT_EQ(outputs(scratch, {"in.json", "dangling.json"}), std::vector<std::string>{});
+}
+
+TEST(HardeningCli, ConcurrentWriterFailsFast) {
+  // flock(1) holds the target's lock while vantage runs: it must give up at once, exit 2.
+  ScratchDir scratch;
+  scratch.write("in.json", kTriadText);
+  const auto run = run_wrapped("flock .out.json.lock",
+                               "design in.json --add 1 --no-direct --write out.json", scratch);
+  expect_bad_input(run, "out.json: another process is writing it");
+  EXPECT_FALSE(fs::exists(scratch.path("out.json")));
+}
+
+TEST(HardeningCli, FailedWriteLeavesNothing) {
+  // A file size limit (4 KiB in dash's 512-byte blocks) makes the write of a large layout fail
+  // part-way, as a full disk does: exit 1, no target, no temporary; the report is small enough.
+  ScratchDir scratch;
+  nlohmann::json layout = nlohmann::json::parse(kTriadText);
+  for (int k = 0; k < 400; ++k) layout["candidates"].push_back({1.0 + k, 0.5, 0.25});
+  scratch.write("in.json", layout.dump());
+  const auto run = run_wrapped("ulimit -f 8; trap '' XFSZ;",
+                               "design in.json --add 1 --no-direct --write out.json", scratch);
+  EXPECT_EQ(run.status, 1) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("out.json: write failed"));
+  EXPECT_EQ(testing::line_count(run.err), 1) << run.err;
+  EXPECT_EQ(outputs(scratch, {"in.json"}), std::vector<std::string>{});
+}
+
+// ---- Reports that cannot mislead ------------------------------------------------------------
+
+TEST(HardeningCli, CollinearPointsAreDegenerate) {
+  ScratchDir scratch;
+  scratch.write("line.json", R"({"points": [[0,0,0],[1,1,1],[3,3,3],[-2,-2,-2]]})");
+  auto run = run_vantage("analyze line.json --json", scratch);
+  EXPECT_EQ(run.status, 1);
+  EXPECT_THAT(run.err, HasSubstr("degenerate"));
+  EXPECT_EQ(testing::line_count(run.err), 1);
+  const auto json = nlohmann::json::parse(run.out);
+  EXPECT_TRUE(json["degenerate"].get<bool>());
+  EXPECT_EQ(json["max_worst_case_error_deg"].get<double>(), 90.0);
+  run = run_vantage("analyze line.json", scratch);
+  EXPECT_THAT(run.out, HasSubstr("DEGENERATE"));
+  EXPECT_THAT(run.out, Not(HasSubstr("max worst-case error   0 deg")));
+}
+
+TEST(HardeningCli, SkippedCrossCheckClaimsNothing) {
+  ScratchDir scratch;
+  const nlohmann::json json =
+      testing::run_json("analyze '" + kTriad + "' --no-crosscheck", scratch);
+  EXPECT_EQ(json["crosscheck"], nlohmann::json({{"method", "skipped"}}));
+  EXPECT_FALSE(json["degenerate"].get<bool>());
+  const auto run = run_vantage("analyze '" + kTriad + "' --no-crosscheck", scratch);
+  EXPECT_THAT(run.out, HasSubstr("cross-check            skipped"));
+  EXPECT_THAT(run.out, Not(HasSubstr("agrees")));
+}
+
+TEST(HardeningCli, NoNegativeZeroInViewpoints) {
+  // The fan's worst viewpoints lie in its plane: their z components are zero up to rounding
+  // (of either sign) and must print as 0.000000.
+  ScratchDir scratch;
+  const auto run = run_vantage("analyze '" + kLayouts + "coplanar_fan.json'", scratch);
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr(" 0.000000 ]"));
+  EXPECT_THAT(run.out, Not(HasSubstr("-0.000000")));
+}
+
+TEST(HardeningCli, EmptyPaperCellPrintsItsStatus) {
+  ScratchDir scratch;
+  scratch.write("cell.json", R"({"vectors": [[1,0,0],[-1,1e-9,0],[0,0,1]]})");
+  const auto run = run_vantage("analyze cell.json", scratch);
+  EXPECT_THAT(run.out, HasSubstr("paper's single LMI     empty_cell"));
+  EXPECT_THAT(run.out, Not(HasSubstr("pbar 1 at")));
+}
+
+TEST(HardeningCli, SatelliteReportLeadsWithTheVerdict) {
+  ScratchDir scratch;
+  const auto run = run_vantage("analyze '" + kSatellite + "'", scratch);
+  ASSERT_EQ(run.status, 0) << run.err;
+  std::istringstream lines(run.out);
+  std::string line;
+  std::vector<std::string> all;
+  while (std::getline(lines, line)) all.push_back(line);
+  ASSERT_GT(all.size(), 5u);
+  EXPECT_EQ(all[3].rfind("pbar_min", 0), 0u) << run.out;
+  EXPECT_EQ(all[4].rfind("max worst-case error", 0), 0u) << run.out;
+  EXPECT_THAT(run.out, HasSubstr("5 of 66 (--verbose or --json for all)"));
+  EXPECT_LT(all.size(), 30u) << "the default report stays short";
+  EXPECT_THAT(run.out, Not(HasSubstr("-0.000000")));
+  // Noise-free swaps of the satellite's free vectors never move the rotation: said plainly.
+  EXPECT_THAT(run.out, HasSubstr("0 deg for every one of the 2145 pairs"));
+  const auto verbose = run_vantage("analyze '" + kSatellite + "' --verbose", scratch);
+  EXPECT_THAT(verbose.out, Not(HasSubstr("--verbose or --json for all")));
+  EXPECT_GT(testing::line_count(verbose.out), testing::line_count(run.out) + 60);
+}
+
+}  // namespace
+}  // namespace vantage
