@@ -1,9 +1,9 @@
 #pragma once
 
-// Shared pieces of the `vantage` subcommands. Contract (DESIGN.md): every subcommand prints a
-// readable report by default and exactly one JSON object on stdout with --json; exit status 0
-// when done, 2 for bad input or usage (one line on stderr, nothing written), 1 for an internal
-// failure such as a solver that did not converge.
+// Shared pieces of the `vantage` subcommands. Contract (README.md, "The `vantage` command"): every
+// subcommand prints a readable report by default and exactly one JSON object on stdout with --json;
+// exit status 0 when done, 2 for bad input or usage (one line on stderr, nothing written), 1 for an
+// internal failure such as a solver that did not converge.
 
 #include <CLI/CLI.hpp>
 #include <Eigen/Core>

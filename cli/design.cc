@@ -1,6 +1,6 @@
 // `vantage design LAYOUT --add K [--candidates-only] [--margin M] [--direct|--no-direct]
 // [--write OUT.json] [--overwrite] [--json]`: the inductive augmenter of McInroy et al.
-// (Sec. III.E, text around Fig. 3) done on the global worst viewpoint (DESIGN.md notes 3-4).
+// (Sec. III.E, text around Fig. 3) done on the global worst viewpoint (docs/math.md §13, §15).
 
 #include <sys/stat.h>
 

@@ -17,7 +17,7 @@ AffineProblem prepare(const Eigen::Matrix3Xd& z, const Eigen::Matrix2Xd& d, doub
     const double zz = z.col(i).squaredNorm();
     const double missing = zz - problem.d.col(i).squaredNorm();  // Eq. (21) times alpha^2
     if (missing < 0.0 && -missing > options.in_plane_tolerance * zz) {
-      ++problem.clamped;  // DESIGN.md note 7: |d_i| > |z_i| / alpha
+      ++problem.clamped;  // docs/math.md §8: |d_i| > |z_i| / alpha
     } else if (missing <= options.in_plane_tolerance * zz) {
       ++problem.in_plane;
     } else {
@@ -94,7 +94,7 @@ struct QuarticSolver {
   static constexpr int kLockstepIterations = 2;
 };
 
-/// One Laguerre step on x^4 + c2 x^2 + c1 x + c0 (DESIGN.md note 8). For a polynomial with only
+/// One Laguerre step on x^4 + c2 x^2 + c1 x + c0 (docs/math.md §5). For a polynomial with only
 /// real roots Laguerre's method converges monotonically (and cubically) to the largest root
 /// from any start above it; with degree 4 its step is 4 p / (p' + sqrt(3 (3 p'^2 - 4 p p''))).
 /// At (or, by rounding, just below) the root p <= 0 and the step is 0, as is any non-positive
@@ -169,7 +169,7 @@ VANTAGE_FLATTEN void solve_lanes(const QuarticSolver& solver, const AffineProble
   const LaneArray det = c.x() * hx + c.y() * hy + c.z() * hz;  // det H
   // |adj H|_F^2 = |a x b|^2 + |b x h|^2 + |h x a|^2 by Lagrange's identity.
   const LaneArray adj2 = solver.axb2 + solver.ab2 * hh - ha * ha - hb * hb;
-  // (x^2 - f2)^2 - 8 x det - 4 adj2 = x^4 + c2 x^2 + c1 x + c0 (DESIGN.md note 8).
+  // (x^2 - f2)^2 - 8 x det - 4 adj2 = x^4 + c2 x^2 + c1 x + c0 (docs/math.md §5).
   const LaneArray c2 = -2.0 * f2;
   const LaneArray c1 = -8.0 * det;
   const LaneArray c0 = f2 * f2 - 4.0 * adj2;

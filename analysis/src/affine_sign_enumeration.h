@@ -45,7 +45,7 @@ Eigen::Matrix4d pattern_d(const Eigen::Matrix3Xd& z, const Eigen::Matrix2Xd& d_o
                           const std::vector<int>& order, std::uint64_t signs);
 
 /// The Gray-code walk over the sign patterns of `order`: the all-positive pattern first, then at
-/// step k the sign of bit ctz(k) toggles; D changes by Eq. (17) with DESIGN.md note 2's factor,
+/// step k the sign of bit ctz(k) toggles; D changes by Eq. (17) with the factor of docs/math.md §9,
 /// Delta D = -2 w_j v_zj K(e_z, z_j) (v_zj the value before the toggle), and the third column h
 /// of H = sum w z v^T by -2 w_j v_zj z_j. visit(D, h, signs) is called for each of the 2^m
 /// patterns; nothing is allocated inside the walk.

@@ -107,7 +107,7 @@ LayoutAnalysis analyze_vectors(const Eigen::Matrix3Xd& vectors, const Eigen::Vec
   stage("swap sensitivity");
   report.swaps = swap_sensitivity(scaled, weights, options.swap_count);
   if (all_parallel(n)) {
-    // Every p_i is 0 at the common line: the whole of each vector is lost (note 10 with
+    // Every p_i is 0 at the common line: the whole of each vector is lost (docs/math.md §11 with
     // p-bar_min = 0), and nothing fixes the rotation about that line.
     report.degenerate = true;
     report.worst_case_errors_deg.setConstant(kRightAngleDeg);

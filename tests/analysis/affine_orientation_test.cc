@@ -137,7 +137,7 @@ TEST(AffineOrientation, NaiveMatchesBruteForceThroughPublicSolvers) {
 }
 
 TEST(AffineOrientation, IncrementalDEqualsRecomputedD) {
-  // Eq. (17) with DESIGN.md note 2's factor, walked over every Gray-code step.
+  // Eq. (17) with the factor of docs/math.md §9, walked over every Gray-code step.
   std::mt19937 rng(kSeed + 2);
   const int n = 7;
   const Eigen::Matrix3Xd z = testing::random_points(rng, n);
@@ -157,7 +157,7 @@ TEST(AffineOrientation, IncrementalDEqualsRecomputedD) {
 }
 
 TEST(AffineOrientation, ToggleChangesDByMinusTwoWVzK) {
-  // DESIGN.md note 2: Delta D = -2 w_j v_zj K(e_z, z_j), v_zj before the toggle, and K(e_z, z)
+  // docs/math.md §9: Delta D = -2 w_j v_zj K(e_z, z_j), v_zj before the toggle, and K(e_z, z)
   // is the matrix printed in Eq. (17).
   const Eigen::Vector3d zj(0.3, -0.7, 0.4);
   Eigen::Matrix4d printed;
@@ -181,7 +181,7 @@ TEST(AffineOrientation, ToggleChangesDByMinusTwoWVzK) {
 }
 
 TEST(AffineOrientation, ClampedVectorsAreCountedAndNeverNaN) {
-  // DESIGN.md note 7: |d_i| > |z_i| / alpha gives v_zi = 0 and a single sign.
+  // docs/math.md §8: |d_i| > |z_i| / alpha gives v_zi = 0 and a single sign.
   std::mt19937 rng(kSeed + 3);
   const int n = 6;
   const Eigen::Matrix3d R = testing::random_rotation(rng);

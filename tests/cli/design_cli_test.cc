@@ -21,7 +21,7 @@ const std::string kNote3 = kLayouts + "note3_four_vectors.json";
 const std::string kSatellite = kLayouts + "satellite.json";
 
 constexpr double kPi = 3.14159265358979323846;
-// p-bar_min of Z = I (DESIGN.md note 1): sqrt(2/3).
+// p-bar_min of Z = I (docs/math.md §12): sqrt(2/3).
 const double kTriadPbar = std::sqrt(2.0 / 3.0);
 // The global solver certifies t to 1e-9 and JSON carries doubles exactly (17 digits), so the
 // same layout evaluated twice agrees to this.
@@ -54,7 +54,8 @@ void expect_contract(const nlohmann::json& json, int add) {
     }
     const double pbar = step["pbar_min"].get<double>();
     EXPECT_GE(pbar, previous - kMonotone) << "a greedy step lowered p-bar_min";
-    EXPECT_LE(pbar, step["ceiling"].get<double>() + kMonotone) << "above the ceiling (note 4)";
+    EXPECT_LE(pbar, step["ceiling"].get<double>() + kMonotone)
+        << "above the ceiling (docs/math.md §15)";
     EXPECT_NEAR(step["ceiling"].get<double>(), ceiling(step["n_vectors"].get<int>()), 1e-15);
     EXPECT_EQ(step["added"].size(), 3u);
     EXPECT_GE(step["worst_viewpoints"].size(), 1u);

@@ -14,7 +14,7 @@
 /// With known alpha the missing component of each measured vector is (Eq. 21)
 ///   v_zi = +-sqrt(|z_i|^2 / alpha^2 - |d_i|^2),  so that alpha [d_i; v_zi] = R z_i exactly
 /// on noise-free data. When noise makes |d_i| > |z_i| / alpha, v_zi is set to 0 and the vector
-/// is counted as clamped (DESIGN.md note 7); such a vector, like one lying in the image plane,
+/// is counted as clamped (docs/math.md §8); such a vector, like one lying in the image plane,
 /// has a single sign and is not enumerated.
 ///
 /// Vector sets: Eigen::Matrix3Xd (object) and Eigen::Matrix2Xd (image), one column per vector or
@@ -42,13 +42,13 @@ inline constexpr int kMaxAffineVectorsCeiling = 30;
 ///
 /// Bilinearity of K makes D (Eq. 2) a linear function of H = sum w_i z_i v_i^T, and only the
 /// third column h = sum w_i v_zi z_i of H depends on the signs. Toggling v_zj therefore changes
-/// h by -2 w_j v_zj z_j and D by Eq. (17) with DESIGN.md note 2's factor,
+/// h by -2 w_j v_zj z_j and D by Eq. (17) with the factor of docs/math.md §9,
 /// Delta D = -2 w_j v_zj K(e_z, z_j), v_zj the value before the toggle.
 enum class SignEnumeration {
   /// Gray code (one sign per step, both updates above), then per pattern: the largest root
   /// lambda of D's characteristic quartic (Laguerre from an upper bound; its coefficients need
   /// only |H|_F, det H and |adj H|_F, each O(1) in h), the viewpoint r3 (third row of R) from
-  /// FOAM's closed form (DESIGN.md note 8), and J_2d = tr S - r3^T S r3 - 2 (lambda - r3^T h)
+  /// FOAM's closed form (docs/math.md §5), and J_2d = tr S - r3^T S r3 - 2 (lambda - r3^T h)
   /// + sum w |alpha d|^2 with S = sum w z z^T. The root finder starts from the previous
   /// pattern's root + |Delta h| (an upper bound) and takes one Laguerre and one Halley step
   /// (more only for the rare pattern not yet converged to ~1e-12 relative); the top four sign
@@ -75,7 +75,7 @@ enum class AffineStatus {
   /// The runner-up pattern fits as well as the winner, runner_up_residual - residual <=
   /// ambiguity_tolerance * sum w_i |z_i|^2, with a rotation more than distinct_rotation_angle
   /// away: the data cannot tell two poses apart (e.g. the two-fold "Necker" reversal of coplanar
-  /// vectors, DESIGN.md note 4). R is one of them; runner_up_R_camera_object is the other.
+  /// vectors, docs/math.md §15). R is one of them; runner_up_R_camera_object is the other.
   kAmbiguous,
   /// The winning pattern's 3-D problem is degenerate (relative eigen gap of D <= degenerate_gap,
   /// e.g. all vectors parallel): the data do not determine R.
@@ -296,7 +296,7 @@ Eigen::Matrix4d affine_pattern_d(const Eigen::Matrix3Xd& z_object, const Eigen::
                                  const Eigen::VectorXd& v_z, const Eigen::VectorXd& weights,
                                  std::uint64_t signs);
 /// D after walking the Gray code for `steps` steps from the all-positive pattern with the
-/// update of Eq. (17) (DESIGN.md note 2); *signs receives the pattern reached.
+/// update of Eq. (17) (docs/math.md §9); *signs receives the pattern reached.
 Eigen::Matrix4d affine_gray_code_d(const Eigen::Matrix3Xd& z_object,
                                    const Eigen::Matrix2Xd& d_object, const Eigen::VectorXd& v_z,
                                    const Eigen::VectorXd& weights, std::uint64_t steps,

@@ -1,6 +1,6 @@
 #pragma once
 
-/// A fiducial layout: what the user hands vantage to analyse (DESIGN.md, "Layout file").
+/// A fiducial layout: what the user hands vantage to analyse (README.md, "File formats").
 ///
 /// Direction mode holds the data vectors z_i of the paper directly. Point mode holds marker
 /// positions; the analysis then uses the free vectors z_j - z_i (i < j) of Prop. 8, each with a

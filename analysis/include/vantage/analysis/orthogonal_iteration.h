@@ -1,8 +1,8 @@
 #pragma once
 
 /// Pose from one perspective image by orthogonal iteration (Lu, Hager & Mjolsness 2000) with the
-/// absolute-orientation step done by FOAM, as proposed by Wu & Wu (seed 004; DESIGN.md notes 8
-/// and 9), or by Haralick's SVD (seed 003, Sec. 3) for the seed's comparison.
+/// absolute-orientation step done by FOAM, as proposed by Wu & Wu (seed 004; docs/math.md §5
+/// and §17), or by Haralick's SVD (seed 003, Sec. 3) for the seed's comparison.
 ///
 /// Frames: x_camera = R_camera_object * x_object + p_camera_object; the camera looks along +z.
 ///

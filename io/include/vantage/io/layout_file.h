@@ -1,6 +1,6 @@
 #pragma once
 
-/// Reading and writing layout files (JSON, DESIGN.md "Layout file"):
+/// Reading and writing layout files (JSON, README.md "File formats"):
 ///
 ///   {"name": "orthogonal triad",
 ///    "vectors": [[1, 0, 0], [0, 1, 0], [0, 0, 1]],      // or "points": [[x, y, z], ...]
