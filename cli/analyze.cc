@@ -11,6 +11,7 @@
 #include "vantage/analysis/layout.h"
 #include "vantage/design/augment.h"
 #include "vantage/io/layout_file.h"
+#include "vantage/sdp/dropout.h"
 #include "vantage/sdp/layout_analysis.h"
 
 namespace vantage::cli {
@@ -22,6 +23,7 @@ struct AnalyzeArgs {
   std::string pair_weighting = "geometric";
   int swaps = 5;
   bool crosscheck = true;
+  bool dropout = false;
   bool json = false;
 };
 
@@ -37,6 +39,37 @@ std::string vector_label(const DataVectors& data, int k) {
   return "p" + std::to_string(data.pairs[k].first) + "-p" + std::to_string(data.pairs[k].second);
 }
 
+/// "p3" for marker 3 (point mode), "v3" for vector 3.
+std::string entry_label(const Layout& layout, int k) {
+  return (layout.mode == LayoutMode::kPoints ? "p" : "v") + std::to_string(k);
+}
+
+Json dropout_json(const sdp::DropoutAnalysis& dropout) {
+  Json list = Json::array();
+  for (const sdp::DropoutEntry& e : dropout.entries) {
+    list.push_back({{"index", e.index},
+                    {"pbar_min", e.pbar_min},
+                    {"max_worst_case_error_deg", e.max_worst_case_error_deg},
+                    {"worst_viewpoint", json_list(e.worst_viewpoint)},
+                    {"n_vectors", e.n_vectors},
+                    {"certified", e.certified}});
+  }
+  return list;
+}
+
+void print_dropout(const Layout& layout, const sdp::DropoutAnalysis& dropout) {
+  std::cout << "\ndropout: the layout without one "
+            << (layout.mode == LayoutMode::kPoints ? "marker" : "vector")
+            << ", most harmful first (pbar_min, max worst-case error):\n";
+  for (int k : dropout.by_harm) {
+    const sdp::DropoutEntry& e = dropout.entries[k];
+    std::cout << "  without " << entry_label(layout, e.index) << "  pbar_min "
+              << format_number(e.pbar_min, 6) << "  "
+              << format_number(e.max_worst_case_error_deg, 6) << " deg"
+              << (e.certified ? "" : "  (NOT certified)") << "\n";
+  }
+}
+
 int run_analyze(const AnalyzeArgs& args) {
   if (args.swaps < 1) throw InvalidArgument("--swaps: must be >= 1");
   const Layout layout = io::read_layout(args.file);
@@ -50,8 +83,11 @@ int run_analyze(const AnalyzeArgs& args) {
       args.file, [&] { return sdp::analyze_vectors(data.vectors, data.weights, options); });
   const long m = data.vectors.cols();
   const double ceiling = design::pbar_ceiling(static_cast<int>(m));
+  sdp::DropoutAnalysis dropout;
+  if (args.dropout) dropout = sdp::dropout_analysis(layout);
   const bool trusted =
-      report.solver.status == "certified" && (!args.crosscheck || report.crosscheck.agrees);
+      report.solver.status == "certified" && (!args.crosscheck || report.crosscheck.agrees) &&
+      (!args.dropout || dropout.status == sdp::DropoutAnalysis::Status::kCertified);
 
   if (args.json) {
     Json out;
@@ -90,6 +126,7 @@ int run_analyze(const AnalyzeArgs& args) {
                      {"cells_solved", report.solver.cells_solved},
                      {"patches", report.solver.patches},
                      {"sdp_status", report.solver.sdp_status}};
+    if (args.dropout) out["dropout"] = dropout_json(dropout);
     if (!report.message.empty()) out["message"] = report.message;
     print_json(out);
   } else {
@@ -127,10 +164,12 @@ int run_analyze(const AnalyzeArgs& args) {
                 << format_number(s.error_deg, 6) << " deg"
                 << (s.ambiguous ? "  (ambiguous: the swapped optimum is not unique)" : "") << "\n";
     }
+    if (args.dropout) print_dropout(layout, dropout);
   }
   if (!trusted) {
-    std::cerr << "vantage: warning: "
-              << (report.message.empty() ? "result not certified" : report.message) << std::endl;
+    std::string message = report.message.empty() ? "result not certified" : report.message;
+    if (args.dropout && !dropout.message.empty()) message += "; dropout: " + dropout.message;
+    std::cerr << "vantage: warning: " << message << std::endl;
     return kExitFailure;
   }
   return kExitOk;
@@ -153,6 +192,9 @@ Command add_analyze_command(CLI::App& root) {
       ->check(CLI::IsMember({"geometric", "arithmetic"}))
       ->capture_default_str();
   sub->add_flag("!--no-crosscheck", args->crosscheck, "skip the NLopt cross-check");
+  sub->add_flag("--dropout", args->dropout,
+                "also analyse the layout without each marker (point mode) or vector: "
+                "which one can it least afford to lose");
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
   return {sub, [args] { return run_analyze(*args); }};
 }

@@ -34,6 +34,7 @@ Command add_orient_command(CLI::App& root);
 Command add_design_command(CLI::App& root);
 Command add_weights_command(CLI::App& root);
 Command add_pose_command(CLI::App& root);
+Command add_plot_command(CLI::App& root);
 
 /// "qmethod" | "svd" | "foam" (already checked by CLI11) to the enum.
 OrientationMethod parse_orientation_method(const std::string& name);

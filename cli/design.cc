@@ -9,9 +9,11 @@
 #include <sstream>
 
 #include "command.h"
+#include "figure_output.h"
 #include "vantage/analysis/common.h"
 #include "vantage/design/augment.h"
 #include "vantage/io/layout_file.h"
+#include "vantage/plot/design_curve.h"
 
 namespace vantage::cli {
 
@@ -29,6 +31,7 @@ struct DesignArgs {
   bool direct = true;
   std::string write;
   bool overwrite = false;
+  std::string plot;
   bool json = false;
 };
 
@@ -283,6 +286,7 @@ int run_design(const DesignArgs& args) {
   }
   check_point_candidates(args.file, layout, args.margin);
   check_write_target(args);
+  if (!args.plot.empty()) check_figure_directory("--plot", args.plot);
 
   design::AugmentOptions options;
   options.add = args.add;
@@ -294,14 +298,28 @@ int run_design(const DesignArgs& args) {
 
   const bool ok = r.status == design::AugmentResult::Status::kOk;
   if (ok && !args.write.empty()) io::write_layout(args.write, layout_to_write(r), args.overwrite);
+  std::vector<plot::FigureFiles> figures;
+  if (ok && !args.plot.empty()) {
+    create_figure_directory("--plot", args.plot);
+    try {
+      figures.push_back(plot::write_design_curve(plot::design_curve(r, layout.name), args.plot));
+    } catch (const plot::RenderError& e) {
+      std::cerr << "vantage: design: " << e.what() << std::endl;
+      return kExitFailure;
+    }
+  }
 
   if (args.json) {
     Json out = design_json(args, layout, r);
     if (ok && !args.write.empty()) out["written"] = args.write;
+    if (!figures.empty()) out["figures"] = figure_files_json(figures);
     print_json(out);
   } else {
     print_report(args, layout, r);
     if (ok && !args.write.empty()) std::cout << "written: " << args.write << "\n";
+    for (const plot::FigureFiles& f : figures) {
+      std::cout << "figure: " << f.image.string() << " (numbers: " << f.csv.string() << ")\n";
+    }
   }
   if (!ok) {
     std::cerr << "vantage: design: " << design::to_string(r.status) << ": " << r.message;
@@ -346,6 +364,9 @@ Command add_design_command(CLI::App& root) {
   sub->add_flag("--overwrite", args->overwrite,
                 "let --write replace an existing file (even the input layout)")
       ->needs(write);
+  sub->add_option("--plot", args->plot,
+                  "write the design figure (design.png + design.csv: p-bar_min per step, the "
+                  "direct optimum, the ceiling) into DIR");
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
   return {sub, [args] { return run_design(*args); }};
 }
