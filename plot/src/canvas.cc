@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "output_file.h"
+#include "png_writer.h"
 #include "vantage/analysis/common.h"
 
 namespace vantage::plot::internal {
@@ -357,8 +358,7 @@ void Canvas::finish() {
   cairo_ = nullptr;
   cairo_status_t status = CAIRO_STATUS_SUCCESS;
   if (options_.format == Format::kPng) {
-    cairo_surface_flush(surface_);
-    status = cairo_surface_write_to_png_stream(surface_, write_to_file, file_.get());
+    if (!write_png(surface_, *file_)) status = CAIRO_STATUS_WRITE_ERROR;
   } else {
     cairo_surface_finish(surface_);
     status = cairo_surface_status(surface_);

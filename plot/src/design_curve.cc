@@ -122,7 +122,7 @@ void draw_curve(Canvas& canvas, const DesignCurve& curve, const FigureOptions& o
                                                         fixed(curve.direct_pbar_min, 4) + ")",
                                                     {33, 113, 181}, Canvas::Shape::kDiamond));
   }
-  canvas.legend(0.115, 0.32, legend, internal::kSmallSize * s);
+  canvas.legend(0.115, 0.83, legend, internal::kSmallSize * s);
 }
 
 }  // namespace

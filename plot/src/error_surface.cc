@@ -117,7 +117,7 @@ void draw_surface(Canvas& canvas, const ErrorSurfaceData& data, const Eigen::Mat
   pls.col0(internal::kPenGrid);
   pls.width(1.0 * s);
   pls.join(0.0, 0.0, 1.0, 1.0);
-  canvas.label(0.62, 0.38, "pᵢ > p̄: not possible (p̄ is the largest pⱼ)", 0.0, 0.0, 0.5,
+  canvas.label(0.66, 0.42, "pᵢ > p̄: not possible (p̄ is the largest pⱼ)", 0.0, 0.0, 0.5,
                internal::kLabelSize * s, {110, 110, 110});
 
   pls.col0(internal::kPenWorst);

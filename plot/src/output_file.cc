@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cstring>
 #include <system_error>
 
@@ -58,9 +59,9 @@ void CsvWriter::separator() {
 
 CsvWriter& CsvWriter::operator<<(double value) {
   separator();
-  char buffer[40];
-  const int n = std::snprintf(buffer, sizeof(buffer), "%.17g", value);
-  file_.write(buffer, static_cast<std::size_t>(n));
+  char buffer[64];
+  const std::to_chars_result end = std::to_chars(buffer, buffer + sizeof(buffer), value);
+  file_.write(buffer, static_cast<std::size_t>(end.ptr - buffer));
   return *this;
 }
 

@@ -32,7 +32,8 @@ class OutputFile {
   bool committed_ = false;
 };
 
-/// CSV with a header line; numbers are written with 17 significant digits (round-trip exact).
+/// CSV with a header line; numbers are written in the shortest form that reads back to the same
+/// double (std::to_chars).
 class CsvWriter {
  public:
   CsvWriter(const std::filesystem::path& target, const std::string& header);

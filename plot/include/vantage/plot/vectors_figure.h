@@ -20,8 +20,8 @@
 
 namespace vantage::plot {
 
-inline constexpr double kVectorsAzimuthDeg = 35.0;
-inline constexpr double kVectorsElevationDeg = 25.0;
+inline constexpr double kVectorsAzimuthDeg = 10.0;
+inline constexpr double kVectorsElevationDeg = 15.0;
 
 /// What the vectors figure draws.
 struct VectorsFigureData {
