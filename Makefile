@@ -67,13 +67,13 @@ clean:
 	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(FUZZ_DIR) $(INSTALL_DIR)
 
 # The five figures of the satellite example (PNG + the CSV of each) in docs/figures/, shown in
-# README.md: a design run (two greedy markers from the candidates, with the direct optimiser)
-# feeds the design figure.
+# README.md: a design run (two markers added greedily, and by the direct optimiser) feeds the
+# design figure.
 FIGURES_DIR ?= docs/figures
 .PHONY: figures
 figures: build
 	mkdir -p $(FIGURES_DIR)
-	$(BUILD_DIR)/cli/vantage design examples/layouts/satellite.json --add 2 --candidates-only \
-	  --json > $(BUILD_DIR)/satellite_design.json
+	$(BUILD_DIR)/cli/vantage design examples/layouts/satellite.json --add 2 --json \
+	  > $(BUILD_DIR)/satellite_design.json
 	$(BUILD_DIR)/cli/vantage plot examples/layouts/satellite.json --out $(FIGURES_DIR) \
 	  --design $(BUILD_DIR)/satellite_design.json

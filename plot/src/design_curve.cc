@@ -61,7 +61,7 @@ void draw_curve(Canvas& canvas, const DesignCurve& curve, const FigureOptions& o
   const double pad = std::max(0.5, 0.04 * (range.m_hi - range.m_lo));
 
   plstream& pls = canvas.pls();
-  pls.vpor(0.10, 0.96, 0.11, 0.84);
+  pls.vpor(0.115, 0.96, 0.11, 0.84);
   pls.wind(range.m_lo - pad, range.m_hi + pad, lo, 1.0);
   pls.col0(internal::kPenGrid);
   pls.width(0.8 * s);
@@ -109,7 +109,7 @@ void draw_curve(Canvas& canvas, const DesignCurve& curve, const FigureOptions& o
   pls.box("bcnst", 0.0, 0, "bcnstv", 0.0, 0);
   internal::set_text_size(canvas, internal::kLabelSize);
   pls.mtex("b", 3.2, 0.5, 0.5, "m: number of data vectors (free vectors in point mode)");
-  pls.mtex("l", 3.8, 0.5, 0.5, "p̄_min: global worst case (higher is better)");
+  pls.mtex("l", 4.8, 0.5, 0.5, "p̄_min: global worst case (higher is better)");
 
   using Entry = Canvas::LegendEntry;
   std::vector<Entry> legend{
@@ -122,7 +122,7 @@ void draw_curve(Canvas& canvas, const DesignCurve& curve, const FigureOptions& o
                                                         fixed(curve.direct_pbar_min, 4) + ")",
                                                     {33, 113, 181}, Canvas::Shape::kDiamond));
   }
-  canvas.legend(0.115, 0.83, legend, internal::kSmallSize * s);
+  canvas.legend(0.13, 0.83, legend, internal::kSmallSize * s);
 }
 
 }  // namespace

@@ -138,8 +138,11 @@ void draw_entries(Canvas& canvas, const VectorsFigureData& data, const Eigen::Ma
   for (Eigen::Index k : order) {
     const Eigen::Vector2d p = vectors_camera_projection(scene.col(k));
     canvas.marker(p.x(), p.y(), 5.0 * s, ink);
+  }
+  for (Eigen::Index k : order) {
+    const Eigen::Vector2d p = vectors_camera_projection(scene.col(k));
     canvas.label(p.x(), p.y(), "p" + std::to_string(k), 8 * s, -9 * s, 0.0,
-                 internal::kSmallSize * s, ink, {255, 255, 255}, 0.7);
+                 internal::kSmallSize * s, ink);
   }
 }
 
@@ -188,7 +191,7 @@ void draw_scene(Canvas& canvas, const VectorsFigureData& data, const FigureOptio
   using Entry = Canvas::LegendEntry;
   const std::size_t ties = data.worst_viewpoints.size();
   canvas.legend(
-      0.715, 0.80,
+      0.985, 0.22,
       {Entry::line(
            ties == 1 ? "global worst viewpoint a" : std::to_string(ties) + " tied worst viewpoints",
            kWorstViewpointColour, 3.0 * s),
@@ -202,7 +205,7 @@ void draw_scene(Canvas& canvas, const VectorsFigureData& data, const FigureOptio
                                (scene.cols() <= kMaxPairLines ? ", free vectors in grey" : "")
                          : std::to_string(data.entries.cols()) + " data vectors",
                      kDataVectorColour)},
-      internal::kSmallSize * s);
+      internal::kSmallSize * s, 1.0);
 }
 
 }  // namespace
