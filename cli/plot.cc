@@ -124,7 +124,6 @@ int run_plot(const PlotArgs& args) {
     design = std::make_unique<plot::DesignCurve>(read_design_curve(args.design));
     if (design->layout_name.empty()) design->layout_name = layout.name;
   }
-  against_source(args.file, [&] { return data_vectors(layout); });
   create_figure_directory("--out", args.out);
 
   plot::LayoutFigures figures;

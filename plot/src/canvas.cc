@@ -103,11 +103,13 @@ Canvas::Canvas(const std::filesystem::path& path, const FigureOptions& options)
       surface_ = cairo_pdf_surface_create_for_stream(write_to_file, file_.get(), width_, height_);
       break;
   }
+  surface_owner_.reset(surface_);
   if (cairo_surface_status(surface_) != CAIRO_STATUS_SUCCESS) {
     throw RenderError(std::string("cairo: ") +
                       cairo_status_to_string(cairo_surface_status(surface_)));
   }
   cairo_ = cairo_create(surface_);
+  cairo_owner_.reset(cairo_);
   cairo_set_source_rgb(cairo_, 1.0, 1.0, 1.0);
   cairo_paint(cairo_);
 
@@ -129,12 +131,6 @@ Canvas::Canvas(const std::filesystem::path& path, const FigureOptions& options)
   pls_->scol0a(kPenPlane, 66, 146, 198, 0.22);
   pls_->adv(0);
   pls_->col0(kPenInk);
-}
-
-Canvas::~Canvas() {
-  pls_.reset();
-  if (cairo_) cairo_destroy(cairo_);
-  if (surface_) cairo_surface_destroy(surface_);
 }
 
 Eigen::Vector2d Canvas::device(double x, double y) {
@@ -354,7 +350,7 @@ void Canvas::finish() {
   pls_.reset();
   const std::string aborts = quiet_.aborts();
   if (!aborts.empty()) throw RenderError("PLplot: " + aborts + " (" + path_.string() + ")");
-  cairo_destroy(cairo_);
+  cairo_owner_.reset();
   cairo_ = nullptr;
   cairo_status_t status = CAIRO_STATUS_SUCCESS;
   if (options_.format == Format::kPng) {
@@ -363,14 +359,13 @@ void Canvas::finish() {
     cairo_surface_finish(surface_);
     status = cairo_surface_status(surface_);
   }
-  cairo_surface_destroy(surface_);
+  surface_owner_.reset();
   surface_ = nullptr;
   if (status != CAIRO_STATUS_SUCCESS) {
     throw RenderError("cairo: " + std::string(cairo_status_to_string(status)) + " (" +
                       path_.string() + ")");
   }
   file_->commit();
-  finished_ = true;
 }
 
 }  // namespace vantage::plot::internal

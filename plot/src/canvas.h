@@ -57,7 +57,7 @@ class Canvas {
   /// options.height. Throws RenderError when PLplot's cairo driver is missing or the file
   /// cannot be created.
   Canvas(const std::filesystem::path& path, const FigureOptions& options);
-  ~Canvas();
+  ~Canvas() = default;
   Canvas(const Canvas&) = delete;
   Canvas& operator=(const Canvas&) = delete;
 
@@ -129,11 +129,19 @@ class Canvas {
   FigureOptions options_;
   int width_ = 0;
   int height_ = 0;
-  cairo_surface_t* surface_ = nullptr;
-  cairo_t* cairo_ = nullptr;
+  struct SurfaceDeleter {
+    void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
+  };
+  struct ContextDeleter {
+    void operator()(cairo_t* c) const { cairo_destroy(c); }
+  };
+  // Declared in this order so that PLplot ends before the context and the surface go.
+  std::unique_ptr<cairo_surface_t, SurfaceDeleter> surface_owner_;
+  std::unique_ptr<cairo_t, ContextDeleter> cairo_owner_;
+  cairo_surface_t* surface_ = nullptr;  // surface_owner_.get()
+  cairo_t* cairo_ = nullptr;            // cairo_owner_.get()
   std::unique_ptr<plstream> pls_;
   std::unique_ptr<class OutputFile> file_;
-  bool finished_ = false;
 };
 
 }  // namespace vantage::plot::internal

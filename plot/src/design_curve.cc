@@ -103,13 +103,9 @@ void draw_curve(Canvas& canvas, const DesignCurve& curve, const FigureOptions& o
                  internal::kSmallSize * s, {25, 25, 25}, {255, 255, 255}, 0.8);
   }
 
-  pls.col0(internal::kPenInk);
-  pls.width(1.0 * s);
-  internal::set_text_size(canvas, internal::kSmallSize);
-  pls.box("bcnst", 0.0, 0, "bcnstv", 0.0, 0);
-  internal::set_text_size(canvas, internal::kLabelSize);
-  pls.mtex("b", 3.2, 0.5, 0.5, "m: number of data vectors (free vectors in point mode)");
-  pls.mtex("l", 4.8, 0.5, 0.5, "p̄_min: global worst case (higher is better)");
+  internal::draw_axes(canvas, "bcnst", "bcnstv", 0.0, 0,
+                      "m: number of data vectors (free vectors in point mode)", 3.2,
+                      "p̄_min: global worst case (higher is better)", 4.8);
 
   using Entry = Canvas::LegendEntry;
   std::vector<Entry> legend{

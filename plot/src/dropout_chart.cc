@@ -105,13 +105,9 @@ void draw_chart(Canvas& canvas, const DropoutChartData& data, const FigureOption
   pls.join(0.4, data.intact_max_error_deg, n + 0.6, data.intact_max_error_deg);
   pls.lsty(1);
 
-  pls.width(1.0 * s);
-  internal::set_text_size(canvas, internal::kSmallSize);
-  pls.box("bc", 0.0, 0, "bcnstv", 0.0, 0);
-  internal::set_text_size(canvas, internal::kLabelSize);
-  pls.mtex("b", 3.2, 0.5, 0.5,
-           (std::string(unit) + " removed (sorted by harm; p̄ = p̄_min without it)").c_str());
-  pls.mtex("l", 3.6, 0.5, 0.5, "max worst-case error without it  [deg]");
+  internal::draw_axes(canvas, "bc", "bcnstv", 0.0, 0,
+                      std::string(unit) + " removed (sorted by harm; p̄ = p̄_min without it)", 3.2,
+                      "max worst-case error without it  [deg]", 3.6);
 
   using Entry = Canvas::LegendEntry;
   canvas.legend(

@@ -131,23 +131,20 @@ void draw_surface(Canvas& canvas, const ErrorSurfaceData& data, const Eigen::Mat
   canvas.label(0.02, pbar_min, "layout at its worst viewpoint: p̄_min " + fixed(pbar_min, 4), 0.0,
                18 * s, 0.0, internal::kSmallSize * s, {25, 25, 25}, {255, 255, 255}, 0.85);
 
-  pls.col0(internal::kPenInk);
-  pls.width(1.0 * s);
-  internal::set_text_size(canvas, internal::kSmallSize);
-  pls.box("bcnst", 0.1, 2, "bcnstv", 0.1, 2);
-  internal::set_text_size(canvas, internal::kLabelSize);
-  pls.mtex("b", 3.0, 0.5, 0.5, "pᵢ: fraction of data vector i's norm in the image (Eq. 19)");
-  pls.mtex("l", 3.6, 0.5, 0.5, "p̄ = maxⱼ pⱼ: largest fraction (Eq. 25)");
+  internal::draw_axes(canvas, "bcnst", "bcnstv", 0.1, 2,
+                      "pᵢ: fraction of data vector i's norm in the image (Eq. 19)", 3.0,
+                      "p̄ = maxⱼ pⱼ: largest fraction (Eq. 25)", 3.6);
 
   internal::draw_colour_bar(canvas, 0.80, 0.825, 0.10, 0.86, 0.0, 90.0,
                             "error θ  [deg]  (contours every 10°)");
 
   using Entry = Canvas::LegendEntry;
+  // In the empty triangle p > p-bar, under the diagonal.
   canvas.legend(
-      0.115, 0.30,
+      0.735, 0.31,
       {Entry::marker("data vectors (pᵢ, p̄_min) at the worst viewpoint", kWorstViewpointColour),
        Entry::text_only("θ(p̄, p̄) = arccos p̄ on the diagonal: the largest error")},
-      internal::kSmallSize * s);
+      internal::kSmallSize * s, 1.0);
 }
 
 }  // namespace

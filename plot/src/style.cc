@@ -57,6 +57,19 @@ void draw_colour_bar(Canvas& canvas, double vx0, double vx1, double vy0, double 
   pls.mtex("r", 4.2, 0.5, 0.5, label.c_str());
 }
 
+void draw_axes(Canvas& canvas, const char* xopt, const char* yopt, double tick, int subticks,
+               const std::string& xlabel, double x_offset, const std::string& ylabel,
+               double y_offset) {
+  plstream& pls = canvas.pls();
+  pls.col0(kPenInk);
+  pls.width(page_scale(canvas));
+  set_text_size(canvas, kSmallSize);
+  pls.box(xopt, tick, subticks, yopt, tick, subticks);
+  set_text_size(canvas, kLabelSize);
+  pls.mtex("b", x_offset, 0.5, 0.5, xlabel.c_str());
+  pls.mtex("l", y_offset, 0.5, 0.5, ylabel.c_str());
+}
+
 std::string layout_label(const std::string& name) { return name.empty() ? "layout" : name; }
 
 }  // namespace vantage::plot::internal

@@ -35,6 +35,13 @@ void set_text_size(Canvas& canvas, double size_px);
 void draw_colour_bar(Canvas& canvas, double vx0, double vx1, double vy0, double vy1, double lo,
                      double hi, const std::string& label);
 
+/// The frame of the current viewport: PLplot's box with options xopt/yopt (major tick spacing
+/// `tick`, 0 = automatic, with `subticks` minor ticks), numbers in kSmallSize, and the axis labels
+/// in kLabelSize below (offset x_offset character heights) and left (y_offset).
+void draw_axes(Canvas& canvas, const char* xopt, const char* yopt, double tick, int subticks,
+               const std::string& xlabel, double x_offset, const std::string& ylabel,
+               double y_offset);
+
 /// "name" or, when empty, the fallback "layout".
 std::string layout_label(const std::string& name);
 
