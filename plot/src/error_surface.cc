@@ -14,13 +14,14 @@ namespace {
 
 using internal::Canvas;
 
-constexpr double kRadToDeg = 180.0 / M_PI;
 constexpr int kMinSamples = 16;
 constexpr int kMaxSamples = 2000;
 // Contour levels of theta, degrees.
 constexpr double kContourStepDeg = 10.0;
 
-double theta_deg(double p, double pbar) { return kRadToDeg * lub_scale_error_angle(p, pbar); }
+double theta_deg(double p, double pbar) {
+  return internal::kDegreesPerRadian * lub_scale_error_angle(p, pbar);
+}
 double cell_centre(int k, int n) { return (k + 0.5) / n; }
 
 void check_data(const ErrorSurfaceData& data) {

@@ -3,11 +3,15 @@
 // Page furniture shared by the figures: sizes scaled to the page, titles, number formatting.
 // Private to vantage::plot.
 
+#include <cmath>
 #include <string>
 
 #include "canvas.h"
 
 namespace vantage::plot::internal {
+
+/// Degrees per radian (the figures speak degrees).
+inline constexpr double kDegreesPerRadian = 180.0 / M_PI;
 
 /// Font sizes (pixels at the default 1000 x 800 page; multiplied by page_scale()).
 inline constexpr double kTitleSize = 22.0;

@@ -13,7 +13,7 @@ namespace {
 
 using internal::Canvas;
 
-constexpr double kDegToRad = M_PI / 180.0;
+constexpr double kDegToRad = 1.0 / internal::kDegreesPerRadian;
 // Scene: entries scaled into the unit ball; the a-perp disc and the axes reach a bit further.
 constexpr double kDiscRadius = 1.2;
 constexpr double kAxisLength = 1.45;

@@ -15,13 +15,14 @@ namespace {
 
 using internal::Canvas;
 
-constexpr double kRadToDeg = 180.0 / M_PI;
 // Worst viewpoints closer than this (pixels at the default size) share one label.
 constexpr double kLabelSpacingPx = 140.0;
 // Points per great circle n_i^perp (half circle in the upper hemisphere).
 constexpr int kCirclePoints = 241;
 
-double error_deg(double pbar) { return kRadToDeg * std::acos(std::clamp(pbar, -1.0, 1.0)); }
+double error_deg(double pbar) {
+  return internal::kDegreesPerRadian * std::acos(std::clamp(pbar, -1.0, 1.0));
+}
 
 // Cell centre coordinate of index k of N over [-1, 1].
 double cell_centre(int k, int n) { return -1.0 + (2.0 * k + 1.0) / n; }
