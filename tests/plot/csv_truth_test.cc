@@ -159,7 +159,7 @@ TEST_P(CsvTruth, ErrorSurfaceIsEquation26) {
                 pbar - p < 1e-6 ? kDiagonalDegrees : kDegreesRounding);
     largest = std::max(largest, surface.number(r, "theta_deg"));
   }
-  // The vector that sets p-bar has the whole error arccos p-bar_min (docs/math.md note 10).
+  // The vector that sets p-bar has the whole error arccos p-bar_min (docs/math.md §11).
   EXPECT_NEAR(largest, kRadToDeg * std::acos(analysis_.pbar_min), 1e-6);
 }
 

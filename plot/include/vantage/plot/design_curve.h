@@ -2,7 +2,7 @@
 
 /// Figure `design`: p_bar_min of the inductive augmenter (vantage design) after each step
 /// against the number m of data vectors, the direct optimiser's answer and the ceiling
-/// cos(pi / (2 m)) (docs/math.md note 4).
+/// cos(pi / (2 m)) (docs/math.md §15).
 
 #include <filesystem>
 #include <string>

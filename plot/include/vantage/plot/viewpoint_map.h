@@ -2,7 +2,7 @@
 
 /// Figure `viewpoint_map`: the whole sphere of viewing directions, shaded by the worst-case
 /// angular error arccos p_bar(a) at each viewpoint a, with p_bar(a) = max_i sqrt(1 - (a.n_i)^2)
-/// (docs/math.md note 10). a and -a are the same viewpoint, so the upper hemisphere (a_z >= 0)
+/// (docs/math.md §11). a and -a are the same viewpoint, so the upper hemisphere (a_z >= 0)
 /// shows everything; it is drawn in the Lambert azimuthal equal-area projection, so equal areas
 /// of the disc are equal solid angles of viewing directions.
 ///

@@ -32,7 +32,7 @@ struct DropoutEntry {
   double pbar_min = 1.0;                                       ///< sqrt(1 - t^2)
   /// Largest Eq. (30) error over the remaining vectors and the worst viewpoints, in degrees
   /// (as `vantage analyze` reports it). With one vector left, t = 1 and p-bar_min = 0: it is
-  /// seen end-on, and this is the limit arccos(p-bar_min) = 90 degrees (docs/math.md note 10).
+  /// seen end-on, and this is the limit arccos(p-bar_min) = 90 degrees (docs/math.md §11).
   double max_worst_case_error_deg = 0.0;
   bool certified = false;  ///< the global solver's status is kCertified (always for one vector)
 };
