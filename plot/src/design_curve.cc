@@ -164,8 +164,7 @@ FigureFiles write_design_curve(const DesignCurve& curve, const std::filesystem::
                                const FigureOptions& options) {
   std::string why;
   if (!curve.is_valid(&why)) throw InvalidArgument("write_design_curve: curve." + why);
-  FigureFiles files{"design", directory / (std::string("design.") + to_string(options.format)),
-                    directory / "design.csv"};
+  const FigureFiles files = figure_files("design", directory, options.format);
   Canvas canvas(files.image, options);
   draw_curve(canvas, curve, options);
   canvas.finish();

@@ -127,8 +127,7 @@ FigureFiles write_dropout_chart(const DropoutChartData& data,
                                 const std::filesystem::path& directory,
                                 const FigureOptions& options) {
   check_data(data);
-  FigureFiles files{"dropout", directory / (std::string("dropout.") + to_string(options.format)),
-                    directory / "dropout.csv"};
+  const FigureFiles files = figure_files("dropout", directory, options.format);
   Canvas canvas(files.image, options);
   draw_chart(canvas, data, options);
   canvas.finish();

@@ -155,9 +155,7 @@ FigureFiles write_error_surface(const ErrorSurfaceData& data,
                                 const FigureOptions& options) {
   check_data(data);
   const Eigen::MatrixXd grid = theta_grid(data.samples_per_axis);
-  FigureFiles files{"error_surface",
-                    directory / (std::string("error_surface.") + to_string(options.format)),
-                    directory / "error_surface.csv"};
+  const FigureFiles files = figure_files("error_surface", directory, options.format);
   Canvas canvas(files.image, options);
   draw_surface(canvas, data, grid, options);
   canvas.finish();

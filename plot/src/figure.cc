@@ -23,6 +23,11 @@ Format parse_format(const std::string& name, const std::string& argument) {
   throw InvalidArgument(argument + ": unknown format \"" + name + "\" (png, svg or pdf)");
 }
 
+FigureFiles figure_files(const std::string& name, const std::filesystem::path& directory,
+                         Format format) {
+  return {name, directory / (name + "." + to_string(format)), directory / (name + ".csv")};
+}
+
 bool FigureOptions::is_valid(std::string* why) const {
   auto fail = [why](const std::string& message) {
     if (why) *why = message;

@@ -222,8 +222,7 @@ FigureFiles write_vectors_figure(const VectorsFigureData& data,
                                  const std::filesystem::path& directory,
                                  const FigureOptions& options) {
   check_data(data);
-  FigureFiles files{"vectors", directory / (std::string("vectors.") + to_string(options.format)),
-                    directory / "vectors.csv"};
+  const FigureFiles files = figure_files("vectors", directory, options.format);
   Canvas canvas(files.image, options);
   draw_scene(canvas, data, options);
   canvas.finish();

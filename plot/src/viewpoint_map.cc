@@ -246,9 +246,7 @@ FigureFiles write_viewpoint_map(const ViewpointMapData& data,
   check_data(data);
   const ViewpointSamples samples =
       sample_viewpoints(data.vectors, data.samples_per_axis, options.threads);
-  FigureFiles files{"viewpoint_map",
-                    directory / (std::string("viewpoint_map.") + to_string(options.format)),
-                    directory / "viewpoint_map.csv"};
+  const FigureFiles files = figure_files("viewpoint_map", directory, options.format);
   Canvas canvas(files.image, options);
   draw_map(canvas, data, samples, options);
   canvas.finish();

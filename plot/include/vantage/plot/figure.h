@@ -48,6 +48,10 @@ struct FigureFiles {
   std::filesystem::path csv;    ///< <directory>/<name>.csv
 };
 
+/// The files of figure `name` in `directory`: <name>.<png|svg|pdf> and <name>.csv.
+FigureFiles figure_files(const std::string& name, const std::filesystem::path& directory,
+                         Format format);
+
 /// A figure could not be rendered or written (disk full, unwritable file, missing PLplot driver,
 /// PLplot error). Bad caller input throws vantage::InvalidArgument instead.
 class RenderError : public std::runtime_error {
