@@ -86,3 +86,15 @@ bench-peers: configure
 	cmake -S . -B $(BUILD_DIR)
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target vantage_pose_peers
 	$(BUILD_DIR)/bench/peers/vantage_pose_peers --trials 500
+
+# The five figures of the satellite example (PNG + the CSV of each) in docs/figures/, shown in
+# README.md: a design run (two markers added greedily, and by the direct optimiser) feeds the
+# design figure.
+FIGURES_DIR ?= docs/figures
+.PHONY: figures
+figures: build
+	mkdir -p $(FIGURES_DIR)
+	$(BUILD_DIR)/cli/vantage design examples/layouts/satellite.json --add 2 --json \
+	  > $(BUILD_DIR)/satellite_design.json
+	$(BUILD_DIR)/cli/vantage plot examples/layouts/satellite.json --out $(FIGURES_DIR) \
+	  --design $(BUILD_DIR)/satellite_design.json

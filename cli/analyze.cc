@@ -16,6 +16,8 @@
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/layout.h"
 #include "vantage/design/augment.h"
+#include "vantage/io/layout_file.h"
+#include "vantage/sdp/dropout.h"
 #include "vantage/sdp/layout_analysis.h"
 
 namespace vantage::cli {
@@ -35,6 +37,7 @@ struct AnalyzeArgs {
   std::string pair_weighting = "geometric";
   int swaps = 5;
   bool crosscheck = true;
+  bool dropout = false;
   bool json = false;
   bool verbose = false;
   bool quiet = false;
@@ -214,6 +217,37 @@ void print_report(const AnalyzeArgs& args, const Layout& layout, const DataVecto
   }
 }
 
+/// "p3" for marker 3 (point mode), "v3" for vector 3.
+std::string entry_label(const Layout& layout, int k) {
+  return (layout.mode == LayoutMode::kPoints ? "p" : "v") + std::to_string(k);
+}
+
+Json dropout_json(const sdp::DropoutAnalysis& dropout) {
+  Json list = Json::array();
+  for (const sdp::DropoutEntry& e : dropout.entries) {
+    list.push_back({{"index", e.index},
+                    {"pbar_min", e.pbar_min},
+                    {"max_worst_case_error_deg", e.max_worst_case_error_deg},
+                    {"worst_viewpoint", json_list(e.worst_viewpoint)},
+                    {"n_vectors", e.n_vectors},
+                    {"certified", e.certified}});
+  }
+  return list;
+}
+
+void print_dropout(const Layout& layout, const sdp::DropoutAnalysis& dropout) {
+  std::cout << "\ndropout: the layout without one "
+            << (layout.mode == LayoutMode::kPoints ? "marker" : "vector")
+            << ", most harmful first (pbar_min, max worst-case error):\n";
+  for (int k : dropout.by_harm) {
+    const sdp::DropoutEntry& e = dropout.entries[k];
+    std::cout << "  without " << entry_label(layout, e.index) << "  pbar_min "
+              << format_number(e.pbar_min, 6) << "  "
+              << format_number(e.max_worst_case_error_deg, 6) << " deg"
+              << (e.certified ? "" : "  (NOT certified)") << "\n";
+  }
+}
+
 int run_analyze(const AnalyzeArgs& args) {
   if (args.swaps < 1) throw InvalidArgument("--swaps: must be >= 1");
   const Layout layout = args.input.read(args.file, args.allow_large);
@@ -236,15 +270,23 @@ int run_analyze(const AnalyzeArgs& args) {
     rethrow_for_layout(args.file, layout, data, e);
   }
   const double ceiling = design::pbar_ceiling(static_cast<int>(data.vectors.cols()));
+  sdp::DropoutAnalysis dropout;
+  if (args.dropout) dropout = sdp::dropout_analysis(layout);
+  const bool dropout_certified =
+      !args.dropout || dropout.status == sdp::DropoutAnalysis::Status::kCertified;
 
   if (args.json) {
-    print_json(analysis_json(layout, data, report, ceiling));
+    Json out = analysis_json(layout, data, report, ceiling);
+    if (args.dropout) out["dropout"] = dropout_json(dropout);
+    print_json(out);
   } else {
     print_report(args, layout, data, report, ceiling);
+    if (args.dropout) print_dropout(layout, dropout);
   }
-  if (!report.trusted() || report.degenerate) {
-    std::cerr << "vantage: warning: "
-              << (report.message.empty() ? "result not certified" : report.message) << std::endl;
+  if (!report.trusted() || report.degenerate || !dropout_certified) {
+    std::string message = report.message.empty() ? "result not certified" : report.message;
+    if (!dropout_certified && !dropout.message.empty()) message += "; dropout: " + dropout.message;
+    std::cerr << "vantage: warning: " << message << std::endl;
     return kExitFailure;
   }
   return kExitOk;
@@ -272,6 +314,9 @@ Command add_analyze_command(CLI::App& root) {
                 "list the worst-case error of every data vector (default: the worst 5)");
   add_allow_large_flag(sub, args->allow_large);
   sub->add_flag("--quiet", args->quiet, "no progress line on stderr (shown only on a terminal)");
+  sub->add_flag("--dropout", args->dropout,
+                "also analyse the layout without each marker (point mode) or vector: "
+                "which one can it least afford to lose");
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
   return {sub, [args] { return run_analyze(*args); }};
 }

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "command.h"
+#include "figure_output.h"
 #include "layout_input.h"
 #include "limits.h"
 #include "progress.h"
@@ -18,6 +19,7 @@
 #include "vantage/design/augment.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/io/text_file.h"
+#include "vantage/plot/design_curve.h"
 
 namespace vantage::cli {
 
@@ -42,6 +44,7 @@ struct DesignArgs {
   std::string write;
   bool write_given = false;  // --write appeared, possibly with an empty name
   bool overwrite = false;
+  std::string plot;
   bool json = false;
   bool quiet = false;
   bool allow_large = false;
@@ -308,6 +311,7 @@ int run_design(const DesignArgs& args) {
   check_point_candidates(args.file, layout, args.margin);
   std::optional<io::WriteLock> lock;
   if (args.write_given) lock.emplace(args.write);
+  if (!args.plot.empty()) check_figure_directory("--plot", args.plot);
 
   design::AugmentOptions options;
   options.add = args.add;
@@ -323,14 +327,28 @@ int run_design(const DesignArgs& args) {
 
   const bool ok = r.status == design::AugmentResult::Status::kOk;
   if (ok && args.write_given) io::write_layout(args.write, layout_to_write(r), args.overwrite);
+  std::vector<plot::FigureFiles> figures;
+  if (ok && !args.plot.empty()) {
+    create_figure_directory("--plot", args.plot);
+    try {
+      figures.push_back(plot::write_design_curve(plot::design_curve(r, layout.name), args.plot));
+    } catch (const plot::RenderError& e) {
+      std::cerr << "vantage: design: " << e.what() << std::endl;
+      return kExitFailure;
+    }
+  }
 
   if (args.json) {
     Json out = design_json(args, layout, r);
     if (ok && args.write_given) out["written"] = args.write;
+    if (!figures.empty()) out["figures"] = figure_files_json(figures);
     print_json(out);
   } else {
     print_report(args, layout, r);
     if (ok && args.write_given) std::cout << "written: " << args.write << "\n";
+    for (const plot::FigureFiles& f : figures) {
+      std::cout << "figure: " << f.image.string() << " (numbers: " << f.csv.string() << ")\n";
+    }
   }
   if (!ok) {
     std::cerr << "vantage: design: " << design::to_string(r.status) << ": " << r.message;
@@ -378,6 +396,9 @@ Command add_design_command(CLI::App& root) {
       ->needs(write);
   add_allow_large_flag(sub, args->allow_large);
   sub->add_flag("--quiet", args->quiet, "no progress line on stderr (shown only on a terminal)");
+  sub->add_option("--plot", args->plot,
+                  "write the design figure (design.png + design.csv: p-bar_min per step, the "
+                  "direct optimum, the ceiling) into DIR");
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
   return {sub, [args, write] {
             args->write_given = write->count() > 0;

@@ -13,6 +13,7 @@ packages=(
   nlohmann-json3-dev
   libcli11-dev
   libplplot-dev plplot-driver-cairo
+  libcairo2-dev libpng-dev
   libglfw3-dev libimgui-dev libstb-dev
   libgtest-dev libgmock-dev googletest
   libbenchmark-dev

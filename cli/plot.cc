@@ -1,0 +1,195 @@
+// `vantage plot LAYOUT --out DIR [--format png|svg|pdf] [--only NAME,...] [--size WxH]
+// [--threshold-deg X] [--design DESIGN.json] [--title T] [--json]`: the figures of a layout
+// (vantage::plot), each image with the CSV of the numbers it draws.
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <regex>
+
+#include "command.h"
+#include "figure_output.h"
+#include "vantage/analysis/common.h"
+#include "vantage/io/layout_file.h"
+#include "vantage/plot/layout_figures.h"
+
+namespace vantage::cli {
+
+namespace {
+
+struct PlotArgs {
+  std::string file;
+  std::string out;
+  std::string format = "png";
+  std::vector<std::string> only;
+  std::string size = "1000x800";
+  double threshold_deg = 5.0;
+  std::string design;
+  std::string title;
+  bool json = false;
+};
+
+[[noreturn]] void bad(const std::string& message) { throw InvalidArgument(message); }
+
+void parse_size(const std::string& text, plot::FigureOptions& options) {
+  static const std::regex pattern("([0-9]{1,5})[xX]([0-9]{1,5})");
+  std::smatch match;
+  if (!std::regex_match(text, match, pattern)) {
+    bad("--size: expected WxH in pixels, e.g. 1000x800, got \"" + text + "\"");
+  }
+  options.width = std::stoi(match[1].str());
+  options.height = std::stoi(match[2].str());
+  std::string why;
+  if (!options.is_valid(&why)) {
+    bad("--size: each side must be in [" + std::to_string(plot::kMinFigureSide) + ", " +
+        std::to_string(plot::kMaxFigureSide) + "] pixels, got " + text);
+  }
+}
+
+// A number field of the design JSON, or an error naming the file and the field.
+double number_at(const Json& object, const std::string& key, const std::string& where) {
+  if (!object.is_object() || !object.contains(key) || !object.at(key).is_number()) {
+    bad(where + "." + key + ": missing or not a number");
+  }
+  return object.at(key).get<double>();
+}
+
+int count_at(const Json& object, const std::string& key, const std::string& where) {
+  const double value = number_at(object, key, where);
+  if (!(value >= 1.0) || value != std::floor(value) || value > 1e9) {
+    bad(where + "." + key + ": must be a positive integer");
+  }
+  return static_cast<int>(value);
+}
+
+// The curve of a `vantage design --json` output file.
+plot::DesignCurve read_design_curve(const std::string& path) {
+  Json root;
+  try {
+    root = Json::parse(io::read_text_file(path));
+  } catch (const Json::exception& e) {
+    bad(path + ": not JSON (" + std::string(e.what()) + ")");
+  }
+  if (!root.is_object()) bad(path + ": not a JSON object (expected `vantage design --json`)");
+  plot::DesignCurve curve;
+  if (root.contains("name") && root.at("name").is_string()) curve.layout_name = root.at("name");
+  if (!root.contains("initial")) bad(path + ": initial: missing");
+  curve.n_vectors.push_back(count_at(root.at("initial"), "n_vectors", path + ": initial"));
+  curve.pbar_min.push_back(number_at(root.at("initial"), "pbar_min", path + ": initial"));
+  if (!root.contains("steps") || !root.at("steps").is_array()) bad(path + ": steps: missing");
+  const Json& steps = root.at("steps");
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const std::string where = path + ": steps[" + std::to_string(k) + "]";
+    curve.n_vectors.push_back(count_at(steps[k], "n_vectors", where));
+    curve.pbar_min.push_back(number_at(steps[k], "pbar_min", where));
+  }
+  if (root.contains("direct")) {
+    curve.has_direct = true;
+    curve.direct_n_vectors = curve.n_vectors.back();
+    curve.direct_pbar_min = number_at(root.at("direct"), "pbar_min", path + ": direct");
+  }
+  std::string why;
+  if (!curve.is_valid(&why)) bad(path + ": " + why);
+  return curve;
+}
+
+int run_plot(const PlotArgs& args) {
+  plot::LayoutFiguresOptions options;
+  options.figure.format = plot::parse_format(args.format, "--format");
+  options.figure.title = args.title;
+  parse_size(args.size, options.figure);
+  if (!(args.threshold_deg > 0.0 && args.threshold_deg < 90.0)) {
+    bad("--threshold-deg: must be in (0, 90) degrees, got " + format_number(args.threshold_deg));
+  }
+  options.threshold_deg = args.threshold_deg;
+  for (const std::string& name : args.only) {
+    if (!plot::is_figure_name(name)) {
+      bad("--only: unknown figure \"" + name +
+          "\" (viewpoint_map, dropout, error_surface, vectors, design)");
+    }
+    if (name == "design" && args.design.empty()) {
+      bad("--only: the design figure needs --design DESIGN.json (`vantage design --json`)");
+    }
+  }
+  options.only = args.only;
+  try {
+    plot::selected_figures(options, !args.design.empty());
+  } catch (const InvalidArgument& e) {
+    bad(std::string("--") + e.what());
+  }
+  check_figure_directory("--out", args.out);
+  const Layout layout = io::read_layout(args.file);
+  std::unique_ptr<plot::DesignCurve> design;
+  if (!args.design.empty()) {
+    design = std::make_unique<plot::DesignCurve>(read_design_curve(args.design));
+    if (design->layout_name.empty()) design->layout_name = layout.name;
+  }
+  create_figure_directory("--out", args.out);
+
+  plot::LayoutFigures figures;
+  try {
+    figures = plot::write_layout_figures(layout, args.out, options, design.get());
+  } catch (const plot::RenderError& e) {
+    std::cerr << "vantage: plot: " << e.what() << std::endl;
+    return kExitFailure;
+  }
+  const bool certified = figures.status == plot::LayoutFigures::Status::kCertified;
+  if (args.json) {
+    Json out;
+    out["layout"] = args.file;
+    out["name"] = layout.name;
+    out["out"] = args.out;
+    out["format"] = plot::to_string(options.figure.format);
+    out["size"] = {options.figure.width, options.figure.height};
+    out["threshold_deg"] = options.threshold_deg;
+    out["pbar_min"] = figures.pbar_min;
+    out["max_worst_case_error_deg"] = figures.max_worst_case_error_deg;
+    out["status"] = certified ? "certified" : "not_certified";
+    if (!figures.message.empty()) out["message"] = figures.message;
+    out["figures"] = figure_files_json(figures.files);
+    print_json(out);
+  } else {
+    std::cout << "vantage plot: " << (layout.name.empty() ? args.file : layout.name) << "\n"
+              << "p-bar_min " << format_number(figures.pbar_min, 6) << ", max worst-case error "
+              << format_number(figures.max_worst_case_error_deg, 6) << " deg\n"
+              << figures.files.size() << " figure" << (figures.files.size() == 1 ? "" : "s")
+              << " written (" << plot::to_string(options.figure.format) << " + csv):\n";
+    for (const plot::FigureFiles& f : figures.files) {
+      std::cout << "  " << f.image.string() << "\n  " << f.csv.string() << "\n";
+    }
+  }
+  if (!certified) {
+    std::cerr << "vantage: warning: " << figures.message << std::endl;
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_plot_command(CLI::App& root) {
+  auto args = std::make_shared<PlotArgs>();
+  CLI::App* sub = root.add_subcommand(
+      "plot",
+      "Figures of a layout (PNG, SVG or PDF, each with a CSV of its numbers): viewpoint_map, "
+      "dropout, error_surface, vectors, and design (with --design)");
+  sub->add_option("LAYOUT", args->file, "layout JSON file (vectors or points)")->required();
+  sub->add_option("--out", args->out, "directory for the figures (created if missing)")->required();
+  sub->add_option("--format", args->format, "png, svg or pdf")->capture_default_str();
+  sub->add_option("--only", args->only,
+                  "comma-separated figures to write: viewpoint_map, dropout, error_surface, "
+                  "vectors, design (default: all; design only with --design)")
+      ->delimiter(',');
+  sub->add_option("--size", args->size, "WxH in pixels (points for SVG/PDF)")
+      ->capture_default_str();
+  sub->add_option("--threshold-deg", args->threshold_deg,
+                  "viewpoint_map: contour of the directions whose worst-case error exceeds X deg")
+      ->capture_default_str();
+  sub->add_option("--design", args->design,
+                  "DESIGN.json written by `vantage design ... --json`: adds the design figure");
+  sub->add_option("--title", args->title, "replaces every figure's title");
+  sub->add_flag("--json", args->json, "print one JSON object listing the files written");
+  return {sub, [args] { return run_plot(*args); }};
+}
+
+}  // namespace vantage::cli

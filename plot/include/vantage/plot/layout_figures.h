@@ -1,0 +1,63 @@
+#pragma once
+
+/// All figures of one layout in one call: runs the analysis each needs (global worst viewpoint,
+/// the paper's single LMI, dropout) and writes the chosen figures into a directory. This is what
+/// `vantage plot` and `make figures` run.
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "vantage/analysis/layout.h"
+#include "vantage/plot/design_curve.h"
+#include "vantage/plot/figure.h"
+
+namespace vantage::plot {
+
+/// The figures, in the order they are written (file names <name>.<ext>, <name>.csv).
+inline constexpr std::array<const char*, 5> kFigureNames = {"viewpoint_map", "dropout",
+                                                            "error_surface", "vectors", "design"};
+
+/// True for a name in kFigureNames.
+bool is_figure_name(const std::string& name);
+
+/// Options of write_layout_figures().
+struct LayoutFiguresOptions {
+  FigureOptions figure;
+  /// Figures to write (names from kFigureNames, no repeats); empty = all, where "design" is
+  /// included only when a design curve is given.
+  std::vector<std::string> only;
+  double threshold_deg = 5.0;  ///< viewpoint_map contour, in (0, 90) degrees
+  int map_samples = 400;       ///< viewpoint_map grid per axis, in [400, 4000]
+
+  /// True when every field is in range; otherwise *why names the field and the constraint.
+  bool is_valid(std::string* why = nullptr) const;
+};
+
+/// Result of write_layout_figures().
+struct LayoutFigures {
+  enum class Status {
+    kCertified,     ///< every global worst-viewpoint solve behind the figures is certified
+    kNotCertified,  ///< some solve's certificate did not close; figures drawn anyway (message)
+  };
+  Status status = Status::kNotCertified;
+  std::vector<FigureFiles> files;  ///< in kFigureNames order
+  double pbar_min = 1.0;           ///< of the layout
+  double max_worst_case_error_deg = 0.0;
+  std::string message;
+};
+
+/// The figure names write_layout_figures() will write for these options (checks `only`).
+/// Throws InvalidArgument naming "only" for an unknown or repeated name, or for "design"
+/// without a design curve.
+std::vector<std::string> selected_figures(const LayoutFiguresOptions& options, bool has_design);
+
+/// Writes the selected figures of `layout` into `directory` (which must exist). design may be
+/// null (no design figure). Throws InvalidArgument on an invalid layout, options or curve,
+/// RenderError when drawing or writing fails.
+LayoutFigures write_layout_figures(const Layout& layout, const std::filesystem::path& directory,
+                                   const LayoutFiguresOptions& options,
+                                   const DesignCurve* design = nullptr);
+
+}  // namespace vantage::plot

@@ -1,0 +1,233 @@
+#include "vantage/plot/vectors_figure.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "canvas.h"
+#include "output_file.h"
+#include "style.h"
+#include "vantage/analysis/common.h"
+
+namespace vantage::plot {
+namespace {
+
+using internal::Canvas;
+
+constexpr double kDegToRad = 1.0 / internal::kDegreesPerRadian;
+// Scene: entries scaled into the unit ball; the a-perp disc and the axes reach a bit further.
+constexpr double kDiscRadius = 1.2;
+constexpr double kAxisLength = 1.45;
+constexpr double kWindow = 1.6;
+constexpr int kDiscPoints = 121;
+// Point layouts with more markers than this show the markers only (no free-vector lines).
+constexpr Eigen::Index kMaxPairLines = 40;
+
+Eigen::Vector3d camera_direction() {
+  const double az = kVectorsAzimuthDeg * kDegToRad, el = kVectorsElevationDeg * kDegToRad;
+  return {std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
+}
+
+void check_data(const VectorsFigureData& data) {
+  if (data.entries.cols() == 0) throw InvalidArgument("write_vectors_figure: entries is empty");
+  if (!data.entries.allFinite()) throw InvalidArgument("write_vectors_figure: entries not finite");
+  if (data.worst_viewpoints.empty()) {
+    throw InvalidArgument("write_vectors_figure: worst_viewpoints is empty");
+  }
+}
+
+// Entries in the scene: unit-ball scaled (directions by their length relative to the longest,
+// points about their centroid).
+Eigen::Matrix3Xd scene_entries(const VectorsFigureData& data) {
+  Eigen::Matrix3Xd scene = data.entries;
+  if (data.mode == LayoutMode::kPoints) {
+    const Eigen::Vector3d centroid = scene.rowwise().mean();
+    scene.colwise() -= centroid;
+  }
+  const double radius = scene.colwise().norm().maxCoeff();
+  if (radius > 0.0) scene /= radius;
+  return scene;
+}
+
+void write_csv(const VectorsFigureData& data, const std::filesystem::path& path) {
+  internal::CsvWriter csv(path, "series,index,x,y,z");
+  const char* series = data.mode == LayoutMode::kPoints ? "point" : "vector";
+  for (Eigen::Index k = 0; k < data.entries.cols(); ++k) {
+    csv << series << static_cast<long>(k) << data.entries(0, k) << data.entries(1, k)
+        << data.entries(2, k);
+    csv.end_row();
+  }
+  long k = 0;
+  for (const Eigen::Vector3d& a : data.worst_viewpoints) {
+    csv << "worst_viewpoint" << k++ << a.x() << a.y() << a.z();
+    csv.end_row();
+  }
+  const Eigen::Vector3d& lmi = data.paper_lmi_viewpoint;
+  csv << "paper_lmi" << 0 << lmi.x() << lmi.y() << lmi.z();
+  csv.end_row();
+  csv.commit();
+}
+
+void line3(Canvas& canvas, const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
+  const Eigen::Vector2d a = vectors_camera_projection(from), b = vectors_camera_projection(to);
+  canvas.pls().join(a.x(), a.y(), b.x(), b.y());
+}
+
+void draw_plane_disc(Canvas& canvas, const Eigen::Vector3d& a) {
+  Eigen::Vector3d u = a.unitOrthogonal();
+  const Eigen::Vector3d v = a.cross(u).normalized();
+  std::vector<double> x(kDiscPoints), y(kDiscPoints);
+  for (int k = 0; k < kDiscPoints; ++k) {
+    const double phi = 2.0 * M_PI * k / (kDiscPoints - 1);
+    const Eigen::Vector2d p =
+        vectors_camera_projection(kDiscRadius * (std::cos(phi) * u + std::sin(phi) * v));
+    x[k] = p.x();
+    y[k] = p.y();
+  }
+  canvas.fill_polygon(x, y, {66, 146, 198}, 0.22);
+  canvas.pls().col0(internal::kPenPlane);
+  canvas.pls().width(1.0 * internal::page_scale(canvas));
+  canvas.pls().line(kDiscPoints, x.data(), y.data());
+}
+
+void draw_frame_axes(Canvas& canvas) {
+  const double s = internal::page_scale(canvas);
+  const char* names[3] = {"x", "y", "z"};
+  canvas.pls().col0(internal::kPenGrid);
+  canvas.pls().width(1.0 * s);
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::Vector3d axis = Eigen::Vector3d::Unit(k) * 1.25;
+    canvas.pls().lsty(3);
+    line3(canvas, -axis, axis);
+    canvas.pls().lsty(1);
+    const Eigen::Vector2d tip = vectors_camera_projection(axis);
+    canvas.label(tip.x(), tip.y(), std::string("+") + names[k], 0.0, 0.0, 0.5,
+                 internal::kSmallSize * s, {120, 120, 120});
+  }
+}
+
+void draw_entries(Canvas& canvas, const VectorsFigureData& data, const Eigen::Matrix3Xd& scene) {
+  const double s = internal::page_scale(canvas);
+  plstream& pls = canvas.pls();
+  const Rgb ink = kDataVectorColour;
+  const Eigen::Vector3d view = camera_direction();
+  if (data.mode == LayoutMode::kVectors) {
+    pls.col0(internal::kPenVector);
+    pls.width(2.2 * s);
+    for (Eigen::Index k = 0; k < scene.cols(); ++k) {
+      line3(canvas, Eigen::Vector3d::Zero(), scene.col(k));
+      const Eigen::Vector2d tip = vectors_camera_projection(scene.col(k));
+      canvas.marker(tip.x(), tip.y(), 3.5 * s, ink);
+      canvas.label(tip.x(), tip.y(), "v" + std::to_string(k), 9 * s, -9 * s, 0.0,
+                   internal::kSmallSize * s, ink, {255, 255, 255}, 0.7);
+    }
+    return;
+  }
+  if (scene.cols() <= kMaxPairLines) {
+    pls.col0(internal::kPenGreatCircle);
+    pls.width(0.6 * s);
+    for (Eigen::Index i = 0; i < scene.cols(); ++i) {
+      for (Eigen::Index j = i + 1; j < scene.cols(); ++j) line3(canvas, scene.col(i), scene.col(j));
+    }
+  }
+  // Far markers first, so that near ones are drawn over them.
+  std::vector<Eigen::Index> order(scene.cols());
+  for (Eigen::Index k = 0; k < scene.cols(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) {
+    return scene.col(a).dot(view) < scene.col(b).dot(view);
+  });
+  for (Eigen::Index k : order) {
+    const Eigen::Vector2d p = vectors_camera_projection(scene.col(k));
+    canvas.marker(p.x(), p.y(), 5.0 * s, ink);
+  }
+  for (Eigen::Index k : order) {
+    const Eigen::Vector2d p = vectors_camera_projection(scene.col(k));
+    canvas.label(p.x(), p.y(), "p" + std::to_string(k), 8 * s, -9 * s, 0.0,
+                 internal::kSmallSize * s, ink);
+  }
+}
+
+void draw_viewpoint_axis(Canvas& canvas, const Eigen::Vector3d& a, Rgb colour, int pen,
+                         double width, bool dashed, Canvas::Shape shape) {
+  const double s = internal::page_scale(canvas);
+  canvas.pls().col0(pen);
+  canvas.pls().width(width * s);
+  canvas.pls().lsty(dashed ? 2 : 1);
+  line3(canvas, -kAxisLength * a, kAxisLength * a);
+  canvas.pls().lsty(1);
+  const Eigen::Vector2d tip = vectors_camera_projection(kAxisLength * a);
+  const Eigen::Vector2d tail = vectors_camera_projection(-kAxisLength * a);
+  canvas.marker(tip.x(), tip.y(), 6.0 * s, colour, shape);
+  canvas.marker(tail.x(), tail.y(), 4.0 * s, colour, shape);
+}
+
+void draw_scene(Canvas& canvas, const VectorsFigureData& data, const FigureOptions& options) {
+  using internal::fixed;
+  const double s = internal::page_scale(canvas);
+  internal::draw_title(
+      canvas,
+      internal::figure_title(options, "Data vectors: " + internal::layout_label(data.layout_name)),
+      "orthographic view from azimuth " + fixed(kVectorsAzimuthDeg, 0) + "°, elevation " +
+          fixed(kVectorsElevationDeg, 0) + "° (object frame, +z up); " +
+          (data.mode == LayoutMode::kPoints ? "markers about their centroid"
+                                            : "vectors scaled to the longest"));
+  plstream& pls = canvas.pls();
+  pls.vpas(0.02, 0.70, 0.03, 0.87, 1.0);
+  pls.wind(-kWindow, kWindow, -kWindow, kWindow);
+  const Eigen::Matrix3Xd scene = scene_entries(data);
+
+  draw_frame_axes(canvas);
+  draw_plane_disc(canvas, data.worst_viewpoints.front());
+  draw_entries(canvas, data, scene);
+  draw_viewpoint_axis(canvas, data.paper_lmi_viewpoint, kPaperLmiColour, internal::kPenPaperLmi,
+                      1.8, true, Canvas::Shape::kDiamond);
+  for (std::size_t k = 0; k < data.worst_viewpoints.size(); ++k) {
+    draw_viewpoint_axis(canvas, data.worst_viewpoints[k], kWorstViewpointColour,
+                        internal::kPenWorst, k == 0 ? 3.0 : 1.6, false, Canvas::Shape::kCircle);
+  }
+  const Eigen::Vector2d tip = vectors_camera_projection(kAxisLength * data.worst_viewpoints[0]);
+  canvas.label(tip.x(), tip.y(), "a (worst), p̄_min " + fixed(data.pbar_min, 4), 12 * s, 0.0, 0.0,
+               internal::kSmallSize * s, {25, 25, 25}, {255, 255, 255}, 0.85);
+
+  using Entry = Canvas::LegendEntry;
+  const std::size_t ties = data.worst_viewpoints.size();
+  canvas.legend(
+      0.985, 0.22,
+      {Entry::line(
+           ties == 1 ? "global worst viewpoint a" : std::to_string(ties) + " tied worst viewpoints",
+           kWorstViewpointColour, 3.0 * s),
+       Entry::text_only("p̄_min " + fixed(data.pbar_min, 4) + ", error " +
+                        fixed(std::acos(std::clamp(data.pbar_min, 0.0, 1.0)) / kDegToRad, 2) + "°"),
+       Entry::marker("plane a⊥ (first worst viewpoint)", {170, 205, 230}, Canvas::Shape::kSquare),
+       Entry::line("paper's single LMI: p̄ " + fixed(data.paper_lmi_pbar, 4), kPaperLmiColour,
+                   1.8 * s, true),
+       Entry::marker(data.mode == LayoutMode::kPoints
+                         ? std::to_string(data.entries.cols()) + " markers" +
+                               (scene.cols() <= kMaxPairLines ? ", free vectors in grey" : "")
+                         : std::to_string(data.entries.cols()) + " data vectors",
+                     kDataVectorColour)},
+      internal::kSmallSize * s, 1.0);
+}
+
+}  // namespace
+
+Eigen::Vector2d vectors_camera_projection(const Eigen::Vector3d& p) {
+  const double az = kVectorsAzimuthDeg * kDegToRad, el = kVectorsElevationDeg * kDegToRad;
+  const Eigen::Vector3d right(-std::sin(az), std::cos(az), 0.0);
+  const Eigen::Vector3d up(-std::sin(el) * std::cos(az), -std::sin(el) * std::sin(az),
+                           std::cos(el));
+  return {p.dot(right), p.dot(up)};
+}
+
+FigureFiles write_vectors_figure(const VectorsFigureData& data,
+                                 const std::filesystem::path& directory,
+                                 const FigureOptions& options) {
+  check_data(data);
+  const FigureFiles files = figure_files("vectors", directory, options.format);
+  Canvas canvas(files.image, options);
+  draw_scene(canvas, data, options);
+  canvas.finish();
+  write_csv(data, files.csv);
+  return files;
+}
+
+}  // namespace vantage::plot
