@@ -18,6 +18,7 @@
 
 #include "vantage/analysis/absolute_orientation.h"
 #include "vantage/analysis/affine_pose.h"
+#include "vantage/analysis/common.h"
 #include "vantage/analysis/orthogonal_iteration.h"
 #include "vantage/analysis/refined_pose.h"
 
@@ -196,7 +197,7 @@ Eigen::Matrix3d scale_search(const AffineScene& s, int evaluations) {
 }
 
 double angle_deg(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
-  return vantage::rotation_angle_between(a, b) * 180.0 / 3.14159265358979323846;
+  return vantage::rotation_angle_between(a, b) * vantage::kDegreesPerRadian;
 }
 
 void BM_Pose_AffineRefinedLm(benchmark::State& state) {

@@ -67,8 +67,8 @@ AffineCrossCheckResult minimize_affine_residual(const Eigen::Matrix3Xd& z_object
     Eigen::Quaterniond q(normal(rng), normal(rng), normal(rng), normal(rng));
     CrossCheckData data{&z_object, &d_object, &w, q.normalized().toRotationMatrix()};
     nlopt::opt opt(nlopt::LN_BOBYQA, 3);
-    opt.set_lower_bounds(std::vector<double>(3, -M_PI));
-    opt.set_upper_bounds(std::vector<double>(3, M_PI));
+    opt.set_lower_bounds(std::vector<double>(3, -kPi));
+    opt.set_upper_bounds(std::vector<double>(3, kPi));
     opt.set_min_objective(cross_check_objective, &data);
     opt.set_xtol_abs(options.x_tolerance);
     opt.set_maxeval(options.max_evaluations);

@@ -28,6 +28,7 @@
 #include <time.h>
 
 #include "vantage/analysis/affine_pose.h"
+#include "vantage/analysis/common.h"
 #include "vantage/analysis/orthogonal_iteration.h"
 #include "vantage/analysis/refined_pose.h"
 #include "vantage/io/layout_file.h"
@@ -37,7 +38,6 @@ namespace {
 constexpr double kFocal = 1000.0;
 const Eigen::Vector2d kPrincipal(640.0, 480.0);
 constexpr double kWrongDegrees = 10.0;
-constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
 
 struct Layout {
   std::string name;
@@ -198,7 +198,7 @@ double thread_seconds() {
 /// (acos of the trace bottoms out at ~1.7e-6 degrees).
 double angle_deg(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
   const double s = std::min(1.0, (a - b).norm() / std::sqrt(8.0));
-  return 2.0 * std::asin(s) * kRadToDeg;
+  return 2.0 * std::asin(s) * vantage::kDegreesPerRadian;
 }
 
 }  // namespace

@@ -74,7 +74,7 @@ class DirectionSpace final : public AdditionSpace {
       const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& viewpoints) const override {
     double nearest = 1.0;
     for (const Eigen::Vector3d& a : viewpoints) nearest = std::min(nearest, std::abs(a.dot(x)));
-    return std::asin(std::min(1.0, nearest)) * 180.0 / kPi;
+    return std::asin(std::min(1.0, nearest)) * kDegreesPerRadian;
   }
 
   const char* search_name() const override { return "search"; }

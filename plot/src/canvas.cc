@@ -152,7 +152,7 @@ void Canvas::clip_to_unit_disc() {
   cairo_new_path(cairo_);
   cairo_translate(cairo_, centre.x(), centre.y());
   cairo_scale(cairo_, right.x() - centre.x(), centre.y() - top.y());
-  cairo_arc(cairo_, 0.0, 0.0, 1.0, 0.0, 2.0 * M_PI);
+  cairo_arc(cairo_, 0.0, 0.0, 1.0, 0.0, 2.0 * kPi);
   cairo_clip(cairo_);
   cairo_set_matrix(cairo_, &plplot_matrix);
 }
@@ -205,7 +205,7 @@ void Canvas::marker_at(const Eigen::Vector2d& p, double radius_px, Rgb fill, Sha
   cairo_new_path(cairo_);
   switch (shape) {
     case Shape::kCircle:
-      cairo_arc(cairo_, p.x(), p.y(), radius_px, 0.0, 2.0 * M_PI);
+      cairo_arc(cairo_, p.x(), p.y(), radius_px, 0.0, 2.0 * kPi);
       break;
     case Shape::kDiamond:
       cairo_move_to(cairo_, p.x(), p.y() - 1.3 * radius_px);
@@ -247,10 +247,10 @@ void Canvas::label(double x, double y, const std::string& text, double dx_px, do
     const double h = font.ascent + font.descent + pad;
     const double r = 0.3 * size_px;
     cairo_new_path(cairo_);
-    cairo_arc(cairo_, x0 + w - r, y0 + r, r, -M_PI / 2, 0);
-    cairo_arc(cairo_, x0 + w - r, y0 + h - r, r, 0, M_PI / 2);
-    cairo_arc(cairo_, x0 + r, y0 + h - r, r, M_PI / 2, M_PI);
-    cairo_arc(cairo_, x0 + r, y0 + r, r, M_PI, 1.5 * M_PI);
+    cairo_arc(cairo_, x0 + w - r, y0 + r, r, -kPi / 2, 0);
+    cairo_arc(cairo_, x0 + w - r, y0 + h - r, r, 0, kPi / 2);
+    cairo_arc(cairo_, x0 + r, y0 + h - r, r, kPi / 2, kPi);
+    cairo_arc(cairo_, x0 + r, y0 + r, r, kPi, 1.5 * kPi);
     cairo_close_path(cairo_);
     set_source(cairo_, box, box_alpha);
     cairo_fill(cairo_);

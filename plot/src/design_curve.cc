@@ -73,7 +73,7 @@ void draw_curve(Canvas& canvas, const DesignCurve& curve, const FigureOptions& o
   const double m0 = std::max(1.0, range.m_lo - pad), m1 = range.m_hi + pad;
   for (int k = 0; k < kCeilingPoints; ++k) {
     cx[k] = m0 + (m1 - m0) * k / (kCeilingPoints - 1);
-    cy[k] = std::cos(M_PI / (2.0 * cx[k]));
+    cy[k] = std::cos(kPi / (2.0 * cx[k]));
   }
   pls.col0(internal::kPenInk);
   pls.width(1.6 * s);

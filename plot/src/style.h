@@ -7,11 +7,9 @@
 #include <string>
 
 #include "canvas.h"
+#include "vantage/analysis/common.h"
 
 namespace vantage::plot::internal {
-
-/// Degrees per radian (the figures speak degrees).
-inline constexpr double kDegreesPerRadian = 180.0 / M_PI;
 
 /// Font sizes (pixels at the default 1000 x 800 page; multiplied by page_scale()).
 inline constexpr double kTitleSize = 22.0;

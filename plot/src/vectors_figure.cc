@@ -13,7 +13,7 @@ namespace {
 
 using internal::Canvas;
 
-constexpr double kDegToRad = 1.0 / internal::kDegreesPerRadian;
+constexpr double(1.0 / kDegreesPerRadian) = 1.0 / internal::kDegreesPerRadian;
 // Scene: entries scaled into the unit ball; the a-perp disc and the axes reach a bit further.
 constexpr double kDiscRadius = 1.2;
 constexpr double kAxisLength = 1.45;
@@ -23,7 +23,8 @@ constexpr int kDiscPoints = 121;
 constexpr Eigen::Index kMaxPairLines = 40;
 
 Eigen::Vector3d camera_direction() {
-  const double az = kVectorsAzimuthDeg * kDegToRad, el = kVectorsElevationDeg * kDegToRad;
+  const double az = kVectorsAzimuthDeg * (1.0 / kDegreesPerRadian),
+               el = kVectorsElevationDeg * (1.0 / kDegreesPerRadian);
   return {std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
 }
 
@@ -77,7 +78,7 @@ void draw_plane_disc(Canvas& canvas, const Eigen::Vector3d& a) {
   const Eigen::Vector3d v = a.cross(u).normalized();
   std::vector<double> x(kDiscPoints), y(kDiscPoints);
   for (int k = 0; k < kDiscPoints; ++k) {
-    const double phi = 2.0 * M_PI * k / (kDiscPoints - 1);
+    const double phi = 2.0 * kPi * k / (kDiscPoints - 1);
     const Eigen::Vector2d p =
         vectors_camera_projection(kDiscRadius * (std::cos(phi) * u + std::sin(phi) * v));
     x[k] = p.x();
@@ -195,8 +196,10 @@ void draw_scene(Canvas& canvas, const VectorsFigureData& data, const FigureOptio
       {Entry::line(
            ties == 1 ? "global worst viewpoint a" : std::to_string(ties) + " tied worst viewpoints",
            kWorstViewpointColour, 3.0 * s),
-       Entry::text_only("p̄_min " + fixed(data.pbar_min, 4) + ", error " +
-                        fixed(std::acos(std::clamp(data.pbar_min, 0.0, 1.0)) / kDegToRad, 2) + "°"),
+       Entry::text_only(
+           "p̄_min " + fixed(data.pbar_min, 4) + ", error " +
+           fixed(std::acos(std::clamp(data.pbar_min, 0.0, 1.0)) / (1.0 / kDegreesPerRadian), 2) +
+           "°"),
        Entry::marker("plane a⊥ (first worst viewpoint)", {170, 205, 230}, Canvas::Shape::kSquare),
        Entry::line("paper's single LMI: p̄ " + fixed(data.paper_lmi_pbar, 4), kPaperLmiColour,
                    1.8 * s, true),
@@ -211,7 +214,8 @@ void draw_scene(Canvas& canvas, const VectorsFigureData& data, const FigureOptio
 }  // namespace
 
 Eigen::Vector2d vectors_camera_projection(const Eigen::Vector3d& p) {
-  const double az = kVectorsAzimuthDeg * kDegToRad, el = kVectorsElevationDeg * kDegToRad;
+  const double az = kVectorsAzimuthDeg * (1.0 / kDegreesPerRadian),
+               el = kVectorsElevationDeg * (1.0 / kDegreesPerRadian);
   const Eigen::Vector3d right(-std::sin(az), std::cos(az), 0.0);
   const Eigen::Vector3d up(-std::sin(el) * std::cos(az), -std::sin(el) * std::sin(az),
                            std::cos(el));

@@ -59,7 +59,7 @@ void draw_great_circle(Canvas& canvas, const Eigen::Vector3d& n) {
   Eigen::Vector3d v = unit.cross(u);
   if (v.z() < 0.0) v = -v;
   for (int k = 0; k < kCirclePoints; ++k) {
-    const double phi = M_PI * k / (kCirclePoints - 1);
+    const double phi = kPi * k / (kCirclePoints - 1);
     const Eigen::Vector2d p = lambert_from_viewpoint(std::cos(phi) * u + std::sin(phi) * v);
     x[k] = p.x();
     y[k] = p.y();

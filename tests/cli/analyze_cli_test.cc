@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli_runner.h"
+#include "vantage/analysis/common.h"
 
 namespace vantage {
 namespace {
@@ -72,8 +73,8 @@ TEST(AnalyzeCli, PointModeUsesFreeVectors) {
 TEST(AnalyzeCli, CoplanarFanReachesItsCeiling) {
   ScratchDir scratch;
   const auto json = analyze_json(layout("coplanar_fan"), scratch);
-  EXPECT_NEAR(json["pbar_min"].get<double>(), std::cos(M_PI / 6.0), kClosedForm);
-  EXPECT_NEAR(json["ceiling"].get<double>(), std::cos(M_PI / 6.0), kClosedForm);
+  EXPECT_NEAR(json["pbar_min"].get<double>(), std::cos(kPi / 6.0), kClosedForm);
+  EXPECT_NEAR(json["ceiling"].get<double>(), std::cos(kPi / 6.0), kClosedForm);
 }
 
 TEST(AnalyzeCli, ReadableReport) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "support/cli_runner.h"
+#include "vantage/analysis/common.h"
 
 namespace vantage {
 namespace {
@@ -72,7 +73,7 @@ double angle_between_deg(const nlohmann::json& rows, const Matrix& expected) {
   double trace = 0.0;  // tr(R^T R_expected)
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) trace += rows.at(i).at(j).get<double>() * expected[i][j];
-  return std::acos(std::clamp((trace - 1.0) / 2.0, -1.0, 1.0)) * 180.0 / 3.14159265358979323846;
+  return std::acos(std::clamp((trace - 1.0) / 2.0, -1.0, 1.0)) * kDegreesPerRadian;
 }
 
 void expect_vector_near(const nlohmann::json& list, const Vector& expected, double tolerance) {

@@ -22,7 +22,6 @@ using testing::example_layout;
 using testing::read_csv;
 using testing::TempDir;
 
-constexpr double kRadToDeg = 180.0 / M_PI;
 // The bounds: samples never beat the certified optimum by more than rounding ...
 constexpr double kRounding = 1e-12;
 // ... and max_error_deg = arccos(pbar) to rounding of the degrees.
@@ -40,7 +39,7 @@ const double kSampleSpacing = 2.0 * 2.0 * std::sqrt(2.0) / kSamples;
 // Eq. (26), written out here independently of vantage::lub_scale_error_angle.
 double eq26_deg(double p, double pbar) {
   const double c = p * p / pbar + std::sqrt((1.0 - p * p) * (1.0 - p * p / (pbar * pbar)));
-  return kRadToDeg * std::acos(std::clamp(c, -1.0, 1.0));
+  return kDegreesPerRadian * std::acos(std::clamp(c, -1.0, 1.0));
 }
 
 class CsvTruth : public ::testing::TestWithParam<const char*> {
@@ -74,7 +73,7 @@ TEST_P(CsvTruth, ViewpointMapSamplesBoundThePbarMinFromAbove) {
   const Csv map = csv("viewpoint_map");
   ASSERT_EQ(map.header, (std::vector<std::string>{"x", "y", "z", "pbar", "max_error_deg"}));
   // Cells inside the disc: about pi/4 of the N^2 grid.
-  EXPECT_NEAR(static_cast<double>(map.rows.size()), M_PI / 4 * kSamples * kSamples,
+  EXPECT_NEAR(static_cast<double>(map.rows.size()), kPi / 4 * kSamples * kSamples,
               0.01 * kSamples * kSamples);
   const Eigen::Matrix3Xd unit = data_.vectors.colwise().normalized();
   double min_pbar = 2.0, max_error = -1.0;
@@ -84,7 +83,7 @@ TEST_P(CsvTruth, ViewpointMapSamplesBoundThePbarMinFromAbove) {
     const double error = map.number(r, "max_error_deg");
     min_pbar = std::min(min_pbar, pbar);
     max_error = std::max(max_error, error);
-    ASSERT_NEAR(error, kRadToDeg * std::acos(pbar), kDegreesRounding) << "row " << r;
+    ASSERT_NEAR(error, kDegreesPerRadian * std::acos(pbar), kDegreesRounding) << "row " << r;
     if (r % 101 == 0) {
       ASSERT_NEAR(a.norm(), 1.0, kRounding);
       ASSERT_GE(a.z(), 0.0) << "upper hemisphere";
@@ -94,7 +93,7 @@ TEST_P(CsvTruth, ViewpointMapSamplesBoundThePbarMinFromAbove) {
   }
   EXPECT_GE(min_pbar, analysis_.pbar_min - kRounding);
   EXPECT_LE(min_pbar, analysis_.pbar_min + kSampleSpacing);
-  EXPECT_LE(max_error, kRadToDeg * std::acos(analysis_.pbar_min) + kDegreesRounding);
+  EXPECT_LE(max_error, kDegreesPerRadian * std::acos(analysis_.pbar_min) + kDegreesRounding);
   EXPECT_NEAR(figures_.pbar_min, analysis_.pbar_min, kRounding);
   EXPECT_NEAR(figures_.max_worst_case_error_deg, analysis_.max_worst_case_error_deg, kRounding);
 }
@@ -160,7 +159,7 @@ TEST_P(CsvTruth, ErrorSurfaceIsEquation26) {
     largest = std::max(largest, surface.number(r, "theta_deg"));
   }
   // The vector that sets p-bar has the whole error arccos p-bar_min (docs/math.md §11).
-  EXPECT_NEAR(largest, kRadToDeg * std::acos(analysis_.pbar_min), 1e-6);
+  EXPECT_NEAR(largest, kDegreesPerRadian * std::acos(analysis_.pbar_min), 1e-6);
 }
 
 TEST_P(CsvTruth, VectorsAndDesignCsvHoldTheirInputs) {
@@ -186,8 +185,8 @@ TEST_P(CsvTruth, VectorsAndDesignCsvHoldTheirInputs) {
   for (std::size_t r = 0; r < design.rows.size(); ++r) {
     if (design.text(r, "series") != "ceiling") continue;
     ++ceiling_rows;
-    EXPECT_NEAR(design.number(r, "pbar_min"),
-                std::cos(M_PI / (2.0 * design.number(r, "n_vectors"))), kRounding);
+    EXPECT_NEAR(design.number(r, "pbar_min"), std::cos(kPi / (2.0 * design.number(r, "n_vectors"))),
+                kRounding);
   }
   EXPECT_GT(ceiling_rows, 0u);
   EXPECT_EQ(design.text(0, "series"), "greedy");

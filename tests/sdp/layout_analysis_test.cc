@@ -23,7 +23,8 @@ TEST(AnalyzeVectors, OrthogonalTriadReport) {
   EXPECT_LE(r.certificate.t_upper - r.certificate.t_lower, 1e-9);
   ASSERT_EQ(r.worst_case_errors_deg.size(), 3);
   // Every p_i equals p-bar at (1,1,1)/sqrt(3): the error is acos(p-bar) = 35.26 degrees.
-  EXPECT_NEAR(r.max_worst_case_error_deg, std::acos(std::sqrt(2.0 / 3.0)) * 180.0 / M_PI, 1e-9);
+  EXPECT_NEAR(r.max_worst_case_error_deg, std::acos(std::sqrt(2.0 / 3.0)) * kDegreesPerRadian,
+              1e-9);
   EXPECT_NEAR(r.paper_lmi.t, r.t, kSdp);
   EXPECT_EQ(r.paper_lmi.status, CellViewpoint::Status::kOk);
   EXPECT_TRUE(r.crosscheck.ran);

@@ -221,10 +221,10 @@ TEST(GlobalWorstViewpoint, CoplanarFanReachesTheZoneCeiling) {
   // in-plane bisectors are the worst viewpoints.
   for (int m : {3, 4, 6}) {
     Eigen::Matrix3Xd z(3, m);
-    for (int i = 0; i < m; ++i) z.col(i) << std::cos(M_PI * i / m), std::sin(M_PI * i / m), 0.0;
+    for (int i = 0; i < m; ++i) z.col(i) << std::cos(kPi * i / m), std::sin(kPi * i / m), 0.0;
     const WorstViewpoint w = global_worst_viewpoint(z);
     expect_consistent(w, z);
-    EXPECT_NEAR(w.pbar, std::cos(M_PI / (2 * m)), kExact);
+    EXPECT_NEAR(w.pbar, std::cos(kPi / (2 * m)), kExact);
     EXPECT_EQ(static_cast<int>(w.viewpoints.size()), m);
   }
 }
@@ -303,7 +303,7 @@ TEST(GlobalWorstViewpoint, DegenerateLayouts) {
   EXPECT_EQ(wp.viewpoints.size(), 1u);
 
   // Two vectors at angle theta: t* = max(cos(theta/2), sin(theta/2)).
-  for (double theta : {0.3, 1.0, M_PI / 2, 2.5}) {
+  for (double theta : {0.3, 1.0, kPi / 2, 2.5}) {
     const Eigen::Matrix3Xd two = columns({{1, 0, 0}, {std::cos(theta), std::sin(theta), 0}});
     const WorstViewpoint w2 = global_worst_viewpoint(two);
     expect_consistent(w2, two);

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "support/eigen_testing.h"
+#include "vantage/analysis/common.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/sdp/layout_analysis.h"
 #include "viewer/viewer_runner.h"
@@ -152,7 +153,7 @@ TEST(ViewerSession, ShadingAndReadoutAgreeWithTheCertifiedWorstCase) {
     ViewerSession session = open(file);
     ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
     const sdp::LayoutAnalysis& report = session.analysis()->analysis;
-    const double top_deg = 180.0 / M_PI * std::acos(report.pbar_min);
+    const double top_deg = kDegreesPerRadian * std::acos(report.pbar_min);
     EXPECT_LE(session.shading().error_deg.maxCoeff(), top_deg + kCertificateSlack * 180.0);
     const ViewpointReadout r = read_viewpoint(session.data().vectors, report.worst_viewpoint);
     EXPECT_NEAR(r.pbar, report.pbar_min, kCertificateSlack);

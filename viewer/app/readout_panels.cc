@@ -9,6 +9,7 @@
 
 #include "draw_style.h"
 #include "panels.h"
+#include "vantage/analysis/common.h"
 #include "vantage/analysis/error_bounds.h"
 #include "vantage/plot/colormap.h"
 
@@ -16,7 +17,6 @@ namespace vantage::viewer::app {
 namespace {
 
 constexpr int kSurfaceCells = 90;
-constexpr double kRadToDeg = 180.0 / M_PI;
 constexpr double kSurfaceTopDeg = 90.0;  // Eq. (26) ranges over [0, 90] degrees
 
 }  // namespace
@@ -27,7 +27,8 @@ Panels::Panels() : surface_deg_(kSurfaceCells * kSurfaceCells, -1.0) {
     for (int col = 0; col < kSurfaceCells; ++col) {
       const double p = (col + 0.5) / kSurfaceCells;
       if (p <= pbar) {
-        surface_deg_[row * kSurfaceCells + col] = kRadToDeg * lub_scale_error_angle(p, pbar);
+        surface_deg_[row * kSurfaceCells + col] =
+            kDegreesPerRadian * lub_scale_error_angle(p, pbar);
       }
     }
   }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "draw_style.h"
+#include "vantage/analysis/common.h"
 #include "vantage/plot/colormap.h"
 
 namespace vantage::viewer::app {
@@ -57,7 +58,7 @@ struct Painter {
     const Eigen::Vector3d v = n.cross(u);
     std::vector<Eigen::Vector3d> points;
     for (int k = 0; k <= kCirclePoints; ++k) {
-      const double phi = 2.0 * M_PI * k / kCirclePoints;
+      const double phi = 2.0 * kPi * k / kCirclePoints;
       points.push_back(std::cos(phi) * u + std::sin(phi) * v);
     }
     polyline(points, colour, thickness);
@@ -77,7 +78,8 @@ struct Painter {
 
 double colour_range_deg(const ViewerSession& session) {
   if (session.analysis_current() && session.analysis()->error.empty()) {
-    return 180.0 / M_PI * std::acos(std::clamp(session.analysis()->analysis.pbar_min, 0.0, 1.0));
+    return kDegreesPerRadian *
+           std::acos(std::clamp(session.analysis()->analysis.pbar_min, 0.0, 1.0));
   }
   return session.shading().error_deg.maxCoeff();
 }

@@ -9,8 +9,6 @@
 namespace vantage::viewer {
 namespace {
 
-constexpr double kDegToRad = M_PI / 180.0;
-constexpr double kRadToDeg = 180.0 / M_PI;
 // A point of the sphere counts as visible when the ray meets the sphere no nearer than this
 // before it (world units): surface points facing the eye are not hidden by themselves.
 constexpr double kSurfaceSlack = 1e-6;
@@ -71,25 +69,25 @@ void OrbitCamera::look_along(const Eigen::Vector3d& direction) {
     throw InvalidArgument("look_along: direction must be non-zero and finite");
   }
   const Eigen::Vector3d d = direction / norm;
-  pitch_deg_ = kRadToDeg * std::asin(std::clamp(d.z(), -1.0, 1.0));
-  if (std::hypot(d.x(), d.y()) > 1e-12) yaw_deg_ = kRadToDeg * std::atan2(d.y(), d.x());
+  pitch_deg_ = kDegreesPerRadian * std::asin(std::clamp(d.z(), -1.0, 1.0));
+  if (std::hypot(d.x(), d.y()) > 1e-12) yaw_deg_ = kDegreesPerRadian * std::atan2(d.y(), d.x());
 }
 
 Eigen::Vector3d OrbitCamera::back() const {
-  const double yaw = kDegToRad * yaw_deg_;
-  const double pitch = kDegToRad * pitch_deg_;
+  const double yaw = (1.0 / kDegreesPerRadian) * yaw_deg_;
+  const double pitch = (1.0 / kDegreesPerRadian) * pitch_deg_;
   return {std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), std::sin(pitch)};
 }
 
 Eigen::Vector3d OrbitCamera::right() const {
-  const double yaw = kDegToRad * yaw_deg_;
+  const double yaw = (1.0 / kDegreesPerRadian) * yaw_deg_;
   return {-std::sin(yaw), std::cos(yaw), 0.0};
 }
 
 Eigen::Vector3d OrbitCamera::up() const { return back().cross(right()); }
 
 double OrbitCamera::focal_pixels(const Viewport& viewport) const {
-  return 0.5 * viewport.height / std::tan(0.5 * kDegToRad * kFieldOfViewDeg);
+  return 0.5 * viewport.height / std::tan(0.5 * (1.0 / kDegreesPerRadian) * kFieldOfViewDeg);
 }
 
 std::optional<Eigen::Vector2d> OrbitCamera::project(const Eigen::Vector3d& point,

@@ -7,9 +7,7 @@
 #include "vantage/analysis/error_bounds.h"
 
 namespace vantage::viewer {
-namespace {
-constexpr double kRadToDeg = 180.0 / M_PI;
-}  // namespace
+namespace {}  // namespace
 
 ViewpointReadout read_viewpoint(const Eigen::Matrix3Xd& vectors, const Eigen::Vector3d& a) {
   if (vectors.cols() < 1) throw InvalidArgument("read_viewpoint: vectors is empty");
@@ -29,9 +27,9 @@ SphereShading shade_sphere(const Eigen::Matrix3Xd& vectors, int rings, int segme
   const int columns = segments + 1;  // the seam is duplicated so each ring closes
   shading.vertices.resize(3, (rings + 1) * columns);
   for (int r = 0; r <= rings; ++r) {
-    const double polar = M_PI * r / rings;
+    const double polar = kPi * r / rings;
     for (int s = 0; s <= segments; ++s) {
-      const double azimuth = 2.0 * M_PI * s / segments;
+      const double azimuth = 2.0 * kPi * s / segments;
       shading.vertices.col(r * columns + s) =
           Eigen::Vector3d(std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
                           std::cos(polar))
@@ -49,8 +47,8 @@ SphereShading shade_sphere(const Eigen::Matrix3Xd& vectors, int rings, int segme
     }
   }
   const Eigen::VectorXd pbar = pbar_at_viewpoints(vectors, shading.vertices);
-  shading.error_deg =
-      pbar.unaryExpr([](double p) { return kRadToDeg * std::acos(std::clamp(p, -1.0, 1.0)); });
+  shading.error_deg = pbar.unaryExpr(
+      [](double p) { return kDegreesPerRadian * std::acos(std::clamp(p, -1.0, 1.0)); });
   return shading;
 }
 
