@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "min_norm_point.h"
@@ -17,8 +18,8 @@ constexpr double kCrossingSlack = 1e-15;
 constexpr double kCellExact = 1e-12;
 // Viewpoints closer than this (1 - |a.b|) are the same optimum.
 constexpr double kSameViewpoint = 1e-9;
-// Patches with an angular radius below this are not subdivided further.
-constexpr double kMinPatchRadius = 1e-11;
+// Patches with an angular radius below 1e-11 (sin 1e-11 to rounding) are not subdivided further.
+constexpr double kMinPatchSin = 1e-11;
 // Initial grid per cube face (kGrid x kGrid patches).
 constexpr int kGrid = 4;
 // Recursion depth limit; patches halve per level, so kMinPatchRadius is reached long before.
@@ -36,6 +37,20 @@ Eigen::Vector3d face_point(int face, double u, double v) {
     default:
       return Eigen::Vector3d(u, v, 1.0).normalized();
   }
+}
+
+// cos of the angular radius of the patch of centre (u, v) and half-width h on any face: the
+// smallest cos(c, corner). On every face the point is a permutation of (1, u, v), which leaves
+// dot products alone, and 1 + u cu + v cv >= 1 inside a face, so cos^2 decides.
+double patch_cos_radius(double u, double v, double h) {
+  double worst = std::numeric_limits<double>::infinity();  // min over corners of dot^2 / |q|^2
+  for (int corner = 0; corner < 4; ++corner) {
+    const double cu = u + ((corner & 1) ? h : -h);
+    const double cv = v + ((corner & 2) ? h : -h);
+    const double dot = 1.0 + u * cu + v * cv;
+    worst = std::min(worst, dot * dot / (1.0 + cu * cu + cv * cv));
+  }
+  return std::clamp(std::sqrt(worst / (1.0 + u * u + v * v)), 0.0, 1.0);
 }
 
 // sin(min(pi/2, asin(s) + r)) for s in [0, 1], given cos r and sin r: the largest |a.n| over a
@@ -156,13 +171,7 @@ class BranchAndBound {
   void process(int face, double u, double v, double h, int count, int depth) {
     ++patches_;
     const Eigen::Vector3d c = face_point(face, u, v);
-    double cos_r = 1.0;
-    for (int corner = 0; corner < 4; ++corner) {
-      const double cu = u + ((corner & 1) ? h : -h);
-      const double cv = v + ((corner & 2) ? h : -h);
-      cos_r = std::min(cos_r, c.dot(face_point(face, cu, cv)));
-    }
-    cos_r = std::clamp(cos_r, 0.0, 1.0);
+    const double cos_r = patch_cos_radius(u, v, h);
     const double sin_r = std::sqrt(1.0 - cos_r * cos_r);
 
     const CircleList& in = lists_[depth];
@@ -205,8 +214,7 @@ class BranchAndBound {
       close_single_cell(c, out, dots, kept);
       return;
     }
-    if (std::asin(sin_r) < kMinPatchRadius || patches_ >= options_.max_patches ||
-        depth >= kMaxDepth) {
+    if (sin_r < kMinPatchSin || patches_ >= options_.max_patches || depth >= kMaxDepth) {
       upper_ = std::max(upper_, bound);
       if (patches_ >= options_.max_patches) exhausted_ = true;
       return;
