@@ -24,6 +24,10 @@ constexpr double kMinPatchSin = 1e-11;
 constexpr int kGrid = 4;
 // Recursion depth limit; patches halve per level, so kMinPatchRadius is reached long before.
 constexpr int kMaxDepth = 120;
+// Circles scanned between early-prune checks.
+constexpr int kScanBlock = 8;
+// Margin of the early prune against the rounding of sin_minus and sin_plus (a few ulps of 1).
+constexpr double kPruneRounding = 1e-15;
 // Unit vectors whose components all agree to this (up to sign) are one direction: a few ulps,
 // what normalising z and k z for a grid layout's free vectors leaves.
 constexpr double kSameDirection = 1e-15;
@@ -58,6 +62,13 @@ double patch_cos_radius(double u, double v, double h) {
 double sin_plus(double s, double cos_r, double sin_r) {
   if (s >= cos_r) return 1.0;
   return s * cos_r + std::sqrt(std::max(0.0, 1.0 - s * s)) * sin_r;
+}
+
+// sin(asin(s) - r) for s in (-1, 1], given cos r and sin r, or -1 when asin(s) <= r: the
+// largest |c.n| of a circle that keeps every point of a cap of radius r below s.
+double sin_minus(double s, double cos_r, double sin_r) {
+  if (s <= sin_r) return -1.0;
+  return s * cos_r - std::sqrt(std::max(0.0, 1.0 - s * s)) * sin_r;
 }
 
 // The circles a patch passes to its sub-patches, structure of arrays: unit normal and column.
@@ -179,11 +190,20 @@ class BranchAndBound {
     if (static_cast<int>(dot_store.size()) < count) dot_store.resize(count);
     double* dots = dot_store.data();
     const double cx = c.x(), cy = c.y(), cz = c.z();
+    // Most patches are pruned by one near circle: stop scanning once one is found (checked per
+    // block so the loop stays simple). Below prune_limit the bound is certainly below the
+    // attained value; the full test after the loop decides every other case.
+    const double prune_limit =
+        sin_minus(lower_ - options_.tie_tolerance, cos_r, sin_r) - kPruneRounding;
     double centre_value = 1.0;
-    for (int k = 0; k < count; ++k) {
-      const double d = cx * in.x[k] + cy * in.y[k] + cz * in.z[k];
-      dots[k] = d;
-      centre_value = std::min(centre_value, std::abs(d));
+    for (int start = 0; start < count; start += kScanBlock) {
+      const int end = std::min(count, start + kScanBlock);
+      for (int k = start; k < end; ++k) {
+        const double d = cx * in.x[k] + cy * in.y[k] + cz * in.z[k];
+        dots[k] = d;
+        centre_value = std::min(centre_value, std::abs(d));
+      }
+      if (centre_value < prune_limit) return;
     }
     // min_i sin(min(pi/2, asin|c.n_i| + r)): increasing in |c.n_i|, so set by the nearest circle.
     const double bound = sin_plus(centre_value, cos_r, sin_r);
