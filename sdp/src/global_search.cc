@@ -33,13 +33,15 @@ constexpr double kPruneRounding = 1e-15;
 constexpr double kSameDirection = 1e-15;
 
 Eigen::Vector3d face_point(int face, double u, double v) {
+  const double inverse_norm = 1.0 / std::sqrt(1.0 + u * u + v * v);
+  const double one = inverse_norm, a = u * inverse_norm, b = v * inverse_norm;
   switch (face) {
     case 0:
-      return Eigen::Vector3d(1.0, u, v).normalized();
+      return Eigen::Vector3d(one, a, b);
     case 1:
-      return Eigen::Vector3d(u, 1.0, v).normalized();
+      return Eigen::Vector3d(a, one, b);
     default:
-      return Eigen::Vector3d(u, v, 1.0).normalized();
+      return Eigen::Vector3d(a, b, one);
   }
 }
 
@@ -71,17 +73,15 @@ double sin_minus(double s, double cos_r, double sin_r) {
   return s * cos_r - std::sqrt(std::max(0.0, 1.0 - s * s)) * sin_r;
 }
 
-// The circles a patch passes to its sub-patches, structure of arrays: unit normal and column.
+// The circles a patch passes to its sub-patches: unit normals as a structure of arrays.
 struct CircleList {
   std::vector<double> x, y, z;
-  std::vector<int> column;
 
   void ensure(int count) {
     if (static_cast<int>(x.size()) >= count) return;
     x.resize(count);
     y.resize(count);
     z.resize(count);
-    column.resize(count);
   }
 };
 
@@ -100,7 +100,6 @@ class BranchAndBound {
       all.x[i] = n_(0, i);
       all.y[i] = n_(1, i);
       all.z[i] = n_(2, i);
-      all.column[i] = i;
     }
   }
 
@@ -225,13 +224,11 @@ class BranchAndBound {
       out.x[kept] = in.x[k];
       out.y[kept] = in.y[k];
       out.z[kept] = in.z[k];
-      out.column[kept] = in.column[k];
-      dots[kept] = dots[k];
       kept += std::abs(dots[k]) <= keep_limit ? 1 : 0;
     }
 
     if (!crossing) {
-      close_single_cell(c, out, dots, kept);
+      close_single_cell(c, out, kept);
       return;
     }
     if (sin_r < kMinPatchSin || patches_ >= options_.max_patches || depth >= kMaxDepth) {
@@ -247,14 +244,14 @@ class BranchAndBound {
 
   // The patch lies in one cell: its optimum over the kept circles bounds the patch; it is the
   // exact cell optimum when the full objective attains it.
-  void close_single_cell(const Eigen::Vector3d& c, const CircleList& list, const double* dots,
-                         int count) {
+  void close_single_cell(const Eigen::Vector3d& c, const CircleList& list, int count) {
     if (count == 0) {
       solve_full_cell_and_bound(c);
       return;
     }
     for (int k = 0; k < count; ++k) {
-      const double s = dots[k] >= 0.0 ? 1.0 : -1.0;
+      const double d = c.x() * list.x[k] + c.y() * list.y[k] + c.z() * list.z[k];
+      const double s = d >= 0.0 ? 1.0 : -1.0;
       cell_points_.col(k) << s * list.x[k], s * list.y[k], s * list.z[k];
     }
     ++cells_solved_;
