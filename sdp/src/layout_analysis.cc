@@ -55,7 +55,8 @@ LayoutAnalysis analyze_vectors(const Eigen::Matrix3Xd& vectors, const Eigen::Vec
   report.paper_lmi = {paper.viewpoint, paper.t, paper.pbar, to_string(paper.status)};
 
   if (options.run_crosscheck) {
-    const CrossCheck check = crosscheck_worst_viewpoint(vectors, global.t, options.crosscheck);
+    const CrossCheck check =
+        crosscheck_worst_viewpoint(vectors, global.t, options.crosscheck, global.viewpoints);
     report.crosscheck = {check.method, check.t, check.agrees, check.message};
     if (!check.agrees) {
       if (!report.message.empty()) report.message += "; ";

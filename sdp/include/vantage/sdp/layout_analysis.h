@@ -48,7 +48,7 @@ struct LayoutAnalysis {
   } paper_lmi;
 
   struct CrossCheckSummary {
-    std::string method;  ///< "nlopt_multistart_mma" or "skipped"
+    std::string method;  ///< "nlopt_multistart_cobyla" or "skipped"
     double t = 0.0;
     bool agrees = false;
     std::string message;  ///< non-empty (loud) on disagreement
