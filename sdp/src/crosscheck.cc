@@ -138,8 +138,9 @@ int automatic_samples(long m, double t_reference, const CrossCheckOptions& optio
   const double radius = std::asin(std::clamp(t_reference, kMinRadius, 1.0));
   const double wanted = kSpacingsPerRadius * kSpacingsPerRadius * 2.0 * M_PI / (radius * radius);
   const double by_work = options.max_sample_products / static_cast<double>(m);
-  const double count = std::min({std::max(wanted, kMinSamples), by_work, kMaxSamples});
-  return static_cast<int>(std::max(1.0, std::ceil(count)));
+  const double count =
+      std::min({std::ceil(std::max(wanted, kMinSamples)), std::floor(by_work), kMaxSamples});
+  return static_cast<int>(std::max(1.0, count));
 }
 
 }  // namespace
