@@ -66,11 +66,12 @@ double sin_plus(double s, double cos_r, double sin_r) {
   return s * cos_r + std::sqrt(std::max(0.0, 1.0 - s * s)) * sin_r;
 }
 
-// sin(asin(s) - r) for s in (-1, 1], given cos r and sin r, or -1 when asin(s) <= r: the
-// largest |c.n| of a circle that keeps every point of a cap of radius r below s.
-double sin_minus(double s, double cos_r, double sin_r) {
+// sin(asin(s) - r) for s in (-1, 1] with cos_s = sqrt(1 - s^2), given cos r and sin r, or -1
+// when asin(s) <= r: the largest |c.n| of a circle that keeps every point of a cap of radius r
+// below s.
+double sin_minus(double s, double cos_s, double cos_r, double sin_r) {
   if (s <= sin_r) return -1.0;
-  return s * cos_r - std::sqrt(std::max(0.0, 1.0 - s * s)) * sin_r;
+  return s * cos_r - cos_s * sin_r;
 }
 
 // The circles a patch passes to its sub-patches: unit normals as a structure of arrays.
@@ -157,7 +158,11 @@ class BranchAndBound {
 
   void offer(const Eigen::Vector3d& a, double value) {
     if (value < lower_ - options_.tie_tolerance) return;
-    if (value > lower_) lower_ = value;
+    if (value > lower_) {
+      lower_ = value;
+      prune_below_ = lower_ - options_.tie_tolerance;
+      prune_below_cos_ = std::sqrt(std::max(0.0, 1.0 - prune_below_ * prune_below_));
+    }
     candidates_.push_back({a, value});
   }
 
@@ -193,7 +198,7 @@ class BranchAndBound {
     // block so the loop stays simple). Below prune_limit the bound is certainly below the
     // attained value; the full test after the loop decides every other case.
     const double prune_limit =
-        sin_minus(lower_ - options_.tie_tolerance, cos_r, sin_r) - kPruneRounding;
+        sin_minus(prune_below_, prune_below_cos_, cos_r, sin_r) - kPruneRounding;
     double centre_value = 1.0;
     for (int start = 0; start < count; start += kScanBlock) {
       const int end = std::min(count, start + kScanBlock);
@@ -285,6 +290,8 @@ class BranchAndBound {
   std::vector<std::vector<double>> dots_;
   std::vector<AttainedViewpoint> candidates_;
   double lower_ = 0.0;
+  double prune_below_ = -1.0;     // lower_ - tie_tolerance once lower_ is set
+  double prune_below_cos_ = 0.0;  // sqrt(1 - prune_below_^2)
   double upper_ = 0.0;
   long cells_solved_ = 0;
   long patches_ = 0;
