@@ -143,6 +143,31 @@ int automatic_samples(long m, double t_reference, const CrossCheckOptions& optio
   return static_cast<int>(std::max(1.0, count));
 }
 
+// Fibonacci points on the upper hemisphere.
+Eigen::Matrix3Xd fibonacci_hemisphere(int samples) {
+  const double golden_angle = M_PI * (3.0 - std::sqrt(5.0));
+  Eigen::Matrix3Xd directions(3, samples);
+  for (int k = 0; k < samples; ++k) {
+    const double z = 1.0 - (k + 0.5) / samples;
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const double phi = golden_angle * k;
+    directions.col(k) << r * std::cos(phi), r * std::sin(phi), z;
+  }
+  return directions;
+}
+
+// min_i |a.n_i| for every column a of `directions` (nt: the unit vectors as rows).
+Eigen::VectorXd min_abs_values(const Eigen::MatrixXd& nt, const Eigen::Matrix3Xd& directions) {
+  const int samples = static_cast<int>(directions.cols());
+  Eigen::VectorXd values(samples);
+  for (int start = 0; start < samples; start += kSampleBlock) {
+    const int count = std::min(kSampleBlock, samples - start);
+    const Eigen::MatrixXd dots = nt * directions.middleCols(start, count);
+    values.segment(start, count) = dots.cwiseAbs().colwise().minCoeff().transpose();
+  }
+  return values;
+}
+
 }  // namespace
 
 bool CrossCheckOptions::is_valid(std::string* why) const {
@@ -181,22 +206,9 @@ CrossCheck crosscheck_worst_viewpoint(const Eigen::Matrix3Xd& vectors, double t_
   const int samples =
       options.samples > 0 ? options.samples : automatic_samples(m, t_reference, options);
 
-  // Fibonacci points on the upper hemisphere.
-  const double golden_angle = M_PI * (3.0 - std::sqrt(5.0));
-  Eigen::Matrix3Xd directions(3, samples);
-  for (int k = 0; k < samples; ++k) {
-    const double z = 1.0 - (k + 0.5) / samples;
-    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    const double phi = golden_angle * k;
-    directions.col(k) << r * std::cos(phi), r * std::sin(phi), z;
-  }
-  Eigen::VectorXd values(samples);
+  const Eigen::Matrix3Xd directions = fibonacci_hemisphere(samples);
   const Eigen::MatrixXd nt = n.transpose();
-  for (int start = 0; start < samples; start += kSampleBlock) {
-    const int count = std::min(kSampleBlock, samples - start);
-    const Eigen::MatrixXd dots = nt * directions.middleCols(start, count);
-    values.segment(start, count) = dots.cwiseAbs().colwise().minCoeff().transpose();
-  }
+  const Eigen::VectorXd values = min_abs_values(nt, directions);
   std::vector<int> order(samples);
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return values(a) > values(b); });
