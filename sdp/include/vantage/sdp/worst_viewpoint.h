@@ -178,7 +178,7 @@ struct CrossCheck {
   /// Angular spacing of the samples, sqrt(2 pi / samples) rad. When it is below asin(t) the
   /// samples alone put a start inside every cell as large as the optimal one.
   double sample_spacing = 0.0;
-  int polished = 0;     ///< starts polished (distinct sign cells)
+  int polished = 0;  ///< starts polished: samples in distinct sign cells, then reference_viewpoints
   std::string message;  ///< empty when it agrees; otherwise says so loudly
 };
 
