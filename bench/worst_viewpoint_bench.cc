@@ -53,6 +53,21 @@ void BM_WorstViewpoint_GlobalConfirmed(benchmark::State& state) {
   }
 }
 
+// The NLopt cross-check as analyze runs it: bounded samples plus the polish of the certified
+// viewpoints' cells (CrossCheckOptions defaults).
+void BM_WorstViewpoint_CrossCheck(benchmark::State& state) {
+  const Eigen::Matrix3Xd z = random_unit_vectors(static_cast<int>(state.range(0)));
+  const vantage::sdp::WorstViewpoint w = vantage::sdp::global_worst_viewpoint(z);
+  int samples = 0;
+  for (auto _ : state) {
+    const vantage::sdp::CrossCheck check =
+        vantage::sdp::crosscheck_worst_viewpoint(z, w.t, {}, w.viewpoints);
+    benchmark::DoNotOptimize(check.t);
+    samples = check.samples;
+  }
+  state.counters["samples"] = static_cast<double>(samples);
+}
+
 }  // namespace
 
 BENCHMARK(BM_WorstViewpoint_Global)
@@ -60,16 +75,26 @@ BENCHMARK(BM_WorstViewpoint_Global)
     ->Arg(10)
     ->Arg(100)
     ->Arg(1000)
+    ->Arg(5000)
+    ->Arg(20000)
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_WorstViewpoint_PaperLmi)
     ->Arg(3)
     ->Arg(10)
     ->Arg(100)
     ->Arg(1000)
+    ->Arg(5000)
+    ->Arg(20000)
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_WorstViewpoint_GlobalConfirmed)
     ->Arg(3)
     ->Arg(10)
     ->Arg(100)
     ->Arg(1000)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_WorstViewpoint_CrossCheck)
+    ->Arg(10)
+    ->Arg(100)
+    ->Arg(1000)
+    ->Arg(5000)
     ->Unit(benchmark::kMicrosecond);

@@ -14,74 +14,158 @@ namespace {
 
 // Sample evaluations are done in blocks of this many directions (bounded temporary memory).
 constexpr int kSampleBlock = 512;
-// MMA stopping tolerance and budget: far below the 1e-6 agreement threshold.
-constexpr double kPolishXtol = 1e-13;
+// Automatic sample count (see automatic_samples()): bounds, samples per optimal inradius, and
+// the smallest inradius considered (t of 1e-6 would ask for 1e13 samples).
+constexpr double kMinSamples = 20000;
+constexpr double kMaxSamples = 400000;
+constexpr double kSpacingsPerRadius = 2.0;
+constexpr double kMinRadius = 1e-6;
+// Constraints the polish starts with: the ones nearest to active at the start. A cell optimum
+// has at most three active constraints; the rest are added when the result violates them.
+constexpr int kWorkingSet = 16;
+// Most violated constraints added per round, and rounds per polish.
+constexpr int kAddPerRound = 8;
+constexpr int kMaxRounds = 12;
+// A constraint outside the working set counts as violated when it is this far below the
+// working set's minimum (rounding of unit dot products).
+constexpr double kViolation = 1e-15;
+// COBYLA stopping tolerance in the shifted coordinates (absolute; d is O(1) at most), far below
+// the 1e-6 agreement threshold, and its budget.
+constexpr double kPolishXtol = 1e-15;
 constexpr int kPolishMaxEval = 400;
-// Starting point scale: start strictly feasible (inside the ball, below every constraint).
-constexpr double kPolishShrink = 0.99;
 
-struct CellData {
-  Eigen::Matrix3Xd p;  // s_i n_i
+// The cell problem of a working set as the quadratic programme min ||a||^2 s.t. p_i.a >= t0
+// (its solution a* gives the cell optimum t0 / ||a*|| at a* / ||a*||: Eq. 31 for one sign cell,
+// scaled), in coordinates shifted to the start a0 (unit): a = a0 + d, so the objective is
+// 2 a0.d + d.d and constraint i is slack_i + p_i.d >= 0 with slack_i = p_i.a0 - t0 >= 0. Nothing
+// close to 1 is subtracted, so a narrow cone (t near 1) keeps its digits.
+struct ShiftedCell {
+  Eigen::Vector3d a0;
+  Eigen::Matrix3Xd p;     // s_i n_i of the working set
+  Eigen::VectorXd slack;  // p_i.a0 - t0
 };
 
-double objective(unsigned, const double* x, double* grad, void*) {
+double objective(unsigned, const double* x, double* grad, void* data) {
+  const Eigen::Vector3d& a0 = static_cast<ShiftedCell*>(data)->a0;
+  const Eigen::Vector3d d(x[0], x[1], x[2]);
   if (grad != nullptr) {
-    grad[0] = grad[1] = grad[2] = 0.0;
-    grad[3] = 1.0;
+    for (int k = 0; k < 3; ++k) grad[k] = 2.0 * (a0(k) + d(k));
   }
-  return x[3];
+  return 2.0 * a0.dot(d) + d.squaredNorm();
 }
 
-// t - s_i n_i.a <= 0 for every i.
-void cell_constraints(unsigned m, double* result, unsigned, const double* x, double* grad,
+// -(slack_i + p_i.d) <= 0 for every i of the working set.
+void cell_constraints(unsigned k, double* result, unsigned, const double* x, double* grad,
                       void* data) {
-  const Eigen::Matrix3Xd& p = static_cast<CellData*>(data)->p;
-  for (unsigned i = 0; i < m; ++i) {
-    result[i] = x[3] - (p(0, i) * x[0] + p(1, i) * x[1] + p(2, i) * x[2]);
+  const ShiftedCell& cell = *static_cast<ShiftedCell*>(data);
+  for (unsigned i = 0; i < k; ++i) {
+    result[i] = -cell.slack(i) - (cell.p(0, i) * x[0] + cell.p(1, i) * x[1] + cell.p(2, i) * x[2]);
     if (grad != nullptr) {
-      grad[4 * i + 0] = -p(0, i);
-      grad[4 * i + 1] = -p(1, i);
-      grad[4 * i + 2] = -p(2, i);
-      grad[4 * i + 3] = 1.0;
+      for (int j = 0; j < 3; ++j) grad[3 * i + j] = -cell.p(j, i);
     }
   }
 }
 
-// ||a||^2 - 1 <= 0.
-double ball_constraint(unsigned, const double* x, double* grad, void*) {
-  if (grad != nullptr) {
-    grad[0] = 2.0 * x[0];
-    grad[1] = 2.0 * x[1];
-    grad[2] = 2.0 * x[2];
-    grad[3] = 0.0;
-  }
-  return x[0] * x[0] + x[1] * x[1] + x[2] * x[2] - 1.0;
-}
-
-Eigen::Vector3d polish(const Eigen::Matrix3Xd& n, const Eigen::Vector3d& start) {
-  const int m = static_cast<int>(n.cols());
-  CellData cell;
-  cell.p.resize(3, m);
-  for (int i = 0; i < m; ++i) cell.p.col(i) = (n.col(i).dot(start) >= 0.0 ? 1.0 : -1.0) * n.col(i);
-  nlopt::opt opt(nlopt::LD_MMA, 4);
-  opt.set_lower_bounds({-1.0, -1.0, -1.0, -1.0});
-  opt.set_upper_bounds({1.0, 1.0, 1.0, 1.0});
-  opt.set_max_objective(objective, nullptr);
-  opt.add_inequality_mconstraint(cell_constraints, &cell, std::vector<double>(m, 0.0));
-  opt.add_inequality_constraint(ball_constraint, nullptr, 0.0);
-  opt.set_xtol_rel(kPolishXtol);
+// Optimum direction of the working set's cell from a0 (NLopt COBYLA: its linear models are exact
+// for these constraints; SLSQP and MMA stalled or crept on them).
+Eigen::Vector3d polish_working_set(const Eigen::Matrix3Xd& p, const std::vector<int>& working,
+                                   const Eigen::Vector3d& a0) {
+  const int k = static_cast<int>(working.size());
+  ShiftedCell cell;
+  cell.a0 = a0;
+  cell.p.resize(3, k);
+  for (int j = 0; j < k; ++j) cell.p.col(j) = p.col(working[j]);
+  const Eigen::VectorXd values = cell.p.transpose() * a0;
+  cell.slack = values.array() - values.minCoeff();
+  nlopt::opt opt(nlopt::LN_COBYLA, 3);
+  opt.set_lower_bounds({-2.0, -2.0, -2.0});
+  opt.set_upper_bounds({2.0, 2.0, 2.0});
+  opt.set_min_objective(objective, &cell);
+  opt.add_inequality_mconstraint(cell_constraints, &cell, std::vector<double>(k, 0.0));
+  opt.set_xtol_abs(kPolishXtol);
   opt.set_maxeval(kPolishMaxEval);
-  // Start strictly inside the ball with t below every constraint (strictly feasible).
-  const Eigen::Vector3d a0 = kPolishShrink * start;
-  std::vector<double> x = {a0.x(), a0.y(), a0.z(), (cell.p.transpose() * a0).minCoeff() - 1e-3};
+  std::vector<double> x = {0.0, 0.0, 0.0};  // feasible: the start itself
   double value = 0.0;
   try {
     opt.optimize(x, value);
   } catch (const std::exception&) {
-    // Round-off or other early stops leave the last iterate in x; it is evaluated below.
+    // Round-off or other early stops leave the last iterate in x; it is evaluated by the caller.
   }
-  const Eigen::Vector3d a(x[0], x[1], x[2]);
-  return a.norm() > 0.0 ? Eigen::Vector3d(a.normalized()) : start;
+  const Eigen::Vector3d a = a0 + Eigen::Vector3d(x[0], x[1], x[2]);
+  return a.norm() > 0.0 && a.allFinite() ? Eigen::Vector3d(a.normalized()) : a0;
+}
+
+// The optimum of the sign cell of `start` (signs s_i = sign(n_i.start)) by working-set rounds.
+Eigen::Vector3d polish(const Eigen::Matrix3Xd& n, const Eigen::Vector3d& start) {
+  const int m = static_cast<int>(n.cols());
+  Eigen::Matrix3Xd p(3, m);
+  for (int i = 0; i < m; ++i) p.col(i) = (n.col(i).dot(start) >= 0.0 ? 1.0 : -1.0) * n.col(i);
+  const Eigen::VectorXd at_start = p.transpose() * start;
+  std::vector<int> order(m);
+  std::iota(order.begin(), order.end(), 0);
+  const int first = std::min(m, kWorkingSet);
+  std::partial_sort(order.begin(), order.begin() + first, order.end(),
+                    [&](int a, int b) { return at_start(a) < at_start(b); });
+  std::vector<int> working(order.begin(), order.begin() + first);
+  std::vector<char> in_working(m, 0);
+  for (int i : working) in_working[i] = 1;
+
+  Eigen::Vector3d a = start;
+  for (int round = 0; round < kMaxRounds; ++round) {
+    a = polish_working_set(p, working, start);
+    const Eigen::VectorXd values = p.transpose() * a;
+    double working_min = 1.0;
+    for (int i : working) working_min = std::min(working_min, values(i));
+    std::vector<int> violated;
+    for (int i = 0; i < m; ++i) {
+      if (!in_working[i] && values(i) < working_min - kViolation) violated.push_back(i);
+    }
+    if (violated.empty()) break;
+    const int add = std::min<int>(kAddPerRound, static_cast<int>(violated.size()));
+    std::partial_sort(violated.begin(), violated.begin() + add, violated.end(),
+                      [&](int x, int y) { return values(x) < values(y); });
+    for (int j = 0; j < add; ++j) {
+      working.push_back(violated[j]);
+      in_working[violated[j]] = 1;
+    }
+  }
+  return a;
+}
+
+// Enough samples for a spacing of half the reference's optimal inradius asin(t_reference), at
+// least kMinSamples, and at most max_sample_products / m (and kMaxSamples).
+int automatic_samples(long m, double t_reference, const CrossCheckOptions& options) {
+  const double radius = std::asin(std::clamp(t_reference, kMinRadius, 1.0));
+  const double wanted = kSpacingsPerRadius * kSpacingsPerRadius * 2.0 * M_PI / (radius * radius);
+  const double by_work = options.max_sample_products / static_cast<double>(m);
+  const double count =
+      std::min({std::ceil(std::max(wanted, kMinSamples)), std::floor(by_work), kMaxSamples});
+  return static_cast<int>(std::max(1.0, count));
+}
+
+// Fibonacci points on the upper hemisphere.
+Eigen::Matrix3Xd fibonacci_hemisphere(int samples) {
+  const double golden_angle = M_PI * (3.0 - std::sqrt(5.0));
+  Eigen::Matrix3Xd directions(3, samples);
+  for (int k = 0; k < samples; ++k) {
+    const double z = 1.0 - (k + 0.5) / samples;
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const double phi = golden_angle * k;
+    directions.col(k) << r * std::cos(phi), r * std::sin(phi), z;
+  }
+  return directions;
+}
+
+// min_i |a.n_i| for every column a of `directions` (nt: the unit vectors as rows).
+Eigen::VectorXd min_abs_values(const Eigen::MatrixXd& nt, const Eigen::Matrix3Xd& directions) {
+  const int samples = static_cast<int>(directions.cols());
+  Eigen::VectorXd values(samples);
+  for (int start = 0; start < samples; start += kSampleBlock) {
+    const int count = std::min(kSampleBlock, samples - start);
+    const Eigen::MatrixXd dots = nt * directions.middleCols(start, count);
+    values.segment(start, count) = dots.cwiseAbs().colwise().minCoeff().transpose();
+  }
+  return values;
 }
 
 }  // namespace
@@ -94,11 +178,15 @@ bool CrossCheckOptions::is_valid(std::string* why) const {
   if (samples < 0) return fail("CrossCheckOptions::samples must be >= 0 (0 = automatic)");
   if (polish_starts < 1) return fail("CrossCheckOptions::polish_starts must be >= 1");
   if (!(agreement > 0.0)) return fail("CrossCheckOptions::agreement must be > 0");
+  if (!(max_sample_products >= 1e5)) {
+    return fail("CrossCheckOptions::max_sample_products must be >= 1e5");
+  }
   return true;
 }
 
 CrossCheck crosscheck_worst_viewpoint(const Eigen::Matrix3Xd& vectors, double t_reference,
-                                      const CrossCheckOptions& options) {
+                                      const CrossCheckOptions& options,
+                                      const std::vector<Eigen::Vector3d>& reference_viewpoints) {
   std::string why;
   if (!options.is_valid(&why)) {
     throw InvalidArgument("crosscheck_worst_viewpoint: options: " + why);
@@ -108,33 +196,39 @@ CrossCheck crosscheck_worst_viewpoint(const Eigen::Matrix3Xd& vectors, double t_
   }
   const Eigen::Matrix3Xd n = normalized_columns(vectors, "crosscheck_worst_viewpoint: vectors");
   const long m = n.cols();
-  const int samples = options.samples > 0
-                          ? options.samples
-                          : static_cast<int>(std::clamp<long>(50 * m * m, 20000, 400000));
+  for (std::size_t k = 0; k < reference_viewpoints.size(); ++k) {
+    const Eigen::Vector3d& a = reference_viewpoints[k];
+    if (!a.allFinite() || !(a.norm() > 0.0)) {
+      throw InvalidArgument("crosscheck_worst_viewpoint: reference_viewpoints[" +
+                            std::to_string(k) + "] is zero or not finite");
+    }
+  }
+  const int samples =
+      options.samples > 0 ? options.samples : automatic_samples(m, t_reference, options);
 
-  // Fibonacci points on the upper hemisphere.
-  const double golden_angle = M_PI * (3.0 - std::sqrt(5.0));
-  Eigen::Matrix3Xd directions(3, samples);
-  for (int k = 0; k < samples; ++k) {
-    const double z = 1.0 - (k + 0.5) / samples;
-    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    const double phi = golden_angle * k;
-    directions.col(k) << r * std::cos(phi), r * std::sin(phi), z;
-  }
-  Eigen::VectorXd values(samples);
+  const Eigen::Matrix3Xd directions = fibonacci_hemisphere(samples);
   const Eigen::MatrixXd nt = n.transpose();
-  for (int start = 0; start < samples; start += kSampleBlock) {
-    const int count = std::min(kSampleBlock, samples - start);
-    const Eigen::MatrixXd dots = nt * directions.middleCols(start, count);
-    values.segment(start, count) = dots.cwiseAbs().colwise().minCoeff().transpose();
-  }
+  const Eigen::VectorXd values = min_abs_values(nt, directions);
   std::vector<int> order(samples);
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return values(a) > values(b); });
 
   CrossCheck result;
-  result.method = "nlopt_multistart_mma";
+  result.method = "nlopt_multistart_cobyla";
   result.t = -1.0;
+  result.samples = samples;
+  result.sample_spacing = std::sqrt(2.0 * M_PI / samples);
+  auto consider = [&](const Eigen::Vector3d& a, double value) {
+    if (value > result.t) {
+      result.t = value;
+      result.viewpoint = upper_hemisphere(a);
+    }
+  };
+  auto polish_and_consider = [&](const Eigen::Vector3d& start) {
+    const Eigen::Vector3d a = polish(n, start);
+    consider(a, min_abs_projection(n, a));
+    ++result.polished;
+  };
   std::vector<Eigen::VectorXd> cells;  // sign patterns already polished
   for (int k = 0; k < samples && static_cast<int>(cells.size()) < options.polish_starts; ++k) {
     const Eigen::Vector3d start = directions.col(order[k]);
@@ -143,18 +237,10 @@ CrossCheck crosscheck_worst_viewpoint(const Eigen::Matrix3Xd& vectors, double t_
     for (const Eigen::VectorXd& s : cells) seen = seen || s == signs;
     if (seen) continue;
     cells.push_back(signs);
-    const Eigen::Vector3d a = polish(n, start);
-    const double value = min_abs_projection(n, a);
-    if (value > result.t) {
-      result.t = value;
-      result.viewpoint = upper_hemisphere(a);
-    }
-    const double sample_value = values(order[k]);
-    if (sample_value > result.t) {
-      result.t = sample_value;
-      result.viewpoint = start;
-    }
+    polish_and_consider(start);
+    consider(start, values(order[k]));
   }
+  for (const Eigen::Vector3d& a : reference_viewpoints) polish_and_consider(a.normalized());
   result.difference = result.t - t_reference;
   result.agrees = std::abs(result.difference) <= options.agreement;
   if (!result.agrees) {

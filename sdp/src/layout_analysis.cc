@@ -100,7 +100,8 @@ LayoutAnalysis analyze_vectors(const Eigen::Matrix3Xd& vectors, const Eigen::Vec
 
   if (options.run_crosscheck) {
     stage("cross-check");
-    const CrossCheck check = crosscheck_worst_viewpoint(scaled, global.t, options.crosscheck);
+    const CrossCheck check =
+        crosscheck_worst_viewpoint(scaled, global.t, options.crosscheck, global.viewpoints);
     report.crosscheck = {true, check.method, check.t, check.agrees, check.message};
     if (!check.agrees) append(&report.message, check.message);
   }

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <random>
 #include <vector>
@@ -72,7 +74,8 @@ void expect_consistent(const WorstViewpoint& w, const Eigen::Matrix3Xd& vectors)
   EXPECT_NEAR(w.t, w.t_lower, 0.0);
   EXPECT_NEAR(min_abs_projection(n, w.viewpoint), w.t, 1e-15) << "the viewpoint attains t";
   EXPECT_NEAR(w.viewpoint.norm(), 1.0, 1e-12);
-  EXPECT_NEAR(w.pbar, std::sqrt(1.0 - w.t * w.t), 1e-15);
+  // sqrt(1 - t^2) loses digits near t = 1 (narrow cones): its rounding is ~1e-16 / p-bar.
+  EXPECT_NEAR(w.pbar, std::sqrt(1.0 - w.t * w.t), 1e-15 * (1.0 + 1.0 / w.pbar));
   ASSERT_FALSE(w.viewpoints.empty());
   EXPECT_EIGEN_NEAR(w.viewpoints.front(), w.viewpoint, 0.0);
   for (const Eigen::Vector3d& a : w.viewpoints) {
@@ -319,6 +322,155 @@ TEST(GlobalWorstViewpoint, DegenerateLayouts) {
   EXPECT_EQ(wc.viewpoints.size(), 4u);
 }
 
+// Free vectors z_j - z_i (i < j) of a point layout, as the analysis builds them (Prop. 8).
+Eigen::Matrix3Xd free_vectors(const Eigen::Matrix3Xd& points) {
+  const int n = static_cast<int>(points.cols());
+  Eigen::Matrix3Xd z(3, n * (n - 1) / 2);
+  int k = 0;
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) z.col(k++) = points.col(j) - points.col(i);
+  }
+  return z;
+}
+
+TEST(GlobalWorstViewpoint, RandomMarkerLayoutsMatchBruteForce) {
+  std::mt19937 rng(kSeed + 3);
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  int trials = 0;
+  for (int points = 4; points <= 9; ++points) {
+    for (int repeat = 0; repeat < 3; ++repeat) {
+      Eigen::Matrix3Xd p(3, points);
+      for (int i = 0; i < points; ++i) {
+        p.col(i) << coordinate(rng), coordinate(rng), coordinate(rng);
+      }
+      const Eigen::Matrix3Xd z = free_vectors(p);
+      SCOPED_TRACE(::testing::Message() << points << " points, repeat " << repeat);
+      const WorstViewpoint w = global_worst_viewpoint(z);
+      expect_consistent(w, z);
+      EXPECT_NEAR(w.t, brute_force_t(z), kExact);
+      ++trials;
+    }
+  }
+  EXPECT_EQ(trials, 18);
+}
+
+TEST(GlobalWorstViewpoint, ParallelAndAntiparallelRepeatsChangeNothing) {
+  // A 3 x 2 x 2 grid: its 66 free vectors repeat a few directions many times (z and k z, and
+  // their negatives). The search runs on the distinct directions: the same answer, certificate,
+  // ties and work as the layout of distinct directions alone, and the exact enumeration agrees.
+  Eigen::Matrix3Xd grid(3, 12);
+  int k = 0;
+  for (int x = 0; x < 3; ++x) {
+    for (int y = 0; y < 2; ++y) {
+      for (int z = 0; z < 2; ++z) grid.col(k++) << x, y, 0.7 * z;
+    }
+  }
+  const Eigen::Matrix3Xd repeated = free_vectors(grid);
+  // The distinct directions, found independently of the library (by exact integer multiples).
+  std::vector<Eigen::Vector3d> distinct;
+  for (Eigen::Index i = 0; i < repeated.cols(); ++i) {
+    const Eigen::Vector3d d = repeated.col(i).normalized();
+    bool seen = false;
+    for (const Eigen::Vector3d& e : distinct)
+      seen = seen || std::abs(std::abs(d.dot(e)) - 1) < 1e-12;
+    if (!seen) distinct.push_back(d);
+  }
+  ASSERT_LT(distinct.size(), static_cast<std::size_t>(repeated.cols()) / 2) << "the grid repeats";
+  Eigen::Matrix3Xd unique(3, distinct.size());
+  for (std::size_t i = 0; i < distinct.size(); ++i) unique.col(i) = distinct[i];
+
+  const WorstViewpoint w = global_worst_viewpoint(repeated);
+  const WorstViewpoint u = global_worst_viewpoint(unique);
+  expect_consistent(w, repeated);
+  expect_consistent(u, unique);
+  EXPECT_NEAR(w.t, brute_force_t(repeated), kExact);
+  EXPECT_NEAR(w.t, u.t, 1e-15);
+  EXPECT_NEAR(w.t_upper, u.t_upper, 1e-15);
+  EXPECT_EIGEN_NEAR(w.viewpoint, u.viewpoint, 1e-15);
+  ASSERT_EQ(w.viewpoints.size(), u.viewpoints.size());
+  EXPECT_EQ(w.patches, u.patches) << "the repeats cost no work";
+  EXPECT_EQ(w.cells_solved, u.cells_solved);
+}
+
+TEST(GlobalWorstViewpoint, SameAnswerOnEveryCall) {
+  // The search is deterministic: repeated calls return bit-identical results.
+  std::mt19937 rng(kSeed + 4);
+  const Eigen::Matrix3Xd z = random_unit_columns(rng, 300);
+  const WorstViewpoint first = global_worst_viewpoint(z);
+  expect_consistent(first, z);
+  for (int call = 0; call < 3; ++call) {
+    const WorstViewpoint again = global_worst_viewpoint(z);
+    EXPECT_EQ(again.t, first.t);
+    EXPECT_EQ(again.t_upper, first.t_upper);
+    EXPECT_EIGEN_NEAR(again.viewpoint, first.viewpoint, 0.0);
+    EXPECT_EQ(again.patches, first.patches);
+  }
+}
+
+// m unit vectors within `radius` rad of a random axis.
+Eigen::Matrix3Xd narrow_cone(std::mt19937& rng, int m, double radius) {
+  const Eigen::Vector3d axis = testing::random_unit_vector(rng);
+  const Eigen::Vector3d e1 = axis.unitOrthogonal();
+  const Eigen::Vector3d e2 = axis.cross(e1);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  Eigen::Matrix3Xd z(3, m);
+  for (int i = 0; i < m; ++i) {
+    const double angle = radius * std::sqrt(unit(rng));
+    const double phi = 2.0 * M_PI * unit(rng);
+    z.col(i) = std::cos(angle) * axis + std::sin(angle) * (std::cos(phi) * e1 + std::sin(phi) * e2);
+  }
+  return z;
+}
+
+TEST(CrossCheck, NarrowConeHasNoFalseDisagreement) {
+  // 20 vectors in a 1e-3 rad cone: t* is within ~1e-6 of 1 and the cell constraints differ by
+  // ~1e-6. The polish once stopped ~1e-6 short here and reported a false disagreement.
+  std::mt19937 rng(kSeed + 5);
+  for (int trial = 0; trial < 8; ++trial) {
+    const Eigen::Matrix3Xd z = narrow_cone(rng, 20, 1e-3);
+    SCOPED_TRACE(::testing::Message() << "trial " << trial);
+    const WorstViewpoint w = global_worst_viewpoint(z);
+    expect_consistent(w, z);
+    EXPECT_GT(w.t, 1.0 - 1e-5);
+    EXPECT_NEAR(w.t, brute_force_t(z), kExact);
+    const CrossCheck alone = crosscheck_worst_viewpoint(z, w.t);
+    EXPECT_TRUE(alone.agrees) << alone.message;
+    const CrossCheck seeded = crosscheck_worst_viewpoint(z, w.t, {}, w.viewpoints);
+    EXPECT_TRUE(seeded.agrees) << seeded.message;
+    EXPECT_LE(seeded.t, w.t_upper + 1e-15) << "nothing beats the certified upper bound";
+  }
+}
+
+TEST(CrossCheck, LargeLayoutIsBoundedAndConfirmsTheReference) {
+  // m = 3000: the cells are far smaller than any affordable sample spacing, so the samples are
+  // capped by max_sample_products, and the reference's cell is re-solved by the polish.
+  std::mt19937 rng(kSeed + 6);
+  const Eigen::Matrix3Xd z = random_unit_columns(rng, 3000);
+  const WorstViewpoint w = global_worst_viewpoint(z);
+  expect_consistent(w, z);
+  const CrossCheckOptions options;
+  const CrossCheck check = crosscheck_worst_viewpoint(z, w.t, options, w.viewpoints);
+  EXPECT_TRUE(check.agrees) << check.message;
+  EXPECT_LE(static_cast<double>(check.samples) * z.cols(), options.max_sample_products);
+  EXPECT_GT(check.sample_spacing, std::asin(w.t)) << "the samples alone cannot resolve the cells";
+  EXPECT_GE(check.polished, 1 + static_cast<int>(w.viewpoints.size()));
+  EXPECT_LE(check.t, w.t_upper + 1e-15);
+  // A wrong reference is caught: the polish of the true optimum's cell exceeds it.
+  const CrossCheck low = crosscheck_worst_viewpoint(z, w.t - 1e-4, options, w.viewpoints);
+  EXPECT_FALSE(low.agrees);
+  EXPECT_FALSE(low.message.empty());
+}
+
+TEST(CrossCheck, AutomaticSamplesResolveTheOptimalCell) {
+  // m = 60: half the optimal inradius is affordable, so the samples alone find the optimum.
+  std::mt19937 rng(kSeed + 7);
+  const Eigen::Matrix3Xd z = random_unit_columns(rng, 60);
+  const WorstViewpoint w = global_worst_viewpoint(z);
+  const CrossCheck check = crosscheck_worst_viewpoint(z, w.t);
+  EXPECT_LE(check.sample_spacing, 0.5 * std::asin(w.t) + 1e-12);
+  EXPECT_TRUE(check.agrees) << check.message;
+}
+
 TEST(GlobalWorstViewpoint, RejectsBadInput) {
   EXPECT_THROW(global_worst_viewpoint(Eigen::Matrix3Xd(3, 1)), InvalidArgument);
   EXPECT_THROW(global_worst_viewpoint(Eigen::Matrix3Xd(3, 0)), InvalidArgument);
@@ -328,6 +480,12 @@ TEST(GlobalWorstViewpoint, RejectsBadInput) {
   bad.certificate_tolerance = 0.0;
   EXPECT_THROW(global_worst_viewpoint(Eigen::Matrix3d::Identity(), bad), InvalidArgument);
   EXPECT_THROW(crosscheck_worst_viewpoint(Eigen::Matrix3Xd(3, 1), 0.0), InvalidArgument);
+  EXPECT_THROW(
+      crosscheck_worst_viewpoint(Eigen::Matrix3d::Identity(), 0.5, {}, {Eigen::Vector3d::Zero()}),
+      InvalidArgument);
+  CrossCheckOptions few;
+  few.max_sample_products = 10.0;
+  EXPECT_THROW(crosscheck_worst_viewpoint(Eigen::Matrix3d::Identity(), 0.5, few), InvalidArgument);
 }
 
 }  // namespace

@@ -61,7 +61,7 @@ struct LayoutAnalysis {
 
   struct CrossCheckSummary {
     bool ran = false;    ///< false with run_crosscheck = false: the other fields are unset
-    std::string method;  ///< "nlopt_multistart_mma" (when ran)
+    std::string method;  ///< "nlopt_multistart_cobyla" (when ran)
     double t = 0.0;
     bool agrees = false;
     std::string message;  ///< non-empty (loud) on disagreement

@@ -141,16 +141,23 @@ const char* to_string(WorstViewpoint::Status status);
 /// radius r has the upper bound min_i sin(min(pi/2, asin|c.n_i| + r)); patches no great circle
 /// n_i^perp crosses lie in one cell whose optimum is solved exactly as the minimum-norm point of
 /// conv{s_i n_i} (note 5, Wolfe's algorithm); patches whose bound is below the best attained
-/// value are pruned. vectors: 3 x m, m >= 2, non-zero finite columns (parallel, duplicated and
-/// antiparallel columns are fine: all parallel gives t = 1, p-bar = 0).
+/// value are pruned. Parallel and antiparallel repeats (unit columns equal within 1e-15 up to
+/// sign) are searched once; t and the viewpoints are evaluated on every column. Time about
+/// (patches at the scale asin(t*) / 2, ~m^2 / 26 for random layouts) x (circles near a patch);
+/// memory O(m) (depth-first). vectors: 3 x m, m >= 2, non-zero finite columns (parallel,
+/// duplicated and antiparallel columns are fine: all parallel gives t = 1, p-bar = 0).
 /// Throws InvalidArgument on bad input or options.
 WorstViewpoint global_worst_viewpoint(const Eigen::Matrix3Xd& vectors,
                                       const WorstViewpointOptions& options = {});
 
 /// Options of crosscheck_worst_viewpoint().
 struct CrossCheckOptions {
-  /// Fibonacci samples over the upper hemisphere; 0 = automatic: clamp(50 m^2, 20000, 400000).
+  /// Fibonacci samples over the upper hemisphere; 0 = automatic: a spacing of half the optimal
+  /// inradius asin(t_reference) (8 pi / asin(t_reference)^2 samples), at least 20000, but at
+  /// most 400000 and max_sample_products / m (so the sampling costs a bounded time).
   int samples = 0;
+  /// Bound of the automatic sample count: samples x m dot products, >= 1e5.
+  double max_sample_products = 4e7;
   /// Best samples (in distinct sign cells) polished by NLopt, >= 1.
   int polish_starts = 16;
   /// |t_nlopt - t_reference| at or below which the two agree. Dimensionless, > 0.
@@ -162,20 +169,36 @@ struct CrossCheckOptions {
 
 /// Independent NLopt cross-check of t*.
 struct CrossCheck {
-  std::string method;  ///< "nlopt_multistart_mma"
+  std::string method;  ///< "nlopt_multistart_cobyla"
   double t = 0.0;      ///< best min_i |a.n_i| found (attained at `viewpoint`)
   Eigen::Vector3d viewpoint = Eigen::Vector3d::UnitZ();
   double difference = 0.0;  ///< t - t_reference
   bool agrees = false;      ///< |difference| <= agreement
-  std::string message;      ///< empty when it agrees; otherwise says so loudly
+  int samples = 0;          ///< Fibonacci samples evaluated
+  /// Angular spacing of the samples, sqrt(2 pi / samples) rad. When it is below asin(t) the
+  /// samples alone put a start inside every cell as large as the optimal one.
+  double sample_spacing = 0.0;
+  int polished = 0;  ///< starts polished: samples in distinct sign cells, then reference_viewpoints
+  std::string message;  ///< empty when it agrees; otherwise says so loudly
 };
 
-/// Global maximisation of min_i |a.n_i| on the unit sphere independent of the branch and bound
-/// and of CSDP: dense Fibonacci sampling of the hemisphere, then the best samples polished by
-/// NLopt's MMA (Svanberg's method of moving asymptotes) on max t s.t. s_i n_i.a >= t, ||a||^2 <= 1
-/// (signs from the sample). Reports whether it agrees with t_reference; it never replaces the SDP
-/// answer.
-CrossCheck crosscheck_worst_viewpoint(const Eigen::Matrix3Xd& vectors, double t_reference,
-                                      const CrossCheckOptions& options = {});
+/// Global maximisation of min_i |a.n_i| on the unit sphere independent of the branch and bound's
+/// bounds and of its minimum-norm-point solver, and of CSDP: Fibonacci sampling of the hemisphere
+/// (a bounded number of samples, see CrossCheckOptions::samples), then the best samples in
+/// distinct sign cells, and every viewpoint in `reference_viewpoints`, polished by NLopt's COBYLA
+/// on the start's sign cell posed as min ||a||^2 s.t. s_i n_i.a >= t0 (t = t0 / ||a*||). The
+/// polish works in coordinates shifted to the start (a = a0 + d), so narrow cones, where t is
+/// close to 1 and the constraints differ by 1e-6, keep their digits; it starts with the
+/// constraints nearest to active and adds any the result violates, so a polish costs O(m) per
+/// round, not an NLopt problem with m constraints.
+///
+/// Independence: with reference_viewpoints, the reference's own cells are re-solved by a
+/// different method (NLopt, all constraints checked), which confirms t_reference is attained as
+/// a cell optimum; whether another cell is better is checked only by the samples, which resolve
+/// every cell at least as large as the optimal one when sample_spacing < asin(t). Reports
+/// whether it agrees with t_reference; it never replaces the answer it checks.
+CrossCheck crosscheck_worst_viewpoint(
+    const Eigen::Matrix3Xd& vectors, double t_reference, const CrossCheckOptions& options = {},
+    const std::vector<Eigen::Vector3d>& reference_viewpoints = {});
 
 }  // namespace vantage::sdp
