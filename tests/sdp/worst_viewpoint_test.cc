@@ -22,7 +22,7 @@ constexpr double kExact = 1e-9;
 constexpr double kBruteForce = 1e-6;
 // CSDP's relative accuracy 1e-8 gives t to about 1e-7.
 constexpr double kSdp = 1e-6;
-// The paper's Fig. 3 / note 3 value is printed to three decimals.
+// The paper's Fig. 3 / docs/math.md §13 value is printed to three decimals.
 constexpr double kPrinted = 5e-4;
 
 const double kInvSqrt3 = 1.0 / std::sqrt(3.0);
@@ -34,7 +34,7 @@ Eigen::Matrix3Xd columns(std::initializer_list<Eigen::Vector3d> list) {
   return m;
 }
 
-// Exact t* by enumerating every candidate optimum (DESIGN.md note 5: a cell optimum is the
+// Exact t* by enumerating every candidate optimum (docs/math.md §13: a cell optimum is the
 // minimum-norm point of conv{s_i n_i}, supported by 1, 2 or 3 points): a = n_i, a ~ n_i +- n_j,
 // a ~ (n_i - s_j n_j) x (n_i - s_k n_k). Independent of the library's algorithm.
 double brute_force_t(const Eigen::Matrix3Xd& vectors) {
@@ -146,7 +146,7 @@ TEST(GlobalWorstViewpoint, OrthogonalTriadHasFourOptima) {
 }
 
 TEST(GlobalWorstViewpoint, NoteThreeLayoutGlobalVersusPaper) {
-  // DESIGN.md note 3: adding (1, 1, -2)/sqrt(6) moves the paper's single LMI to p-bar = 0.953
+  // docs/math.md §13: adding (1, 1, -2)/sqrt(6) moves the paper's single LMI to p-bar = 0.953
   // but (1, 1, -1)/sqrt(3) still has p-bar = 0.8165.
   Eigen::Matrix3Xd z(3, 4);
   z << Eigen::Matrix3d::Identity(), Eigen::Vector3d(1, 1, -2) / std::sqrt(6.0);
@@ -159,8 +159,8 @@ TEST(GlobalWorstViewpoint, NoteThreeLayoutGlobalVersusPaper) {
     has_111 = has_111 || (a - Eigen::Vector3d(-1, -1, 1) * kInvSqrt3).norm() < 1e-9;
   }
   EXPECT_TRUE(has_111) << "(1, 1, -1)/sqrt(3) up to sign is a worst viewpoint";
-  // The 0.953 of note 3 (the paper's "0.95") is the all-positive cell: with a = (u, u, v) the
-  // active constraints give t^2 = 1 / (2 (1 + sqrt(6)/2)^2 + 1).
+  // The 0.953 of docs/math.md §13 (the paper's "0.95") is the all-positive cell: with a = (u, u, v)
+  // the active constraints give t^2 = 1 / (2 (1 + sqrt(6)/2)^2 + 1).
   const double k = 1.0 + std::sqrt(6.0) / 2.0;
   const CellViewpoint all_positive = solve_cell_lmi(z, Eigen::Vector4d::Ones());
   ASSERT_EQ(all_positive.status, CellViewpoint::Status::kOk);
@@ -220,7 +220,7 @@ TEST(GlobalWorstViewpoint, LargeRandomLayoutAgreesWithCrossCheck) {
 }
 
 TEST(GlobalWorstViewpoint, CoplanarFanReachesTheZoneCeiling) {
-  // DESIGN.md note 4: m coplanar vectors at equal angles reach p-bar = cos(pi / (2m)); the m
+  // docs/math.md §15: m coplanar vectors at equal angles reach p-bar = cos(pi / (2m)); the m
   // in-plane bisectors are the worst viewpoints.
   for (int m : {3, 4, 6}) {
     Eigen::Matrix3Xd z(3, m);

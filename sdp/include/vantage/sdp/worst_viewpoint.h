@@ -8,14 +8,14 @@
 ///
 ///   t* = max_{||a|| = 1} min_i |a.n_i|          (Eq. 31),   p-bar_min = sqrt(1 - t*^2)
 ///
-/// (DESIGN.md note 1: the printed Eq. 29, 1 - t^2, is a misprint). a and -a are the same
+/// (docs/math.md §12: the printed Eq. 29, 1 - t^2, is a misprint). a and -a are the same
 /// viewpoint; results are reported with a in the upper hemisphere (z > 0, ties by y > 0, x > 0).
 ///
 /// The paper's LMI (Eq. 28) fixes a sign s_i per vector and solves one *sign cell*:
 ///   max t  s.t.  [[s_i a.n_i, t], [t, s_i a.n_i]] >= 0,  [[I, a], [a^T, 1]] >= 0,
-/// which is local to that cell (DESIGN.md note 3). Its optimum is the distance from the origin to
-/// conv{s_i n_i} (note 5). global_worst_viewpoint() maximises over all cells by branch and bound
-/// on the sphere with exact per-cell solutions, and returns a certificate.
+/// which is local to that cell (docs/math.md §13). Its optimum is the distance from the origin to
+/// conv{s_i n_i} (docs/math.md §13). global_worst_viewpoint() maximises over all cells by branch
+/// and bound on the sphere with exact per-cell solutions, and returns a certificate.
 
 #include <Eigen/Core>
 #include <string>
@@ -32,7 +32,7 @@ Eigen::Matrix3Xd normalized_columns(const Eigen::Matrix3Xd& vectors, const char*
 /// min_i |a.n_i| for unit columns n_i and a unit a: the objective of Eq. (31).
 double min_abs_projection(const Eigen::Matrix3Xd& unit_vectors, const Eigen::Vector3d& a);
 
-/// p-bar = sqrt(1 - t^2) for t in [0, 1] (clamped), Eq. (29) corrected (DESIGN.md note 1).
+/// p-bar = sqrt(1 - t^2) for t in [0, 1] (clamped), Eq. (29) corrected (docs/math.md §12).
 double pbar_from_t(double t);
 
 /// The representative of {a, -a} in the upper hemisphere: z > 0, or z = 0 and y > 0, or
@@ -76,7 +76,7 @@ CellViewpoint solve_cell_lmi(const Eigen::Matrix3Xd& vectors, const Eigen::Vecto
 /// vectors are in the same hemisphere"): when the vectors as given already lie in one open
 /// hemisphere (0 not in conv{n_i}) they are kept (all s_i = +1), otherwise
 /// upper_hemisphere_signs() negates those not in the upper hemisphere. This reproduces the
-/// paper's Fig. 3 value (0.95, DESIGN.md note 3) for Z = I plus (1, 1, -2)/sqrt(6).
+/// paper's Fig. 3 value (0.95, docs/math.md §13) for Z = I plus (1, 1, -2)/sqrt(6).
 Eigen::VectorXd paper_signs(const Eigen::Matrix3Xd& vectors);
 
 /// The paper's answer: solve_cell_lmi() with paper_signs(). Local to one cell, so its t is <=
@@ -135,14 +135,14 @@ struct WorstViewpoint {
 /// "certified", "not_certified" or "sdp_disagrees".
 const char* to_string(WorstViewpoint::Status status);
 
-/// The global worst viewpoint: t* = max over all sign cells (DESIGN.md note 3) without
+/// The global worst viewpoint: t* = max over all sign cells (docs/math.md §13) without
 /// enumerating the 2^(m-1) sign patterns. Branch and bound over spherical patches of the three
 /// cube faces +x, +y, +z (antipodes are the same viewpoint): a patch of centre c and angular
 /// radius r has the upper bound min_i sin(min(pi/2, asin|c.n_i| + r)); patches no great circle
 /// n_i^perp crosses lie in one cell whose optimum is solved exactly as the minimum-norm point of
-/// conv{s_i n_i} (note 5, Wolfe's algorithm); patches whose bound is below the best attained
-/// value are pruned. Parallel and antiparallel repeats (unit columns equal within 1e-15 up to
-/// sign) are searched once; t and the viewpoints are evaluated on every column. Time about
+/// conv{s_i n_i} (docs/math.md §13, Wolfe's algorithm); patches whose bound is below the best
+/// attained value are pruned. Parallel and antiparallel repeats (unit columns equal within 1e-15 up
+/// to sign) are searched once; t and the viewpoints are evaluated on every column. Time about
 /// (patches at the scale asin(t*) / 2, ~m^2 / 26 for random layouts) x (circles near a patch);
 /// memory O(m) (depth-first). vectors: 3 x m, m >= 2, non-zero finite columns (parallel,
 /// duplicated and antiparallel columns are fine: all parallel gives t = 1, p-bar = 0).

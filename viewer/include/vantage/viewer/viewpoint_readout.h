@@ -15,7 +15,7 @@ struct ViewpointReadout {
   Eigen::VectorXd p;           ///< p_i = sqrt(1 - (a.n_i)^2), projected_fractions (Eq. 19)
   double pbar = 1.0;           ///< max_i p_i (Eq. 27)
   Eigen::VectorXd errors_deg;  ///< Eq. (26) with p_i and p_bar: worst_case_errors_deg(vectors, a)
-  double max_error_deg = 0.0;  ///< max_i errors_deg = arccos p_bar (docs/math.md, note 10)
+  double max_error_deg = 0.0;  ///< max_i errors_deg = arccos p_bar (docs/math.md §11)
   int limiting = 0;            ///< the vector that sets p_bar (first on ties)
 };
 
