@@ -14,7 +14,6 @@
 namespace vantage::simulate {
 namespace {
 
-constexpr double kRadToDeg = 180.0 / M_PI;
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 VectorSetBound certify(const std::string& name, const Eigen::Matrix3Xd& vectors,
@@ -68,11 +67,11 @@ PoseRelation relate(const std::string& estimator, const VectorSetBound& own, dou
   PoseRelation r;
   r.estimator = estimator;
   r.free_vectors = own.free_vectors;
-  r.own_bound_deg = own.bound_rad * kRadToDeg;
+  r.own_bound_deg = own.bound_rad * kDegreesPerRadian;
   r.own_pbar_min = own.pbar_min;
   std::vector<double> deg;
   for (double e : rot_err_rad) {
-    deg.push_back(e * kRadToDeg);
+    deg.push_back(e * kDegreesPerRadian);
     if (e > bound_rad) ++r.exceeds_bound;
     if (e > own.bound_rad) ++r.exceeds_own_bound;
   }
@@ -155,7 +154,7 @@ BoundCheck summarize_bound_check(const BoundLayout& layout, const std::vector<Bo
   BoundCheck check;
   check.trials = static_cast<long>(trials.size());
   check.vectors = layout.data.vectors.cols();
-  check.bound_deg = layout.data.bound_rad * kRadToDeg;
+  check.bound_deg = layout.data.bound_rad * kDegreesPerRadian;
   check.pbar_min = layout.data.pbar_min;
   double max_error = 0.0;
   double max_mismatch = 0.0;
@@ -167,8 +166,8 @@ BoundCheck summarize_bound_check(const BoundLayout& layout, const std::vector<Bo
     affine.push_back(t.affine_rot_err_rad);
     spanning.push_back(t.spanning_rot_err_rad);
   }
-  check.max_error_deg = max_error * kRadToDeg;
-  check.max_abs_eq26_mismatch_deg = max_mismatch * kRadToDeg;
+  check.max_error_deg = max_error * kDegreesPerRadian;
+  check.max_abs_eq26_mismatch_deg = max_mismatch * kDegreesPerRadian;
   check.max_ratio = layout.data.bound_rad > 0.0 ? max_error / layout.data.bound_rad : 0.0;
   check.passed = check.max_ratio <= 1.0 + kBoundRatioTolerance && max_mismatch <= kEq26Tolerance;
   const VectorSetBound& used =

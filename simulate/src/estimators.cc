@@ -1,12 +1,15 @@
 #include "vantage/simulate/estimators.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "vantage/analysis/absolute_orientation.h"
 #include "vantage/analysis/affine_pose.h"
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/free_vectors.h"
 #include "vantage/analysis/haralick_2d.h"
 #include "vantage/analysis/orthogonal_iteration.h"
+#include "vantage/analysis/refined_pose.h"
 #include "vantage/analysis/two_view.h"
 
 namespace vantage::simulate {
@@ -30,21 +33,36 @@ bool affine_applies(const Scene& s) {
   return is_image(s) && s.model.cols() >= 3 && s.model.cols() - 1 <= kMaxAffineVectors;
 }
 
-Estimate from_affine(const AffinePoseResult& pose) {
+/// The camera the estimators see: the scene's focal length, image points centred at c.
+Camera centred_camera(const Scene& s) {
+  Camera camera;
+  camera.focal_length = s.focal;
+  return camera;
+}
+
+/// A single-image pose estimate: ok when the status is kOk and the result is not ambiguous
+/// ("ambiguous" is reported as the status, as AffineStatus::kAmbiguous was).
+Estimate from_pose_estimate(const PoseEstimate& pose) {
   Estimate e;
   e.R = pose.R_camera_object;
   e.p = pose.p_camera_object;
+  e.has_translation = std::isfinite(pose.p_camera_object.z());
+  e.status = pose.ambiguous ? "ambiguous" : to_string(pose.status);
+  e.ok = pose.status == PoseStatus::kOk && !pose.ambiguous;
+  return e;
+}
+
+Estimate from_affine(const AffinePoseResult& pose) {
+  Estimate e = from_pose_estimate(pose);
   e.has_translation = pose.depth_known;
   e.alpha = pose.alpha;
-  e.status = to_string(pose.status);
-  e.ok = pose.status == AffineStatus::kOk;
   return e;
 }
 
 Estimate affine_points(const Scene& s, FreeVectorSet set) {
   AffinePoseOptions options;
   options.free_vectors = set;
-  options.focal_length = s.focal;
+  options.camera = centred_camera(s);
   return from_affine(affine_pose(s.model, centred_image(s), {}, options));
 }
 
@@ -62,7 +80,8 @@ Estimate solve_affine(const Scene& s) {
 Estimate solve_standard(const Scene& s) {
   if (s.kind != SceneKind::kAffineVectors) {
     AffinePoseOptions options;
-    options.focal_length = s.focal;
+    options.free_vectors = FreeVectorSet::kAllPairs;
+    options.camera = centred_camera(s);
     return from_affine(standard_affine_pose(s.model, centred_image(s), {}, options));
   }
   Eigen::Matrix3Xd v = Eigen::Matrix3Xd::Zero(3, s.image.cols());
@@ -76,28 +95,40 @@ Estimate solve_standard(const Scene& s) {
   return e;
 }
 
-/// A pose result with R_camera_object, p_camera_object and a status; ok when status == ok.
-template <typename Result, typename Status>
-Estimate from_pose(const Result& pose, Status ok) {
+/// A 3-D pose result (PoseResult): ok when status == OrientationStatus::kOk.
+Estimate from_pose(const PoseResult& pose) {
   Estimate e;
   e.R = pose.R_camera_object;
   e.p = pose.p_camera_object;
   e.has_translation = true;
   e.status = to_string(pose.status);
-  e.ok = pose.status == ok;
+  e.ok = pose.status == OrientationStatus::kOk;
   return e;
 }
 
 Estimate solve_full3d(const Scene& s) {
-  return from_pose(full_3d_pose(s.model, s.measured), OrientationStatus::kOk);
+  AffinePoseOptions options;
+  options.free_vectors = FreeVectorSet::kAllPairs;
+  return from_pose(full_3d_pose(s.model, s.measured, {}, options));
 }
 
 Estimate solve_oi(const Scene& s, OrientationMethod step) {
   OrthogonalIterationOptions options;
   options.rotation_step = step;
-  options.focal_length = s.focal;
-  return from_pose(orthogonal_iteration_pose(s.model, centred_image(s), {}, options),
-                   OrthogonalIterationStatus::kConverged);
+  options.camera = centred_camera(s);
+  return from_pose_estimate(orthogonal_iteration_pose(s.model, centred_image(s), {}, options));
+}
+
+/// affine_refined_pose() or perspective_pose() from Prop. 8's start (library defaults).
+Estimate solve_refined(const Scene& s, bool perspective) {
+  RefinedPoseOptions options;
+  options.camera = centred_camera(s);
+  const RefinedPoseResult pose = perspective
+                                     ? perspective_pose(s.model, centred_image(s), {}, options)
+                                     : affine_refined_pose(s.model, centred_image(s), {}, options);
+  Estimate e = from_pose_estimate(pose);
+  e.alpha = pose.alpha;
+  return e;
 }
 
 Estimate solve_haralick_2d(const Scene& s) {
@@ -114,7 +145,7 @@ Estimate solve_haralick_2d(const Scene& s) {
 Estimate solve_haralick_3d(const Scene& s) {
   OrientationOptions options;
   options.method = OrientationMethod::kSvd;
-  return from_pose(absolute_pose(s.model, s.measured, {}, options), OrientationStatus::kOk);
+  return from_pose(absolute_pose(s.model, s.measured, {}, options));
 }
 
 Estimate solve_two_view(const Scene& s) {
@@ -139,6 +170,10 @@ std::vector<Estimator> make_registry() {
          return is_image(s) && s.model.cols() >= 3 && s.model.cols() - 1 <= kMaxAffineVectors;
        },
        [](const Scene& s) { return affine_points(s, FreeVectorSet::kMaxSpanningTree); }},
+      {"affine-refined",
+       "Prop. 8 refined by Levenberg-Marquardt on the affine image residual (affine cameras)",
+       [](const Scene& s) { return s.kind == SceneKind::kAffineImage && s.model.cols() >= 3; },
+       [](const Scene& s) { return solve_refined(s, false); }},
       {"standard", "the paper's standard approach: Theorem 1 with v_z = 0",
        [image_points](const Scene& s) {
          return s.kind == SceneKind::kAffineVectors || image_points(s);
@@ -152,6 +187,10 @@ std::vector<Estimator> make_registry() {
       {"oi-svd", "orthogonal iteration with the SVD step (Lu et al.)",
        [](const Scene& s) { return s.kind == SceneKind::kPinholeImage && s.model.cols() >= 3; },
        [](const Scene& s) { return solve_oi(s, OrientationMethod::kSvd); }},
+      {"perspective",
+       "maximum-likelihood pinhole pose: Levenberg-Marquardt from Prop. 8 (pinhole images)",
+       [](const Scene& s) { return s.kind == SceneKind::kPinholeImage && s.model.cols() >= 3; },
+       [](const Scene& s) { return solve_refined(s, true); }},
       {"haralick-2d", "Haralick et al. Sec. 2: closed-form 2D-2D rigid pose",
        [](const Scene& s) { return s.kind == SceneKind::kPlanar2d; }, solve_haralick_2d},
       {"haralick-3d", "Haralick et al. Sec. 3: 3D-3D pose by the SVD",

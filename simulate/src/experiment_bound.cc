@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "experiment_support.h"
+#include "vantage/analysis/common.h"
 #include "vantage/simulate/bound_check.h"
 #include "vantage/simulate/progress.h"
 #include "vantage/simulate/report_json.h"
@@ -12,7 +13,6 @@
 namespace vantage::simulate::internal {
 namespace {
 
-constexpr double kRadToDeg = 180.0 / M_PI;
 constexpr int kRandomLayouts = 100;
 constexpr int kQuickRandomLayouts = 4;
 /// Trials per layout at the worst viewpoint (random roll), besides the random viewpoints.
@@ -113,9 +113,11 @@ ExperimentResult run_bound(const ExperimentOptions& options, long trials) {
     for (long t = 0; t < count; ++t) {
       const BoundTrial& r = results[t];
       per_trial << named.name << t << (t >= trials ? "worst" : "random") << r.pbar
-                << r.max_error_rad * kRadToDeg << std::acos(std::min(1.0, r.pbar)) * kRadToDeg
-                << layout.data.bound_rad * kRadToDeg << r.affine_rot_err_rad * kRadToDeg
-                << r.spanning_rot_err_rad * kRadToDeg;
+                << r.max_error_rad * kDegreesPerRadian
+                << std::acos(std::min(1.0, r.pbar)) * kDegreesPerRadian
+                << layout.data.bound_rad * kDegreesPerRadian
+                << r.affine_rot_err_rad * kDegreesPerRadian
+                << r.spanning_rot_err_rad * kDegreesPerRadian;
       per_trial.end_row();
     }
     if (l < std::max<std::size_t>(examples, kVectorLayouts)) {
@@ -123,7 +125,7 @@ ExperimentResult run_bound(const ExperimentOptions& options, long trials) {
         const VectorErrors v = vector_errors(layout, scene_of(t));
         for (Eigen::Index k = 0; k < v.p.size(); ++k) {
           per_vector << named.name << t << static_cast<long>(k) << v.p(k) << v.pbar
-                     << v.angle_rad(k) * kRadToDeg << v.eq26_rad(k) * kRadToDeg;
+                     << v.angle_rad(k) * kDegreesPerRadian << v.eq26_rad(k) * kDegreesPerRadian;
           per_vector.end_row();
         }
       }
@@ -158,8 +160,8 @@ ExperimentResult run_bound(const ExperimentOptions& options, long trials) {
   result.summary["trials"] = total_trials;
   result.summary["max_ratio"] = worst_ratio;
   result.summary["max_abs_eq26_mismatch_deg"] = worst_mismatch;
-  result.summary["passed"] =
-      worst_ratio <= 1.0 + kBoundRatioTolerance && worst_mismatch <= kEq26Tolerance * kRadToDeg;
+  result.summary["passed"] = worst_ratio <= 1.0 + kBoundRatioTolerance &&
+                             worst_mismatch <= kEq26Tolerance * kDegreesPerRadian;
   result.summary["affine_exceeds_bound"] = affine_exceed;
   result.summary["affine_exceeds_own_bound"] = affine_exceed_own;
   result.summary["affine_max_rot_err_over_bound"] = worst_pose_ratio;

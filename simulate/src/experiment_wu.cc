@@ -7,8 +7,10 @@
 namespace vantage::simulate::internal {
 namespace {
 
-/// The perspective estimators compared, and the affine ones for reference.
-const std::vector<std::string> kEstimators = {"oi-foam", "oi-svd", "affine", "standard"};
+/// The perspective estimators compared (orthogonal iteration and the maximum-likelihood pinhole
+/// pose), and the affine ones for reference.
+const std::vector<std::string> kEstimators = {"oi-foam", "oi-svd", "perspective", "affine",
+                                              "standard"};
 
 ExperimentResult wu_sweep(const ExperimentOptions& options, long trials, const std::vector<int>& ns,
                           const std::vector<double>& snrs, const std::string& file,

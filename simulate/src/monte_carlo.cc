@@ -16,7 +16,6 @@
 namespace vantage::simulate {
 namespace {
 
-constexpr double kRadToDeg = 180.0 / M_PI;
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 bool fail(std::string* why, const std::string& message) {
@@ -69,11 +68,12 @@ std::pair<long, long> shard_range(long total, const Shard& shard) {
 
 TrialError trial_error(const Estimate& estimate, const Scene& scene) {
   TrialError error;
-  error.rot_err_deg = rotation_angle_between(estimate.R, scene.R_true) * kRadToDeg;
+  error.rot_err_deg = rotation_angle_between(estimate.R, scene.R_true) * kDegreesPerRadian;
   const bool translation = estimate.has_translation && scene.has_translation;
   error.trans_err = translation ? (estimate.p - scene.p_true).norm() : kNaN;
   error.trans_err_rel = error.trans_err / scene.p_true.norm();
-  error.trans_err_deg = translation ? angle_between(estimate.p, scene.p_true) * kRadToDeg : kNaN;
+  error.trans_err_deg =
+      translation ? angle_between(estimate.p, scene.p_true) * kDegreesPerRadian : kNaN;
   error.scale_err =
       std::isnan(estimate.alpha) ? kNaN : std::abs(estimate.alpha / scene.alpha_true - 1.0);
   error.status = estimate.status;

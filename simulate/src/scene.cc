@@ -102,7 +102,7 @@ Scene make_layout_scene(const Eigen::Matrix3Xd& entries, bool vectors,
   scene.focal = options.focal_px;
   scene.principal_point = options.principal_point;
   scene.R_true = options.viewpoint
-                     ? rotation_with_viewpoint(*options.viewpoint, random.uniform(0.0, 2.0 * M_PI))
+                     ? rotation_with_viewpoint(*options.viewpoint, random.uniform(0.0, 2.0 * kPi))
                      : random.rotation();
   const double depth = options.range * size;
   scene.p_true =

@@ -8,7 +8,7 @@
 namespace vantage::simulate {
 namespace {
 
-constexpr double kDegToRad = M_PI / 180.0;
+constexpr double kDegToRad = 1.0 / kDegreesPerRadian;
 constexpr double kMinDepth = 0.1;  // closest a point may come to camera 2 (object units)
 
 void check_n(int n, int minimum, const char* where) {

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "support/eigen_testing.h"
+#include "vantage/analysis/common.h"
 #include "vantage/analysis/error_bounds.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/simulate/monte_carlo.h"
@@ -70,7 +71,7 @@ TEST(BoundCheck, HoldsOnEveryExampleAndRandomLayout) {
     const BoundCheck check = run_check(c, scene, layout);
     EXPECT_TRUE(check.passed) << c.name;
     EXPECT_LE(check.max_ratio, 1.0 + kBoundRatioTolerance) << c.name;
-    EXPECT_LE(check.max_abs_eq26_mismatch_deg, kEq26Tolerance * 180.0 / M_PI) << c.name;
+    EXPECT_LE(check.max_abs_eq26_mismatch_deg, kEq26Tolerance * kDegreesPerRadian) << c.name;
     EXPECT_GT(check.max_error_deg, 0.0) << c.name;
     EXPECT_EQ(check.trials, kTrials);
   }
@@ -90,7 +91,7 @@ TEST(BoundCheck, IsReachedAtTheWorstViewpoint) {
 TEST(BoundCheck, TriadMatchesThePaper) {
   const BoundLayout layout = prepare_bound_layout(Eigen::Matrix3d::Identity(), true);
   EXPECT_NEAR(layout.data.pbar_min, std::sqrt(2.0 / 3.0), 1e-9);
-  EXPECT_NEAR(layout.data.bound_rad * 180.0 / M_PI, 35.2644, 1e-4);
+  EXPECT_NEAR(layout.data.bound_rad * kDegreesPerRadian, 35.2644, 1e-4);
   EXPECT_EQ(layout.affine_free_vectors, "vectors");
 }
 

@@ -63,7 +63,7 @@ TEST(MonteCarlo, BitIdenticalAtOneAndFourThreads) {
   const MonteCarloRun one = run_monte_carlo(generator, all_for(generator), options);
   options.threads = 4;
   const MonteCarloRun four = run_monte_carlo(generator, all_for(generator), options);
-  ASSERT_EQ(one.names.size(), 4u);  // affine, affine-spanning, standard, full3d
+  ASSERT_EQ(one.names.size(), 5u);  // affine, affine-spanning, affine-refined, standard, full3d
   expect_same_values(one, four);
   options.seed = 8;
   const MonteCarloRun other = run_monte_carlo(generator, all_for(generator), options);
@@ -111,13 +111,36 @@ TEST(MonteCarlo, NoiseFreeExactMethodsReturnTheTruth) {
   const auto summaries = summarize(run_monte_carlo(generator, all_for(generator), options));
   int checked = 0;
   for (const EstimatorSummary& s : summaries) {
-    if (s.name != "full3d" && s.name != "oi-foam" && s.name != "oi-svd") continue;
+    if (s.name != "full3d" && s.name != "oi-foam" && s.name != "oi-svd" &&
+        s.name != "perspective") {
+      continue;
+    }
     EXPECT_LT(s.rot_err_deg.max, kExactDeg) << s.name;
     EXPECT_LT(s.trans_err_rel.max, kExactRelative) << s.name;
     EXPECT_EQ(s.failures, 0) << s.name;
     ++checked;
   }
-  EXPECT_EQ(checked, 3);
+  EXPECT_EQ(checked, 4);
+}
+
+TEST(MonteCarlo, NoiseFreeAffineRefinedReturnsTheTruthWhereTheLubScaleDoesNot) {
+  const SceneGenerator generator = layout_generator(LayoutSceneOptions{});
+  MonteCarloOptions options;
+  options.trials = 20;
+  const auto summaries = summarize(run_monte_carlo(generator, all_for(generator), options));
+  const auto find = [&](const std::string& name) {
+    for (const EstimatorSummary& s : summaries) {
+      if (s.name == name) return s;
+    }
+    ADD_FAILURE() << name << " did not run";
+    return EstimatorSummary{};
+  };
+  const EstimatorSummary refined = find("affine-refined");
+  EXPECT_LT(refined.rot_err_deg.max, kExactDeg);
+  EXPECT_LT(refined.trans_err_rel.max, kExactRelative);
+  EXPECT_EQ(refined.failures, 0);
+  // Lemma 7's LUB scale is exact only when a free vector lies in the image plane: the control.
+  EXPECT_GT(find("affine").rot_err_deg.max, 1000.0 * kExactDeg);
 }
 
 TEST(MonteCarlo, TrialErrorMeasuresTheRotationAngle) {
@@ -129,7 +152,7 @@ TEST(MonteCarlo, TrialErrorMeasuresTheRotationAngle) {
   estimate.has_translation = true;
   estimate.alpha = 2.0;
   const TrialError e = trial_error(estimate, scene);
-  EXPECT_NEAR(e.rot_err_deg, 0.3 * 180.0 / M_PI, 1e-12);
+  EXPECT_NEAR(e.rot_err_deg, 0.3 * kDegreesPerRadian, 1e-12);
   EXPECT_NEAR(e.trans_err_rel, 0.5, 1e-15);
   EXPECT_NEAR(e.trans_err_deg, 0.0, 1e-12);
   EXPECT_NEAR(e.scale_err, 1.0, 1e-15);

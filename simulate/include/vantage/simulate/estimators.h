@@ -26,7 +26,9 @@ struct Estimate {
   /// Estimated affine scale (object units per image unit), NaN when the method has none.
   double alpha = std::numeric_limits<double>::quiet_NaN();
   std::string status;  ///< the library's to_string() of the result status
-  bool ok = true;      ///< the status claims success (kOk / kConverged)
+  /// The status claims success: kOk and, for a single-image pose, not ambiguous (an ambiguous
+  /// pose has status "ambiguous").
+  bool ok = true;
 };
 
 /// A registered estimator.
@@ -43,9 +45,12 @@ struct Estimator {
 ///                   most kMaxAllPairs of them, else the maximum spanning tree) or Lemma 7
 ///                   (direction data); McInroy et al. "new 2-D"
 ///  affine-spanning  Prop. 8 on the n - 1 free vectors of the maximum spanning tree
+///  affine-refined   Prop. 8 refined on the affine image residual (affine_refined_pose()),
+///                   affine images
 ///  standard         the paper's "standard approach" (Theorem 1 with v_z = 0)
 ///  full3d           the paper's "full 3-D" baseline on the 3-D sensor's measurements
 ///  oi-foam, oi-svd  orthogonal iteration (Wu & Wu; Lu et al.), pinhole images
+///  perspective      maximum-likelihood pinhole pose (perspective_pose()), pinhole images
 ///  haralick-2d      Haralick et al. Sec. 2 (2D-2D)
 ///  haralick-3d      Haralick et al. Sec. 3 (3D-3D, SVD)
 ///  two-view         Haralick et al. Sec. 4 (simplified linear two-view algorithm)
