@@ -3,7 +3,7 @@
 // [--json]`: one pose estimator on a correspondence file. Affine image (McInroy et al.): Prop. 8,
 // its refinement on the affine model and the paper's two baselines; perspective image: the
 // pinhole refinement (LM from Prop. 8) and orthogonal iteration (Wu & Wu); two views: Haralick's
-// linear algorithm. Every method prints the same pose fields (pose_fields below).
+// linear algorithm. Every method prints the same pose fields (json/pose_json.cc).
 
 #include <cmath>
 #include <iostream>
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "command.h"
+#include "pose_json.h"
 #include "vantage/analysis/affine_pose.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/orthogonal_iteration.h"
@@ -52,16 +53,6 @@ struct Outcome {
   std::string text;
   bool failed = false;
 };
-
-/// A number, or null when it is not finite (NaN and infinities are never printed).
-Json json_number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
-
-/// A vector with null for each entry that is not finite (an unknown depth p_z).
-Json json_finite_list(const Eigen::VectorXd& v) {
-  Json out = Json::array();
-  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(json_number(v(i)));
-  return out;
-}
 
 std::string purpose(const PoseArgs& args) { return "vantage pose --method " + args.method; }
 
@@ -112,30 +103,6 @@ void check_free_vector_count(const io::CorrespondenceFile& file, const AffinePos
   }
 }
 
-/// The fields every method prints: R, p, status, ambiguous, reprojection_rms_px, alternative.
-void pose_fields(const PoseEstimate& pose, Json* out) {
-  (*out)["R"] = json_rows(pose.R_camera_object);
-  (*out)["p"] = json_finite_list(pose.p_camera_object);
-  (*out)["status"] = to_string(pose.status);
-  (*out)["ambiguous"] = pose.ambiguous;
-  (*out)["reprojection_rms_px"] = json_number(pose.reprojection_rms_px);
-  if (!pose.message.empty()) (*out)["message"] = pose.message;
-  if (pose.alternative) {
-    Json alternative;
-    alternative["R"] = json_rows(pose.alternative->R_camera_object);
-    alternative["p"] = json_finite_list(pose.alternative->p_camera_object);
-    alternative["reprojection_rms_px"] = json_number(pose.alternative->reprojection_rms_px);
-    (*out)["alternative"] = alternative;
-  }
-}
-
-Json camera_json(const Camera& camera) {
-  Json out;
-  out["focal"] = camera.has_focal_length() ? Json(camera.focal_length) : Json(nullptr);
-  out["principal_point"] = json_list(camera.principal_point);
-  return out;
-}
-
 std::string header(const PoseArgs& args, Eigen::Index n, const std::string& what) {
   return "vantage pose: " + std::to_string(n) + " correspondences from " + args.file + ", method " +
          args.method + "\n" + what + "\n";
@@ -181,25 +148,7 @@ Outcome run_affine(const PoseArgs& args, const io::CorrespondenceFile& file) {
 
   Outcome outcome;
   outcome.failed = pose.status != PoseStatus::kOk;
-  Json& out = outcome.json;
-  out["method"] = args.method;
-  out["n"] = file.model.cols();
-  pose_fields(pose, &out);
-  out["alpha"] = json_number(pose.alpha);
-  out["depth_known"] = pose.depth_known;
-  out["camera"] = camera_json(options.camera);
-  out["objective"] = json_number(pose.objective);
-  out["orientation_residual"] = json_number(o.residual);
-  out["free_vectors"] = to_string(options.free_vectors);
-  out["free_vector_count"] = pose.pairs.cols();
-  out["sign_patterns"] = o.sign_patterns;
-  out["ambiguity_margin"] = json_number(o.ambiguity_margin);
-  out["runner_up_residual"] = json_number(o.runner_up_residual);
-  out["runner_up_angle_deg"] =
-      has_runner_up ? json_number(o.runner_up_angle * kRadiansToDegrees) : Json(nullptr);
-  out["clamped"] = o.clamped;
-  out["in_plane"] = o.in_plane;
-  out["eigen_gap"] = json_number(o.eigen_gap);
+  outcome.json = pose_json::affine(args.method, file.model.cols(), options, pose);
 
   std::ostringstream text;
   text << header(args, file.model.cols(),
@@ -239,16 +188,7 @@ Outcome run_refined(const PoseArgs& args, const io::CorrespondenceFile& file) {
 
   Outcome outcome;
   outcome.failed = pose.status != PoseStatus::kOk;
-  Json& out = outcome.json;
-  out["method"] = args.method;
-  out["n"] = file.model.cols();
-  pose_fields(pose, &out);
-  out["alpha"] = json_number(pose.alpha);
-  out["camera"] = camera_json(options.camera);
-  out["iterations"] = pose.iterations;
-  out["branches"] = pose.branches;
-  out["planarity"] = json_number(pose.planarity);
-  out["start_reprojection_rms_px"] = json_number(pose.start_reprojection_rms_px);
+  outcome.json = pose_json::refined(args.method, file.model.cols(), options, pose);
 
   std::ostringstream text;
   text << header(args, file.model.cols(),
@@ -274,21 +214,7 @@ Outcome run_full3d(const PoseArgs& args, const io::CorrespondenceFile& file) {
 
   Outcome outcome;
   outcome.failed = pose.status != OrientationStatus::kOk;
-  Json& out = outcome.json;
-  out["method"] = args.method;
-  out["n"] = n;
-  out["R"] = json_rows(pose.R_camera_object);
-  out["p"] = json_list(pose.p_camera_object);
-  out["status"] = to_string(pose.status);
-  out["ambiguous"] = false;
-  out["reprojection_rms_px"] = nullptr;  // 3-D measurements: no image
-  if (!pose.message.empty()) out["message"] = pose.message;
-  out["alpha"] = json_number(pose.alpha);
-  out["objective"] = json_number(pose.residual);
-  out["free_vectors"] = to_string(options.free_vectors);
-  out["free_vector_count"] =
-      options.free_vectors == FreeVectorSet::kMaxSpanningTree ? n - 1 : n * (n - 1) / 2;
-  out["eigen_gap"] = json_number(pose.eigen_gap);
+  outcome.json = pose_json::full3d(args.method, n, options, pose);
 
   std::ostringstream text;
   text << header(args, n,
@@ -318,18 +244,7 @@ Outcome run_orthogonal_iteration(const PoseArgs& args, const io::CorrespondenceF
 
   Outcome outcome;
   outcome.failed = pose.status != PoseStatus::kOk;
-  Json& out = outcome.json;
-  out["method"] = args.method;
-  out["n"] = file.model.cols();
-  pose_fields(pose, &out);
-  out["alpha"] = nullptr;
-  out["camera"] = camera_json(options.camera);
-  out["objective"] = json_number(pose.objective);
-  out["initial_objective"] = json_number(pose.initial_objective);
-  out["iterations"] = pose.iterations;
-  out["branches"] = pose.branches;
-  out["rotation_step"] = to_string(options.rotation_step);
-  out["points_behind_camera"] = pose.points_behind_camera;
+  outcome.json = pose_json::orthogonal_iteration(args.method, file.model.cols(), options, pose);
 
   std::ostringstream text;
   text << header(args, file.model.cols(),
@@ -359,22 +274,7 @@ Outcome run_two_view(const PoseArgs& args, const io::CorrespondenceFile& file) {
 
   Outcome outcome;
   outcome.failed = pose.status != TwoViewStatus::kOk;
-  Json& out = outcome.json;
-  out["method"] = args.method;
-  out["n"] = n;
-  out["R"] = json_rows(pose.R_camera2_camera1);
-  out["p"] = json_list(pose.t_camera2_camera1);
-  out["status"] = to_string(pose.status);
-  out["ambiguous"] = false;
-  out["reprojection_rms_px"] = nullptr;  // the fit is epipolar, not a reprojection
-  if (!pose.message.empty()) out["message"] = pose.message;
-  out["T"] = json_list(pose.t_camera2_camera1);
-  out["alpha"] = nullptr;
-  out["focal"] = options.focal_length;
-  out["epipolar_rms"] = json_number(pose.residual);
-  out["essential"] = json_rows(pose.essential);
-  out["null_space_ratio"] = json_number(pose.null_space_ratio);
-  out["points_in_front"] = pose.points_in_front;
+  outcome.json = pose_json::two_view(args.method, n, options, pose);
 
   std::ostringstream text;
   text << header(args, n,

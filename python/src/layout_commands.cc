@@ -9,6 +9,7 @@
 #include "layouts.h"
 #include "results.h"
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/free_vectors.h"
 #include "vantage/design/augment.h"
 #include "vantage/design/weights.h"
 #include "vantage/sdp/layout_analysis.h"

@@ -6,6 +6,7 @@
 #include "results.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/error_bounds.h"
+#include "vantage/analysis/free_vectors.h"
 #include "vantage/io/calibration_board.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/io/layout_formats.h"

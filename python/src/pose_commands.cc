@@ -1,6 +1,6 @@
 // vantage.pose and vantage.orient: the estimators behind `vantage pose` and `vantage orient`,
-// returning the fields of their --json output. Each estimator is one row of kMethods; a new
-// estimator whose result type is already converted below is one more row.
+// returning the fields of their --json output (vantage pose's objects come from the command's
+// own conversion, cli/json/pose_json.h). Each estimator is one row of kMethods.
 
 #include "pose_commands.h"
 
@@ -12,19 +12,20 @@
 #include <optional>
 
 #include "arrays.h"
+#include "pose_json.h"
 #include "results.h"
 #include "vantage/analysis/absolute_orientation.h"
 #include "vantage/analysis/affine_pose.h"
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/free_vectors.h"
 #include "vantage/analysis/orthogonal_iteration.h"
+#include "vantage/analysis/refined_pose.h"
 #include "vantage/analysis/two_view.h"
 #include "vantage/io/correspondence_file.h"
 
 namespace vantage::python {
 
 namespace {
-
-constexpr double kRadiansToDegrees = 180.0 / 3.14159265358979323846;
 
 /// The correspondences and options of one vantage.pose call (absent arrays have no columns).
 struct PoseInput {
@@ -36,13 +37,17 @@ struct PoseInput {
   Eigen::Matrix2Xd image2;
   Eigen::VectorXd weights;
   std::optional<double> focal;
-  std::optional<std::string> free_vectors;
+  std::optional<Eigen::Vector2d> principal_point;
+  FreeVectorSet free_vectors = FreeVectorSet::kAuto;
 
   void require(bool present, const char* field) const {
     if (!present) {
       throw InvalidArgument(std::string(field) + ": required by vantage.pose(method='" + method +
                             "')");
     }
+  }
+  bool perspective_family() const {
+    return method == "perspective" || method == "oi-foam" || method == "oi-svd";
   }
 };
 
@@ -52,68 +57,34 @@ struct Outcome {
   bool failed = false;
 };
 
-Json json_rows(const Eigen::Matrix3d& m) {
-  Json rows = Json::array();
-  for (int i = 0; i < 3; ++i) rows.push_back({m(i, 0), m(i, 1), m(i, 2)});
-  return rows;
+/// The camera of `vantage pose`: focal and principal point as given; perspective methods without
+/// a focal length read the image as normalised coordinates (f = 1).
+Camera camera_of(const PoseInput& in) {
+  Camera camera;
+  camera.focal_length = in.focal.value_or(0.0);
+  if (in.principal_point) camera.principal_point = *in.principal_point;
+  if (in.perspective_family() && !camera.has_focal_length()) camera.focal_length = 1.0;
+  return camera;
 }
-
-Json json_vector(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
 AffinePoseOptions affine_options(const PoseInput& in) {
   AffinePoseOptions options;
-  options.free_vectors = in.free_vectors.value_or("all") == "spanning"
-                             ? FreeVectorSet::kMaxSpanningTree
-                             : FreeVectorSet::kAllPairs;
-  options.focal_length = in.focal.value_or(0.0);
+  options.free_vectors = in.free_vectors;
+  options.camera = camera_of(in);
   return options;
 }
 
-Outcome affine_outcome(const PoseInput& in, const AffinePoseOptions& options,
-                       const AffinePoseResult& pose) {
-  const AffineOrientationResult& o = pose.orientation;
-  Outcome outcome;
-  outcome.failed = pose.status == AffineStatus::kDegenerate;
-  Json& out = outcome.json;
-  out["method"] = in.method;
-  out["n"] = in.model.cols();
-  out["R"] = json_rows(pose.R_camera_object);
-  Json p = json_vector(pose.p_camera_object);
-  if (!pose.depth_known) p[2] = nullptr;
-  out["p"] = p;
-  out["alpha"] = json_number(pose.alpha);
-  out["depth_known"] = pose.depth_known;
-  out["focal"] = in.focal ? Json(*in.focal) : Json(nullptr);
-  out["status"] = to_string(pose.status);
-  if (!pose.message.empty()) out["message"] = pose.message;
-  out["residual"] = json_number(pose.residual);
-  out["orientation_residual"] = json_number(o.residual);
-  out["free_vectors"] = to_string(options.free_vectors);
-  out["free_vector_count"] = pose.pairs.cols();
-  out["sign_patterns"] = o.sign_patterns;
-  out["ambiguity_margin"] = json_number(o.ambiguity_margin);
-  out["runner_up_residual"] = json_number(o.runner_up_residual);
-  out["runner_up_angle_deg"] = std::isfinite(o.runner_up_residual)
-                                   ? json_number(o.runner_up_angle * kRadiansToDegrees)
-                                   : Json(nullptr);
-  if (pose.status == AffineStatus::kAmbiguous) {
-    out["runner_up_R"] = json_rows(o.runner_up_R_camera_object);
-  }
-  out["clamped"] = o.clamped;
-  out["in_plane"] = o.in_plane;
-  out["eigen_gap"] = json_number(o.eigen_gap);
-  return outcome;
-}
-
-/// Prop. 4 enumerates 2^m sign patterns: refuse before the library does, with the way out.
+/// Prop. 4 enumerates 2^m sign patterns: refuse an explicit set beyond the limit before the
+/// library does, with the way out.
 void check_free_vector_count(const PoseInput& in, const AffinePoseOptions& options) {
+  if (options.free_vectors == FreeVectorSet::kAuto) return;
   const Eigen::Index n = in.model.cols();
-  const Eigen::Index m = options.free_vectors == FreeVectorSet::kAllPairs ? n * (n - 1) / 2 : n - 1;
+  const Eigen::Index m = free_vector_count(n, options.free_vectors);
   if (m > options.orientation.max_vectors) {
     throw InvalidArgument("model: " + std::to_string(n) + " points give " + std::to_string(m) +
                           " free vectors, more than the limit " +
                           std::to_string(options.orientation.max_vectors) + " (Prop. 4 solves 2^" +
-                          std::to_string(m) + " problems); use free_vectors='spanning'");
+                          std::to_string(m) + " problems); use free_vectors='auto' or 'spanning'");
   }
 }
 
@@ -127,33 +98,34 @@ Outcome run_affine(const PoseInput& in) {
     return standard ? standard_affine_pose(in.model, in.image, in.weights, options)
                     : affine_pose(in.model, in.image, in.weights, options);
   });
-  return affine_outcome(in, options, pose);
+  return {pose_json::affine(in.method, in.model.cols(), options, pose),
+          pose.status != PoseStatus::kOk};
+}
+
+Outcome run_refined(const PoseInput& in) {
+  in.require(in.model.cols() > 0, "model");
+  in.require(in.image.cols() > 0, "image");
+  RefinedPoseOptions options;
+  options.start = affine_options(in);
+  options.camera = options.start.camera;
+  check_free_vector_count(in, options.start);
+  const RefinedPoseResult pose = without_gil([&] {
+    return in.method == "perspective"
+               ? perspective_pose(in.model, in.image, in.weights, options)
+               : affine_refined_pose(in.model, in.image, in.weights, options);
+  });
+  return {pose_json::refined(in.method, in.model.cols(), options, pose),
+          pose.status != PoseStatus::kOk};
 }
 
 Outcome run_full3d(const PoseInput& in) {
   in.require(in.model.cols() > 0, "model");
   in.require(in.measured.cols() > 0, "measured");
-  if (in.focal) throw InvalidArgument("focal: not used by method='full3d' (3-D measurements)");
   const AffinePoseOptions options = affine_options(in);
   const PoseResult pose =
       without_gil([&] { return full_3d_pose(in.model, in.measured, in.weights, options); });
-  const Eigen::Index n = in.model.cols();
-  Outcome outcome;
-  outcome.failed = pose.status != OrientationStatus::kOk;
-  Json& out = outcome.json;
-  out["method"] = in.method;
-  out["n"] = n;
-  out["R"] = json_rows(pose.R_camera_object);
-  out["p"] = json_vector(pose.p_camera_object);
-  out["alpha"] = json_number(pose.alpha);
-  out["status"] = to_string(pose.status);
-  if (!pose.message.empty()) out["message"] = pose.message;
-  out["residual"] = json_number(pose.residual);
-  out["free_vectors"] = to_string(options.free_vectors);
-  out["free_vector_count"] =
-      options.free_vectors == FreeVectorSet::kAllPairs ? n * (n - 1) / 2 : n - 1;
-  out["eigen_gap"] = json_number(pose.eigen_gap);
-  return outcome;
+  return {pose_json::full3d(in.method, in.model.cols(), options, pose),
+          pose.status != OrientationStatus::kOk};
 }
 
 Outcome run_orthogonal_iteration(const PoseInput& in) {
@@ -162,26 +134,11 @@ Outcome run_orthogonal_iteration(const PoseInput& in) {
   OrthogonalIterationOptions options;
   options.rotation_step =
       in.method == "oi-svd" ? OrientationMethod::kSvd : OrientationMethod::kFoam;
-  if (in.focal) options.focal_length = *in.focal;
+  options.camera = camera_of(in);
   const OrthogonalIterationResult pose = without_gil(
       [&] { return orthogonal_iteration_pose(in.model, in.image, in.weights, options); });
-  Outcome outcome;
-  outcome.failed = pose.status != OrthogonalIterationStatus::kConverged;
-  Json& out = outcome.json;
-  out["method"] = in.method;
-  out["n"] = in.model.cols();
-  out["R"] = json_rows(pose.R_camera_object);
-  out["p"] = json_vector(pose.p_camera_object);
-  out["alpha"] = nullptr;
-  out["focal"] = options.focal_length;
-  out["status"] = to_string(pose.status);
-  if (!pose.message.empty()) out["message"] = pose.message;
-  out["residual"] = json_number(pose.error);
-  out["initial_residual"] = json_number(pose.initial_error);
-  out["iterations"] = pose.iterations;
-  out["rotation_step"] = to_string(options.rotation_step);
-  out["points_behind_camera"] = pose.points_behind_camera;
-  return outcome;
+  return {pose_json::orthogonal_iteration(in.method, in.model.cols(), options, pose),
+          pose.status != PoseStatus::kOk};
 }
 
 Outcome run_two_view(const PoseInput& in) {
@@ -196,23 +153,8 @@ Outcome run_two_view(const PoseInput& in) {
   if (in.focal) options.focal_length = *in.focal;
   const TwoViewResult pose =
       without_gil([&] { return two_view_pose(in.image1, in.image2, options); });
-  Outcome outcome;
-  outcome.failed = pose.status != TwoViewStatus::kOk;
-  Json& out = outcome.json;
-  out["method"] = in.method;
-  out["n"] = in.image1.cols();
-  out["R"] = json_rows(pose.R_camera2_camera1);
-  out["p"] = json_vector(pose.t_camera2_camera1);
-  out["T"] = json_vector(pose.t_camera2_camera1);
-  out["alpha"] = nullptr;
-  out["focal"] = options.focal_length;
-  out["status"] = to_string(pose.status);
-  if (!pose.message.empty()) out["message"] = pose.message;
-  out["residual"] = json_number(pose.residual);
-  out["essential"] = json_rows(pose.essential);
-  out["null_space_ratio"] = json_number(pose.null_space_ratio);
-  out["points_in_front"] = pose.points_in_front;
-  return outcome;
+  return {pose_json::two_view(in.method, in.image1.cols(), options, pose),
+          pose.status != TwoViewStatus::kOk};
 }
 
 /// The estimators of `vantage pose --method`, one row each.
@@ -220,6 +162,8 @@ const std::map<std::string, std::function<Outcome(const PoseInput&)>>& methods()
   static const std::map<std::string, std::function<Outcome(const PoseInput&)>> kMethods = {
       {"affine", run_affine},
       {"standard", run_affine},
+      {"affine-refined", run_refined},
+      {"perspective", run_refined},
       {"full3d", run_full3d},
       {"oi-foam", run_orthogonal_iteration},
       {"oi-svd", run_orthogonal_iteration},
@@ -234,10 +178,59 @@ std::string method_names() {
   return names;
 }
 
+/// focal= and principal_point= (checked as the CLI checks --focal and --principal-point).
+void read_camera(const py::object& focal, const py::object& principal_point, PoseInput* in) {
+  if (!focal.is_none()) {
+    if (!py::isinstance<py::float_>(focal) && !py::isinstance<py::int_>(focal)) {
+      throw InvalidArgument("focal: must be a finite number > 0");
+    }
+    in->focal = focal.cast<double>();
+    if (!(*in->focal > 0.0 && std::isfinite(*in->focal))) {
+      throw InvalidArgument("focal: must be a finite number > 0");
+    }
+    if (in->method == "full3d") {
+      throw InvalidArgument("focal: not used by method='full3d' (3-D measurements)");
+    }
+  }
+  if (!principal_point.is_none()) {
+    const Eigen::VectorXd c = vector_from_array(principal_point, "principal_point");
+    if (c.size() != 2 || !c.allFinite()) {
+      throw InvalidArgument("principal_point: must be two finite numbers (pixels)");
+    }
+    if (in->method == "full3d" || in->method == "two-view") {
+      throw InvalidArgument("principal_point: not used by method='" + in->method + "'");
+    }
+    in->principal_point = Eigen::Vector2d(c(0), c(1));
+  }
+}
+
+/// free_vectors= (auto, all or spanning; only for the methods that use free vectors).
+void read_free_vectors(const py::object& free_vectors, PoseInput* in) {
+  if (free_vectors.is_none()) return;
+  const std::string expected = "free_vectors: expected auto, all or spanning";
+  if (!py::isinstance<py::str>(free_vectors)) throw InvalidArgument(expected);
+  const std::string name = free_vectors.cast<std::string>();
+  if (name == "all") {
+    in->free_vectors = FreeVectorSet::kAllPairs;
+  } else if (name == "spanning") {
+    in->free_vectors = FreeVectorSet::kMaxSpanningTree;
+  } else if (name != "auto") {
+    throw InvalidArgument(expected);
+  }
+  const std::string& m = in->method;
+  if (m != "affine" && m != "standard" && m != "affine-refined" && m != "perspective" &&
+      m != "full3d") {
+    throw InvalidArgument(
+        "free_vectors: only affine, affine-refined, perspective, standard and full3d use free "
+        "vectors, not " +
+        m);
+  }
+}
+
 py::object pose(const py::object& model, const py::object& image, const std::string& method,
                 const py::object& measured, const py::object& image1, const py::object& image2,
                 const py::object& weights, const py::object& focal,
-                const py::object& free_vectors) {
+                const py::object& principal_point, const py::object& free_vectors) {
   const auto row = methods().find(method);
   if (row == methods().end()) {
     throw InvalidArgument("method: expected one of " + method_names() + ", got \"" + method + "\"");
@@ -250,30 +243,8 @@ py::object pose(const py::object& model, const py::object& image, const std::str
   if (!image1.is_none()) in.image1 = rows_from_array<2>(image1, "image1");
   if (!image2.is_none()) in.image2 = rows_from_array<2>(image2, "image2");
   if (!weights.is_none()) in.weights = vector_from_array(weights, "weights");
-  if (!focal.is_none()) {
-    if (!py::isinstance<py::float_>(focal) && !py::isinstance<py::int_>(focal)) {
-      throw InvalidArgument("focal: must be a finite number > 0");
-    }
-    in.focal = focal.cast<double>();
-    if (!(*in.focal > 0.0 && std::isfinite(*in.focal))) {
-      throw InvalidArgument("focal: must be a finite number > 0");
-    }
-  }
-  if (!free_vectors.is_none()) {
-    if (!py::isinstance<py::str>(free_vectors)) {
-      throw InvalidArgument("free_vectors: expected all or spanning");
-    }
-    in.free_vectors = free_vectors.cast<std::string>();
-    if (*in.free_vectors != "all" && *in.free_vectors != "spanning") {
-      throw InvalidArgument("free_vectors: expected all or spanning");
-    }
-    if (method != "affine" && method != "standard" && method != "full3d") {
-      throw InvalidArgument(
-          "free_vectors: only affine, standard and full3d use free vectors, "
-          "not " +
-          method);
-    }
-  }
+  read_camera(focal, principal_point, &in);
+  read_free_vectors(free_vectors, &in);
   const Outcome outcome = row->second(in);
   return result_or_raise(outcome.failed, outcome.json["status"].get<std::string>(),
                          outcome.json.value("message", std::string()), outcome.json);
@@ -299,8 +270,8 @@ py::object orient(const py::object& model, const py::object& measured, const py:
   Json out;
   out["method"] = to_string(options.method);
   out["n"] = z.cols();
-  out["R"] = json_rows(pose.R_camera_object);
-  out["p"] = json_vector(pose.p_camera_object);
+  out["R"] = pose_json::rows(pose.R_camera_object);
+  out["p"] = pose_json::list(pose.p_camera_object);
   out["alpha"] = pose.alpha;
   out["residual"] = pose.residual;
   out["eigen_gap"] = pose.eigen_gap;
@@ -310,8 +281,9 @@ py::object orient(const py::object& model, const py::object& measured, const py:
                          pose.message, out);
 }
 
-/// The arrays of a correspondence file, keyed like the arguments of vantage.pose (absent fields
-/// left out), so that vantage.pose(**vantage.load_correspondences(path), method=...) works.
+/// The arrays of a correspondence file and its camera (focal, principal_point), keyed like the
+/// arguments of vantage.pose (absent fields left out), so that
+/// vantage.pose(**vantage.load_correspondences(path), method=...) works.
 py::dict load_correspondences(const py::object& path) {
   const io::CorrespondenceFile file = io::read_correspondences(path_from(path));
   py::dict out;
@@ -321,6 +293,10 @@ py::dict load_correspondences(const py::object& path) {
   if (file.has_image1) out["image1"] = array_from_columns(file.image1);
   if (file.has_image2) out["image2"] = array_from_columns(file.image2);
   if (file.weights.size() > 0) out["weights"] = array_from_vector(file.weights);
+  if (file.has_focal) out["focal"] = file.camera.focal_length;
+  if (file.has_principal_point) {
+    out["principal_point"] = array_from_vector(file.camera.principal_point);
+  }
   return out;
 }
 
@@ -331,11 +307,13 @@ void bind_pose_commands(py::module_& module) {
              py::kw_only(), py::arg("method") = "affine", py::arg("measured") = py::none(),
              py::arg("image1") = py::none(), py::arg("image2") = py::none(),
              py::arg("weights") = py::none(), py::arg("focal") = py::none(),
-             py::arg("free_vectors") = py::none(),
+             py::arg("principal_point") = py::none(), py::arg("free_vectors") = py::none(),
              "One pose estimator (as `vantage pose --method M --json`): model n x 3 with image "
-             "n x 2 (affine, standard, oi-foam, oi-svd) or measured n x 3 (full3d); image1 and "
-             "image2 n x 2 (two-view). Raises NumericalError when the estimate is degenerate or "
-             "did not converge.");
+             "n x 2 in pixels (affine, affine-refined, perspective, standard, oi-foam, oi-svd) or "
+             "measured n x 3 (full3d); image1 and image2 n x 2 (two-view). focal (pixels, > 0) "
+             "and principal_point [cx, cy] (pixels) as --focal and --principal-point; "
+             "free_vectors 'auto' (default), 'all' or 'spanning'. Raises NumericalError when the "
+             "estimate is degenerate or did not converge.");
   module.def(
       "pose_methods",
       [] {
@@ -346,7 +324,8 @@ void bind_pose_commands(py::module_& module) {
       "The names vantage.pose accepts as method=.");
   module.def("load_correspondences", &load_correspondences, py::arg("path"),
              "The arrays of a correspondence file (model, measured, image, image1, image2, "
-             "weights; n x 3 or n x 2), as keyword arguments for vantage.pose / vantage.orient.");
+             "weights; n x 3 or n x 2) and its camera (focal, principal_point), as keyword "
+             "arguments for vantage.pose / vantage.orient.");
   module.def("orient", &orient, py::arg("model"), py::arg("measured"), py::kw_only(),
              py::arg("weights") = py::none(), py::arg("method") = "qmethod",
              "Rotation, translation and scale from 3-D correspondences, alpha * measured = R * "

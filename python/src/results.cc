@@ -1,7 +1,5 @@
 #include "results.h"
 
-#include <cmath>
-
 namespace vantage::python {
 
 py::object to_python(const Json& value) {
@@ -55,7 +53,5 @@ void register_errors(py::module_& module) {
     }
   });
 }
-
-Json json_number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 
 }  // namespace vantage::python

@@ -49,7 +49,4 @@ auto without_gil(Call&& call) {
   return call();
 }
 
-/// A number, or None/null when it is not finite (as the CLI prints it).
-Json json_number(double x);
-
 }  // namespace vantage::python

@@ -1,6 +1,7 @@
 """pose and orient: every estimator against `vantage pose --json` on the example
 correspondences; shapes and exceptions."""
 
+import json
 import re
 
 import numpy as np
@@ -15,6 +16,13 @@ CASES = [
     ("affine_pose.json", "full3d", [], {}),
     ("affine_pose.json", "affine", ["--focal", "800"], {"focal": 800}),
     ("affine_pose.json", "affine", ["--free-vectors", "spanning"], {"free_vectors": "spanning"}),
+    ("affine_pose.json", "affine", ["--free-vectors", "all"], {"free_vectors": "all"}),
+    ("affine_pose.json", "affine", ["--principal-point", "3", "-2"], {"principal_point": [3, -2]}),
+    ("affine_pose.json", "affine-refined", [], {}),
+    ("affine_pose.json", "affine-refined", ["--focal", "800"], {"focal": 800}),
+    ("perspective_pose.json", "perspective", [], {}),
+    ("perspective_pose.json", "perspective", ["--free-vectors", "spanning"],
+     {"free_vectors": "spanning"}),
     ("cube.json", "full3d", [], {}),
     ("perspective_pose.json", "oi-foam", [], {}),
     ("perspective_pose.json", "oi-svd", [], {}),
@@ -32,9 +40,26 @@ def test_python_binds_exactly_the_cli_methods(vantage):
 def test_pose_matches_the_cli(vantage, name, method, flags, kwargs):
     path = CORRESPONDENCES / name
     data = vantage.load_correspondences(path)
-    result = vantage.pose(**data, method=method, **kwargs)
+    result = vantage.pose(**{**data, **kwargs}, method=method)
     assert_same(result.to_dict(), cli_json("pose", path, "--method", method, *flags))
     assert result.R.shape == (3, 3)
+
+
+def test_camera_of_the_file_reaches_vantage_pose(vantage, tmp_path):
+    # perspective_pose.json in pixels of a camera with f = 800, c = (320, 240): the file's camera
+    # is read by load_correspondences, the pose is the stated truth and equals the CLI's.
+    source = json.loads((CORRESPONDENCES / "perspective_pose.json").read_text())
+    focal, centre = 800.0, [320.0, 240.0]
+    source["image"] = [[focal * x + centre[0], focal * y + centre[1]] for x, y in source["image"]]
+    source["camera"] = {"focal": focal, "principal_point": centre}
+    path = tmp_path / "pixels.json"
+    path.write_text(json.dumps(source))
+    data = vantage.load_correspondences(path)
+    assert data["focal"] == focal
+    np.testing.assert_array_equal(data["principal_point"], centre)
+    result = vantage.pose(**data, method="perspective")
+    assert_same(result.to_dict(), cli_json("pose", path, "--method", "perspective"))
+    np.testing.assert_allclose(result.p, [0.15, -0.1, 4.0], atol=1e-9)
 
 
 @pytest.mark.parametrize("method", ["qmethod", "svd", "foam"])
@@ -72,8 +97,15 @@ def test_pose_input_errors(vantage):
     for focal in (-1, float("nan"), "800"):
         with pytest.raises(ValueError, match="focal: must be a finite number > 0"):
             vantage.pose(data["model"], data["image"], focal=focal)
-    with pytest.raises(ValueError, match="free_vectors: only affine, standard and full3d"):
+    with pytest.raises(ValueError, match="free_vectors: only affine, affine-refined, perspective"):
         vantage.pose(data["model"], data["image"], method="oi-foam", free_vectors="all")
+    with pytest.raises(ValueError, match="free_vectors: expected auto, all or spanning"):
+        vantage.pose(data["model"], data["image"], free_vectors="tree")
+    with pytest.raises(ValueError, match="principal_point: must be two finite numbers"):
+        vantage.pose(data["model"], data["image"], principal_point=[1, float("nan")])
+    with pytest.raises(ValueError, match="principal_point: not used by method='full3d'"):
+        vantage.pose(data["model"], measured=data["model"], method="full3d",
+                     principal_point=[0, 0])
 
 
 def test_correspondence_file_errors_are_the_cli_message(vantage, tmp_path, monkeypatch):
