@@ -82,7 +82,7 @@ void write_haralick_figure(const std::filesystem::path& sweep_csv, const std::st
   set_text_size(canvas, kSmallSize);
   pls.box("g", 0.0, 0, "gl", 1.0, 0);
   draw_line(canvas, {snr_lo - pad, snr_hi + pad}, {0.0, 0.0}, {25, 25, 25}, 1.6, true);
-  canvas.label(snr_hi + pad, 0.0, "1°", -6 * s, -10 * s, 1.0, kSmallSize * s, {25, 25, 25});
+  canvas.label(snr_lo - pad, 0.0, "1°", 6 * s, -10 * s, 0.0, kSmallSize * s, {25, 25, 25});
 
   std::vector<long> ns;
   std::vector<std::string> noises, estimators;
