@@ -131,13 +131,7 @@ void write_bound_figure(const std::filesystem::path& directory, const FigureOpti
   draw_title(canvas, figure_title(options, "Do the bounds hold?"),
              "orientation error against p̄(a), the Eq. 30 curve arccos p̄(a) above it (vantage "
              "experiment bound)");
-  plstream& pls = canvas.pls();
-  pls.vpor(0.10, 0.96, 0.11, 0.84);
-  pls.wind(x.lo, x.hi, y.lo, y.hi);
-  pls.col0(kPenGrid);
-  pls.width(0.8 * s);
-  set_text_size(canvas, kSmallSize);
-  pls.box("gl", 1.0, 0, "gl", 1.0, 0);
+  plot_area(canvas, x.lo, x.hi, y.lo, y.hi, "gl", 1.0, "gl", 1.0);
 
   const double r = data.max_vector.pbar.size() > 2000 ? 1.6 : 3.0;
   draw_points(canvas, data.vectors, x, y, r * 0.8, kVectorColour, Canvas::Shape::kCircle);

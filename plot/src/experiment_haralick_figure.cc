@@ -74,13 +74,7 @@ void write_haralick_figure(const std::filesystem::path& sweep_csv, const std::st
   const double s = page_scale(canvas);
   draw_title(canvas, figure_title(options, title),
              "mean rotation error against SNR, one line per number of pairs n and noise model");
-  plstream& pls = canvas.pls();
-  pls.vpor(0.10, 0.96, 0.11, 0.84);
-  pls.wind(snr_lo - pad, snr_hi + pad, y.lo, y.hi);
-  pls.col0(kPenGrid);
-  pls.width(0.8 * s);
-  set_text_size(canvas, kSmallSize);
-  pls.box("g", 0.0, 0, "gl", 1.0, 0);
+  plot_area(canvas, snr_lo - pad, snr_hi + pad, y.lo, y.hi, "g", 0.0, "gl", 1.0);
   draw_line(canvas, {snr_lo - pad, snr_hi + pad}, {0.0, 0.0}, {25, 25, 25}, 1.6, true);
   canvas.label(snr_lo - pad, 0.0, "1°", 6 * s, -10 * s, 0.0, kSmallSize * s, {25, 25, 25});
 

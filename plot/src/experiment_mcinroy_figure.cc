@@ -77,13 +77,7 @@ void write_mcinroy_orientation_figure(const std::filesystem::path& directory,
   draw_title(canvas, figure_title(options, "Orientation from one affine image: error distribution"),
              "fraction of trials with rotation error ≤ x, standard vs new estimator (vantage "
              "experiment mcinroy-orientation)");
-  plstream& pls = canvas.pls();
-  pls.vpor(0.10, 0.96, 0.11, 0.84);
-  pls.wind(x.lo, x.hi, 0.0, 1.0);
-  pls.col0(kPenGrid);
-  pls.width(0.8 * s);
-  set_text_size(canvas, kSmallSize);
-  pls.box("gl", 1.0, 0, "g", 0.1, 0);
+  plot_area(canvas, x.lo, x.hi, 0.0, 1.0, "gl", 1.0, "g", 0.1);
 
   CsvWriter csv(out.csv, "n,estimator,rot_err_deg,fraction");
   using Entry = Canvas::LegendEntry;

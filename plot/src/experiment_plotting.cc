@@ -32,6 +32,17 @@ void draw_line(Canvas& canvas, const std::vector<double>& x, const std::vector<d
   pls.lsty(1);
 }
 
+void plot_area(Canvas& canvas, double x0, double x1, double y0, double y1, const char* xopt,
+               double xtick, const char* yopt, double ytick) {
+  plstream& pls = canvas.pls();
+  pls.vpor(0.10, 0.96, 0.11, 0.84);
+  pls.wind(x0, x1, y0, y1);
+  pls.col0(kPenGrid);
+  pls.width(0.8 * page_scale(canvas));
+  set_text_size(canvas, kSmallSize);
+  pls.box(xopt, xtick, 0, yopt, ytick, 0);
+}
+
 double log_clamped(double value, double smallest) { return std::log10(std::max(value, smallest)); }
 
 Decades decades(const std::vector<double>& values, double smallest) {

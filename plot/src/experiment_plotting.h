@@ -19,6 +19,11 @@ Rgb series_colour(std::size_t k);
 void draw_line(Canvas& canvas, const std::vector<double>& x, const std::vector<double>& y,
                Rgb colour, double width_px, bool dashed = false);
 
+/// The plot area of every experiment figure: the viewport, the world window [x0, x1] x [y0, y1]
+/// and the pale grid (PLplot box options xopt/yopt with major tick spacing xtick/ytick).
+void plot_area(Canvas& canvas, double x0, double x1, double y0, double y1, const char* xopt,
+               double xtick, const char* yopt, double ytick);
+
 /// [floor(log10 lo), ceil(log10 hi)] of the positive finite values (at least one decade);
 /// values below `smallest` count as `smallest`.
 struct Decades {
