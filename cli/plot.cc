@@ -1,8 +1,12 @@
 // `vantage plot LAYOUT --out DIR [--format png|svg|pdf] [--only NAME,...] [--size WxH]
 // [--threshold-deg X] [--design DESIGN.json] [--title T] [--json]`: the figures of a layout
 // (vantage::plot), each image with the CSV of the numbers it draws.
+// `vantage plot --experiment NAME --out DIR [--format F] [--size WxH] [--title T] [--json]`: the
+// figures of an experiment directory written by `vantage experiment NAME --out DIR`.
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <regex>
@@ -11,6 +15,7 @@
 #include "figure_output.h"
 #include "vantage/analysis/common.h"
 #include "vantage/io/layout_file.h"
+#include "vantage/plot/experiment_figures.h"
 #include "vantage/plot/layout_figures.h"
 
 namespace vantage::cli {
@@ -26,6 +31,7 @@ struct PlotArgs {
   double threshold_deg = 5.0;
   std::string design;
   std::string title;
+  std::string experiment;
   bool json = false;
 };
 
@@ -93,7 +99,58 @@ plot::DesignCurve read_design_curve(const std::string& path) {
   return curve;
 }
 
+std::string joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+int run_experiment_plot(const PlotArgs& args) {
+  if (!args.file.empty()) bad("LAYOUT: not allowed with --experiment");
+  if (!args.only.empty() || !args.design.empty()) {
+    bad("--only/--design: not allowed with --experiment");
+  }
+  const std::vector<std::string> names = plot::experiment_figure_names();
+  if (std::find(names.begin(), names.end(), args.experiment) == names.end()) {
+    bad("--experiment: no figures for \"" + args.experiment + "\" (" + joined(names) + ")");
+  }
+  plot::FigureOptions options;
+  options.format = plot::parse_format(args.format, "--format");
+  options.title = args.title;
+  parse_size(args.size, options);
+  if (!std::filesystem::is_directory(args.out)) {
+    bad("--out: " + args.out + " is not a directory (run `vantage experiment " + args.experiment +
+        " --out " + args.out + "` first)");
+  }
+  std::vector<plot::FigureFiles> files;
+  try {
+    files = plot::write_experiment_figures(args.experiment, args.out, options);
+  } catch (const plot::RenderError& e) {
+    std::cerr << "vantage: plot: " << e.what() << std::endl;
+    return kExitFailure;
+  }
+  if (args.json) {
+    Json out;
+    out["experiment"] = args.experiment;
+    out["out"] = args.out;
+    out["format"] = plot::to_string(options.format);
+    out["size"] = {options.width, options.height};
+    out["figures"] = figure_files_json(files);
+    print_json(out);
+  } else {
+    std::cout << "vantage plot: experiment " << args.experiment << "\n"
+              << files.size() << " figure" << (files.size() == 1 ? "" : "s") << " written ("
+              << plot::to_string(options.format) << " + csv):\n";
+    for (const plot::FigureFiles& f : files) {
+      std::cout << "  " << f.image.string() << "\n  " << f.csv.string() << "\n";
+    }
+  }
+  return kExitOk;
+}
+
 int run_plot(const PlotArgs& args) {
+  if (!args.experiment.empty()) return run_experiment_plot(args);
+  if (args.file.empty()) bad("LAYOUT: required (or --experiment NAME)");
   plot::LayoutFiguresOptions options;
   options.figure.format = plot::parse_format(args.format, "--format");
   options.figure.title = args.title;
@@ -172,9 +229,17 @@ Command add_plot_command(CLI::App& root) {
   CLI::App* sub = root.add_subcommand(
       "plot",
       "Figures of a layout (PNG, SVG or PDF, each with a CSV of its numbers): viewpoint_map, "
-      "dropout, error_surface, vectors, and design (with --design)");
-  sub->add_option("LAYOUT", args->file, "layout JSON file (vectors or points)")->required();
-  sub->add_option("--out", args->out, "directory for the figures (created if missing)")->required();
+      "dropout, error_surface, vectors, and design (with --design); or, with --experiment NAME, "
+      "the figures of a `vantage experiment NAME --out DIR` directory");
+  sub->add_option("LAYOUT", args->file, "layout JSON file (vectors or points)");
+  sub->add_option("--experiment", args->experiment,
+                  "draw the figures of experiment NAME from the CSVs in --out DIR instead: " +
+                      joined(plot::experiment_figure_names()));
+  sub->add_option(
+         "--out", args->out,
+         "directory for the figures (created if missing); with --experiment, the experiment's "
+         "directory")
+      ->required();
   sub->add_option("--format", args->format, "png, svg or pdf")->capture_default_str();
   sub->add_option("--only", args->only,
                   "comma-separated figures to write: viewpoint_map, dropout, error_surface, "

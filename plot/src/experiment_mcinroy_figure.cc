@@ -1,0 +1,121 @@
+// Figure `mcinroy_orientation` of `vantage experiment mcinroy-orientation`: the empirical CDF of
+// the rotation error of the standard and the new (affine) estimator, one line per estimator and
+// number of vectors n, on a log error axis.
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "experiment_csv.h"
+#include "experiment_plotting.h"
+#include "output_file.h"
+#include "style.h"
+
+namespace vantage::plot::internal {
+namespace {
+
+constexpr double kSmallestDeg = 1e-4;  // errors below this are drawn at the left edge
+constexpr std::size_t kCurvePoints = 300;
+
+// Sorted finite errors of each (n, estimator).
+using Samples = std::map<std::pair<long, std::string>, std::vector<double>>;
+
+Samples read_samples(const std::filesystem::path& directory) {
+  const ExperimentCsv csv(directory / "mcinroy_orientation_trials.csv");
+  const std::size_t n = csv.column("n"), estimator = csv.column("estimator"),
+                    error = csv.column("rot_err_deg");
+  Samples samples;
+  for (std::size_t r = 0; r < csv.rows(); ++r) {
+    const double e = csv.number(r, error);
+    auto& list = samples[{std::lround(csv.number(r, n)), csv.text(r, estimator)}];
+    if (std::isfinite(e)) list.push_back(e);
+  }
+  for (auto& entry : samples) std::sort(entry.second.begin(), entry.second.end());
+  return samples;
+}
+
+std::string estimator_label(const std::string& name) {
+  if (name == "standard") return "standard";
+  if (name == "affine") return "new (affine)";
+  return name;
+}
+
+// Estimator colour: standard red, the new estimator blue, others from the series colours.
+Rgb estimator_colour(const std::string& name, std::size_t index) {
+  if (name == "standard") return {228, 26, 28};
+  if (name == "affine") return {33, 113, 181};
+  return series_colour(index + 2);
+}
+
+}  // namespace
+
+void write_mcinroy_orientation_figure(const std::filesystem::path& directory,
+                                      const FigureOptions& options,
+                                      std::vector<FigureFiles>& files) {
+  const Samples samples = read_samples(directory);
+  if (samples.empty()) {
+    throw InvalidArgument((directory / "mcinroy_orientation_trials.csv").string() + ": no rows");
+  }
+  std::vector<double> all;
+  std::vector<long> ns;
+  std::vector<std::string> estimators;
+  for (const auto& [key, errors] : samples) {
+    all.insert(all.end(), errors.begin(), errors.end());
+    if (std::find(ns.begin(), ns.end(), key.first) == ns.end()) ns.push_back(key.first);
+    if (std::find(estimators.begin(), estimators.end(), key.second) == estimators.end()) {
+      estimators.push_back(key.second);
+    }
+  }
+  Decades x = decades(all, kSmallestDeg);
+  x.hi = std::min(x.hi, std::ceil(std::log10(180.0) * 10.0) / 10.0);
+  x.lo = std::max(x.lo, x.hi - 6.0);
+
+  const FigureFiles out = figure_files("mcinroy_orientation", directory, options.format);
+  Canvas canvas(out.image, options);
+  const double s = page_scale(canvas);
+  draw_title(canvas, figure_title(options, "Orientation from one affine image: error distribution"),
+             "fraction of trials with rotation error ≤ x, standard vs new estimator (vantage "
+             "experiment mcinroy-orientation)");
+  plot_area(canvas, x.lo, x.hi, 0.0, 1.0, "gl", 1.0, "g", 0.1);
+
+  CsvWriter csv(out.csv, "n,estimator,rot_err_deg,fraction");
+  using Entry = Canvas::LegendEntry;
+  std::vector<Entry> legend;
+  for (const auto& [key, errors] : samples) {
+    if (errors.empty()) continue;
+    const std::size_t e = static_cast<std::size_t>(
+        std::find(estimators.begin(), estimators.end(), key.second) - estimators.begin());
+    const bool dashed = key.first != ns.back();
+    const Rgb colour = estimator_colour(key.second, e);
+    // The CDF is drawn through at most kCurvePoints of its steps so that a dashed line stays
+    // visibly dashed; the CSV has every step.
+    std::vector<double> px{x.lo}, py{0.0};
+    const double count = static_cast<double>(errors.size());
+    const std::size_t stride = std::max<std::size_t>(1, errors.size() / kCurvePoints);
+    for (std::size_t k = 0; k < errors.size(); ++k) {
+      csv << key.first << key.second << errors[k] << (k + 1) / count;
+      csv.end_row();
+      if (k % stride != 0 && k + 1 != errors.size()) continue;
+      px.push_back(std::min(x.hi, std::max(x.lo, log_clamped(errors[k], kSmallestDeg))));
+      py.push_back((k + 1) / count);
+    }
+    px.push_back(x.hi);
+    py.push_back(1.0);
+    draw_line(canvas, px, py, colour, dashed ? 2.0 : 2.6, dashed);
+    const double median = errors[errors.size() / 2];
+    legend.push_back(Entry::line("n = " + std::to_string(key.first) + ", " +
+                                     estimator_label(key.second) + " (median " +
+                                     fixed(median, median < 1.0 ? 3 : 1) + "°, " +
+                                     std::to_string(errors.size()) + " trials)",
+                                 colour, (dashed ? 2.0 : 2.6) * s, dashed));
+  }
+  draw_axes(canvas, "bcnstl", "bcnstv", 0.0, 0, "rotation error (degrees, log scale)", 3.2,
+            "fraction of trials with error ≤ x", 4.2);
+  canvas.legend(0.12, 0.82, legend, kSmallSize * s);
+  canvas.finish();
+  csv.commit();
+  files.push_back(out);
+}
+
+}  // namespace vantage::plot::internal

@@ -1,0 +1,61 @@
+#include "experiment_plotting.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "style.h"
+
+namespace vantage::plot::internal {
+
+Rgb series_colour(std::size_t k) {
+  static constexpr std::array<Rgb, 8> kColours{{{33, 113, 181},
+                                                {228, 26, 28},
+                                                {77, 175, 74},
+                                                {152, 78, 163},
+                                                {255, 127, 0},
+                                                {166, 86, 40},
+                                                {247, 129, 191},
+                                                {90, 90, 90}}};
+  return kColours[k % kColours.size()];
+}
+
+void draw_line(Canvas& canvas, const std::vector<double>& x, const std::vector<double>& y,
+               Rgb colour, double width_px, bool dashed) {
+  if (x.size() < 2) return;
+  plstream& pls = canvas.pls();
+  pls.scol0(kPenBar, colour.r, colour.g, colour.b);
+  pls.col0(kPenBar);
+  pls.width(width_px * page_scale(canvas));
+  pls.lsty(dashed ? 2 : 1);
+  pls.line(static_cast<int>(x.size()), x.data(), y.data());
+  pls.lsty(1);
+}
+
+void plot_area(Canvas& canvas, double x0, double x1, double y0, double y1, const char* xopt,
+               double xtick, const char* yopt, double ytick) {
+  plstream& pls = canvas.pls();
+  pls.vpor(0.10, 0.96, 0.11, 0.84);
+  pls.wind(x0, x1, y0, y1);
+  pls.col0(kPenGrid);
+  pls.width(0.8 * page_scale(canvas));
+  set_text_size(canvas, kSmallSize);
+  pls.box(xopt, xtick, 0, yopt, ytick, 0);
+}
+
+double log_clamped(double value, double smallest) { return std::log10(std::max(value, smallest)); }
+
+Decades decades(const std::vector<double>& values, double smallest) {
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (double v : values) {
+    if (!std::isfinite(v)) continue;
+    lo = std::min(lo, log_clamped(v, smallest));
+    hi = std::max(hi, log_clamped(v, smallest));
+  }
+  if (lo > hi) return {};
+  Decades d{std::floor(lo), std::ceil(hi)};
+  if (d.hi <= d.lo) d.hi = d.lo + 1.0;
+  return d;
+}
+
+}  // namespace vantage::plot::internal
