@@ -41,13 +41,14 @@ VectorSetBound free_vector_bound(const Eigen::Matrix3Xd& points, FreeVectorSet w
   return certify(to_string(which), free.z_object, free.pairs);
 }
 
-/// The image-side data vectors d of a scene, one per data vector of the layout.
+/// The image-side data vectors d of a scene, one per data vector of the layout, in the free-vector
+/// convention of free_vectors.h: pair (i, j) gives q_j - q_i.
 Eigen::Matrix2Xd image_vectors(const BoundLayout& layout, const Scene& scene) {
   if (layout.vectors) return scene.image_clean;
   const Eigen::Matrix2Xi& pairs = layout.data.pairs;
   Eigen::Matrix2Xd d(2, pairs.cols());
   for (Eigen::Index k = 0; k < pairs.cols(); ++k) {
-    d.col(k) = scene.image_clean.col(pairs(0, k)) - scene.image_clean.col(pairs(1, k));
+    d.col(k) = scene.image_clean.col(pairs(1, k)) - scene.image_clean.col(pairs(0, k));
   }
   return d;
 }
