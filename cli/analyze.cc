@@ -9,6 +9,7 @@
 #include <numeric>
 #include <regex>
 
+#include "analysis_json.h"
 #include "command.h"
 #include "layout_input.h"
 #include "limits.h"
@@ -44,12 +45,6 @@ struct AnalyzeArgs {
   bool allow_large = false;
 };
 
-Json viewpoints_json(const std::vector<Eigen::Vector3d>& viewpoints) {
-  Json list = Json::array();
-  for (const Eigen::Vector3d& a : viewpoints) list.push_back(json_list(a));
-  return list;
-}
-
 /// "v3" for a vector, "p2-p7" for the free vector from marker 2 to marker 7.
 std::string vector_label(const DataVectors& data, long k) {
   if (data.pairs.empty()) return "v" + std::to_string(k);
@@ -69,53 +64,6 @@ std::string vector_label(const DataVectors& data, long k) {
               std::to_string(pair.first) + "] (a free vector)" + match.suffix().str();
   }
   throw InvalidArgument(source + ": " + message);
-}
-
-/// The one place a LayoutAnalysis becomes JSON (the README contract).
-Json analysis_json(const Layout& layout, const DataVectors& data, const sdp::LayoutAnalysis& r,
-                   double ceiling) {
-  Json out;
-  out["name"] = layout.name;
-  out["mode"] = to_string(layout.mode);
-  out["n_vectors"] = data.vectors.cols();
-  out["worst_viewpoint"] = json_list(r.worst_viewpoint);
-  out["worst_viewpoints"] = viewpoints_json(r.worst_viewpoints);
-  out["t"] = r.t;
-  out["pbar_min"] = r.pbar_min;
-  out["ceiling"] = ceiling;
-  out["degenerate"] = r.degenerate;
-  out["worst_case_errors_deg"] = json_list(r.worst_case_errors_deg);
-  out["max_worst_case_error_deg"] = r.max_worst_case_error_deg;
-  out["certificate"] = {{"t_upper", r.certificate.t_upper},
-                        {"t_lower", r.certificate.t_lower},
-                        {"certified", r.certificate.certified}};
-  out["paper_lmi"] = {{"viewpoint", json_list(r.paper_lmi.viewpoint)},
-                      {"t", r.paper_lmi.t},
-                      {"pbar", r.paper_lmi.pbar},
-                      {"status", sdp::to_string(r.paper_lmi.status)}};
-  if (r.crosscheck.ran) {
-    out["crosscheck"] = {
-        {"method", r.crosscheck.method}, {"t", r.crosscheck.t}, {"agrees", r.crosscheck.agrees}};
-  } else {
-    out["crosscheck"] = {{"method", "skipped"}};
-  }
-  Json swaps = Json::array();
-  for (const SwapError& s : r.swaps) {
-    Json swap = {{"i", s.i}, {"j", s.j}, {"error_deg", s.error_deg}, {"ambiguous", s.ambiguous}};
-    if (!data.pairs.empty()) {
-      swap["pair_i"] = {data.pairs[s.i].first, data.pairs[s.i].second};
-      swap["pair_j"] = {data.pairs[s.j].first, data.pairs[s.j].second};
-    }
-    swaps.push_back(swap);
-  }
-  out["swaps"] = swaps;
-  out["solver"] = {{"backend", sdp::to_string(r.solver.backend)},
-                   {"status", sdp::to_string(r.solver.status)},
-                   {"cells_solved", r.solver.cells_solved},
-                   {"patches", r.solver.patches},
-                   {"sdp_status", sdp::to_string(r.solver.sdp_status)}};
-  if (!r.message.empty()) out["message"] = r.message;
-  return out;
 }
 
 /// Indices of the data vectors by decreasing worst-case error (ties by index).
@@ -276,7 +224,7 @@ int run_analyze(const AnalyzeArgs& args) {
       !args.dropout || dropout.status == sdp::DropoutAnalysis::Status::kCertified;
 
   if (args.json) {
-    Json out = analysis_json(layout, data, report, ceiling);
+    Json out = analysis_json::analysis(layout, data, report, ceiling);
     if (args.dropout) out["dropout"] = dropout_json(dropout);
     print_json(out);
   } else {

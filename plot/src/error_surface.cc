@@ -20,7 +20,7 @@ constexpr int kMaxSamples = 2000;
 constexpr double kContourStepDeg = 10.0;
 
 double theta_deg(double p, double pbar) {
-  return internal::kDegreesPerRadian * lub_scale_error_angle(p, pbar);
+  return kDegreesPerRadian * lub_scale_error_angle(p, pbar);
 }
 double cell_centre(int k, int n) { return (k + 0.5) / n; }
 

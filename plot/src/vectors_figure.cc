@@ -13,7 +13,7 @@ namespace {
 
 using internal::Canvas;
 
-constexpr double(1.0 / kDegreesPerRadian) = 1.0 / internal::kDegreesPerRadian;
+constexpr double kRadiansPerDegree = 1.0 / kDegreesPerRadian;
 // Scene: entries scaled into the unit ball; the a-perp disc and the axes reach a bit further.
 constexpr double kDiscRadius = 1.2;
 constexpr double kAxisLength = 1.45;
@@ -23,8 +23,8 @@ constexpr int kDiscPoints = 121;
 constexpr Eigen::Index kMaxPairLines = 40;
 
 Eigen::Vector3d camera_direction() {
-  const double az = kVectorsAzimuthDeg * (1.0 / kDegreesPerRadian),
-               el = kVectorsElevationDeg * (1.0 / kDegreesPerRadian);
+  const double az = kVectorsAzimuthDeg * kRadiansPerDegree,
+               el = kVectorsElevationDeg * kRadiansPerDegree;
   return {std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
 }
 
@@ -198,8 +198,7 @@ void draw_scene(Canvas& canvas, const VectorsFigureData& data, const FigureOptio
            kWorstViewpointColour, 3.0 * s),
        Entry::text_only(
            "p̄_min " + fixed(data.pbar_min, 4) + ", error " +
-           fixed(std::acos(std::clamp(data.pbar_min, 0.0, 1.0)) / (1.0 / kDegreesPerRadian), 2) +
-           "°"),
+           fixed(std::acos(std::clamp(data.pbar_min, 0.0, 1.0)) * kDegreesPerRadian, 2) + "°"),
        Entry::marker("plane a⊥ (first worst viewpoint)", {170, 205, 230}, Canvas::Shape::kSquare),
        Entry::line("paper's single LMI: p̄ " + fixed(data.paper_lmi_pbar, 4), kPaperLmiColour,
                    1.8 * s, true),
@@ -214,8 +213,8 @@ void draw_scene(Canvas& canvas, const VectorsFigureData& data, const FigureOptio
 }  // namespace
 
 Eigen::Vector2d vectors_camera_projection(const Eigen::Vector3d& p) {
-  const double az = kVectorsAzimuthDeg * (1.0 / kDegreesPerRadian),
-               el = kVectorsElevationDeg * (1.0 / kDegreesPerRadian);
+  const double az = kVectorsAzimuthDeg * kRadiansPerDegree,
+               el = kVectorsElevationDeg * kRadiansPerDegree;
   const Eigen::Vector3d right(-std::sin(az), std::cos(az), 0.0);
   const Eigen::Vector3d up(-std::sin(el) * std::cos(az), -std::sin(el) * std::sin(az),
                            std::cos(el));

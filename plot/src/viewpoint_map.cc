@@ -21,7 +21,7 @@ constexpr double kLabelSpacingPx = 140.0;
 constexpr int kCirclePoints = 241;
 
 double error_deg(double pbar) {
-  return internal::kDegreesPerRadian * std::acos(std::clamp(pbar, -1.0, 1.0));
+  return kDegreesPerRadian * std::acos(std::clamp(pbar, -1.0, 1.0));
 }
 
 // Cell centre coordinate of index k of N over [-1, 1].

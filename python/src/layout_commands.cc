@@ -5,6 +5,7 @@
 
 #include <pybind11/stl.h>
 
+#include "analysis_json.h"
 #include "arrays.h"
 #include "layouts.h"
 #include "results.h"
@@ -34,49 +35,6 @@ Json source_json(const std::string& source) {
   return source.empty() ? Json(nullptr) : Json(source);
 }
 
-Json analysis_json(const Layout& layout, const DataVectors& data,
-                   const sdp::LayoutAnalysis& report) {
-  const long m = data.vectors.cols();
-  Json out;
-  out["name"] = layout.name;
-  out["mode"] = to_string(layout.mode);
-  out["n_vectors"] = m;
-  out["worst_viewpoint"] = json_list(report.worst_viewpoint);
-  out["worst_viewpoints"] = json_points(report.worst_viewpoints);
-  out["t"] = report.t;
-  out["pbar_min"] = report.pbar_min;
-  out["ceiling"] = design::pbar_ceiling(static_cast<int>(m));
-  out["worst_case_errors_deg"] = json_list(report.worst_case_errors_deg);
-  out["max_worst_case_error_deg"] = report.max_worst_case_error_deg;
-  out["certificate"] = {{"t_upper", report.certificate.t_upper},
-                        {"t_lower", report.certificate.t_lower},
-                        {"certified", report.certificate.certified}};
-  out["paper_lmi"] = {{"viewpoint", json_list(report.paper_lmi.viewpoint)},
-                      {"t", report.paper_lmi.t},
-                      {"pbar", report.paper_lmi.pbar},
-                      {"status", report.paper_lmi.status}};
-  out["crosscheck"] = {{"method", report.crosscheck.method},
-                       {"t", report.crosscheck.t},
-                       {"agrees", report.crosscheck.agrees}};
-  Json swaps = Json::array();
-  for (const SwapError& s : report.swaps) {
-    Json swap = {{"i", s.i}, {"j", s.j}, {"error_deg", s.error_deg}, {"ambiguous", s.ambiguous}};
-    if (!data.pairs.empty()) {
-      swap["pair_i"] = {data.pairs[s.i].first, data.pairs[s.i].second};
-      swap["pair_j"] = {data.pairs[s.j].first, data.pairs[s.j].second};
-    }
-    swaps.push_back(swap);
-  }
-  out["swaps"] = swaps;
-  out["solver"] = {{"backend", report.solver.backend},
-                   {"status", report.solver.status},
-                   {"cells_solved", report.solver.cells_solved},
-                   {"patches", report.solver.patches},
-                   {"sdp_status", report.solver.sdp_status}};
-  if (!report.message.empty()) out["message"] = report.message;
-  return out;
-}
-
 py::object analyze(const py::object& layout_arg, const py::object& vectors,
                    const py::object& points, const py::object& weights, int swaps, bool crosscheck,
                    const std::string& pair_weighting, const py::kwargs& kwargs) {
@@ -95,10 +53,13 @@ py::object analyze(const py::object& layout_arg, const py::object& vectors,
   options.run_crosscheck = crosscheck;
   const sdp::LayoutAnalysis report =
       without_gil([&] { return sdp::analyze_vectors(data.vectors, data.weights, options); });
-  const bool certified = report.solver.status == "certified";
-  const bool trusted = certified && (!crosscheck || report.crosscheck.agrees);
-  return result_or_raise(!trusted, certified ? "crosscheck_disagrees" : report.solver.status,
-                         report.message, analysis_json(layout, data, report));
+  const bool certified = report.solver.status == sdp::WorstViewpoint::Status::kCertified;
+  const std::string status = report.degenerate ? "degenerate"
+                             : !certified      ? sdp::to_string(report.solver.status)
+                                               : "crosscheck_disagrees";
+  const Json out = analysis_json::analysis(
+      layout, data, report, design::pbar_ceiling(static_cast<int>(data.vectors.cols())));
+  return result_or_raise(!report.trusted() || report.degenerate, status, report.message, out);
 }
 
 Json worst_json(const design::WorstCase& worst, int n_vectors) {

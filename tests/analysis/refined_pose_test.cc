@@ -21,7 +21,7 @@ using testing::kSeed;
 
 // The targets of the issue: noise-free images of the estimator's own model give the truth to
 // better than 1e-6 degrees.
-constexpr double kExactRadians = 1e-6 * (1.0 / kDegreesPerRadian);
+constexpr double kExactRadians = 1e-6 / kDegreesPerRadian;
 constexpr double kExactRelative = 1e-9;  // scale and translation, relative
 constexpr double kFocal = 1000.0;        // pixels
 const Eigen::Vector2d kPrincipal(320.0, 240.0);
@@ -147,7 +147,7 @@ TEST(PerspectivePose, NoisyResultFitsAtLeastAsWellAsTheTruth) {
 TEST(PerspectivePose, PlanarFlagDiscriminates) {
   // Eight coplanar points, range 10, 0.5 px noise: perspective separates the Necker pair on most
   // trials. The flag must never be missing on a wrong answer and must not be set on all trials.
-  constexpr double kWrongRadians = 10.0 * (1.0 / kDegreesPerRadian);
+  constexpr double kWrongRadians = 10.0 / kDegreesPerRadian;
   std::mt19937 rng(kSeed + 44);
   int flagged = 0, wrong_unflagged = 0, with_alternative = 0;
   constexpr int kTrials = 200;

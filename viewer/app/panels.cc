@@ -99,8 +99,11 @@ void Panels::analysis_summary(const ViewerSession& session) {
               r.worst_viewpoints.size() > 1
                   ? (" + " + std::to_string(r.worst_viewpoints.size() - 1) + " ties").c_str()
                   : "");
-  ImGui::Text("paper's single LMI p\u0304 %.4f (%s)", r.paper_lmi.pbar, r.paper_lmi.status.c_str());
-  ImGui::Text("NLopt cross-check %s", r.crosscheck.agrees ? "agrees" : "DISAGREES");
+  ImGui::Text("paper's single LMI p\u0304 %.4f (%s)", r.paper_lmi.pbar,
+              sdp::to_string(r.paper_lmi.status));
+  ImGui::Text("NLopt cross-check %s", !r.crosscheck.ran     ? "skipped"
+                                      : r.crosscheck.agrees ? "agrees"
+                                                            : "DISAGREES");
   ImGui::SameLine();
   ImGui::TextDisabled("  analysis %.2f s (worker thread)", snap->seconds);
   if (snap->coplanarity.nearly_coplanar) {

@@ -74,20 +74,20 @@ void OrbitCamera::look_along(const Eigen::Vector3d& direction) {
 }
 
 Eigen::Vector3d OrbitCamera::back() const {
-  const double yaw = (1.0 / kDegreesPerRadian) * yaw_deg_;
-  const double pitch = (1.0 / kDegreesPerRadian) * pitch_deg_;
+  const double yaw = yaw_deg_ / kDegreesPerRadian;
+  const double pitch = pitch_deg_ / kDegreesPerRadian;
   return {std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), std::sin(pitch)};
 }
 
 Eigen::Vector3d OrbitCamera::right() const {
-  const double yaw = (1.0 / kDegreesPerRadian) * yaw_deg_;
+  const double yaw = yaw_deg_ / kDegreesPerRadian;
   return {-std::sin(yaw), std::cos(yaw), 0.0};
 }
 
 Eigen::Vector3d OrbitCamera::up() const { return back().cross(right()); }
 
 double OrbitCamera::focal_pixels(const Viewport& viewport) const {
-  return 0.5 * viewport.height / std::tan(0.5 * (1.0 / kDegreesPerRadian) * kFieldOfViewDeg);
+  return 0.5 * viewport.height / std::tan(0.5 * kFieldOfViewDeg / kDegreesPerRadian);
 }
 
 std::optional<Eigen::Vector2d> OrbitCamera::project(const Eigen::Vector3d& point,

@@ -106,7 +106,7 @@ struct AffineOrientationOptions {
   /// patterns near-copies, their rotations apart by about that ratio (0.11 deg for the bundled
   /// examples/correspondences/affine_pose.json): not an ambiguity. A mirror pose is about twice
   /// the tilt away, so 1 deg separates the two for any tilt worth calling a view.
-  double distinct_rotation_angle = (1.0 / kDegreesPerRadian);
+  double distinct_rotation_angle = kPi / 180.0;
   /// Relative eigen gap of the winning D at or below which the status is kDegenerate, as in
   /// OrientationOptions::degenerate_gap. Dimensionless, in [0, 1).
   double degenerate_gap = 1e-10;
