@@ -5,6 +5,8 @@
 
 #include <pybind11/stl.h>
 
+#include <mutex>
+
 #include "analysis_json.h"
 #include "arrays.h"
 #include "layouts.h"
@@ -18,6 +20,19 @@
 namespace vantage::python {
 
 namespace {
+
+// analyze, design and weights run one at a time: two concurrent analyze_vectors calls abort the
+// process (seen with three Python threads on note3; the non-reentrant part, CSDP's confirming
+// solve or the NLopt cross-check, is not yet pinned down). Other Python threads keep running.
+std::mutex solver_mutex;
+
+template <typename F>
+auto serialised(F&& f) {
+  return without_gil([&] {
+    const std::lock_guard<std::mutex> lock(solver_mutex);
+    return f();
+  });
+}
 
 Json json_list(const Eigen::VectorXd& v) {
   Json list = Json::array();
@@ -52,7 +67,7 @@ py::object analyze(const py::object& layout_arg, const py::object& vectors,
   options.swap_count = swaps;
   options.run_crosscheck = crosscheck;
   const sdp::LayoutAnalysis report =
-      without_gil([&] { return sdp::analyze_vectors(data.vectors, data.weights, options); });
+      serialised([&] { return sdp::analyze_vectors(data.vectors, data.weights, options); });
   const bool certified = report.solver.status == sdp::WorstViewpoint::Status::kCertified;
   const std::string status = report.degenerate ? "degenerate"
                              : !certified      ? sdp::to_string(report.solver.status)
@@ -167,7 +182,7 @@ py::object design_layout(const py::object& layout_arg, const py::object& vectors
   std::string why;
   if (!options.is_valid(&why)) throw InvalidArgument(why);
   const design::AugmentResult r =
-      without_gil([&] { return design::augment_layout(layout, options); });
+      serialised([&] { return design::augment_layout(layout, options); });
   const bool ok = r.status == design::AugmentResult::Status::kOk;
   py::object result = result_or_raise(!ok, design::to_string(r.status), r.message,
                                       design_json(source, layout, direct, r));
@@ -197,7 +212,7 @@ py::object layout_weights(const py::object& layout_arg, const py::object& vector
   std::string source;
   const Layout layout =
       layout_from_arguments(layout_arg, vectors, points, py::none(), py::none(), kwargs, &source);
-  const design::Weights w = without_gil([&] { return design::layout_weights(layout); });
+  const design::Weights w = serialised([&] { return design::layout_weights(layout); });
   Json out;
   out["layout"] = source_json(source);
   out["mode"] = to_string(layout.mode);
