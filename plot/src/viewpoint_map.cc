@@ -20,9 +20,7 @@ constexpr double kLabelSpacingPx = 140.0;
 // Points per great circle n_i^perp (half circle in the upper hemisphere).
 constexpr int kCirclePoints = 241;
 
-double error_deg(double pbar) {
-  return kDegreesPerRadian * std::acos(std::clamp(pbar, -1.0, 1.0));
-}
+double error_deg(double pbar) { return kDegreesPerRadian * std::acos(std::clamp(pbar, -1.0, 1.0)); }
 
 // Cell centre coordinate of index k of N over [-1, 1].
 double cell_centre(int k, int n) { return -1.0 + (2.0 * k + 1.0) / n; }
