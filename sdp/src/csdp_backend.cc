@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <map>
+#include <mutex>
 #include <new>
 #include <string>
 #include <tuple>
@@ -20,6 +21,15 @@ namespace {
 
 // CSDP's own defaults (its initparams()), written out here because initparams() reads
 // param.csdp from the working directory.
+// CSDP is not reentrant: op_o() keeps its work matrices in a function-level static pointer, which
+// every call allocates, uses and frees. Two solves at once read each other's buffers and free them
+// twice (the process aborts), so the solver loop runs under one process-wide lock; building the
+// problem and reading the answer stay outside it.
+std::mutex& csdp_mutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
 paramstruc csdp_parameters(const SdpOptions& options) {
   paramstruc p;
   p.axtol = options.tolerance;
@@ -290,12 +300,14 @@ SdpResult solve_with_csdp(const LmiProblem& problem, const SdpOptions& options) 
 
   double pobj = 0.0;
   double dobj = 0.0;
+  std::unique_lock<std::mutex> lock(csdp_mutex());
   const int code = ::sdp(
       s.n, s.k, s.C, s.a, 0.0, s.constraints, byblocks.data(), s.fill, s.X, s.y, s.Z, s.cholxinv,
       s.cholzinv, &pobj, &dobj, s.work1, s.work2, s.work3, workvec[0].data(), workvec[1].data(),
       workvec[2].data(), workvec[3].data(), workvec[4].data(), workvec[5].data(), workvec[6].data(),
       workvec[7].data(), diag_o.data(), s.bestx, besty.data(), s.bestz, s.Zi, O.data(), rhs.data(),
       s.dZ, s.dX, dy.data(), dy1.data(), fp.data(), printlevel, csdp_parameters(options));
+  lock.unlock();
 
   SdpResult result;
   result.status = status_from_csdp_code(code);
