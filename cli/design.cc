@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "command.h"
+#include "design_json.h"
 #include "figure_output.h"
 #include "layout_input.h"
 #include "limits.h"
@@ -100,41 +101,6 @@ void check_write_target(const DesignArgs& args) {
   }
 }
 
-// The written layout: the greedy additions appended; candidates already used are dropped (they
-// are markers or directions of the layout now).
-Layout layout_to_write(const design::AugmentResult& result) {
-  Layout out = result.augmented;
-  std::vector<bool> used(out.candidates.cols(), false);
-  for (const design::AugmentStep& step : result.steps) {
-    if (step.candidate_index >= 0) used[step.candidate_index] = true;
-  }
-  Eigen::Matrix3Xd kept(3, out.candidates.cols());
-  Eigen::Index count = 0;
-  for (Eigen::Index c = 0; c < out.candidates.cols(); ++c) {
-    if (!used[c]) kept.col(count++) = out.candidates.col(c);
-  }
-  out.candidates = kept.leftCols(count);
-  return out;
-}
-
-Json json_points(const std::vector<Eigen::Vector3d>& points) {
-  Json list = Json::array();
-  for (const Eigen::Vector3d& p : points) list.push_back(json_list(p));
-  return list;
-}
-
-Json json_worst(const design::WorstCase& worst, int n_vectors) {
-  Json out;
-  out["pbar_min"] = worst.pbar_min;
-  out["worst_viewpoints"] = json_points(worst.worst_viewpoints);
-  out["max_worst_case_error_deg"] = worst.max_worst_case_error_deg;
-  out["ceiling"] = design::pbar_ceiling(n_vectors);
-  out["n_vectors"] = n_vectors;
-  out["t"] = worst.t;
-  out["certified"] = worst.certified;
-  return out;
-}
-
 // Which global solves did not certify, in words ("initial, step 2, direct").
 std::string uncertified_parts(const design::AugmentResult& r) {
   std::string parts;
@@ -174,64 +140,6 @@ std::string fixed(double x, int decimals) {
   char buffer[64];
   std::snprintf(buffer, sizeof(buffer), "%.*f", decimals, x);
   return buffer;
-}
-
-Json design_json(const DesignArgs& args, const Layout& layout, const design::AugmentResult& r) {
-  Json out;
-  out["layout"] = args.file;
-  out["name"] = layout.name;
-  out["mode"] = to_string(layout.mode);
-  out["status"] = design::to_string(r.status);
-  if (!r.message.empty()) out["message"] = r.message;
-  out["initial"] = json_worst(r.initial, r.initial_vector_count);
-  Json steps = Json::array();
-  for (const design::AugmentStep& st : r.steps) {
-    Json step;
-    step["added"] = json_list(st.added);
-    step["pbar_min"] = st.worst.pbar_min;
-    step["worst_viewpoints"] = json_points(st.worst.worst_viewpoints);
-    step["max_worst_case_error_deg"] = st.worst.max_worst_case_error_deg;
-    step["ceiling"] = st.ceiling;
-    step["n_vectors"] = st.vector_count;
-    step["improved"] = st.improved;
-    step["note"] = st.note;
-    if (st.candidate_index >= 0) step["candidate_index"] = st.candidate_index;
-    step["single_vector_can_improve"] = st.single_vector_can_improve;
-    if (layout.mode == LayoutMode::kVectors) {
-      step["best_kill_level"] = st.best_kill_level;
-      step["angle_from_worst_plane_deg"] = st.angle_from_worst_plane_deg;
-    }
-    step["t"] = st.worst.t;
-    step["certified"] = st.worst.certified;
-    step["global_solves"] = st.global_solves;
-    steps.push_back(step);
-  }
-  out["steps"] = steps;
-  out["final_pbar_min"] = r.final_pbar_min;
-  if (r.direct.status == design::DirectResult::Status::kOk) {
-    Json direct;
-    direct["pbar_min"] = r.direct.worst.pbar_min;
-    direct["added"] = json_points(r.direct.added);
-    direct["method"] = r.direct.method;
-    if (!r.direct.candidate_indices.empty()) {
-      direct["candidate_indices"] = r.direct.candidate_indices;
-    }
-    direct["worst_viewpoints"] = json_points(r.direct.worst.worst_viewpoints);
-    direct["max_worst_case_error_deg"] = r.direct.worst.max_worst_case_error_deg;
-    direct["certified"] = r.direct.worst.certified;
-    direct["global_solves"] = r.direct.global_solves;
-    out["direct"] = direct;
-  } else if (args.direct) {
-    out["direct_message"] = r.direct.message;
-  }
-  Json coplanarity;
-  coplanarity["initial"] = r.initial_coplanarity.smallest_singular_value;
-  coplanarity["final"] = r.final_coplanarity.smallest_singular_value;
-  coplanarity["nearly_coplanar"] = r.final_coplanarity.nearly_coplanar;
-  coplanarity["threshold"] = design::AugmentOptions{}.coplanarity_threshold;
-  out["coplanarity"] = coplanarity;
-  out["global_solves"] = r.global_solves;
-  return out;
 }
 
 void print_report(const DesignArgs& args, const Layout& layout, const design::AugmentResult& r) {
@@ -326,7 +234,8 @@ int run_design(const DesignArgs& args) {
   }
 
   const bool ok = r.status == design::AugmentResult::Status::kOk;
-  if (ok && args.write_given) io::write_layout(args.write, layout_to_write(r), args.overwrite);
+  if (ok && args.write_given)
+    io::write_layout(args.write, design_json::layout_to_write(r), args.overwrite);
   std::vector<plot::FigureFiles> figures;
   if (ok && !args.plot.empty()) {
     create_figure_directory("--plot", args.plot);
@@ -339,7 +248,7 @@ int run_design(const DesignArgs& args) {
   }
 
   if (args.json) {
-    Json out = design_json(args, layout, r);
+    Json out = design_json::design(args.file, layout, args.direct, r);
     if (ok && args.write_given) out["written"] = args.write;
     if (!figures.empty()) out["figures"] = figure_files_json(figures);
     print_json(out);

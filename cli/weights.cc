@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "command.h"
+#include "design_json.h"
 #include "layout_input.h"
 #include "limits.h"
 #include "vantage/design/weights.h"
@@ -22,23 +23,6 @@ struct WeightsArgs {
   bool allow_large = false;
 };
 
-Json suggestion_json(const design::WeightsSuggestion& s) {
-  Json out;
-  out["kind"] = design::to_string(s.kind);
-  out["text"] = s.text;
-  if (s.kind == design::WeightsSuggestion::Kind::kSymmetricPartner) {
-    out["index"] = s.index;
-    out["added"] = json_list(s.added);
-  } else if (s.kind == design::WeightsSuggestion::Kind::kBalancingEntry) {
-    out["added"] = json_list(s.added);
-  } else {
-    out["shift"] = json_list(s.shift);
-  }
-  out["min_weight"] = s.min_weight;
-  out["weights"] = json_list(s.weights);
-  return out;
-}
-
 int run_weights(const WeightsArgs& args) {
   const Layout layout = args.input.read(args.file, args.allow_large);
   check_limit(args.file + ": " + layout.entries_field(), layout.entries.cols(), kMaxWeightsEntries,
@@ -48,25 +32,7 @@ int run_weights(const WeightsArgs& args) {
   const bool solved = w.status != design::Weights::Status::kSolverFailed;
 
   if (args.json) {
-    Json out;
-    out["layout"] = args.file;
-    out["mode"] = to_string(layout.mode);
-    out["n"] = layout.entries.cols();
-    out["feasible"] = w.feasible;
-    out["status"] = design::to_string(w.status);
-    out["weights"] = json_list(w.weights);
-    out["residual"] = w.residual;
-    out["min_weight"] = w.min_weight;
-    out["lp_optimum"] = w.lp_optimum;
-    if (!w.zero_forced.empty()) out["zero_forced"] = w.zero_forced;
-    if (!w.suggestions.empty()) {
-      out["suggestion"] = suggestion_json(w.suggestions.front());
-      Json all = Json::array();
-      for (const design::WeightsSuggestion& s : w.suggestions) all.push_back(suggestion_json(s));
-      out["suggestions"] = all;
-    }
-    out["message"] = w.message;
-    print_json(out);
+    print_json(design_json::weights(args.file, layout, w));
   } else {
     std::cout << "vantage weights: " << args.file
               << (layout.name.empty() ? "" : " (" + layout.name + ")") << ", "

@@ -1,0 +1,151 @@
+#include "design_json.h"
+
+#include <vector>
+
+namespace vantage::design_json {
+namespace {
+
+Json list(const Eigen::VectorXd& v) {
+  Json out = Json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(v(i));
+  return out;
+}
+
+Json points(const std::vector<Eigen::Vector3d>& points) {
+  Json out = Json::array();
+  for (const Eigen::Vector3d& p : points) out.push_back(list(p));
+  return out;
+}
+
+Json worst(const design::WorstCase& worst, int n_vectors) {
+  Json out;
+  out["pbar_min"] = worst.pbar_min;
+  out["worst_viewpoints"] = points(worst.worst_viewpoints);
+  out["max_worst_case_error_deg"] = worst.max_worst_case_error_deg;
+  out["ceiling"] = design::pbar_ceiling(n_vectors);
+  out["n_vectors"] = n_vectors;
+  out["t"] = worst.t;
+  out["certified"] = worst.certified;
+  return out;
+}
+
+Json step(const design::AugmentStep& st, LayoutMode mode) {
+  Json out;
+  out["added"] = list(st.added);
+  out["pbar_min"] = st.worst.pbar_min;
+  out["worst_viewpoints"] = points(st.worst.worst_viewpoints);
+  out["max_worst_case_error_deg"] = st.worst.max_worst_case_error_deg;
+  out["ceiling"] = st.ceiling;
+  out["n_vectors"] = st.vector_count;
+  out["improved"] = st.improved;
+  out["note"] = st.note;
+  if (st.candidate_index >= 0) out["candidate_index"] = st.candidate_index;
+  out["single_vector_can_improve"] = st.single_vector_can_improve;
+  if (mode == LayoutMode::kVectors) {
+    out["best_kill_level"] = st.best_kill_level;
+    out["angle_from_worst_plane_deg"] = st.angle_from_worst_plane_deg;
+  }
+  out["t"] = st.worst.t;
+  out["certified"] = st.worst.certified;
+  out["global_solves"] = st.global_solves;
+  return out;
+}
+
+Json direct(const design::DirectResult& d) {
+  Json out;
+  out["pbar_min"] = d.worst.pbar_min;
+  out["added"] = points(d.added);
+  out["method"] = d.method;
+  if (!d.candidate_indices.empty()) out["candidate_indices"] = d.candidate_indices;
+  out["worst_viewpoints"] = points(d.worst.worst_viewpoints);
+  out["max_worst_case_error_deg"] = d.worst.max_worst_case_error_deg;
+  out["certified"] = d.worst.certified;
+  out["global_solves"] = d.global_solves;
+  return out;
+}
+
+Json suggestion(const design::WeightsSuggestion& s) {
+  Json out;
+  out["kind"] = design::to_string(s.kind);
+  out["text"] = s.text;
+  if (s.kind == design::WeightsSuggestion::Kind::kSymmetricPartner) {
+    out["index"] = s.index;
+    out["added"] = list(s.added);
+  } else if (s.kind == design::WeightsSuggestion::Kind::kBalancingEntry) {
+    out["added"] = list(s.added);
+  } else {
+    out["shift"] = list(s.shift);
+  }
+  out["min_weight"] = s.min_weight;
+  out["weights"] = list(s.weights);
+  return out;
+}
+
+}  // namespace
+
+Json design(const Json& source, const Layout& layout, bool direct_asked,
+            const design::AugmentResult& r) {
+  Json out;
+  out["layout"] = source;
+  out["name"] = layout.name;
+  out["mode"] = to_string(layout.mode);
+  out["status"] = design::to_string(r.status);
+  if (!r.message.empty()) out["message"] = r.message;
+  out["initial"] = worst(r.initial, r.initial_vector_count);
+  Json steps = Json::array();
+  for (const design::AugmentStep& st : r.steps) steps.push_back(step(st, layout.mode));
+  out["steps"] = steps;
+  out["final_pbar_min"] = r.final_pbar_min;
+  if (r.direct.status == design::DirectResult::Status::kOk) {
+    out["direct"] = direct(r.direct);
+  } else if (direct_asked) {
+    out["direct_message"] = r.direct.message;
+  }
+  out["coplanarity"] = {
+      {"initial", r.initial_coplanarity.smallest_singular_value},
+      {"final", r.final_coplanarity.smallest_singular_value},
+      {"nearly_coplanar", r.final_coplanarity.nearly_coplanar},
+      {"threshold", design::AugmentOptions{}.coplanarity_threshold},
+  };
+  out["global_solves"] = r.global_solves;
+  return out;
+}
+
+Json weights(const Json& source, const Layout& layout, const design::Weights& w) {
+  Json out;
+  out["layout"] = source;
+  out["mode"] = to_string(layout.mode);
+  out["n"] = layout.entries.cols();
+  out["feasible"] = w.feasible;
+  out["status"] = design::to_string(w.status);
+  out["weights"] = list(w.weights);
+  out["residual"] = w.residual;
+  out["min_weight"] = w.min_weight;
+  out["lp_optimum"] = w.lp_optimum;
+  if (!w.zero_forced.empty()) out["zero_forced"] = w.zero_forced;
+  if (!w.suggestions.empty()) {
+    out["suggestion"] = suggestion(w.suggestions.front());
+    Json all = Json::array();
+    for (const design::WeightsSuggestion& s : w.suggestions) all.push_back(suggestion(s));
+    out["suggestions"] = all;
+  }
+  out["message"] = w.message;
+  return out;
+}
+
+Layout layout_to_write(const design::AugmentResult& result) {
+  Layout out = result.augmented;
+  std::vector<bool> used(out.candidates.cols(), false);
+  for (const design::AugmentStep& step : result.steps) {
+    if (step.candidate_index >= 0) used[step.candidate_index] = true;
+  }
+  Eigen::Matrix3Xd kept(3, out.candidates.cols());
+  Eigen::Index count = 0;
+  for (Eigen::Index c = 0; c < out.candidates.cols(); ++c) {
+    if (!used[c]) kept.col(count++) = out.candidates.col(c);
+  }
+  out.candidates = kept.leftCols(count);
+  return out;
+}
+
+}  // namespace vantage::design_json
