@@ -147,6 +147,8 @@ struct SdpResult {
 /// Solves the LMI problem. Silent (no output, no parameter file is read) and leak-free.
 /// Throws InvalidArgument when the options are invalid, the problem has no block, or some F_j
 /// (j >= 1) is entirely zero (CSDP rejects empty constraints).
+/// Safe to call from several threads at once: CSDP is not reentrant, so its solver loops run one
+/// at a time under a process-wide lock (threads wait; answers are as if solved alone).
 SdpResult solve_lmi(const LmiProblem& problem, const SdpOptions& options = {});
 
 }  // namespace vantage::sdp
