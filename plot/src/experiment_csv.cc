@@ -1,5 +1,6 @@
 #include "experiment_csv.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -37,6 +38,10 @@ ExperimentCsv::ExperimentCsv(const std::filesystem::path& path) : path_(path) {
                             std::to_string(header_.size()));
     }
   }
+}
+
+bool ExperimentCsv::has_column(const std::string& name) const {
+  return std::find(header_.begin(), header_.end(), name) != header_.end();
 }
 
 std::size_t ExperimentCsv::column(const std::string& name) const {

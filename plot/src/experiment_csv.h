@@ -16,6 +16,7 @@ class ExperimentCsv {
   explicit ExperimentCsv(const std::filesystem::path& path);
 
   std::size_t rows() const { return rows_.size(); }
+  bool has_column(const std::string& name) const;
   /// Column index of `name`; throws InvalidArgument naming the file and the column when absent.
   std::size_t column(const std::string& name) const;
   const std::string& text(std::size_t row, std::size_t column) const { return rows_[row][column]; }

@@ -131,6 +131,77 @@ TEST(ExperimentFigures, HaralickKneePlotDrawsEverySweepRow) {
   EXPECT_EQ(read_csv(files[0].csv).rows.size(), static_cast<std::size_t>(rows));
 }
 
+TEST(ExperimentFigures, McInroyPoseCdfHasOneCurvePerEstimatorWithoutAnNColumn) {
+  TempDir dir("exppose");
+  write_text(dir.path() / "mcinroy_pose_trials.csv",
+             "trial,estimator,rot_err_deg,trans_err_rel,status\n"
+             "0,full3d,1e-9,1e-12,ok\n0,affine,30,1.1,ok\n"
+             "1,full3d,2e-9,1e-12,ok\n1,affine,10,0.4,ok\n"
+             "2,full3d,,,failed\n2,affine,20,0.5,ok\n");
+  const std::vector<FigureFiles> files = write_experiment_figures("mcinroy-pose", dir.path());
+  ASSERT_EQ(files.size(), 1u);
+  EXPECT_EQ(files[0].image.filename(), "mcinroy_pose.png");
+  expect_good_png(files[0].image, 1000, 800);
+  const testing::Csv csv = read_csv(files[0].csv);
+  std::vector<double> affine;
+  for (std::size_t r = 0; r < csv.rows.size(); ++r) {
+    if (csv.text(r, "estimator") == "affine") affine.push_back(csv.number(r, "rot_err_deg"));
+  }
+  EXPECT_EQ(affine, (std::vector<double>{10, 20, 30}));
+  EXPECT_EQ(csv.rows.size(), 5u);  // full3d's failed trial has no error
+}
+
+// A Wu & Wu sweep: the rows of each estimator, with n across (wu-points) or SNR across (wu-snr).
+std::string wu_sweep_csv(const std::vector<int>& ns, const std::vector<int>& snrs) {
+  std::string text =
+      "n,noise,snr_db,estimator,trials,rot_err_deg_mean,rot_err_deg_median,rot_err_deg_p95,"
+      "trans_err_mean,trans_err_rel_mean,trans_err_deg_mean,time_us_median,failures,"
+      "wrong_but_ok\n";
+  for (int n : ns) {
+    for (int snr : snrs) {
+      for (const char* estimator : {"oi-foam", "perspective", "affine"}) {
+        text += std::to_string(n) + ",gaussian," + std::to_string(snr) + "," + estimator + ",10," +
+                std::to_string(100.0 / n / (1 + snr)) + ",0,0,0,0,0," + std::to_string(5.0 * n) +
+                ",0,0\n";
+      }
+    }
+  }
+  return text;
+}
+
+TEST(ExperimentFigures, WuSweepsDrawAccuracyAndTimeForEveryRow) {
+  TempDir dir("expwu");
+  write_text(dir.path() / "wu_points.csv", wu_sweep_csv({4, 9, 14}, {60}));
+  const std::vector<FigureFiles> points = write_experiment_figures("wu-points", dir.path());
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_EQ(points[0].image.filename(), "wu_points_accuracy.png");
+  EXPECT_EQ(points[1].image.filename(), "wu_points_time.png");
+  for (const FigureFiles& f : points) expect_good_png(f.image, 1000, 800);
+  const testing::Csv accuracy = read_csv(points[0].csv);
+  ASSERT_EQ(accuracy.rows.size(), 9u);
+  for (std::size_t r = 0; r < accuracy.rows.size(); ++r) {
+    const double n = accuracy.number(r, "n");
+    EXPECT_NEAR(accuracy.number(r, "rot_err_deg_mean"), 100.0 / n / 61.0, 1e-6);
+  }
+  const testing::Csv time = read_csv(points[1].csv);
+  ASSERT_EQ(time.rows.size(), 9u);
+  for (std::size_t r = 0; r < time.rows.size(); ++r) {
+    EXPECT_NEAR(time.number(r, "time_us_median"), 5.0 * time.number(r, "n"), 1e-6);
+  }
+
+  write_text(dir.path() / "wu_snr.csv", wu_sweep_csv({10}, {30, 40, 50}));
+  const std::vector<FigureFiles> snr = write_experiment_figures("wu-snr", dir.path());
+  ASSERT_EQ(snr.size(), 1u);
+  expect_good_png(snr[0].image, 1000, 800);
+  EXPECT_EQ(read_csv(dir.path() / "wu_snr.csv").rows.size(), 9u) << "the input is untouched";
+  const testing::Csv by_snr = read_csv(snr[0].csv);
+  ASSERT_EQ(by_snr.rows.size(), 9u);
+  for (std::size_t r = 0; r < by_snr.rows.size(); ++r) {
+    EXPECT_NEAR(by_snr.number(r, "rot_err_deg_mean"),
+                100.0 / 10.0 / (1.0 + by_snr.number(r, "snr_db")), 1e-6);
+  }
+}
+
 TEST(ExperimentFigures, BadInputNamesTheProblemAndWritesNothing) {
   TempDir dir("expbad");
   EXPECT_THROW(write_experiment_figures("no-such-experiment", dir.path()), InvalidArgument);

@@ -6,10 +6,18 @@
 ///                       rotation error against p̄(a), under the curve arccos p̄(a) (Eq. 30)
 ///   mcinroy-orientation mcinroy_orientation.<ext>: empirical CDF of the rotation error of the
 ///                       standard and the new (affine) estimator for each n
+///   mcinroy-pose        mcinroy_pose.<ext>: the same for the pose estimators at the certified
+///                       worst viewpoint
 ///   haralick-2d2d, haralick-3d3d
-///                       haralick_2d2d.<ext> / haralick_3d3d.<ext>: mean rotation error
+///                       haralick_2d2d_knee.<ext> / haralick_3d3d_knee.<ext>: mean rotation error
 ///                       against SNR, one line per number of pairs and noise, with the 1° line
-///   haralick-two-view   haralick_two_view_<scene>.<ext>, the same for every scene file
+///   haralick-two-view   haralick_two_view_<scene>_knee.<ext>, the same for every scene file
+///   wu-points           wu_points_accuracy.<ext> and wu_points_time.<ext>: mean rotation
+///                       error and median time per solve against the number of points, one
+///                       line per estimator
+///   wu-snr              wu_snr_accuracy.<ext>: mean rotation error against SNR, one line per
+///                       estimator
+/// No figure overwrites the experiment's own CSV files.
 /// Each figure also writes <figure>.csv with the numbers it draws.
 
 #include <filesystem>

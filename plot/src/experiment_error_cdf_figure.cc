@@ -1,9 +1,11 @@
-// Figure `mcinroy_orientation` of `vantage experiment mcinroy-orientation`: the empirical CDF of
-// the rotation error of the standard and the new (affine) estimator, one line per estimator and
-// number of vectors n, on a log error axis.
+// Empirical CDFs of the per-trial rotation errors (`vantage experiment mcinroy-orientation` and
+// `mcinroy-pose`): one line per estimator and, when the file has an n column, number of vectors
+// n, on a log error axis. The paper's two estimators keep fixed colours: standard red, the new
+// (affine) one blue.
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <utility>
 
@@ -15,20 +17,25 @@
 namespace vantage::plot::internal {
 namespace {
 
-constexpr double kSmallestDeg = 1e-4;  // errors below this are drawn at the left edge
+// Errors below kSmallestDeg, or more than kMaxDecades below the largest, are drawn at the left
+// edge (exact estimators reach ~1e-10 degrees; 14 decades still label every decade legibly).
+constexpr double kSmallestDeg = 1e-12;
+constexpr double kMaxDecades = 14.0;
 constexpr std::size_t kCurvePoints = 300;
 
 // Sorted finite errors of each (n, estimator).
 using Samples = std::map<std::pair<long, std::string>, std::vector<double>>;
 
-Samples read_samples(const std::filesystem::path& directory) {
-  const ExperimentCsv csv(directory / "mcinroy_orientation_trials.csv");
-  const std::size_t n = csv.column("n"), estimator = csv.column("estimator"),
+// Without an n column every sample has n = 0.
+Samples read_samples(const std::filesystem::path& path) {
+  const ExperimentCsv csv(path);
+  const bool has_n = csv.has_column("n");
+  const std::size_t n = has_n ? csv.column("n") : 0, estimator = csv.column("estimator"),
                     error = csv.column("rot_err_deg");
   Samples samples;
   for (std::size_t r = 0; r < csv.rows(); ++r) {
     const double e = csv.number(r, error);
-    auto& list = samples[{std::lround(csv.number(r, n)), csv.text(r, estimator)}];
+    auto& list = samples[{has_n ? std::lround(csv.number(r, n)) : 0L, csv.text(r, estimator)}];
     if (std::isfinite(e)) list.push_back(e);
   }
   for (auto& entry : samples) std::sort(entry.second.begin(), entry.second.end());
@@ -48,15 +55,20 @@ Rgb estimator_colour(const std::string& name, std::size_t index) {
   return series_colour(index + 2);
 }
 
+std::string median_text(double degrees) {
+  if (degrees >= 1.0) return fixed(degrees, 1);
+  if (degrees >= 1e-3) return fixed(degrees, 3);
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%.1e", degrees);
+  return buffer;
+}
+
 }  // namespace
 
-void write_mcinroy_orientation_figure(const std::filesystem::path& directory,
-                                      const FigureOptions& options,
-                                      std::vector<FigureFiles>& files) {
-  const Samples samples = read_samples(directory);
-  if (samples.empty()) {
-    throw InvalidArgument((directory / "mcinroy_orientation_trials.csv").string() + ": no rows");
-  }
+void write_error_cdf_figure(const ErrorCdfFigure& spec, const FigureOptions& options,
+                            std::vector<FigureFiles>& files) {
+  const Samples samples = read_samples(spec.csv);
+  if (samples.empty()) throw InvalidArgument(spec.csv.string() + ": no rows");
   std::vector<double> all;
   std::vector<long> ns;
   std::vector<std::string> estimators;
@@ -69,19 +81,18 @@ void write_mcinroy_orientation_figure(const std::filesystem::path& directory,
   }
   Decades x = decades(all, kSmallestDeg);
   x.hi = std::min(x.hi, std::ceil(std::log10(180.0) * 10.0) / 10.0);
-  x.lo = std::max(x.lo, x.hi - 6.0);
+  x.lo = std::max(x.lo, x.hi - kMaxDecades);
 
-  const FigureFiles out = figure_files("mcinroy_orientation", directory, options.format);
+  const FigureFiles out = figure_files(spec.figure, spec.csv.parent_path(), options.format);
   Canvas canvas(out.image, options);
   const double s = page_scale(canvas);
-  draw_title(canvas, figure_title(options, "Orientation from one affine image: error distribution"),
-             "fraction of trials with rotation error ≤ x, standard vs new estimator (vantage "
-             "experiment mcinroy-orientation)");
+  draw_title(canvas, figure_title(options, spec.title), spec.subtitle);
   plot_area(canvas, x.lo, x.hi, 0.0, 1.0, "gl", 1.0, "g", 0.1);
 
   CsvWriter csv(out.csv, "n,estimator,rot_err_deg,fraction");
   using Entry = Canvas::LegendEntry;
   std::vector<Entry> legend;
+  LegendPlacer placer(x.lo, x.hi, 0.0, 1.0);
   for (const auto& [key, errors] : samples) {
     if (errors.empty()) continue;
     const std::size_t e = static_cast<std::size_t>(
@@ -103,16 +114,20 @@ void write_mcinroy_orientation_figure(const std::filesystem::path& directory,
     px.push_back(x.hi);
     py.push_back(1.0);
     draw_line(canvas, px, py, colour, dashed ? 2.0 : 2.6, dashed);
+    placer.add_line(px, py);
     const double median = errors[errors.size() / 2];
-    legend.push_back(Entry::line("n = " + std::to_string(key.first) + ", " +
-                                     estimator_label(key.second) + " (median " +
-                                     fixed(median, median < 1.0 ? 3 : 1) + "°, " +
+    const std::string series =
+        (ns.size() > 1 || key.first != 0 ? "n = " + std::to_string(key.first) + ", "
+                                         : std::string()) +
+        estimator_label(key.second);
+    legend.push_back(Entry::line(series + " (median " + median_text(median) + "°, " +
                                      std::to_string(errors.size()) + " trials)",
                                  colour, (dashed ? 2.0 : 2.6) * s, dashed));
   }
   draw_axes(canvas, "bcnstl", "bcnstv", 0.0, 0, "rotation error (degrees, log scale)", 3.2,
             "fraction of trials with error ≤ x", 4.2);
-  canvas.legend(0.12, 0.82, legend, kSmallSize * s);
+  const auto [legend_x, legend_y] = placer.corner(legend.size());
+  canvas.legend(legend_x, legend_y, legend, kSmallSize * s);
   canvas.finish();
   csv.commit();
   files.push_back(out);
