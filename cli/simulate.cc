@@ -16,10 +16,7 @@
 #include "command.h"
 #include "vantage/analysis/layout.h"
 #include "vantage/io/layout_file.h"
-#include "vantage/sdp/worst_viewpoint.h"
-#include "vantage/simulate/bound_check.h"
-#include "vantage/simulate/monte_carlo.h"
-#include "vantage/simulate/report_json.h"
+#include "vantage/simulate/layout_simulation.h"
 
 namespace vantage::cli {
 namespace {
@@ -51,23 +48,6 @@ struct SimulateArgs {
   CLI::Option* snr_option = nullptr;
 };
 
-/// Everything a run is a function of: shards merge only when these agree.
-struct Setup {
-  Layout layout;
-  LayoutSceneOptions scene;
-  MonteCarloOptions mc;
-  std::vector<std::string> methods;
-  Json config;
-};
-
-Json layout_json(const Layout& layout) {
-  Json entries = Json::array();
-  for (Eigen::Index i = 0; i < layout.entries.cols(); ++i) {
-    entries.push_back(json_list(layout.entries.col(i)));
-  }
-  return {{"name", layout.name}, {"mode", to_string(layout.mode)}, {"entries", entries}};
-}
-
 void check_args(const SimulateArgs& args) {
   if (!args.merge.empty()) {
     if (!args.file.empty()) throw InvalidArgument("--merge: give shard files, not a LAYOUT");
@@ -81,10 +61,10 @@ void check_args(const SimulateArgs& args) {
   }
 }
 
-Setup make_setup(const SimulateArgs& args) {
-  Setup setup;
-  setup.layout = io::read_layout(args.file);
-  LayoutSceneOptions& scene = setup.scene;
+simulate::LayoutSimulationOptions simulation_options(const SimulateArgs& args,
+                                                     const Layout& layout) {
+  simulate::LayoutSimulationOptions options;
+  LayoutSceneOptions& scene = options.scene;
   scene.camera = args.camera == "pinhole" ? CameraModel::kPinhole : CameraModel::kAffine;
   scene.focal_px = args.focal;
   scene.range = args.range;
@@ -104,69 +84,25 @@ Setup make_setup(const SimulateArgs& args) {
                                                        {"snr_db", "--snr-db"}};
     throw InvalidArgument(option.at(field) + why.substr(why.find(':')));
   }
-  const bool vectors = setup.layout.mode == LayoutMode::kVectors;
-  if (vectors && scene.camera == CameraModel::kPinhole) {
+  if (layout.mode == LayoutMode::kVectors && scene.camera == CameraModel::kPinhole) {
     throw InvalidArgument("--camera: pinhole needs a point layout; " + args.file +
                           " holds direction vectors");
   }
-  if (args.viewpoint == "worst") {
-    const DataVectors data = data_vectors(setup.layout);
-    scene.viewpoint = sdp::global_worst_viewpoint(data.vectors).viewpoint;
-  }
-  setup.mc.trials = args.trials;
-  setup.mc.seed = args.seed;
-  setup.mc.threads = args.threads;
-  if (!args.shard.empty()) setup.mc.shard = parse_shard(args.shard, "--shard");
-  if (setup.mc.shard.count > args.trials) {
+  options.worst_viewpoint = args.viewpoint == "worst";
+  options.monte_carlo.trials = args.trials;
+  options.monte_carlo.seed = args.seed;
+  options.monte_carlo.threads = args.threads;
+  if (!args.shard.empty()) options.monte_carlo.shard = parse_shard(args.shard, "--shard");
+  if (options.monte_carlo.shard.count > args.trials) {
     throw InvalidArgument("--shard: N must not exceed --trials");
   }
-  setup.mc.progress = !args.json && !args.quiet;
-  setup.methods = args.methods;
-  setup.config = {{"layout", layout_json(setup.layout)},
-                  {"camera", args.camera},
-                  {"focal_px", args.focal},
-                  {"range", args.range},
-                  {"principal_point", args.principal_point},
-                  {"offset", args.offset},
-                  {"noise", args.noise},
-                  {"noise_px", scene.snr_db ? Json(nullptr) : Json(args.noise_px)},
-                  {"snr_db", scene.snr_db ? Json(*scene.snr_db) : Json(nullptr)},
-                  {"viewpoint", args.viewpoint},
-                  {"methods", args.methods},
-                  {"seed", args.seed},
-                  {"trials", args.trials}};
-  return setup;
+  options.monte_carlo.progress = !args.json && !args.quiet;
+  options.methods = args.methods;
+  options.methods_argument = "--methods";
+  return options;
 }
 
-/// The report of a run (or of merged shards): the estimators, the bound check, and optionally
-/// the per-trial values that make shards mergeable.
-struct Report {
-  Json config;
-  MonteCarloRun run;
-  bool has_bound = false;
-  BoundCheck bound;
-  std::vector<BoundTrial> bound_trials;
-  std::string shard = "1/1";
-};
-
-Json report_json(const Report& report, bool per_trial) {
-  Json out;
-  out["layout"] = report.config["layout"]["name"];
-  out["mode"] = report.config["layout"]["mode"];
-  out["trials"] = static_cast<long>(report.run.trial_index.size());
-  out["total_trials"] = report.run.total_trials;
-  out["seed"] = report.run.seed;
-  out["shard"] = report.shard;
-  out["estimators"] = estimators_json(summarize(report.run));
-  if (report.has_bound) out["bound_check"] = to_json(report.bound);
-  out["config"] = report.config;
-  if (per_trial) {
-    Json trials = per_trial_json(report.run);
-    if (report.has_bound) trials["bound_check"] = bound_trials_json(report.bound_trials);
-    out["per_trial"] = trials;
-  }
-  return out;
-}
+using Report = simulate::LayoutSimulation;
 
 void write_csv(const std::string& path, const MonteCarloRun& run) {
   std::ofstream out(path);
@@ -234,32 +170,8 @@ void print_text(const Report& report) {
 }
 
 Report run_layout(const SimulateArgs& args) {
-  const Setup setup = make_setup(args);
-  const bool vectors = setup.layout.mode == LayoutMode::kVectors;
-  const Eigen::Matrix3Xd& entries = setup.layout.entries;
-  const SceneGenerator generator = [&](long, TrialRandom& random) {
-    return make_layout_scene(entries, vectors, setup.scene, random);
-  };
-  TrialRandom probe_random = TrialRandom::for_trial(setup.mc.seed, 0);
-  const std::vector<Estimator> estimators =
-      select_estimators(setup.methods, generator(0, probe_random), "--methods");
-  Report report;
-  report.config = setup.config;
-  report.shard = std::to_string(setup.mc.shard.index) + "/" + std::to_string(setup.mc.shard.count);
-  report.run = run_monte_carlo(generator, estimators, setup.mc);
-  if (setup.scene.camera == CameraModel::kAffine) {
-    const BoundLayout layout = prepare_bound_layout(entries, vectors);
-    report.bound_trials.resize(report.run.trial_index.size());
-    parallel_for(static_cast<long>(report.run.trial_index.size()), setup.mc.threads,
-                 setup.mc.progress, [&](long k) {
-                   TrialRandom random =
-                       TrialRandom::for_trial(setup.mc.seed, report.run.trial_index[k]);
-                   report.bound_trials[k] = check_bound_trial(layout, generator(0, random));
-                 });
-    report.has_bound = true;
-    report.bound = summarize_bound_check(layout, report.bound_trials);
-  }
-  return report;
+  const Layout layout = io::read_layout(args.file);
+  return simulate::simulate_layout(layout, simulation_options(args, layout));
 }
 
 Json read_json_file(const std::string& path) {

@@ -7,6 +7,7 @@
 #include "layouts.h"
 #include "pose_commands.h"
 #include "results.h"
+#include "simulate_command.h"
 
 PYBIND11_MODULE(_vantage, module) {
   module.doc() =
@@ -17,4 +18,5 @@ PYBIND11_MODULE(_vantage, module) {
   vantage::python::bind_layouts(module);
   vantage::python::bind_layout_commands(module);
   vantage::python::bind_pose_commands(module);
+  vantage::python::bind_simulate_command(module);
 }

@@ -31,7 +31,7 @@ from . import _vantage
 __all__ = [
     "Layout", "NumericalError", "Result", "analyze", "board", "data_vectors", "design",
     "load_correspondences", "load_layout", "orient", "pbar_at_viewpoints", "pose",
-    "pose_methods", "save_layout", "weights", "__version__",
+    "pose_methods", "save_layout", "simulate", "weights", "__version__",
 ]
 
 
@@ -146,5 +146,10 @@ def orient(model, measured, **kwargs):
     return Result(_vantage.orient(model, measured, **kwargs))
 
 
-for _name in ("analyze", "design", "weights", "pose", "orient"):
+@_raising
+def simulate(layout=None, **kwargs):
+    return Result(_vantage.simulate(layout, **kwargs))
+
+
+for _name in ("analyze", "design", "weights", "pose", "orient", "simulate"):
     globals()[_name].__doc__ = getattr(_vantage, _name).__doc__
