@@ -2,14 +2,13 @@
 
 #include <vector>
 
+#include "pose_json.h"
+
 namespace vantage::design_json {
 namespace {
 
-Json list(const Eigen::VectorXd& v) {
-  Json out = Json::array();
-  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(v(i));
-  return out;
-}
+// Lists of numbers as pose_json writes them (null for a non-finite entry, never NaN).
+Json list(const Eigen::VectorXd& v) { return pose_json::finite_list(v); }
 
 Json points(const std::vector<Eigen::Vector3d>& points) {
   Json out = Json::array();
