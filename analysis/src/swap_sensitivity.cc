@@ -1,5 +1,6 @@
 #include "vantage/analysis/swap_sensitivity.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -9,6 +10,50 @@
 #include "vantage/analysis/internal/checks.h"
 
 namespace vantage {
+namespace {
+
+// The swapped D's top eigenvector is then the unit quaternion (0, 0, 0, 1) by a relative gap of
+// at least this, well above top_eigenpair's fallback gap (1e-3 of the traceless part's norm, at
+// most 3 ||D + Delta D||_F) and kSwapAmbiguousGap: top_eigenpair returns it exactly (its
+// adjugate column has exact zeros), so the error is exactly 0.
+constexpr double kUnmovedRelativeGap = 1e-2;
+
+// Proves, without an eigensolver, that a swap leaves R = I the unique optimum. Noise-free (and
+// with equal weights for the pair), the last row and column of D and of Delta D are exactly
+// (0, 0, 0, d44): D + Delta D is block diagonal, (0, 0, 0, 1) is an eigenvector with eigenvalue
+// d44 + delta44, and every other eigenvalue is at most lambda_max(D_3x3) + ||Delta D_3x3||_F
+// (Weyl). Pairs it cannot decide go to the eigensolver.
+class UnmovedScreen {
+ public:
+  explicit UnmovedScreen(const Eigen::Matrix4d& D)
+      : D_(D), d_norm_(D.norm()), block_(last_column_is_zero(D)) {
+    if (block_) {
+      top3_ = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(D.topLeftCorner<3, 3>(),
+                                                             Eigen::EigenvaluesOnly)
+                  .eigenvalues()(2);
+    }
+  }
+
+  bool proves_unmoved(const Eigen::Matrix4d& delta) const {
+    if (!block_ || !last_column_is_zero(delta)) return false;
+    const double delta_norm = delta.norm();
+    const double gap = D_(3, 3) + delta(3, 3) - top3_ - delta.topLeftCorner<3, 3>().norm();
+    return gap > kUnmovedRelativeGap * (d_norm_ + delta_norm);
+  }
+
+ private:
+  static bool last_column_is_zero(const Eigen::Matrix4d& a) {
+    return a(0, 3) == 0.0 && a(1, 3) == 0.0 && a(2, 3) == 0.0 && a(3, 0) == 0.0 && a(3, 1) == 0.0 &&
+           a(3, 2) == 0.0;
+  }
+
+  Eigen::Matrix4d D_;
+  double d_norm_;
+  bool block_;
+  double top3_ = 0.0;
+};
+
+}  // namespace
 
 std::vector<SwapError> swap_sensitivity(const Eigen::Matrix3Xd& z, const Eigen::VectorXd& weights,
                                         int count) {
@@ -40,10 +85,16 @@ std::vector<SwapError> swap_sensitivity(const Eigen::Matrix3Xd& z, const Eigen::
       std::push_heap(worst.begin(), worst.end(), ranks_before);
     }
   };
+  const UnmovedScreen screen(D);
   for (Eigen::Index i = 0; i < m; ++i) {
     for (Eigen::Index j = i + 1; j < m; ++j) {
-      const Eigen::Matrix4d swapped =
-          D + swap_delta_d(z.col(i), z.col(j), z.col(i), z.col(j), w(i), w(j));
+      const Eigen::Matrix4d delta =
+          swap_delta_d(z.col(i), z.col(j), z.col(i), z.col(j), w(i), w(j));
+      if (screen.proves_unmoved(delta)) {
+        offer({static_cast<int>(i), static_cast<int>(j), 0.0, false});
+        continue;
+      }
+      const Eigen::Matrix4d swapped = D + delta;
       const TopEigenpair top = top_eigenpair(swapped);
       if (!(top.gap > kSwapAmbiguousGap * swapped.norm())) {
         // A repeated top eigenvalue: the optima form a subspace of dimension >= 2 of unit
