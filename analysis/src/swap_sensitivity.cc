@@ -17,6 +17,8 @@ namespace {
 // most 3 ||D + Delta D||_F) and kSwapAmbiguousGap: top_eigenpair returns it exactly (its
 // adjugate column has exact zeros), so the error is exactly 0.
 constexpr double kUnmovedRelativeGap = 1e-2;
+// Relative rounding allowance on the bound of ||Delta D||_F over all pairs.
+constexpr double kBoundRounding = 1e-12;
 
 // Proves, without an eigensolver, that a swap leaves R = I the unique optimum. Noise-free (and
 // with equal weights for the pair), the last row and column of D and of Delta D are exactly
@@ -32,6 +34,18 @@ class UnmovedScreen {
                                                              Eigen::EigenvaluesOnly)
                   .eigenvalues()(2);
     }
+  }
+
+  // With unit weights, Delta D = K(a, -a) for a = z_j - z_i: its last column is exactly zero
+  // (a x -a) and ||Delta D||_F <= (2 + 2 sqrt 3) |a|^2 <= (2 + 2 sqrt 3) (2 max_k |z_k|)^2. When
+  // that bound passes proves_unmoved()'s test, every pair does.
+  bool proves_every_pair_unmoved(const Eigen::Matrix3Xd& z, const Eigen::VectorXd& weights) const {
+    if (!block_ || !(weights.size() == 0 || (weights.array() == 1.0).all())) return false;
+    const double longest = z.colwise().norm().maxCoeff();
+    const double delta_bound =
+        (2.0 + 2.0 * std::sqrt(3.0)) * 4.0 * longest * longest * (1.0 + kBoundRounding);
+    const double gap = D_(3, 3) - top3_ - delta_bound;
+    return gap > kUnmovedRelativeGap * (d_norm_ + delta_bound);
   }
 
   bool proves_unmoved(const Eigen::Matrix4d& delta) const {
@@ -86,6 +100,16 @@ std::vector<SwapError> swap_sensitivity(const Eigen::Matrix3Xd& z, const Eigen::
     }
   };
   const UnmovedScreen screen(D);
+  if (screen.proves_every_pair_unmoved(z, weights)) {
+    // Every error is exactly 0: the ranking is (i, j) order, O(count) instead of O(m^2).
+    std::vector<SwapError> first;
+    for (Eigen::Index i = 0; i < m && first.size() < keep; ++i) {
+      for (Eigen::Index j = i + 1; j < m && first.size() < keep; ++j) {
+        first.push_back({static_cast<int>(i), static_cast<int>(j), 0.0, false});
+      }
+    }
+    return first;
+  }
   for (Eigen::Index i = 0; i < m; ++i) {
     for (Eigen::Index j = i + 1; j < m; ++j) {
       const Eigen::Matrix4d delta =

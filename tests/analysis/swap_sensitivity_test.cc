@@ -148,12 +148,17 @@ std::vector<SwapError> every_pair_by_eigensolver(const Eigen::Matrix3Xd& z,
 }
 
 TEST(SwapSensitivity, ScreenedPairsAreBitIdenticalToTheEigensolver) {
-  // Unit weights (the screen decides most pairs), random weights (it decides none: the last
-  // column of Delta D is then not zero), a triad plus points (ambiguous and large swaps), and
-  // free vectors of a point layout (long and short vectors).
+  // Unit weights (the screen decides most pairs, or all at once for many directions), random
+  // weights (it decides none: the last column of Delta D is then not zero), a triad plus points
+  // (ambiguous and large swaps), and free vectors of a point layout (long and short vectors).
   std::mt19937 rng(kSeed + 60);
-  for (int trial = 0; trial < 4; ++trial) {
+  for (int trial = 0; trial < 5; ++trial) {
     Eigen::Matrix3Xd z = testing::random_points(rng, 40 + 10 * trial);
+    if (trial == 4) {
+      // Many unit directions: the bound over all pairs decides them at once.
+      z.resize(3, 300);
+      for (int i = 0; i < 300; ++i) z.col(i) = testing::random_unit_vector(rng);
+    }
     Eigen::VectorXd w;
     if (trial == 1) w = Eigen::VectorXd::Random(z.cols()).cwiseAbs().array() + 0.5;
     if (trial == 2) z.leftCols(3) = Eigen::Matrix3d::Identity();

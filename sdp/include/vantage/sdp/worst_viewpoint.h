@@ -155,9 +155,11 @@ const char* to_string(WorstViewpoint::Status status);
 /// n_i^perp crosses lie in one cell whose optimum is solved exactly as the minimum-norm point of
 /// conv{s_i n_i} (docs/math.md §13, Wolfe's algorithm); patches whose bound is below the best
 /// attained value are pruned. Parallel and antiparallel repeats (unit columns equal within 1e-15 up
-/// to sign) are searched once; t and the viewpoints are evaluated on every column. Time about
-/// (patches at the scale asin(t*) / 2, ~m^2 / 26 for random layouts) x (circles near a patch);
-/// memory O(m) (depth-first). vectors: 3 x m, m >= 2, non-zero finite columns (parallel,
+/// to sign) are searched once; t and the viewpoints are evaluated on every column. Each reported
+/// optimum is its cell's minimum-norm point solved again on every column, so t and the viewpoints
+/// depend on the cells found, not on the search's path (hints, frontiers) to the last bit. Time
+/// about (patches at the scale asin(t*) / 2, ~m^2 / 26 for random layouts) x (circles near a
+/// patch); memory O(m) (depth-first). vectors: 3 x m, m >= 2, non-zero finite columns (parallel,
 /// duplicated and antiparallel columns are fine: all parallel gives t = 1, p-bar = 0).
 /// Throws InvalidArgument on bad input or options.
 WorstViewpoint global_worst_viewpoint(const Eigen::Matrix3Xd& vectors,
