@@ -7,6 +7,7 @@
 #include <random>
 
 #include "vantage/sdp/worst_viewpoint.h"
+#include "vantage/sdp/worst_viewpoint_additions.h"
 
 namespace {
 
@@ -68,8 +69,32 @@ void BM_WorstViewpoint_CrossCheck(benchmark::State& state) {
   state.counters["samples"] = static_cast<double>(samples);
 }
 
+// The augmenter's inner solve: m random directions plus 50 more (another seed), solved whole
+// (AddedWhole) or from the base's frontier prepared once at 0.7 t*_base (AddedPrepared, the
+// design module's level; the preparation is reported as a counter, not timed per solve).
+Eigen::Matrix3Xd fifty_added() { return 2.0 * random_unit_vectors(50); }
+
+void BM_WorstViewpoint_AddedWhole(benchmark::State& state) {
+  const Eigen::Matrix3Xd base = random_unit_vectors(static_cast<int>(state.range(0)));
+  Eigen::Matrix3Xd all(3, base.cols() + 50);
+  all << base, fifty_added();
+  for (auto _ : state) benchmark::DoNotOptimize(vantage::sdp::global_worst_viewpoint(all).t);
+}
+
+void BM_WorstViewpoint_AddedPrepared(benchmark::State& state) {
+  const Eigen::Matrix3Xd base = random_unit_vectors(static_cast<int>(state.range(0)));
+  const Eigen::Matrix3Xd added = fifty_added();
+  const double t_base = vantage::sdp::global_worst_viewpoint(base).t;
+  vantage::sdp::WorstViewpointWithAdditions prepared(base, 0.7 * t_base);
+  for (auto _ : state) benchmark::DoNotOptimize(prepared.solve(added).t);
+  state.counters["frontier"] = static_cast<double>(prepared.frontier_patches());
+  state.counters["fallbacks"] = static_cast<double>(prepared.fallbacks());
+}
+
 }  // namespace
 
+BENCHMARK(BM_WorstViewpoint_AddedWhole)->Arg(1000)->Arg(5000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_WorstViewpoint_AddedPrepared)->Arg(1000)->Arg(5000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_WorstViewpoint_Global)
     ->Arg(3)
     ->Arg(10)

@@ -98,7 +98,7 @@ AugmentResult augment_layout(const Layout& layout, const AugmentOptions& options
       result.status != AugmentResult::Status::kNoCandidates) {
     if (options.progress) options.progress("direct optimiser");
     result.direct = options.candidates_only
-                        ? internal::exhaustive_candidates(layout, options, &designer)
+                        ? internal::exhaustive_candidates(layout, options, current.t, &designer)
                         : internal::multistart_search(layout, options, result, &designer);
     if (result.direct.status == DirectResult::Status::kOk) {
       certified = certified && result.direct.worst.certified;

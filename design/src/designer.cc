@@ -33,12 +33,57 @@ Designer::Designer(const Layout& layout, const AugmentOptions& options)
       markers_(layout.entries),
       used_(layout.candidates.cols(), false) {}
 
-WorstCase Designer::evaluate(const Eigen::Matrix3Xd& vectors) {
-  ++solves_;
-  return evaluate_worst_case(vectors);
+sdp::WorstViewpointOptions Designer::solve_options(double stop_above) const {
+  sdp::WorstViewpointOptions options;
+  if (options_.prune_solves) {
+    options.hints = hints_;
+    options.stop_above = stop_above;
+  }
+  return options;
 }
 
-Score Designer::score(const Eigen::Vector3d& x, const WorstCase& current, long* screened) {
+void Designer::remember(const WorstCase& w, bool stopped) {
+  if (stopped) return;
+  hints_.resize(current_hints_);
+  hints_.insert(hints_.end(), w.worst_viewpoints.begin(), w.worst_viewpoints.end());
+}
+
+WorstCase Designer::evaluate(const Eigen::Matrix3Xd& vectors, double stop_above, bool* stopped) {
+  ++solves_;
+  bool was_stopped = false;
+  WorstCase w = evaluate_worst_case(vectors, solve_options(stop_above), &was_stopped);
+  if (stopped != nullptr) *stopped = was_stopped;
+  remember(w, was_stopped);
+  return w;
+}
+
+void Designer::prepare(const Eigen::Matrix3Xd& base, double expected_t) {
+  prepared_base_ = base;
+  prepared_.reset();
+  const double level = kPreparedLevel * expected_t;
+  if (options_.prune_solves && level >= kMinPreparedLevel && level <= 1.0) {
+    prepared_ = std::make_unique<sdp::WorstViewpointWithAdditions>(base, level);
+  }
+}
+
+WorstCase Designer::evaluate_added(const Eigen::Matrix3Xd& added, double stop_above,
+                                   bool* stopped) {
+  Eigen::Matrix3Xd all(3, prepared_base_.cols() + added.cols());
+  all << prepared_base_, added;
+  if (prepared_ == nullptr) return evaluate(all, stop_above, stopped);
+  ++solves_;
+  const long fallbacks = prepared_->fallbacks();
+  bool was_stopped = false;
+  WorstCase w =
+      worst_case_of(prepared_->solve(added, solve_options(stop_above)), all, &was_stopped);
+  if (stopped != nullptr) *stopped = was_stopped;
+  remember(w, was_stopped);
+  if (prepared_->fallbacks() > fallbacks) prepare(prepared_base_, w.t);
+  return w;
+}
+
+Score Designer::score(const Eigen::Vector3d& x, const WorstCase& current, long* screened,
+                      double stop_above) {
   Score s;
   Eigen::Matrix3Xd added;
   if (!space_->new_vectors(x, markers_, &added)) return s;
@@ -62,11 +107,11 @@ Score Designer::score(const Eigen::Vector3d& x, const WorstCase& current, long* 
     s.n_worst = survivors;
     return s;
   }
-  Eigen::Matrix3Xd all(3, vectors_.cols() + added.cols());
-  all << vectors_, added;
-  const WorstCase w = evaluate(all);
+  bool stopped = false;
+  const WorstCase w = evaluate_added(added, stop_above, &stopped);
   s.t = w.t;
-  s.n_worst = static_cast<int>(w.worst_viewpoints.size());
+  s.n_worst =
+      stopped ? std::numeric_limits<int>::max() : static_cast<int>(w.worst_viewpoints.size());
   return s;
 }
 
@@ -79,7 +124,8 @@ Eigen::Vector3d Designer::polish(Eigen::Vector3d x, Score* s, double step, const
     Score best_s = *s;
     for (int k = 0; k < count; ++k) {
       const Eigen::Vector3d y = space_->move(x, step, dirs[k]);
-      const Score sy = score(y, current, screened);
+      // Only a move that can beat best_s needs its exact score.
+      const Score sy = score(y, current, screened, best_s.t + options_.tie_tolerance);
       if (better(sy, best_s, options_.tie_tolerance)) {
         best_s = sy;
         best_x = y;
@@ -97,8 +143,19 @@ Eigen::Vector3d Designer::polish(Eigen::Vector3d x, Score* s, double step, const
 
 std::vector<Designer::Option> Designer::generate(const WorstCase& current, AugmentStep* st) {
   std::vector<Option> options;
+  // choose() uses the first `ranked` options after sorting: a candidate whose t exceeds the
+  // ranked-th best exact t so far by more than the tie tolerance ranks behind them, so its
+  // solve may stop there.
+  const std::size_t ranked = options_.candidates_only ? 1 : options_.refine_starts;
+  std::vector<double> best_t;  // the `ranked` smallest exact t so far, ascending
   auto add = [&](const Eigen::Vector3d& x, int index) {
-    options.push_back({x, index, score(x, current, &st->screened)});
+    const double stop_above = best_t.size() < ranked ? std::numeric_limits<double>::infinity()
+                                                     : best_t.back() + options_.tie_tolerance;
+    const Score s = score(x, current, &st->screened, stop_above);
+    options.push_back({x, index, s});
+    if (s.t > stop_above) return;  // the solve stopped above: not exact
+    best_t.insert(std::upper_bound(best_t.begin(), best_t.end(), s.t), s.t);
+    if (best_t.size() > ranked) best_t.pop_back();
   };
   for (Eigen::Index c = 0; c < layout_.candidates.cols(); ++c) {
     if (!used_[c]) add(space_->addition(layout_.candidates.col(c)), static_cast<int>(c));
@@ -176,6 +233,9 @@ void Designer::describe(const WorstCase& current, const Option& chosen, AugmentS
 
 AugmentStep Designer::step(const WorstCase& current, bool* out_of_candidates) {
   AugmentStep st;
+  hints_ = current.worst_viewpoints;
+  current_hints_ = static_cast<int>(hints_.size());
+  prepare(vectors_, current.t);
   const long solves_before = solves_;
   std::vector<Option> options = generate(current, &st);
   if (options.empty()) {

@@ -12,6 +12,8 @@
 
 #include "addition_space.h"
 #include "vantage/design/augment.h"
+#include "vantage/sdp/worst_viewpoint.h"
+#include "vantage/sdp/worst_viewpoint_additions.h"
 
 namespace vantage::design::internal {
 
@@ -26,6 +28,23 @@ struct Score {
 /// a ranks before b; t values within `tie` are equal.
 bool better(const Score& a, const Score& b, double tie);
 
+/// evaluate_worst_case() with the global solver's options. With a finite options.stop_above the
+/// solve may stop early: then *stopped is set and only t (a value attained above stop_above, so
+/// a lower bound on the true t) and one viewpoint are meaningful.
+WorstCase evaluate_worst_case(const Eigen::Matrix3Xd& vectors,
+                              const sdp::WorstViewpointOptions& options, bool* stopped);
+
+/// The worst case a global solve `w` of `vectors` reports (*stopped as above, when not null).
+WorstCase worst_case_of(const sdp::WorstViewpoint& w, const Eigen::Matrix3Xd& vectors,
+                        bool* stopped);
+
+/// Prepared solves (prepare()) start at this fraction of the t expected: candidates are rarely
+/// that much better than the best known, and the frontier grows as (t / level)^2.
+inline constexpr double kPreparedLevel = 0.7;
+/// Below this level the solves are not prepared: the preparation refines crossing patches to
+/// ~level / 2, as costly as many whole solves.
+inline constexpr double kMinPreparedLevel = 1e-4;
+
 class Designer {
  public:
   Designer(const Layout& layout, const AugmentOptions& options);
@@ -35,8 +54,24 @@ class Designer {
   const AdditionSpace& space() const { return *space_; }
   long solves() const { return solves_; }
 
-  /// The global worst case of `vectors`, counted in solves().
-  WorstCase evaluate(const Eigen::Matrix3Xd& vectors);
+  /// The global worst case of `vectors`, counted in solves(). The worst viewpoints of the
+  /// current layout and of the last complete solve are passed to the solver as hints (they
+  /// change its work, not its answer). With a finite stop_above the solve stops once t >
+  /// stop_above is proven: *stopped is then set and only t (a lower bound) is meaningful.
+  WorstCase evaluate(const Eigen::Matrix3Xd& vectors,
+                     double stop_above = std::numeric_limits<double>::infinity(),
+                     bool* stopped = nullptr);
+
+  /// Prepares evaluate_added() for additions to `base` whose t is expected near `expected_t`
+  /// (sdp::WorstViewpointWithAdditions at kPreparedLevel * expected_t; with prune_solves off,
+  /// or a level below kMinPreparedLevel, evaluate_added() solves [base, added] whole).
+  void prepare(const Eigen::Matrix3Xd& base, double expected_t);
+
+  /// evaluate() of [base, added] for the prepared base: the same answer, from the prepared
+  /// frontier. A solve whose t falls below the frontier's level re-prepares it lower.
+  WorstCase evaluate_added(const Eigen::Matrix3Xd& added,
+                           double stop_above = std::numeric_limits<double>::infinity(),
+                           bool* stopped = nullptr);
 
   /// One greedy step from the current worst case; *out_of_candidates is set (and the step is
   /// empty) when there is nothing left to add.
@@ -59,8 +94,16 @@ class Designer {
   // Description: the new worst case and the step's note in plain words.
   void describe(const WorstCase& current, const Option& chosen, AugmentStep* st);
 
-  // Score of adding x; solves only when x kills every current worst viewpoint.
-  Score score(const Eigen::Vector3d& x, const WorstCase& current, long* screened);
+  // The global solver's options of one solve: hints and stop_above when prune_solves.
+  sdp::WorstViewpointOptions solve_options(double stop_above) const;
+  // Keeps the viewpoints of a complete solve as hints for the next.
+  void remember(const WorstCase& w, bool stopped);
+
+  // Score of adding x; solves only when x kills every current worst viewpoint. A score whose t
+  // would exceed stop_above need not be exact: the solve may stop with t a value above it (and
+  // n_worst = max), which ranks it behind every score with t <= stop_above - tie.
+  Score score(const Eigen::Vector3d& x, const WorstCase& current, long* screened,
+              double stop_above = std::numeric_limits<double>::infinity());
   // Compass search from x, starting with `step`.
   Eigen::Vector3d polish(Eigen::Vector3d x, Score* s, double step, const WorstCase& current,
                          long* screened);
@@ -71,7 +114,11 @@ class Designer {
   Eigen::Matrix3Xd vectors_;
   Eigen::Matrix3Xd markers_;
   std::vector<bool> used_;
+  std::vector<Eigen::Vector3d> hints_;  // worst viewpoints of the current layout and last solve
+  int current_hints_ = 0;               // how many of hints_ are the current layout's
   long solves_ = 0;
+  Eigen::Matrix3Xd prepared_base_;
+  std::unique_ptr<sdp::WorstViewpointWithAdditions> prepared_;
 };
 
 }  // namespace vantage::design::internal

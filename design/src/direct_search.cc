@@ -31,7 +31,8 @@ double direct_objective(const std::vector<double>& x, std::vector<double>&, void
                                             x, &o->work)) {
     return kDegenerateObjective;
   }
-  const double t = o->designer->evaluate(o->work).t;
+  const double t =
+      o->designer->evaluate_added(o->work.rightCols(o->work.cols() - o->base_vectors->cols())).t;
   if (t < o->best_t) {
     o->best_t = t;
     o->best_x = x;
@@ -52,7 +53,7 @@ void finish(const Layout& layout, const std::vector<double>& x, long solves_befo
 }  // namespace
 
 DirectResult exhaustive_candidates(const Layout& layout, const AugmentOptions& options,
-                                   Designer* designer) {
+                                   double expected_t, Designer* designer) {
   DirectResult out;
   const int k = options.add;
   const long solves_before = designer->solves();
@@ -70,6 +71,7 @@ DirectResult exhaustive_candidates(const Layout& layout, const AugmentOptions& o
   }
   out.method = "exhaustive_candidates";
   const double min_separation = kMinSeparation * std::max(1.0, space.scale());
+  designer->prepare(base_vectors, expected_t);
   std::vector<bool> pick(nc, false);
   std::fill(pick.begin(), pick.begin() + k, true);
   double best = std::numeric_limits<double>::infinity();
@@ -84,7 +86,9 @@ DirectResult exhaustive_candidates(const Layout& layout, const AugmentOptions& o
       for (int r = 0; r < 3; ++r) x.push_back(layout.candidates(r, c));
     }
     if (!space.all_new_vectors(base_vectors, layout.entries, min_separation, x, &work)) continue;
-    const double t = designer->evaluate(work).t;
+    // Only a subset that beats the best so far needs its exact t.
+    const double t =
+        designer->evaluate_added(work.rightCols(work.cols() - base_vectors.cols()), best).t;
     if (t < best) {
       best = t;
       best_idx = idx;
@@ -118,6 +122,8 @@ DirectResult multistart_search(const Layout& layout, const AugmentOptions& optio
   obj.base_vectors = &base_vectors;
   obj.base_markers = &layout.entries;
   obj.min_separation = kMinSeparation * space.scale();
+  designer->prepare(base_vectors,
+                    greedy.steps.empty() ? greedy.initial.t : greedy.steps.back().worst.t);
   RandomStarts random(options.seed);
   for (int start = 0; start < options.direct_starts; ++start) {
     std::vector<double> x(3 * k);

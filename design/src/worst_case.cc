@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "designer.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/error_bounds.h"
 #include "vantage/analysis/internal/checks.h"
@@ -11,7 +12,19 @@
 namespace vantage::design {
 
 WorstCase evaluate_worst_case(const Eigen::Matrix3Xd& vectors) {
-  const sdp::WorstViewpoint w = sdp::global_worst_viewpoint(vectors);
+  return internal::evaluate_worst_case(vectors, {}, nullptr);
+}
+
+namespace internal {
+
+WorstCase evaluate_worst_case(const Eigen::Matrix3Xd& vectors,
+                              const sdp::WorstViewpointOptions& options, bool* stopped) {
+  return worst_case_of(sdp::global_worst_viewpoint(vectors, options), vectors, stopped);
+}
+
+WorstCase worst_case_of(const sdp::WorstViewpoint& w, const Eigen::Matrix3Xd& vectors,
+                        bool* stopped) {
+  if (stopped != nullptr) *stopped = w.status == sdp::WorstViewpoint::Status::kStoppedAbove;
   WorstCase out;
   out.t = w.t;
   out.pbar_min = w.pbar;
@@ -24,6 +37,8 @@ WorstCase evaluate_worst_case(const Eigen::Matrix3Xd& vectors) {
   }
   return out;
 }
+
+}  // namespace internal
 
 double pbar_ceiling(int m) {
   vantage::internal::check_min_count("m", m, 1, "data vector");

@@ -105,6 +105,8 @@ class BranchAndBound {
   }
 
   void run() {
+    apply_hints();
+    if (stopped_) return;
     struct Root {
       int face;
       double u, v;
@@ -123,10 +125,48 @@ class BranchAndBound {
     }
     std::sort(roots.begin(), roots.end(),
               [](const Root& a, const Root& b) { return a.value > b.value; });
-    for (int s = 0; s < std::min<int>(4, static_cast<int>(roots.size())); ++s) {
+    for (int s = 0; s < std::min<int>(4, static_cast<int>(roots.size())) && !stopped_; ++s) {
       solve_full_cell(face_point(roots[s].face, roots[s].u, roots[s].v));
     }
     for (const Root& root : roots) process(root.face, root.u, root.v, h, m_, 0);
+  }
+
+  // Collection of the frontier at a fixed level (collect_frontier()).
+  void collect(double level, Frontier* frontier) {
+    collect_ = frontier;
+    frontier->level = level;
+    raise_level(level);
+    const double h = 1.0 / kGrid;
+    for (int face = 0; face < 3; ++face) {
+      for (int i = 0; i < kGrid; ++i) {
+        for (int j = 0; j < kGrid; ++j) {
+          process(face, -1.0 + (2 * i + 1) * h, -1.0 + (2 * j + 1) * h, h, m_, 0);
+        }
+      }
+    }
+    frontier->patches_visited = patches_;
+  }
+
+  // The search over a frontier's patches: each with its own circles plus columns base_count..m-1.
+  void run_frontier(const Frontier& frontier, int base_count) {
+    apply_hints();
+    if (stopped_) return;
+    if (frontier.level > level_) raise_level(frontier.level);
+    const int extra = m_ - base_count;
+    for (const Frontier::Patch& p : frontier.patches) {
+      CircleList& list = lists_[p.depth];
+      list.ensure(p.count + extra);
+      std::copy_n(frontier.x.begin() + p.first, p.count, list.x.begin());
+      std::copy_n(frontier.y.begin() + p.first, p.count, list.y.begin());
+      std::copy_n(frontier.z.begin() + p.first, p.count, list.z.begin());
+      for (int k = 0; k < extra; ++k) {
+        list.x[p.count + k] = n_(0, base_count + k);
+        list.y[p.count + k] = n_(1, base_count + k);
+        list.z[p.count + k] = n_(2, base_count + k);
+      }
+      process(p.face, p.u, p.v, p.h, p.count + extra, p.depth);
+    }
+    below_level_ = !stopped_ && lower_ < frontier.level;
   }
 
   SearchOutcome outcome() const {
@@ -147,23 +187,48 @@ class BranchAndBound {
     out.cells_solved = cells_solved_;
     out.patches = patches_;
     out.exhausted = exhausted_;
+    out.stopped = stopped_;
+    out.stop_point = stop_point_;
+    out.below_level = below_level_;
     return out;
   }
 
  private:
+  void apply_hints() {
+    for (const Eigen::Vector3d& hint : options_.hints) {
+      const Eigen::Vector3d a = hint.normalized();
+      const double value = full_objective(a);
+      if (value > level_) raise_level(value);
+      stop_if_above(a, value);
+    }
+  }
+
   double full_objective(const Eigen::Vector3d& a) {
     scratch_.noalias() = nt_ * a;
     return scratch_.cwiseAbs().minCoeff();
   }
 
   void offer(const Eigen::Vector3d& a, double value) {
+    stop_if_above(a, value);
     if (value < lower_ - options_.tie_tolerance) return;
     if (value > lower_) {
       lower_ = value;
-      prune_below_ = lower_ - options_.tie_tolerance;
-      prune_below_cos_ = std::sqrt(std::max(0.0, 1.0 - prune_below_ * prune_below_));
+      if (value > level_) raise_level(value);
     }
     candidates_.push_back({a, value});
+  }
+
+  // The pruning level: the best attained value, of a cell optimum or a hint.
+  void raise_level(double value) {
+    level_ = value;
+    prune_below_ = level_ - options_.tie_tolerance;
+    prune_below_cos_ = std::sqrt(std::max(0.0, 1.0 - prune_below_ * prune_below_));
+  }
+
+  void stop_if_above(const Eigen::Vector3d& a, double value) {
+    if (stopped_ || !(value > options_.stop_above)) return;
+    stopped_ = true;
+    stop_point_ = a;
   }
 
   // Exact optimum of the cell containing c (all circles); returns it and offers its point.
@@ -184,6 +249,7 @@ class BranchAndBound {
   // The patch of centre (u, v) and half-width h on `face`; its circles are the first `count` of
   // lists_[depth]. Keeps the circles that can still bound a sub-patch in lists_[depth + 1].
   void process(int face, double u, double v, double h, int count, int depth) {
+    if (stopped_) return;
     ++patches_;
     const Eigen::Vector3d c = face_point(face, u, v);
     const double cos_r = patch_cos_radius(u, v, h);
@@ -211,9 +277,11 @@ class BranchAndBound {
     }
     // min_i sin(min(pi/2, asin|c.n_i| + r)): increasing in |c.n_i|, so set by the nearest circle.
     const double bound = sin_plus(centre_value, cos_r, sin_r);
-    if (bound < lower_ - options_.tie_tolerance) return;  // pruned: bound < attained value
+    if (bound < level_ - options_.tie_tolerance) return;  // pruned: bound < attained value
 
-    if (centre_value > lower_ && full_objective(c) > lower_) solve_full_cell(c);
+    if (collect_ == nullptr && centre_value > level_ && full_objective(c) > level_) {
+      solve_full_cell(c);
+    }
 
     // A circle whose minimum of |a.n| over the patch, sin(asin|c.n| - r), exceeds the attained
     // value (or the bound) cannot decide a prune of any sub-patch: drop it from the sub-patches'
@@ -221,7 +289,7 @@ class BranchAndBound {
     const double crossing_limit = sin_r + kCrossingSlack;
     const bool crossing = centre_value <= crossing_limit;
     const double keep_limit =
-        std::max(crossing_limit, sin_plus(std::min(lower_, bound), cos_r, sin_r));
+        std::max(crossing_limit, sin_plus(std::min(level_, bound), cos_r, sin_r));
     CircleList& out = lists_[depth + 1];
     out.ensure(count);
     int kept = 0;
@@ -232,6 +300,11 @@ class BranchAndBound {
       kept += std::abs(dots[k]) <= keep_limit ? 1 : 0;
     }
 
+    if (collect_ != nullptr && (!crossing || sin_r < kMinPatchSin || depth >= kMaxDepth ||
+                                patches_ >= options_.max_patches)) {
+      store(face, u, v, h, depth, out, kept);
+      return;
+    }
     if (!crossing) {
       close_single_cell(c, out, kept);
       return;
@@ -262,8 +335,8 @@ class BranchAndBound {
     ++cells_solved_;
     const MinNormPoint p = min_norm_point(cell_points_.data(), count);
     const double t_sub = p.contains_origin ? 0.0 : p.x.norm();
-    if (t_sub < lower_ - options_.tie_tolerance) {
-      upper_ = std::max(upper_, std::min(t_sub, lower_));
+    if (t_sub < level_ - options_.tie_tolerance) {
+      upper_ = std::max(upper_, std::min(t_sub, level_));
       return;
     }
     const Eigen::Vector3d a = p.x / t_sub;
@@ -274,6 +347,14 @@ class BranchAndBound {
       return;
     }
     solve_full_cell_and_bound(c);
+  }
+
+  void store(int face, double u, double v, double h, int depth, const CircleList& list, int count) {
+    const int first = static_cast<int>(collect_->x.size());
+    collect_->patches.push_back({face, u, v, h, depth, first, count});
+    collect_->x.insert(collect_->x.end(), list.x.begin(), list.x.begin() + count);
+    collect_->y.insert(collect_->y.end(), list.y.begin(), list.y.begin() + count);
+    collect_->z.insert(collect_->z.end(), list.z.begin(), list.z.begin() + count);
   }
 
   void solve_full_cell_and_bound(const Eigen::Vector3d& c) {
@@ -289,13 +370,18 @@ class BranchAndBound {
   std::vector<CircleList> lists_;
   std::vector<std::vector<double>> dots_;
   std::vector<AttainedViewpoint> candidates_;
-  double lower_ = 0.0;
-  double prune_below_ = -1.0;     // lower_ - tie_tolerance once lower_ is set
+  double lower_ = 0.0;            // best attained cell optimum
+  double level_ = 0.0;            // max(lower_, best hint value): what patches are pruned against
+  double prune_below_ = -1.0;     // level_ - tie_tolerance once level_ is set
   double prune_below_cos_ = 0.0;  // sqrt(1 - prune_below_^2)
   double upper_ = 0.0;
   long cells_solved_ = 0;
   long patches_ = 0;
   bool exhausted_ = false;
+  bool stopped_ = false;
+  Eigen::Vector3d stop_point_ = Eigen::Vector3d::UnitZ();
+  bool below_level_ = false;
+  Frontier* collect_ = nullptr;  // collecting a frontier instead of solving
 };
 
 }  // namespace
@@ -335,6 +421,21 @@ Eigen::Matrix3Xd distinct_directions(const Eigen::Matrix3Xd& n) {
     if (keep[i]) distinct.col(k++) = n.col(i);
   }
   return distinct;
+}
+
+Frontier collect_frontier(const Eigen::Matrix3Xd& n, double level,
+                          const WorstViewpointOptions& options) {
+  Frontier frontier;
+  BranchAndBound search(n, options);
+  search.collect(level, &frontier);
+  return frontier;
+}
+
+SearchOutcome search_frontier(const Frontier& frontier, const Eigen::Matrix3Xd& n, int base_count,
+                              const WorstViewpointOptions& options) {
+  BranchAndBound search(n, options);
+  search.run_frontier(frontier, base_count);
+  return search.outcome();
 }
 
 SearchOutcome search_worst_viewpoint(const Eigen::Matrix3Xd& n,

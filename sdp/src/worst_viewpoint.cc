@@ -17,6 +17,9 @@ namespace {
 // lexicographically first, so exactly symmetric layouts give a canonical answer. Far below any
 // certificate_tolerance, and the only slack allowed between t_lower and the best attained value.
 constexpr double kSameValue = 1e-14;
+// A whole-cell optimum replaces the search's point when its value is at least the search's
+// within this (both are computed to ~1e-14; the search's point is the same cell's optimum).
+constexpr double kCellExact = 1e-12;
 
 bool lexicographically_before(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   for (int k = 2; k >= 0; --k) {
@@ -88,6 +91,8 @@ const char* to_string(WorstViewpoint::Status status) {
       return "not_certified";
     case WorstViewpoint::Status::kSdpDisagrees:
       return "sdp_disagrees";
+    case WorstViewpoint::Status::kStoppedAbove:
+      return "stopped_above";
   }
   return "unknown";
 }
@@ -173,6 +178,12 @@ bool WorstViewpointOptions::is_valid(std::string* why) const {
     return fail("WorstViewpointOptions::tie_tolerance must be in [0, 1e-3]");
   }
   if (max_patches < 1) return fail("WorstViewpointOptions::max_patches must be >= 1");
+  if (std::isnan(stop_above)) return fail("WorstViewpointOptions::stop_above must not be NaN");
+  for (const Eigen::Vector3d& h : hints) {
+    if (!h.allFinite() || h.norm() == 0.0) {
+      return fail("WorstViewpointOptions::hints must be finite and non-zero");
+    }
+  }
   std::string sdp_why;
   if (!sdp.is_valid(&sdp_why)) {
     if (why != nullptr) *why = "WorstViewpointOptions::sdp: " + sdp_why;
@@ -190,11 +201,45 @@ WorstViewpoint global_worst_viewpoint(const Eigen::Matrix3Xd& vectors,
                           std::to_string(vectors.cols()));
   }
   const Eigen::Matrix3Xd n = normalized_columns(vectors, "global_worst_viewpoint: vectors");
-  const internal::SearchOutcome search =
-      internal::search_worst_viewpoint(internal::distinct_directions(n), options);
+  return internal::worst_viewpoint_result(
+      n, internal::search_worst_viewpoint(internal::distinct_directions(n), options), options);
+}
 
+namespace internal {
+
+// The optimum of the cell containing c.a, solved on every column of n: the search reaches a
+// cell's optimum along different paths (from a sub-list of the circles, or with hints, or from a
+// prepared frontier), which agree only to rounding; solved again on the whole cell, the reported
+// point and value depend on the cell alone, to the last bit.
+void canonical_cell_optimum(const Eigen::Matrix3Xd& n, AttainedViewpoint* c) {
+  Eigen::Matrix3Xd points(3, n.cols());
+  for (Eigen::Index i = 0; i < n.cols(); ++i) {
+    points.col(i) = n.col(i).dot(c->a) >= 0.0 ? n.col(i) : Eigen::Vector3d(-n.col(i));
+  }
+  const MinNormPoint p = min_norm_point(points.data(), static_cast<int>(n.cols()));
+  if (p.contains_origin) return;
+  const Eigen::Vector3d a = p.x / p.x.norm();
+  const double value = min_abs_projection(n, a);
+  if (value >= c->value - kCellExact) *c = {a, value};
+}
+
+WorstViewpoint worst_viewpoint_result(const Eigen::Matrix3Xd& n, const SearchOutcome& search,
+                                      const WorstViewpointOptions& options) {
   WorstViewpoint result;
-  std::vector<internal::AttainedViewpoint> optima = search.optima;
+  if (search.stopped) {
+    result.status = WorstViewpoint::Status::kStoppedAbove;
+    result.viewpoint = upper_hemisphere(search.stop_point);
+    result.viewpoints = {result.viewpoint};
+    result.t = min_abs_projection(n, result.viewpoint);
+    result.t_lower = result.t;
+    result.t_upper = 1.0;
+    result.pbar = pbar_from_t(result.t);
+    result.cells_solved = search.cells_solved;
+    result.patches = search.patches;
+    result.message = "stopped: an attained value exceeds stop_above";
+    return result;
+  }
+  std::vector<AttainedViewpoint> optima = search.optima;
   VANTAGE_CHECK(!optima.empty(), "the branch and bound found no attained viewpoint");
   // The reported viewpoint must attain the best value found: t_upper is certified against that
   // value, so reporting another tie (up to tie_tolerance below it) would widen the certificate by
@@ -202,12 +247,13 @@ WorstViewpoint global_worst_viewpoint(const Eigen::Matrix3Xd& vectors,
   // lexicographically; the other ties follow by decreasing value. The group is fixed before
   // sorting, so the comparison is a strict weak ordering.
   double best = 0.0;
-  for (internal::AttainedViewpoint& c : optima) {
+  for (AttainedViewpoint& c : optima) {
+    canonical_cell_optimum(n, &c);
     c.a = upper_hemisphere(c.a);
     best = std::max(best, c.value);
   }
   std::sort(optima.begin(), optima.end(),
-            [&](const internal::AttainedViewpoint& a, const internal::AttainedViewpoint& b) {
+            [&](const AttainedViewpoint& a, const AttainedViewpoint& b) {
               const bool a_best = a.value >= best - kSameValue;
               const bool b_best = b.value >= best - kSameValue;
               if (a_best != b_best) return a_best;
@@ -215,7 +261,7 @@ WorstViewpoint global_worst_viewpoint(const Eigen::Matrix3Xd& vectors,
               return lexicographically_before(a.a, b.a);
             });
   result.viewpoint = optima.front().a;
-  for (const internal::AttainedViewpoint& c : optima) result.viewpoints.push_back(c.a);
+  for (const AttainedViewpoint& c : optima) result.viewpoints.push_back(c.a);
   result.t = min_abs_projection(n, result.viewpoint);
   result.t_lower = result.t;
   result.t_upper = std::max(search.upper, result.t);
@@ -252,5 +298,7 @@ WorstViewpoint global_worst_viewpoint(const Eigen::Matrix3Xd& vectors,
   }
   return result;
 }
+
+}  // namespace internal
 
 }  // namespace vantage::sdp

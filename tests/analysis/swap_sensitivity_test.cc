@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "support/eigen_testing.h"
 #include "support/message_of.h"
@@ -115,6 +117,72 @@ TEST(SwapSensitivity, BadInputThrowsNamingTheArgument) {
   nan(0, 3) = std::nan("");
   EXPECT_THAT(message_of([&] { swap_sensitivity(nan); }), HasSubstr("z[3]: not finite"));
   EXPECT_THAT(message_of([&] { swap_sensitivity(z, {}, 0); }), HasSubstr("count: must be >= 1"));
+}
+
+// Every pair by the eigensolver, as swap_sensitivity() did before it screened pairs: the
+// reference for the screen that proves a swap leaves R = I without one.
+std::vector<SwapError> every_pair_by_eigensolver(const Eigen::Matrix3Xd& z,
+                                                 const Eigen::VectorXd& w) {
+  const Eigen::Matrix4d D = orientation_matrix_d(z, z, w);
+  std::vector<SwapError> all;
+  for (int i = 0; i < z.cols(); ++i) {
+    for (int j = i + 1; j < z.cols(); ++j) {
+      const Eigen::Matrix4d swapped =
+          D + swap_delta_d(z.col(i), z.col(j), z.col(i), z.col(j), w.size() ? w(i) : 1.0,
+                           w.size() ? w(j) : 1.0);
+      const TopEigenpair top = top_eigenpair(swapped);
+      if (!(top.gap > kSwapAmbiguousGap * swapped.norm())) {
+        all.push_back({i, j, 180.0, true});
+        continue;
+      }
+      const double angle =
+          rotation_angle_between(rotation_from_quaternion(top.vector), Eigen::Matrix3d::Identity());
+      all.push_back({i, j, angle * kDegreesPerRadian, false});
+    }
+  }
+  std::sort(all.begin(), all.end(), [](const SwapError& a, const SwapError& b) {
+    if (a.error_deg != b.error_deg) return a.error_deg > b.error_deg;
+    return a.i != b.i ? a.i < b.i : a.j < b.j;
+  });
+  return all;
+}
+
+TEST(SwapSensitivity, ScreenedPairsAreBitIdenticalToTheEigensolver) {
+  // Unit weights (the screen decides most pairs, or all at once for many directions), random
+  // weights (it decides none: the last column of Delta D is then not zero), a triad plus points
+  // (ambiguous and large swaps), and free vectors of a point layout (long and short vectors).
+  std::mt19937 rng(kSeed + 60);
+  for (int trial = 0; trial < 5; ++trial) {
+    Eigen::Matrix3Xd z = testing::random_points(rng, 40 + 10 * trial);
+    if (trial == 4) {
+      // Many unit directions: the bound over all pairs decides them at once.
+      z.resize(3, 300);
+      for (int i = 0; i < 300; ++i) z.col(i) = testing::random_unit_vector(rng);
+    }
+    Eigen::VectorXd w;
+    if (trial == 1) w = Eigen::VectorXd::Random(z.cols()).cwiseAbs().array() + 0.5;
+    if (trial == 2) z.leftCols(3) = Eigen::Matrix3d::Identity();
+    if (trial == 3) {
+      for (int i = 1; i < z.cols(); ++i) z.col(i) -= z.col(0) * (i % 3);
+    }
+    const int pairs = static_cast<int>(z.cols() * (z.cols() - 1) / 2);
+    const std::vector<SwapError> fast = swap_sensitivity(z, w, pairs);
+    const std::vector<SwapError> reference = every_pair_by_eigensolver(z, w);
+    ASSERT_EQ(fast.size(), reference.size());
+    for (std::size_t k = 0; k < fast.size(); ++k) {
+      EXPECT_EQ(fast[k].i, reference[k].i) << "trial " << trial << " rank " << k;
+      EXPECT_EQ(fast[k].j, reference[k].j) << "trial " << trial << " rank " << k;
+      EXPECT_EQ(fast[k].error_deg, reference[k].error_deg) << "trial " << trial << " rank " << k;
+      EXPECT_EQ(fast[k].ambiguous, reference[k].ambiguous) << "trial " << trial << " rank " << k;
+    }
+    // The worst five are the first five of the full ranking.
+    const std::vector<SwapError> five = swap_sensitivity(z, w, 5);
+    ASSERT_EQ(five.size(), 5u);
+    for (std::size_t k = 0; k < 5; ++k) {
+      EXPECT_EQ(five[k].i, reference[k].i);
+      EXPECT_EQ(five[k].j, reference[k].j);
+    }
+  }
 }
 
 }  // namespace

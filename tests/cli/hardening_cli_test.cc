@@ -192,12 +192,12 @@ std::string run_on_terminal(const std::string& args, const ScratchDir& scratch) 
 }
 
 TEST(HardeningCli, ProgressOnlyOnATerminal) {
-  // Three point-mode steps and the direct optimiser run for seconds, so a progress line
+  // Six point-mode steps and the direct optimiser run for seconds, so a progress line
   // appears on a terminal; --quiet silences it (and without a terminal stderr stays empty:
   // run_json checks that everywhere).
   ScratchDir scratch;
-  const std::string design = "design '" + kSatellite + "' --add 3";
-  const std::regex progress("vantage design: (step [0-9]/3|direct optimiser), [0-9]+ s");
+  const std::string design = "design '" + kSatellite + "' --add 6";
+  const std::regex progress("vantage design: (step [0-9]/6|direct optimiser), [0-9]+ s");
   const std::string shown = run_on_terminal(design, scratch);
   EXPECT_TRUE(std::regex_search(shown, progress)) << shown;
   const std::string quiet = run_on_terminal(design + " --quiet", scratch);

@@ -98,6 +98,13 @@ struct AugmentOptions {
   unsigned seed = 1;
   /// Coplanarity::nearly_coplanar threshold on the smallest singular value, >= 0.
   double coplanarity_threshold = 0.1;
+  /// Spare the global solves work that cannot change the answer: each solve starts from the
+  /// worst viewpoints of the current layout and of the previous solve (a lower bound to prune
+  /// with), and a candidate's solve stops as soon as it proves the candidate cannot rank where
+  /// it would be used (a t above the incumbent's, or above the refine_starts-th best coarse one,
+  /// by more than tie_tolerance). false solves every candidate from scratch to its certificate:
+  /// the same choices, slower (the reference the tests compare with).
+  bool prune_solves = true;
 
   /// Called with the stage about to run ("step 2/5", "direct optimiser"), e.g. to show
   /// progress; empty: nothing is called.

@@ -18,6 +18,7 @@
 /// and bound on the sphere with exact per-cell solutions, and returns a certificate.
 
 #include <Eigen/Core>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,15 @@ struct WorstViewpointOptions {
   double tie_tolerance = 1e-9;
   /// Patch budget of the branch and bound, >= 1. When exhausted the result is kNotCertified.
   long max_patches = 50'000'000;
+  /// Viewpoints to try first (any length > 0 and sign), e.g. the optima of a layout that differs
+  /// by a few vectors: the best value min_i |a.n_i| attained at them is a lower bound on t* that
+  /// the branch and bound prunes with from its first patch. Hints are never reported as optima
+  /// (only cell optima are) and do not enter t_upper: they change the work, not the answer.
+  std::vector<Eigen::Vector3d> hints;
+  /// Stop as soon as an attained value exceeds this (status kStoppedAbove): for callers that
+  /// only need to know whether t* <= stop_above, e.g. to rank candidate layouts. Not NaN;
+  /// +infinity never stops.
+  double stop_above = std::numeric_limits<double>::infinity();
   /// Also solve the best cell's LMI (Eq. 28) on the SDP backend and compare (confirmation).
   bool confirm_with_sdp = false;
   SdpOptions sdp;  ///< backend options of the confirmation solve
@@ -108,6 +118,9 @@ struct WorstViewpoint {
                     ///< confirmation agrees within kSdpAgreement)
     kNotCertified,  ///< patch budget exhausted: t_upper - t_lower > certificate_tolerance
     kSdpDisagrees,  ///< certified, but the confirming cell LMI differs by more than kSdpAgreement
+    kStoppedAbove,  ///< an attained value t_lower exceeded options.stop_above, so t* > stop_above;
+                    ///< the search stopped there (t_upper = 1, viewpoints = {viewpoint}, no SDP
+                    ///< confirmation)
   };
   /// |t_sdp - t| above which the SDP confirmation counts as a disagreement (CSDP stops at
   /// relative accuracy 1e-8; the LMI's t is accurate to about 1e-7).
@@ -132,7 +145,7 @@ struct WorstViewpoint {
   std::string message;
 };
 
-/// "certified", "not_certified" or "sdp_disagrees".
+/// "certified", "not_certified", "sdp_disagrees" or "stopped_above".
 const char* to_string(WorstViewpoint::Status status);
 
 /// The global worst viewpoint: t* = max over all sign cells (docs/math.md §13) without
@@ -142,9 +155,11 @@ const char* to_string(WorstViewpoint::Status status);
 /// n_i^perp crosses lie in one cell whose optimum is solved exactly as the minimum-norm point of
 /// conv{s_i n_i} (docs/math.md §13, Wolfe's algorithm); patches whose bound is below the best
 /// attained value are pruned. Parallel and antiparallel repeats (unit columns equal within 1e-15 up
-/// to sign) are searched once; t and the viewpoints are evaluated on every column. Time about
-/// (patches at the scale asin(t*) / 2, ~m^2 / 26 for random layouts) x (circles near a patch);
-/// memory O(m) (depth-first). vectors: 3 x m, m >= 2, non-zero finite columns (parallel,
+/// to sign) are searched once; t and the viewpoints are evaluated on every column. Each reported
+/// optimum is its cell's minimum-norm point solved again on every column, so t and the viewpoints
+/// depend on the cells found, not on the search's path (hints, frontiers) to the last bit. Time
+/// about (patches at the scale asin(t*) / 2, ~m^2 / 26 for random layouts) x (circles near a
+/// patch); memory O(m) (depth-first). vectors: 3 x m, m >= 2, non-zero finite columns (parallel,
 /// duplicated and antiparallel columns are fine: all parallel gives t = 1, p-bar = 0).
 /// Throws InvalidArgument on bad input or options.
 WorstViewpoint global_worst_viewpoint(const Eigen::Matrix3Xd& vectors,
