@@ -77,6 +77,36 @@ inline void check_count(Eigen::Index n, const AffineOrientationOptions& options,
   }
 }
 
+/// Checks of the pose estimators' points (affine_pose.cc, refined_pose.cc): the same number of
+/// model and measured points, n >= 3, finite, no two model points equal, valid weights.
+template <int Rows>
+void check_pose_points(const Eigen::Matrix3Xd& model,
+                       const Eigen::Matrix<double, Rows, Eigen::Dynamic>& image,
+                       const Eigen::VectorXd& w, const char* image_name) {
+  if (model.cols() != image.cols()) {
+    std::ostringstream out;
+    out << "model_object has " << model.cols() << " points but " << image_name << " has "
+        << image.cols();
+    throw InvalidArgument(out.str());
+  }
+  if (model.cols() < 3) {
+    throw InvalidArgument("model_object: need at least 3 points, got " +
+                          std::to_string(model.cols()));
+  }
+  check_weights(w, model.cols());
+  for (Eigen::Index i = 0; i < model.cols(); ++i) {
+    if (!model.col(i).allFinite())
+      throw InvalidArgument(indexed("model_object", i) + " is not finite");
+    if (!image.col(i).allFinite()) throw InvalidArgument(indexed(image_name, i) + " is not finite");
+    for (Eigen::Index j = 0; j < i; ++j) {
+      if (model.col(i) == model.col(j)) {
+        throw InvalidArgument("model_object: points " + std::to_string(j) + " and " +
+                              std::to_string(i) + " coincide");
+      }
+    }
+  }
+}
+
 template <typename Options>
 void check_options(const Options& options) {
   std::string why;

@@ -40,28 +40,7 @@ void validate_points(const Eigen::Matrix3Xd& model,
                      const Eigen::VectorXd& w, const AffinePoseOptions& options,
                      const char* image_name) {
   internal::check_options(options);
-  if (model.cols() != image.cols()) {
-    std::ostringstream out;
-    out << "model_object has " << model.cols() << " points but " << image_name << " has "
-        << image.cols();
-    throw InvalidArgument(out.str());
-  }
-  if (model.cols() < 3) {
-    throw InvalidArgument("model_object: need at least 3 points, got " +
-                          std::to_string(model.cols()));
-  }
-  check_weights(w, model.cols());
-  for (Eigen::Index i = 0; i < model.cols(); ++i) {
-    if (!model.col(i).allFinite())
-      throw InvalidArgument(indexed("model_object", i) + " is not finite");
-    if (!image.col(i).allFinite()) throw InvalidArgument(indexed(image_name, i) + " is not finite");
-    for (Eigen::Index j = 0; j < i; ++j) {
-      if (model.col(i) == model.col(j)) {
-        throw InvalidArgument("model_object: points " + std::to_string(j) + " and " +
-                              std::to_string(i) + " coincide");
-      }
-    }
-  }
+  internal::check_pose_points<Rows>(model, image, w, image_name);
 }
 
 /// The pairs of options.free_vectors; kAllPairs beyond orientation.max_vectors is refused.

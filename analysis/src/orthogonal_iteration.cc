@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "perspective_start.h"
 #include "pose_refinement.h"
 #include "vantage/analysis/affine_pose.h"
 #include "vantage/analysis/common.h"
@@ -259,39 +260,48 @@ OrthogonalIterationResult iterate(const Eigen::Matrix3Xd& model, const Eigen::Ma
   return result;
 }
 
-/// The start of a (near-)planar model: Prop. 8 (affine_pose), whose rotation carries the tilt.
-/// The weak-perspective start cannot: with coplanar points the centred model and the centred
-/// rays both lie in planes, so its cross-covariance only determines a rotation about the axis.
-/// *found is false when the affine estimate is degenerate or refuses the input (coincident
+/// The two starts of a (near-)planar model: IPPE's pair of poses from the plane's homography
+/// (perspective_start.h), exact on noise-free images; else Prop. 8 (affine_pose()) and its
+/// Necker mirror, whose rotation carries the tilt. The weak-perspective start cannot: with
+/// coplanar points the centred model and the centred rays both lie in planes, so its
+/// cross-covariance only determines a rotation about the axis. *found is false when neither
+/// applies (a degenerate homography and a degenerate or refused affine estimate: coincident
 /// model points, which orthogonal iteration itself accepts).
-Eigen::Matrix3d planar_start(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& image,
-                             const Eigen::VectorXd& weights,
-                             const OrthogonalIterationOptions& options, bool* found) {
+void planar_starts(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& image,
+                   const Eigen::VectorXd& weights, const OrthogonalIterationOptions& options,
+                   const internal::PlaneFit& plane, Eigen::Matrix3d starts[2], bool* found) {
+  const Eigen::Matrix2Xd centred = image.colwise() - options.camera.principal_point;
+  internal::PinholeStart ippe[2];
+  if (internal::planar_starts(model, centred, weights, options.camera.focal_length, plane, ippe) ==
+      2) {
+    starts[0] = ippe[0].R;
+    starts[1] = ippe[1].R;
+    *found = true;
+    return;
+  }
   AffinePoseOptions affine;
   affine.camera = options.camera;
   try {
     const AffinePoseResult start = affine_pose(model, image, weights, affine);
     *found = start.status == PoseStatus::kOk;
-    return start.R_camera_object;
+    starts[0] = start.R_camera_object;
   } catch (const InvalidArgument&) {
     *found = false;
-    return Eigen::Matrix3d::Identity();
   }
+  Eigen::Vector3d unused;
+  if (*found)
+    internal::necker_mirror(plane, starts[0], Eigen::Vector3d::Zero(), &starts[1], &unused);
 }
 
-/// Iterates from `start` and from its Necker mirror and keeps the better of the two (smaller E,
-/// then fewer points behind the camera), recording the other as the alternative.
-OrthogonalIterationResult with_necker_branch(const Eigen::Matrix3Xd& model,
-                                             const Eigen::Matrix2Xd& image,
-                                             const Eigen::VectorXd& weights, const Setup& setup,
-                                             const internal::PlaneFit& plane,
-                                             const Eigen::Matrix3d& start,
-                                             const OrthogonalIterationOptions& options) {
-  OrthogonalIterationResult first = iterate(model, image, weights, setup, start, options);
-  Eigen::Matrix3d mirror_R;
-  Eigen::Vector3d unused;
-  internal::necker_mirror(plane, start, Eigen::Vector3d::Zero(), &mirror_R, &unused);
-  OrthogonalIterationResult second = iterate(model, image, weights, setup, mirror_R, options);
+/// Iterates from both starts and keeps the better of the two (smaller E, then fewer points
+/// behind the camera), recording the other as the alternative.
+OrthogonalIterationResult with_two_branches(const Eigen::Matrix3Xd& model,
+                                            const Eigen::Matrix2Xd& image,
+                                            const Eigen::VectorXd& weights, const Setup& setup,
+                                            const Eigen::Matrix3d starts[2],
+                                            const OrthogonalIterationOptions& options) {
+  OrthogonalIterationResult first = iterate(model, image, weights, setup, starts[0], options);
+  OrthogonalIterationResult second = iterate(model, image, weights, setup, starts[1], options);
   const auto worse = [](const OrthogonalIterationResult& a, const OrthogonalIterationResult& b) {
     if (a.status == PoseStatus::kDegenerate) return b.status != PoseStatus::kDegenerate;
     if (a.points_behind_camera != b.points_behind_camera)
@@ -339,9 +349,14 @@ OrthogonalIterationResult orthogonal_iteration_pose(const Eigen::Matrix3Xd& mode
     return iterate(model_object, image, weights, setup, start, options);
   }
   bool found = false;
-  const Eigen::Matrix3d affine_start = planar_start(model_object, image, weights, options, &found);
-  return with_necker_branch(model_object, image, weights, setup, plane,
-                            found ? affine_start : start, options);
+  Eigen::Matrix3d starts[2];
+  planar_starts(model_object, image, weights, options, plane, starts, &found);
+  if (!found) {
+    starts[0] = start;
+    Eigen::Vector3d unused;
+    internal::necker_mirror(plane, start, Eigen::Vector3d::Zero(), &starts[1], &unused);
+  }
+  return with_two_branches(model_object, image, weights, setup, starts, options);
 }
 
 OrthogonalIterationResult orthogonal_iteration_pose(const Eigen::Matrix3Xd& model_object,

@@ -3,7 +3,6 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
-#include <Eigen/SVD>
 #include <cmath>
 #include <limits>
 
@@ -243,42 +242,6 @@ void necker_mirror(const PlaneFit& plane, const Eigen::Matrix3d& R, const Eigen:
       Eigen::Matrix3d::Identity() - 2.0 * plane.normal * plane.normal.transpose();
   *R_mirror = Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal() * R * householder;
   *p_mirror = R * plane.centroid + p - *R_mirror * plane.centroid;
-}
-
-bool homography_start(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& centred,
-                      double focal_length, const PlaneFit& plane, Eigen::Matrix3d* R,
-                      Eigen::Vector3d* p) {
-  const Eigen::Index n = model.cols();
-  if (n < 4) return false;
-  Eigen::Matrix3d basis;  // columns u, v, n: plane coordinates a = u . (z - c), b = v . (z - c)
-  basis.col(2) = plane.normal;
-  basis.col(0) = plane.normal.unitOrthogonal();
-  basis.col(1) = plane.normal.cross(basis.col(0));
-  Eigen::MatrixXd A(2 * n, 9);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const Eigen::Vector3d local = basis.transpose() * (model.col(i) - plane.centroid);
-    const Eigen::RowVector3d m(local.x(), local.y(), 1.0);
-    const double x = centred(0, i) / focal_length;
-    const double y = centred(1, i) / focal_length;
-    A.row(2 * i) << m, Eigen::RowVector3d::Zero(), -x * m;
-    A.row(2 * i + 1) << Eigen::RowVector3d::Zero(), m, -y * m;
-  }
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
-  const Eigen::Matrix<double, 9, 1> h = svd.matrixV().col(8);
-  Eigen::Matrix3d H;
-  H << h(0), h(1), h(2), h(3), h(4), h(5), h(6), h(7), h(8);
-  const double scale = 0.5 * (H.col(0).norm() + H.col(1).norm());
-  if (!(scale > 0.0) || !H.allFinite()) return false;
-  H /= scale;
-  if (H(2, 2) < 0.0) H = -H;  // the centroid in front of the camera
-  Eigen::Matrix3d M;
-  M << H.col(0), H.col(1), H.col(0).cross(H.col(1));
-  const Eigen::JacobiSVD<Eigen::Matrix3d> polar(M, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Eigen::Matrix3d rotation = polar.matrixU() * polar.matrixV().transpose();
-  if (rotation.determinant() < 0.0) return false;
-  *R = rotation * basis.transpose();
-  *p = H.col(2) - *R * plane.centroid;
-  return R->allFinite() && p->allFinite();
 }
 
 }  // namespace vantage::internal
