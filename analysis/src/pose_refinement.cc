@@ -36,15 +36,17 @@ struct Normal {
   double sse;
 };
 
-/// The singular-direction test: the smallest eigenvalue of the diagonally scaled J^T J.
+/// The singular-direction test: the smallest eigenvalue of the diagonally scaled J^T J is at
+/// most kSingular, i.e. (scaled - kSingular I) is not positive definite, which Cholesky decides
+/// (backward stable: rounding moves the threshold by ~1e-15, far below kSingular).
 bool singular(const Matrix6d& jtj) {
   const Vector6d d = jtj.diagonal();
   if (!(d.minCoeff() > 0.0)) return true;
   const Vector6d s = d.cwiseSqrt().cwiseInverse();
-  const Matrix6d scaled = s.asDiagonal() * jtj * s.asDiagonal();
-  const Eigen::SelfAdjointEigenSolver<Matrix6d> eigen(scaled, Eigen::EigenvaluesOnly);
   constexpr double kSingular = 1e-12;  // relative to the unit diagonal of the scaled matrix
-  return !(eigen.eigenvalues()(0) > kSingular);
+  Matrix6d shifted = s.asDiagonal() * jtj * s.asDiagonal();
+  shifted.diagonal().array() -= kSingular;
+  return Eigen::LLT<Matrix6d>(shifted).info() != Eigen::Success;
 }
 
 /// Generic Levenberg-Marquardt with Marquardt's diagonal scaling. Model provides
@@ -64,7 +66,7 @@ State levenberg_marquardt(const Model& model, State state, const LmSettings& set
     }
     Matrix6d a = n.jtj;
     a.diagonal() += lambda * n.jtj.diagonal().cwiseMax(1e-300);
-    const Vector6d delta = -a.ldlt().solve(n.jtr);
+    const Vector6d delta = -a.llt().solve(n.jtr);
     const State next = model.step(state, delta);
     const double sse = model.sse(next);
     if (sse <= n.sse) {
