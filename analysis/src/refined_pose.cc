@@ -92,21 +92,29 @@ internal::LmPose necker_mirror_of(const Problem& problem, const internal::LmPose
   return mirror;
 }
 
-/// The closed-form pinhole starts (perspective_start.h): POSIT, or IPPE's two poses for
-/// (near-)planar models. Empty when they do not apply.
+/// Planarity above which POSIT's start is used (below it its 4 x 4 system is too close to
+/// singular and the plane's homography describes the points).
+constexpr double kPositPlanarity = 0.01;
+
+/// The closed-form pinhole starts (perspective_start.h): POSIT, with its Necker mirror for
+/// near-planar models, or IPPE's two poses for (almost) exactly planar ones. Empty when they do
+/// not apply.
 std::vector<internal::LmPose> closed_form_starts(const Problem& problem) {
   std::vector<internal::LmPose> starts;
-  internal::PinholeStart start;
   const double f = problem.options.camera.focal_length;
-  if (problem.planar()) {
-    internal::PinholeStart planar[2];
-    const int count = internal::planar_starts(problem.z, problem.centred, problem.weights, f,
-                                              problem.plane, planar);
-    for (int k = 0; k < count; ++k) starts.push_back(from(planar[k]));
-  } else if (internal::scaled_orthographic_start(problem.z, problem.centred, problem.weights, f,
-                                                 internal::PositSettings{}, &start)) {
+  internal::PinholeStart start;
+  if (problem.plane.planarity > kPositPlanarity &&
+      internal::scaled_orthographic_start(problem.z, problem.centred, problem.weights, f,
+                                          internal::PositSettings{}, &start)) {
     starts.push_back(from(start));
+    if (problem.planar()) starts.push_back(necker_mirror_of(problem, starts.front()));
+    return starts;
   }
+  if (!problem.planar()) return starts;
+  internal::PinholeStart planar[2];
+  const int count = internal::planar_starts(problem.z, problem.centred, problem.weights, f,
+                                            problem.plane, planar);
+  for (int k = 0; k < count; ++k) starts.push_back(from(planar[k]));
   return starts;
 }
 

@@ -13,19 +13,20 @@
 ///    by Levenberg-Marquardt on SO(3) x R^3: the maximum-likelihood pose under independent
 ///    Gaussian pixel noise of variance sigma^2 / w_i. The start (PerspectiveStart) is by default
 ///    a closed form that is exact on noise-free pinhole images and O(n): POSIT (the scaled
-///    orthographic camera corrected for perspective) for non-planar models, the plane's
-///    homography and its Necker mirror for (near-)planar ones; Prop. 8 (affine_pose(), 2^m sign
-///    patterns) with p_z = alpha f when those do not apply (n = 3, degenerate systems) or on
-///    request.
+///    orthographic camera corrected for perspective) for non-planar models, IPPE's two poses
+///    from the plane's homography for (almost) exactly planar ones; Prop. 8 (affine_pose(), 2^m
+///    sign patterns) with p_z = alpha f when those do not apply (n = 3, degenerate systems) or
+///    on request.
 ///
 /// Frames: x_camera = R_camera_object * x_object + p_camera_object; the camera looks along +z.
 ///
 /// Two branches. A (near-)planar model (planarity sigma_3 / sigma_1 of the centred points <=
 /// necker_planarity) has two poses that the affine image cannot tell apart, the Necker pair
 /// R' = diag(1, 1, -1) R (I - 2 n n^T) (n the plane normal). Both are refined (from Prop. 8 and
-/// its mirror for affine_refined_pose(); from the homography pose and its mirror for
-/// perspective_pose(), plus Prop. 8 and its mirror with PerspectiveStart::kProp8); the one with
-/// the smaller residual is returned and the best distinct other one is `alternative`.
+/// its mirror for affine_refined_pose(); for perspective_pose() from POSIT and its mirror, or
+/// from IPPE's pair, or with PerspectiveStart::kProp8 from Prop. 8, its mirror and the better
+/// IPPE pose); the one with the smaller residual is returned and the best distinct other one is
+/// `alternative`.
 /// `ambiguous` follows BranchOptions (pose_estimate.h): always for exactly planar models under
 /// the affine model (the pair is exact there), and under the pinhole model only when
 /// perspective does not separate the two beyond the ratio.
@@ -49,7 +50,8 @@ namespace vantage {
 
 /// Where perspective_pose() starts the refinement.
 enum class PerspectiveStart {
-  /// POSIT (non-planar) or the homography and its Necker mirror (planarity <= necker_planarity):
+  /// POSIT (planarity > 0.01; with its Necker mirror when planarity <= necker_planarity) or
+  /// IPPE's two poses from the plane's homography (planarity <= 0.01 <= necker_planarity):
   /// O(n), exact on noise-free pinhole images; Prop. 8 when they do not apply.
   kClosedForm,
   /// Prop. 8 (2^m sign patterns); for planar models also its Necker mirror and the homography.
