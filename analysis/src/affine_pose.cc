@@ -6,7 +6,6 @@
 #include <sstream>
 #include <string>
 
-#include "affine_checks.h"
 #include "affine_sign_enumeration.h"
 #include "vantage/analysis/affine_pose.h"
 #include "vantage/analysis/common.h"
@@ -14,8 +13,6 @@
 namespace vantage {
 
 using internal::check_count;
-using internal::check_weights;
-using internal::indexed;
 using internal::residual_direct;
 using internal::weight_at;
 
@@ -39,8 +36,9 @@ void validate_points(const Eigen::Matrix3Xd& model,
                      const Eigen::Matrix<double, Rows, Eigen::Dynamic>& image,
                      const Eigen::VectorXd& w, const AffinePoseOptions& options,
                      const char* image_name) {
-  internal::check_options(options);
-  internal::check_pose_points<Rows>(model, image, w, image_name);
+  internal::check_options("options", options);
+  internal::check_correspondences("model_object", model, image_name, image, w, 3);
+  internal::check_distinct_columns("model_object", model);
 }
 
 /// The pairs of options.free_vectors; kAllPairs beyond orientation.max_vectors is refused.

@@ -8,12 +8,10 @@
 #include <cmath>
 #include <limits>
 
+#include "vantage/analysis/internal/checks.h"
+
 namespace vantage::internal {
 namespace {
-
-inline double weight_at(const Eigen::VectorXd& w, Eigen::Index i) {
-  return w.size() == 0 ? 1.0 : w(i);
-}
 
 /// Reciprocal condition number below which a normal matrix counts as singular.
 constexpr double kSingularRcond = 1e-12;

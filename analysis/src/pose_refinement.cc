@@ -6,15 +6,13 @@
 #include <cmath>
 #include <limits>
 
+#include "vantage/analysis/internal/checks.h"
+
 namespace vantage::internal {
 namespace {
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 using Vector6d = Eigen::Matrix<double, 6, 1>;
-
-inline double weight_at(const Eigen::VectorXd& w, Eigen::Index i) {
-  return w.size() == 0 ? 1.0 : w(i);
-}
 
 inline Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
   Eigen::Matrix3d s;

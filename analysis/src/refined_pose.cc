@@ -7,10 +7,10 @@
 #include <sstream>
 #include <vector>
 
-#include "affine_checks.h"
 #include "perspective_start.h"
 #include "pose_refinement.h"
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/internal/checks.h"
 #include "vantage/analysis/quaternion.h"
 
 namespace vantage {
@@ -222,7 +222,8 @@ RefinedPoseResult refined_pose(Model model, const Eigen::Matrix3Xd& z,
   const bool pinhole = model == Model::kPinhole;
   if (pinhole && !options.camera.has_focal_length())
     throw InvalidArgument("options: camera.focal_length must be > 0 for the perspective pose");
-  internal::check_pose_points<2>(z, image, weights, "image");
+  internal::check_correspondences("model_object", z, "image", image, weights, 3);
+  internal::check_distinct_columns("model_object", z);
   Problem problem{model,
                   z,
                   image,

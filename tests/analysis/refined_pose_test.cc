@@ -243,7 +243,7 @@ TEST(PerspectivePose, BadInputThrowsNamingTheArgument) {
   EXPECT_THAT(message_of([&] { perspective_pose(s.model, s.image, {}, bad); }),
               HasSubstr("branches.ambiguity_ratio"));
   EXPECT_THAT(message_of([&] { affine_refined_pose(s.model, s.image.leftCols(5)); }),
-              HasSubstr("image has 5"));
+              HasSubstr("image: has 5"));
 }
 
 }  // namespace
