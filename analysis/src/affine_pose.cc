@@ -70,12 +70,6 @@ void weighted_means(const Eigen::Matrix3Xd& model,
   *measured_mean /= weight_sum;
 }
 
-/// The baselines solve one Theorem-1 problem, so kAuto means all pairs for them (no cliff).
-FreeVectorSet without_enumeration(const AffinePoseOptions& options) {
-  return options.free_vectors == FreeVectorSet::kAuto ? FreeVectorSet::kAllPairs
-                                                      : options.free_vectors;
-}
-
 OrientationOptions theorem1_options(const AffinePoseOptions& options) {
   OrientationOptions theorem1;
   theorem1.eigen = options.orientation.eigen;
@@ -144,6 +138,10 @@ void finish_affine_pose(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& i
 
 }  // namespace
 
+FreeVectorSet single_pattern_free_vectors(FreeVectorSet requested) {
+  return requested == FreeVectorSet::kAuto ? FreeVectorSet::kAllPairs : requested;
+}
+
 FreeVectors affine_free_vectors(const Eigen::Matrix3Xd& model_object, const Eigen::Matrix2Xd& image,
                                 const Eigen::VectorXd& weights, const AffinePoseOptions& options) {
   validate_points<2>(model_object, image, weights, options, "image");
@@ -170,7 +168,8 @@ AffinePoseResult standard_affine_pose(const Eigen::Matrix3Xd& model_object,
                                       const AffinePoseOptions& options) {
   validate_points<2>(model_object, image, weights, options, "image");
   const FreeVectors free = build_free_vectors<2>(
-      model_object, image, weights, free_vector_pairs(model_object, without_enumeration(options)),
+      model_object, image, weights,
+      free_vector_pairs(model_object, single_pattern_free_vectors(options.free_vectors)),
       options.pair_weighting);
   Eigen::Matrix3Xd v = Eigen::Matrix3Xd::Zero(3, free.z_object.cols());
   v.topRows<2>() = free.d;
@@ -205,7 +204,8 @@ PoseResult full_3d_pose(const Eigen::Matrix3Xd& model_object, const Eigen::Matri
   validate_points<3>(model_object, measured, weights, options, "measured");
   const FreeVectorsOf<3> free = build_free_vectors<3>(
       model_object, measured, weights,
-      free_vector_pairs(model_object, without_enumeration(options)), options.pair_weighting);
+      free_vector_pairs(model_object, single_pattern_free_vectors(options.free_vectors)),
+      options.pair_weighting);
   const Eigen::Matrix3Xd& z = free.z_object;
   const Eigen::Matrix3Xd& m = free.d;
   const Eigen::VectorXd& w = free.weights;
