@@ -2,8 +2,8 @@
 // oi-foam|oi-svd|two-view [--focal F] [--principal-point CX CY] [--free-vectors auto|all|spanning]
 // [--json]`: one pose estimator on a correspondence file. Affine image (McInroy et al.): Prop. 8,
 // its refinement on the affine model and the paper's two baselines; perspective image: the
-// pinhole refinement (LM from Prop. 8) and orthogonal iteration (Wu & Wu); two views: Haralick's
-// linear algorithm. Every method prints the same pose fields (json/pose_json.cc).
+// pinhole refinement (LM from POSIT / IPPE) and orthogonal iteration (Wu & Wu); two views:
+// Haralick's linear algorithm. Every method prints the same pose fields (json/pose_json.cc).
 
 #include <cmath>
 #include <iostream>
@@ -192,7 +192,7 @@ Outcome run_refined(const PoseArgs& args, const io::CorrespondenceFile& file) {
 
   std::ostringstream text;
   text << header(args, file.model.cols(),
-                 perspective ? "pinhole refinement (LM on SO(3) x R^3 from Prop. 8): "
+                 perspective ? "pinhole refinement (LM on SO(3) x R^3 from POSIT / IPPE): "
                                "image = c + f (x, y) / z of R * model + p"
                              : "affine refinement (LM on SO(3) x R^3 from Prop. 8): "
                                "alpha * (image - c) = P (R * model + p)")

@@ -8,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include "affine_checks.h"
 #include "affine_sign_enumeration.h"
 #include "vantage/analysis/affine_pose.h"
 #include "vantage/analysis/common.h"
@@ -18,9 +17,10 @@ namespace vantage {
 using internal::residual_direct;
 
 bool AffineCrossCheckOptions::is_valid(std::string* why) const {
-  if (!(starts >= 1)) return internal::invalid(why, "starts must be >= 1");
-  if (!(x_tolerance > 0.0)) return internal::invalid(why, "x_tolerance must be > 0");
-  if (!(max_evaluations >= 1)) return internal::invalid(why, "max_evaluations must be >= 1");
+  if (!(starts >= 1)) return internal::invalid_option(why, "starts", "must be >= 1");
+  if (!(x_tolerance > 0.0)) return internal::invalid_option(why, "x_tolerance", "must be > 0");
+  if (!(max_evaluations >= 1))
+    return internal::invalid_option(why, "max_evaluations", "must be >= 1");
   return true;
 }
 
@@ -53,9 +53,9 @@ AffineCrossCheckResult minimize_affine_residual(const Eigen::Matrix3Xd& z_object
                                                 const Eigen::Matrix2Xd& d_image, double alpha,
                                                 const Eigen::VectorXd& weights,
                                                 const AffineCrossCheckOptions& options) {
-  internal::check_options(options);
+  internal::check_options("options", options);
   internal::validate_vectors<2>(z_object, d_image, weights, 2, "d_image");
-  internal::check_alpha(alpha);
+  internal::check_positive_finite("alpha", alpha);
   const Eigen::Matrix2Xd d_object = alpha * d_image;
   const Eigen::VectorXd w = weights.size() == 0 ? Eigen::VectorXd::Ones(z_object.cols()) : weights;
 

@@ -7,7 +7,6 @@
 #include <sstream>
 #include <vector>
 
-#include "affine_checks.h"
 #include "affine_sign_enumeration.h"
 #include "vantage/analysis/affine_pose.h"
 #include "vantage/analysis/common.h"
@@ -15,9 +14,7 @@
 namespace vantage {
 
 using internal::AffineProblem;
-using internal::check_alpha;
 using internal::check_count;
-using internal::check_options;
 using internal::validate_vectors;
 
 const char* to_string(SignEnumeration enumeration) {
@@ -46,17 +43,17 @@ const char* to_string(AffineStatus status) {
 
 bool AffineOrientationOptions::is_valid(std::string* why) const {
   if (!(max_vectors >= 1 && max_vectors <= kMaxAffineVectorsCeiling))
-    return internal::invalid(why, "max_vectors must be in [1, 30]");
+    return internal::invalid_option(why, "max_vectors", "must be in [1, 30]");
   if (!(in_plane_tolerance >= 0.0 && in_plane_tolerance < 1.0))
-    return internal::invalid(why, "in_plane_tolerance must be in [0, 1)");
+    return internal::invalid_option(why, "in_plane_tolerance", "must be in [0, 1)");
   if (!(ambiguity_tolerance >= 0.0))
-    return internal::invalid(why, "ambiguity_tolerance must be >= 0");
+    return internal::invalid_option(why, "ambiguity_tolerance", "must be >= 0");
   if (!(distinct_rotation_angle >= 0.0))
-    return internal::invalid(why, "distinct_rotation_angle must be >= 0");
+    return internal::invalid_option(why, "distinct_rotation_angle", "must be >= 0");
   if (!(degenerate_gap >= 0.0 && degenerate_gap < 1.0))
-    return internal::invalid(why, "degenerate_gap must be in [0, 1)");
+    return internal::invalid_option(why, "degenerate_gap", "must be in [0, 1)");
   if (!(eigen.fallback_relative_gap >= 0.0 && eigen.fallback_relative_gap < 1.0))
-    return internal::invalid(why, "eigen.fallback_relative_gap must be in [0, 1)");
+    return internal::invalid_option(why, "eigen.fallback_relative_gap", "must be in [0, 1)");
   return true;
 }
 
@@ -158,9 +155,9 @@ AffineOrientationResult affine_orientation(const Eigen::Matrix3Xd& z_object,
                                            const Eigen::Matrix2Xd& d_image, double alpha,
                                            const Eigen::VectorXd& weights,
                                            const AffineOrientationOptions& options) {
-  check_options(options);
+  internal::check_options("options", options);
   validate_vectors<2>(z_object, d_image, weights, 2, "d_image");
-  check_alpha(alpha);
+  internal::check_positive_finite("alpha", alpha);
   check_count(z_object.cols(), options, "");
   return solve_affine(z_object, d_image, alpha, weights, options);
 }
@@ -185,7 +182,7 @@ LubScale lub_scale(const Eigen::Matrix3Xd& z_object, const Eigen::Matrix2Xd& d_i
 ProjectionFractions projection_fractions(const Eigen::Matrix3Xd& z_object,
                                          const Eigen::Matrix2Xd& d_image, double alpha) {
   validate_vectors<2>(z_object, d_image, {}, 1, "d_image");
-  check_alpha(alpha);
+  internal::check_positive_finite("alpha", alpha);
   ProjectionFractions out;
   out.p.resize(z_object.cols());
   for (Eigen::Index i = 0; i < z_object.cols(); ++i) {
@@ -203,7 +200,7 @@ AffineOrientationResult affine_orientation_unknown_scale(const Eigen::Matrix3Xd&
                                                          const Eigen::Matrix2Xd& d_image,
                                                          const Eigen::VectorXd& weights,
                                                          const AffineOrientationOptions& options) {
-  check_options(options);
+  internal::check_options("options", options);
   validate_vectors<2>(z_object, d_image, weights, 2, "d_image");
   check_count(z_object.cols(), options, "");
   return solve_affine(z_object, d_image, lub_scale(z_object, d_image).alpha, weights, options);
@@ -213,7 +210,7 @@ double affine_residual(const Eigen::Matrix3Xd& z_object, const Eigen::Matrix2Xd&
                        double alpha, const Eigen::Matrix3d& R_camera_object,
                        const Eigen::VectorXd& weights) {
   validate_vectors<2>(z_object, d_image, weights, 1, "d_image");
-  check_alpha(alpha);
+  internal::check_positive_finite("alpha", alpha);
   return residual_direct(z_object, alpha * d_image, weights, R_camera_object);
 }
 

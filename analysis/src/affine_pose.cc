@@ -6,7 +6,6 @@
 #include <sstream>
 #include <string>
 
-#include "affine_checks.h"
 #include "affine_sign_enumeration.h"
 #include "vantage/analysis/affine_pose.h"
 #include "vantage/analysis/common.h"
@@ -14,8 +13,6 @@
 namespace vantage {
 
 using internal::check_count;
-using internal::check_weights;
-using internal::indexed;
 using internal::residual_direct;
 using internal::weight_at;
 
@@ -39,29 +36,9 @@ void validate_points(const Eigen::Matrix3Xd& model,
                      const Eigen::Matrix<double, Rows, Eigen::Dynamic>& image,
                      const Eigen::VectorXd& w, const AffinePoseOptions& options,
                      const char* image_name) {
-  internal::check_options(options);
-  if (model.cols() != image.cols()) {
-    std::ostringstream out;
-    out << "model_object has " << model.cols() << " points but " << image_name << " has "
-        << image.cols();
-    throw InvalidArgument(out.str());
-  }
-  if (model.cols() < 3) {
-    throw InvalidArgument("model_object: need at least 3 points, got " +
-                          std::to_string(model.cols()));
-  }
-  check_weights(w, model.cols());
-  for (Eigen::Index i = 0; i < model.cols(); ++i) {
-    if (!model.col(i).allFinite())
-      throw InvalidArgument(indexed("model_object", i) + " is not finite");
-    if (!image.col(i).allFinite()) throw InvalidArgument(indexed(image_name, i) + " is not finite");
-    for (Eigen::Index j = 0; j < i; ++j) {
-      if (model.col(i) == model.col(j)) {
-        throw InvalidArgument("model_object: points " + std::to_string(j) + " and " +
-                              std::to_string(i) + " coincide");
-      }
-    }
-  }
+  internal::check_options("options", options);
+  internal::check_correspondences("model_object", model, image_name, image, w, 3);
+  internal::check_distinct_columns("model_object", model);
 }
 
 /// The pairs of options.free_vectors; kAllPairs beyond orientation.max_vectors is refused.
@@ -91,12 +68,6 @@ void weighted_means(const Eigen::Matrix3Xd& model,
   }
   *model_mean /= weight_sum;
   *measured_mean /= weight_sum;
-}
-
-/// The baselines solve one Theorem-1 problem, so kAuto means all pairs for them (no cliff).
-FreeVectorSet without_enumeration(const AffinePoseOptions& options) {
-  return options.free_vectors == FreeVectorSet::kAuto ? FreeVectorSet::kAllPairs
-                                                      : options.free_vectors;
 }
 
 OrientationOptions theorem1_options(const AffinePoseOptions& options) {
@@ -167,6 +138,10 @@ void finish_affine_pose(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& i
 
 }  // namespace
 
+FreeVectorSet single_pattern_free_vectors(FreeVectorSet requested) {
+  return requested == FreeVectorSet::kAuto ? FreeVectorSet::kAllPairs : requested;
+}
+
 FreeVectors affine_free_vectors(const Eigen::Matrix3Xd& model_object, const Eigen::Matrix2Xd& image,
                                 const Eigen::VectorXd& weights, const AffinePoseOptions& options) {
   validate_points<2>(model_object, image, weights, options, "image");
@@ -193,7 +168,8 @@ AffinePoseResult standard_affine_pose(const Eigen::Matrix3Xd& model_object,
                                       const AffinePoseOptions& options) {
   validate_points<2>(model_object, image, weights, options, "image");
   const FreeVectors free = build_free_vectors<2>(
-      model_object, image, weights, free_vector_pairs(model_object, without_enumeration(options)),
+      model_object, image, weights,
+      free_vector_pairs(model_object, single_pattern_free_vectors(options.free_vectors)),
       options.pair_weighting);
   Eigen::Matrix3Xd v = Eigen::Matrix3Xd::Zero(3, free.z_object.cols());
   v.topRows<2>() = free.d;
@@ -228,7 +204,8 @@ PoseResult full_3d_pose(const Eigen::Matrix3Xd& model_object, const Eigen::Matri
   validate_points<3>(model_object, measured, weights, options, "measured");
   const FreeVectorsOf<3> free = build_free_vectors<3>(
       model_object, measured, weights,
-      free_vector_pairs(model_object, without_enumeration(options)), options.pair_weighting);
+      free_vector_pairs(model_object, single_pattern_free_vectors(options.free_vectors)),
+      options.pair_weighting);
   const Eigen::Matrix3Xd& z = free.z_object;
   const Eigen::Matrix3Xd& m = free.d;
   const Eigen::VectorXd& w = free.weights;

@@ -8,13 +8,37 @@
 #include <Eigen/StdVector>
 #include <cstdint>
 #include <limits>
+#include <sstream>
+#include <string>
 #include <vector>
 
-#include "affine_checks.h"
 #include "vantage/analysis/affine_pose.h"
+#include "vantage/analysis/internal/checks.h"
 #include "vantage/analysis/quaternion.h"
 
 namespace vantage::internal {
+
+/// Checks of the vector problems (Prop. 4, Lemma 7, LUB, cross-check): d has one column per
+/// column of z, at least min_count of them, z columns finite and non-zero, d columns finite.
+template <int Rows>
+void validate_vectors(const Eigen::Matrix3Xd& z,
+                      const Eigen::Matrix<double, Rows, Eigen::Dynamic>& d,
+                      const Eigen::VectorXd& w, Eigen::Index min_count, const char* d_name) {
+  check_count_matches(d_name, d.cols(), z.cols(), "z_object");
+  check_min_count("z_object", z.cols(), min_count, "vectors");
+  check_weights("weights", w, z.cols(), "z_object");
+  check_nonzero_finite_columns("z_object", z);
+  check_finite_columns(d_name, d);
+}
+
+/// "z_object: <n> vectors exceed options.max_vectors = <m> (...)<hint>" when n > max_vectors.
+inline void check_count(Eigen::Index n, const AffineOrientationOptions& options, const char* hint) {
+  if (n <= options.max_vectors) return;
+  std::ostringstream out;
+  out << n << " vectors exceed options.max_vectors = " << options.max_vectors
+      << " (Prop. 4 solves 2^" << n << " problems)" << hint;
+  fail("z_object", out.str());
+}
 
 /// Everything the per-pattern work needs, in object units (d scaled by alpha).
 struct AffineProblem {

@@ -82,4 +82,14 @@ void check_unit_vector(std::string_view arg, const Eigen::Vector3d& v, double to
   fail(arg, "must be a finite unit vector");
 }
 
+void check_distinct_columns(std::string_view arg, const Eigen::Matrix3Xd& points) {
+  for (Eigen::Index i = 0; i < points.cols(); ++i) {
+    for (Eigen::Index j = 0; j < i; ++j) {
+      if (points.col(i) == points.col(j)) {
+        fail(arg, "points " + std::to_string(j) + " and " + std::to_string(i) + " coincide");
+      }
+    }
+  }
+}
+
 }  // namespace vantage::internal

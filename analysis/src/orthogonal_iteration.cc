@@ -6,9 +6,11 @@
 #include <limits>
 #include <sstream>
 
+#include "perspective_start.h"
 #include "pose_refinement.h"
 #include "vantage/analysis/affine_pose.h"
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/internal/checks.h"
 
 namespace vantage {
 
@@ -43,35 +45,8 @@ namespace {
 void validate(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& image,
               const Eigen::VectorXd& weights, const OrthogonalIterationOptions& options,
               Eigen::Index min_points) {
-  std::string why;
-  if (!options.is_valid(&why)) throw InvalidArgument("options: " + why);
-  if (model.cols() != image.cols()) {
-    std::ostringstream out;
-    out << "model_object has " << model.cols() << " points but image has " << image.cols();
-    throw InvalidArgument(out.str());
-  }
-  if (model.cols() < min_points) {
-    std::ostringstream out;
-    out << "model_object: need at least " << min_points << " points, got " << model.cols();
-    throw InvalidArgument(out.str());
-  }
-  if (weights.size() != 0 && weights.size() != model.cols()) {
-    std::ostringstream out;
-    out << "weights has " << weights.size() << " entries, expected " << model.cols();
-    throw InvalidArgument(out.str());
-  }
-  for (Eigen::Index i = 0; i < model.cols(); ++i) {
-    if (!model.col(i).allFinite())
-      throw InvalidArgument("model_object[" + std::to_string(i) + "] is not finite");
-    if (!image.col(i).allFinite())
-      throw InvalidArgument("image[" + std::to_string(i) + "] is not finite");
-    if (weights.size() != 0 && !(weights(i) > 0.0 && std::isfinite(weights(i))))
-      throw InvalidArgument("weights[" + std::to_string(i) + "] must be positive and finite");
-  }
-}
-
-inline double weight(const Eigen::VectorXd& weights, Eigen::Index i) {
-  return weights.size() == 0 ? 1.0 : weights(i);
+  internal::check_options("options", options);
+  internal::check_correspondences("model_object", model, "image", image, weights, min_points);
 }
 
 /// The line of sight m_i = ((u - c_x) / f, (v - c_y) / f, 1).
@@ -91,8 +66,8 @@ double reprojection_rms(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& i
     const Eigen::Vector3d x = R * model.col(i) + p;
     if (!(x.z() > 0.0)) return std::numeric_limits<double>::infinity();
     const Eigen::Vector2d q = camera.principal_point + camera.focal_length / x.z() * x.head<2>();
-    sse += weight(weights, i) * (q - image.col(i)).squaredNorm();
-    weight_sum += weight(weights, i);
+    sse += internal::weight_at(weights, i) * (q - image.col(i)).squaredNorm();
+    weight_sum += internal::weight_at(weights, i);
   }
   return std::sqrt(sse / weight_sum);
 }
@@ -113,7 +88,7 @@ Setup make_setup(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& image,
   // sum_i w_i x_ik (V_i - I) for k = 0, 1, 2: the blocks of the factor before F^-1.
   Eigen::Matrix<double, 3, 9> blocks = Eigen::Matrix<double, 3, 9>::Zero();
   for (Eigen::Index i = 0; i < model.cols(); ++i) {
-    const double w = weight(weights, i);
+    const double w = internal::weight_at(weights, i);
     const Eigen::Vector3d m = ray(image, i, camera);
     const Eigen::Matrix3d v_minus_i =
         m * m.transpose() / m.squaredNorm() - Eigen::Matrix3d::Identity();
@@ -124,7 +99,7 @@ Setup make_setup(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& image,
   }
   s.model_mean /= s.weight_sum;
   for (Eigen::Index i = 0; i < model.cols(); ++i)
-    s.spread += weight(weights, i) * (model.col(i) - s.model_mean).squaredNorm();
+    s.spread += internal::weight_at(weights, i) * (model.col(i) - s.model_mean).squaredNorm();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(F, Eigen::EigenvaluesOnly);
   s.f_min_eigenvalue = eigen.eigenvalues()(0);
   const Eigen::Matrix3d f_inverse = F.inverse();
@@ -148,7 +123,7 @@ double collinearity_pass(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& 
   double error = 0.0;
   H->setZero();
   for (Eigen::Index i = 0; i < model.cols(); ++i) {
-    const double w = weight(weights, i);
+    const double w = internal::weight_at(weights, i);
     const Eigen::Vector3d x = R * model.col(i) + p;
     const Eigen::Vector3d m = ray(image, i, camera);
     const Eigen::Vector3d q = m * (m.dot(x) / m.squaredNorm());
@@ -177,13 +152,13 @@ Eigen::Matrix3d weak_perspective_start(const Eigen::Matrix3Xd& model, const Eige
   Eigen::Vector3d ray_mean = Eigen::Vector3d::Zero();
   double weight_sum = 0.0;
   for (Eigen::Index i = 0; i < model.cols(); ++i) {
-    ray_mean += weight(weights, i) * ray(image, i, options.camera);
-    weight_sum += weight(weights, i);
+    ray_mean += internal::weight_at(weights, i) * ray(image, i, options.camera);
+    weight_sum += internal::weight_at(weights, i);
   }
   ray_mean /= weight_sum;
   Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
   for (Eigen::Index i = 0; i < model.cols(); ++i) {
-    H.noalias() += weight(weights, i) * (model.col(i) - model_mean) *
+    H.noalias() += internal::weight_at(weights, i) * (model.col(i) - model_mean) *
                    (ray(image, i, options.camera) - ray_mean).transpose();
   }
   double gap = 0.0;
@@ -259,39 +234,48 @@ OrthogonalIterationResult iterate(const Eigen::Matrix3Xd& model, const Eigen::Ma
   return result;
 }
 
-/// The start of a (near-)planar model: Prop. 8 (affine_pose), whose rotation carries the tilt.
-/// The weak-perspective start cannot: with coplanar points the centred model and the centred
-/// rays both lie in planes, so its cross-covariance only determines a rotation about the axis.
-/// *found is false when the affine estimate is degenerate or refuses the input (coincident
+/// The two starts of a (near-)planar model: IPPE's pair of poses from the plane's homography
+/// (perspective_start.h), exact on noise-free images; else Prop. 8 (affine_pose()) and its
+/// Necker mirror, whose rotation carries the tilt. The weak-perspective start cannot: with
+/// coplanar points the centred model and the centred rays both lie in planes, so its
+/// cross-covariance only determines a rotation about the axis. *found is false when neither
+/// applies (a degenerate homography and a degenerate or refused affine estimate: coincident
 /// model points, which orthogonal iteration itself accepts).
-Eigen::Matrix3d planar_start(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& image,
-                             const Eigen::VectorXd& weights,
-                             const OrthogonalIterationOptions& options, bool* found) {
+void planar_starts(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& image,
+                   const Eigen::VectorXd& weights, const OrthogonalIterationOptions& options,
+                   const internal::PlaneFit& plane, Eigen::Matrix3d starts[2], bool* found) {
+  const Eigen::Matrix2Xd centred = image.colwise() - options.camera.principal_point;
+  internal::PinholeStart ippe[2];
+  if (internal::planar_starts(model, centred, weights, options.camera.focal_length, plane, ippe) ==
+      2) {
+    starts[0] = ippe[0].R;
+    starts[1] = ippe[1].R;
+    *found = true;
+    return;
+  }
   AffinePoseOptions affine;
   affine.camera = options.camera;
   try {
     const AffinePoseResult start = affine_pose(model, image, weights, affine);
     *found = start.status == PoseStatus::kOk;
-    return start.R_camera_object;
+    starts[0] = start.R_camera_object;
   } catch (const InvalidArgument&) {
     *found = false;
-    return Eigen::Matrix3d::Identity();
   }
+  Eigen::Vector3d unused;
+  if (*found)
+    internal::necker_mirror(plane, starts[0], Eigen::Vector3d::Zero(), &starts[1], &unused);
 }
 
-/// Iterates from `start` and from its Necker mirror and keeps the better of the two (smaller E,
-/// then fewer points behind the camera), recording the other as the alternative.
-OrthogonalIterationResult with_necker_branch(const Eigen::Matrix3Xd& model,
-                                             const Eigen::Matrix2Xd& image,
-                                             const Eigen::VectorXd& weights, const Setup& setup,
-                                             const internal::PlaneFit& plane,
-                                             const Eigen::Matrix3d& start,
-                                             const OrthogonalIterationOptions& options) {
-  OrthogonalIterationResult first = iterate(model, image, weights, setup, start, options);
-  Eigen::Matrix3d mirror_R;
-  Eigen::Vector3d unused;
-  internal::necker_mirror(plane, start, Eigen::Vector3d::Zero(), &mirror_R, &unused);
-  OrthogonalIterationResult second = iterate(model, image, weights, setup, mirror_R, options);
+/// Iterates from both starts and keeps the better of the two (smaller E, then fewer points
+/// behind the camera), recording the other as the alternative.
+OrthogonalIterationResult with_two_branches(const Eigen::Matrix3Xd& model,
+                                            const Eigen::Matrix2Xd& image,
+                                            const Eigen::VectorXd& weights, const Setup& setup,
+                                            const Eigen::Matrix3d starts[2],
+                                            const OrthogonalIterationOptions& options) {
+  OrthogonalIterationResult first = iterate(model, image, weights, setup, starts[0], options);
+  OrthogonalIterationResult second = iterate(model, image, weights, setup, starts[1], options);
   const auto worse = [](const OrthogonalIterationResult& a, const OrthogonalIterationResult& b) {
     if (a.status == PoseStatus::kDegenerate) return b.status != PoseStatus::kDegenerate;
     if (a.points_behind_camera != b.points_behind_camera)
@@ -339,9 +323,14 @@ OrthogonalIterationResult orthogonal_iteration_pose(const Eigen::Matrix3Xd& mode
     return iterate(model_object, image, weights, setup, start, options);
   }
   bool found = false;
-  const Eigen::Matrix3d affine_start = planar_start(model_object, image, weights, options, &found);
-  return with_necker_branch(model_object, image, weights, setup, plane,
-                            found ? affine_start : start, options);
+  Eigen::Matrix3d starts[2];
+  planar_starts(model_object, image, weights, options, plane, starts, &found);
+  if (!found) {
+    starts[0] = start;
+    Eigen::Vector3d unused;
+    internal::necker_mirror(plane, start, Eigen::Vector3d::Zero(), &starts[1], &unused);
+  }
+  return with_two_branches(model_object, image, weights, setup, starts, options);
 }
 
 OrthogonalIterationResult orthogonal_iteration_pose(const Eigen::Matrix3Xd& model_object,
@@ -367,8 +356,8 @@ Eigen::Matrix3d weak_perspective_rotation(const Eigen::Matrix3Xd& model_object,
   Eigen::Vector3d model_mean = Eigen::Vector3d::Zero();
   double weight_sum = 0.0;
   for (Eigen::Index i = 0; i < model_object.cols(); ++i) {
-    model_mean += weight(weights, i) * model_object.col(i);
-    weight_sum += weight(weights, i);
+    model_mean += internal::weight_at(weights, i) * model_object.col(i);
+    weight_sum += internal::weight_at(weights, i);
   }
   model_mean /= weight_sum;
   bool degenerate = false;

@@ -3,19 +3,16 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
-#include <Eigen/SVD>
 #include <cmath>
 #include <limits>
+
+#include "vantage/analysis/internal/checks.h"
 
 namespace vantage::internal {
 namespace {
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 using Vector6d = Eigen::Matrix<double, 6, 1>;
-
-inline double weight_at(const Eigen::VectorXd& w, Eigen::Index i) {
-  return w.size() == 0 ? 1.0 : w(i);
-}
 
 inline Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
   Eigen::Matrix3d s;
@@ -37,15 +34,17 @@ struct Normal {
   double sse;
 };
 
-/// The singular-direction test: the smallest eigenvalue of the diagonally scaled J^T J.
+/// The singular-direction test: the smallest eigenvalue of the diagonally scaled J^T J is at
+/// most kSingular, i.e. (scaled - kSingular I) is not positive definite, which Cholesky decides
+/// (backward stable: rounding moves the threshold by ~1e-15, far below kSingular).
 bool singular(const Matrix6d& jtj) {
   const Vector6d d = jtj.diagonal();
   if (!(d.minCoeff() > 0.0)) return true;
   const Vector6d s = d.cwiseSqrt().cwiseInverse();
-  const Matrix6d scaled = s.asDiagonal() * jtj * s.asDiagonal();
-  const Eigen::SelfAdjointEigenSolver<Matrix6d> eigen(scaled, Eigen::EigenvaluesOnly);
   constexpr double kSingular = 1e-12;  // relative to the unit diagonal of the scaled matrix
-  return !(eigen.eigenvalues()(0) > kSingular);
+  Matrix6d shifted = s.asDiagonal() * jtj * s.asDiagonal();
+  shifted.diagonal().array() -= kSingular;
+  return Eigen::LLT<Matrix6d>(shifted).info() != Eigen::Success;
 }
 
 /// Generic Levenberg-Marquardt with Marquardt's diagonal scaling. Model provides
@@ -65,7 +64,7 @@ State levenberg_marquardt(const Model& model, State state, const LmSettings& set
     }
     Matrix6d a = n.jtj;
     a.diagonal() += lambda * n.jtj.diagonal().cwiseMax(1e-300);
-    const Vector6d delta = -a.ldlt().solve(n.jtr);
+    const Vector6d delta = -a.llt().solve(n.jtr);
     const State next = model.step(state, delta);
     const double sse = model.sse(next);
     if (sse <= n.sse) {
@@ -243,42 +242,6 @@ void necker_mirror(const PlaneFit& plane, const Eigen::Matrix3d& R, const Eigen:
       Eigen::Matrix3d::Identity() - 2.0 * plane.normal * plane.normal.transpose();
   *R_mirror = Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal() * R * householder;
   *p_mirror = R * plane.centroid + p - *R_mirror * plane.centroid;
-}
-
-bool homography_start(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& centred,
-                      double focal_length, const PlaneFit& plane, Eigen::Matrix3d* R,
-                      Eigen::Vector3d* p) {
-  const Eigen::Index n = model.cols();
-  if (n < 4) return false;
-  Eigen::Matrix3d basis;  // columns u, v, n: plane coordinates a = u . (z - c), b = v . (z - c)
-  basis.col(2) = plane.normal;
-  basis.col(0) = plane.normal.unitOrthogonal();
-  basis.col(1) = plane.normal.cross(basis.col(0));
-  Eigen::MatrixXd A(2 * n, 9);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const Eigen::Vector3d local = basis.transpose() * (model.col(i) - plane.centroid);
-    const Eigen::RowVector3d m(local.x(), local.y(), 1.0);
-    const double x = centred(0, i) / focal_length;
-    const double y = centred(1, i) / focal_length;
-    A.row(2 * i) << m, Eigen::RowVector3d::Zero(), -x * m;
-    A.row(2 * i + 1) << Eigen::RowVector3d::Zero(), m, -y * m;
-  }
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
-  const Eigen::Matrix<double, 9, 1> h = svd.matrixV().col(8);
-  Eigen::Matrix3d H;
-  H << h(0), h(1), h(2), h(3), h(4), h(5), h(6), h(7), h(8);
-  const double scale = 0.5 * (H.col(0).norm() + H.col(1).norm());
-  if (!(scale > 0.0) || !H.allFinite()) return false;
-  H /= scale;
-  if (H(2, 2) < 0.0) H = -H;  // the centroid in front of the camera
-  Eigen::Matrix3d M;
-  M << H.col(0), H.col(1), H.col(0).cross(H.col(1));
-  const Eigen::JacobiSVD<Eigen::Matrix3d> polar(M, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Eigen::Matrix3d rotation = polar.matrixU() * polar.matrixV().transpose();
-  if (rotation.determinant() < 0.0) return false;
-  *R = rotation * basis.transpose();
-  *p = H.col(2) - *R * plane.centroid;
-  return R->allFinite() && p->allFinite();
 }
 
 }  // namespace vantage::internal

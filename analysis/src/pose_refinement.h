@@ -58,12 +58,4 @@ PlaneFit fit_plane(const Eigen::Matrix3Xd& model, const Eigen::VectorXd& weights
 void necker_mirror(const PlaneFit& plane, const Eigen::Matrix3d& R, const Eigen::Vector3d& p,
                    Eigen::Matrix3d* R_mirror, Eigen::Vector3d* p_mirror);
 
-/// Pinhole pose of a (near-)planar model from the homography between its plane coordinates and
-/// the normalised image points (DLT, then the polar factor of [h1 h2 h1 x h2]): exact on
-/// noise-free images of coplanar points, and free of the Necker pair that the affine start has.
-/// centred = q - c, pixels. False when the homography is degenerate.
-bool homography_start(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& centred,
-                      double focal_length, const PlaneFit& plane, Eigen::Matrix3d* R,
-                      Eigen::Vector3d* p);
-
 }  // namespace vantage::internal

@@ -152,6 +152,12 @@ std::vector<Method> make_methods() {
        [=](const Layout& l, const Eigen::Matrix2Xd& q) {
          return from_vantage(vantage::perspective_pose(l.points, q, {}, refined));
        }},
+      {"vantage perspective, Prop. 8 start",
+       [=](const Layout& l, const Eigen::Matrix2Xd& q) {
+         vantage::RefinedPoseOptions prop8 = refined;
+         prop8.perspective_start = vantage::PerspectiveStart::kProp8;
+         return from_vantage(vantage::perspective_pose(l.points, q, {}, prop8));
+       }},
       {"vantage oi-foam",
        [=](const Layout& l, const Eigen::Matrix2Xd& q) {
          return from_vantage(vantage::orthogonal_iteration_pose(l.points, q, {}, oi));

@@ -116,7 +116,7 @@ Json full3d(const std::string& method, Eigen::Index n, const AffinePoseOptions& 
   out["objective"] = number(pose.residual);
   out["free_vectors"] = to_string(options.free_vectors);
   out["free_vector_count"] =
-      options.free_vectors == FreeVectorSet::kMaxSpanningTree ? n - 1 : n * (n - 1) / 2;
+      free_vector_count(n, single_pattern_free_vectors(options.free_vectors));
   out["eigen_gap"] = number(pose.eigen_gap);
   return out;
 }

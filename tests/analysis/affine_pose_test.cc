@@ -233,7 +233,7 @@ TEST(AffinePose, BadInputThrowsNamingTheArgument) {
   EXPECT_THAT(message_of([&] { affine_pose(s.model, s.image, {}, all_pairs); }),
               HasSubstr("max_vectors"));
   EXPECT_THAT(message_of([&] { affine_pose(s.model, s.image.leftCols(7)); }),
-              HasSubstr("image has 7"));
+              HasSubstr("image: has 7"));
   EXPECT_THAT(message_of([&] { affine_pose(s.model.leftCols(2), s.image.leftCols(2)); }),
               HasSubstr("at least 3"));
   Eigen::Matrix3Xd coincident = s.model;

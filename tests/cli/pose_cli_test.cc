@@ -185,6 +185,17 @@ TEST(PoseCli, Full3dRecoversTheExamplePose) {
   }
 }
 
+TEST(PoseCli, Full3dReportsTheFreeVectorsItBuilt) {
+  // full3d solves one Theorem-1 problem: auto means all pairs there, spanning n - 1.
+  for (const std::string free_vectors : {"", " --free-vectors all", " --free-vectors spanning"}) {
+    const auto json = run_json("'" + kAffine + "' --method full3d" + free_vectors);
+    const int n = json["n"].get<int>();
+    const int expected =
+        free_vectors.find("spanning") == std::string::npos ? n * (n - 1) / 2 : n - 1;
+    EXPECT_EQ(json["free_vector_count"], expected) << free_vectors;
+  }
+}
+
 TEST(PoseCli, OrthogonalIterationRecoversTheExamplePose) {
   for (const char* method : {"oi-foam", "oi-svd"}) {
     const auto json = run_json("'" + kPerspective + "' --method " + std::string(method));

@@ -248,6 +248,10 @@ AffinePoseResult standard_affine_pose(const Eigen::Matrix3Xd& model_object,
                                       const Eigen::VectorXd& weights = {},
                                       const AffinePoseOptions& options = {});
 
+/// The free-vector set that standard_affine_pose() and full_3d_pose() build for `requested`:
+/// they solve a single Theorem-1 problem (nothing is enumerated), so kAuto means all pairs.
+FreeVectorSet single_pattern_free_vectors(FreeVectorSet requested);
+
 /// The paper's "full 3-D" baseline (Sec. IV): free vectors of 3-D measured points (measured
 /// alpha q_i ~= R z_i + p), Theorem 1 for R and alpha (Eq. 4), p from Eq. (13). Uses
 /// options.free_vectors (kAuto: all pairs), pair_weighting and orientation.degenerate_gap only.

@@ -10,19 +10,25 @@
 ///    of Lemma 7 does not.
 ///  - perspective_pose(): minimises the pinhole reprojection error
 ///      sum_i w_i |f (X_i.x, X_i.y) / X_i.z - (q_i - c)|^2,   X_i = R z_i + p   (pixels^2),
-///    by Levenberg-Marquardt on SO(3) x R^3 from the affine estimate with p_z = alpha f: the
-///    maximum-likelihood pose under independent Gaussian pixel noise of variance sigma^2 / w_i.
+///    by Levenberg-Marquardt on SO(3) x R^3: the maximum-likelihood pose under independent
+///    Gaussian pixel noise of variance sigma^2 / w_i. The start (PerspectiveStart) is by default
+///    a closed form that is exact on noise-free pinhole images and O(n): POSIT (the scaled
+///    orthographic camera corrected for perspective) for non-planar models, IPPE's two poses
+///    from the plane's homography for (almost) exactly planar ones; Prop. 8 (affine_pose(), 2^m
+///    sign patterns) with p_z = alpha f when those do not apply (n = 3, degenerate systems) or
+///    on request.
 ///
 /// Frames: x_camera = R_camera_object * x_object + p_camera_object; the camera looks along +z.
 ///
 /// Two branches. A (near-)planar model (planarity sigma_3 / sigma_1 of the centred points <=
 /// necker_planarity) has two poses that the affine image cannot tell apart, the Necker pair
-/// R' = diag(1, 1, -1) R (I - 2 n n^T) (n the plane normal). Both are refined; the one with the
-/// smaller residual is returned and the other is `alternative` (when it converged to a distinct
-/// pose); perspective_pose() also refines the pose of the plane's homography (exact on
-/// noise-free images, no Necker pair), so a planar target has three starts. `ambiguous` follows
-/// BranchOptions (pose_estimate.h): always for exactly planar models
-/// under the affine model (the pair is exact there), and under the pinhole model only when
+/// R' = diag(1, 1, -1) R (I - 2 n n^T) (n the plane normal). Both are refined (from Prop. 8 and
+/// its mirror for affine_refined_pose(); for perspective_pose() from POSIT and its mirror, or
+/// from IPPE's pair, or with PerspectiveStart::kProp8 from Prop. 8, its mirror and the better
+/// IPPE pose); the one with the smaller residual is returned and the best distinct other one is
+/// `alternative`.
+/// `ambiguous` follows BranchOptions (pose_estimate.h): always for exactly planar models under
+/// the affine model (the pair is exact there), and under the pinhole model only when
 /// perspective does not separate the two beyond the ratio.
 ///
 /// Stopping rule (status kOk): an accepted step with rotation <= step_tolerance radians and
@@ -42,6 +48,19 @@
 
 namespace vantage {
 
+/// Where perspective_pose() starts the refinement.
+enum class PerspectiveStart {
+  /// POSIT (planarity > 0.01; with its Necker mirror when planarity <= necker_planarity) or
+  /// IPPE's two poses from the plane's homography (planarity <= 0.01 <= necker_planarity):
+  /// O(n), exact on noise-free pinhole images; Prop. 8 when they do not apply.
+  kClosedForm,
+  /// Prop. 8 (2^m sign patterns); for planar models also its Necker mirror and the homography.
+  kProp8,
+};
+
+/// "closed_form" or "prop8".
+const char* to_string(PerspectiveStart start);
+
 /// Options of affine_refined_pose() and perspective_pose().
 struct RefinedPoseOptions {
   /// The camera (pixels). perspective_pose() needs focal_length > 0; affine_refined_pose() uses
@@ -53,6 +72,8 @@ struct RefinedPoseOptions {
   double step_tolerance = 1e-12;      ///< radians / relative, > 0
   double relative_tolerance = 1e-14;  ///< dimensionless, >= 0
   BranchOptions branches;  ///< when the Necker branch is refined and when it is ambiguous
+  /// perspective_pose() only (affine_refined_pose() always starts from Prop. 8).
+  PerspectiveStart perspective_start = PerspectiveStart::kClosedForm;
 
   bool is_valid(std::string* why = nullptr) const;
 };
@@ -61,9 +82,12 @@ struct RefinedPoseOptions {
 struct RefinedPoseResult : PoseEstimate {
   /// Object units per pixel: the refined scale (affine) or p_z / f (perspective).
   double alpha = std::numeric_limits<double>::quiet_NaN();
-  int branches = 0;                        ///< branches refined: 1, or 2 with the Necker mirror
-  double planarity = 0.0;                  ///< sigma_3 / sigma_1 of the centred model
-  double start_reprojection_rms_px = 0.0;  ///< of the affine start (affine model)
+  int branches = 0;        ///< starts refined: 1, 2 with the Necker mirror (3: kProp8, planar)
+  double planarity = 0.0;  ///< sigma_3 / sigma_1 of the centred model
+  /// RMS residual of the best start in the method's own model: Prop. 8 under the affine model
+  /// (affine_refined_pose()), the closed-form or Prop. 8 start under the pinhole model
+  /// (perspective_pose()).
+  double start_reprojection_rms_px = 0.0;
 };
 
 /// Refined affine pose (see the file comment). model_object: 3 x n, n >= 3, finite, no two

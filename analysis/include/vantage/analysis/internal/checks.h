@@ -104,4 +104,27 @@ void check_unit_columns(std::string_view arg, const Eigen::MatrixBase<Derived>& 
   }
 }
 
+/// Entry i of a weight vector; empty weights mean all 1.
+inline double weight_at(const Eigen::VectorXd& weights, Eigen::Index i) {
+  return weights.size() == 0 ? 1.0 : weights(i);
+}
+
+/// "<arg>: points <j> and <i> coincide" for the first pair of equal columns, j < i. O(n^2).
+void check_distinct_columns(std::string_view arg, const Eigen::Matrix3Xd& points);
+
+/// The point sets of a pose solve: `measured` has one column per column of `model`
+/// ("<measured_arg>: has 7 points, expected 8 (one per column of <model_arg>)"), at least
+/// `minimum` of them, every column finite, and weights as check_weights() ("weights").
+template <class Measured>
+void check_correspondences(std::string_view model_arg, const Eigen::Matrix3Xd& model,
+                           std::string_view measured_arg,
+                           const Eigen::MatrixBase<Measured>& measured,
+                           const Eigen::VectorXd& weights, Eigen::Index minimum) {
+  check_count_matches(measured_arg, measured.cols(), model.cols(), model_arg, "points");
+  check_min_count(model_arg, model.cols(), minimum, "points");
+  check_weights("weights", weights, model.cols(), model_arg);
+  check_finite_columns(model_arg, model);
+  check_finite_columns(measured_arg, measured);
+}
+
 }  // namespace vantage::internal
