@@ -234,8 +234,9 @@ OrthogonalIterationResult iterate(const Eigen::Matrix3Xd& model, const Eigen::Ma
   return result;
 }
 
-/// The two starts of a (near-)planar model: IPPE's pair of poses from the plane's homography
-/// (perspective_start.h), exact on noise-free images; else Prop. 8 (affine_pose()) and its
+/// The two starts of a (near-)planar model: for an (almost) exactly planar one IPPE's pair of
+/// poses from the plane's homography (perspective_start.h), exact on noise-free images; else, or
+/// when the homography is degenerate, Prop. 8 (affine_pose()) and its
 /// Necker mirror, whose rotation carries the tilt. The weak-perspective start cannot: with
 /// coplanar points the centred model and the centred rays both lie in planes, so its
 /// cross-covariance only determines a rotation about the axis. *found is false when neither
@@ -246,8 +247,11 @@ void planar_starts(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& image,
                    const internal::PlaneFit& plane, Eigen::Matrix3d starts[2], bool* found) {
   const Eigen::Matrix2Xd centred = image.colwise() - options.camera.principal_point;
   internal::PinholeStart ippe[2];
-  if (internal::planar_starts(model, centred, weights, options.camera.focal_length, plane, ippe) ==
-      2) {
+  // IPPE only where the homography describes the points: on merely near-planar models (4 random
+  // points, say) its poses can lie outside OI's basin, where Prop. 8's pair does not.
+  if (plane.planarity <= internal::kPlanarStartPlanarity &&
+      internal::planar_starts(model, centred, weights, options.camera.focal_length, plane, ippe) ==
+          2) {
     starts[0] = ippe[0].R;
     starts[1] = ippe[1].R;
     *found = true;

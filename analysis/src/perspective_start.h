@@ -40,6 +40,10 @@ bool scaled_orthographic_start(const Eigen::Matrix3Xd& model, const Eigen::Matri
                                const Eigen::VectorXd& weights, double focal_length,
                                const PositSettings& settings, PinholeStart* start);
 
+/// Planarity (PlaneFit::planarity) at or below which a model is treated as planar: IPPE's
+/// homography describes its points; above it POSIT's 4 x 4 system is well enough conditioned.
+inline constexpr double kPlanarStartPlanarity = 0.01;
+
 /// The two pinhole poses of a (near-)planar model by IPPE (Collins and Bartoli 2014): the
 /// homography H between plane coordinates and normalised image points (linear least squares on
 /// Hartley-normalised coordinates), the two rotations that match H's Jacobian at the image of

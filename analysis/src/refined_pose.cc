@@ -92,10 +92,6 @@ internal::LmPose necker_mirror_of(const Problem& problem, const internal::LmPose
   return mirror;
 }
 
-/// Planarity above which POSIT's start is used (below it its 4 x 4 system is too close to
-/// singular and the plane's homography describes the points).
-constexpr double kPositPlanarity = 0.01;
-
 /// The closed-form pinhole starts (perspective_start.h): POSIT, with its Necker mirror for
 /// near-planar models, or IPPE's two poses for (almost) exactly planar ones. Empty when they do
 /// not apply.
@@ -103,7 +99,7 @@ std::vector<internal::LmPose> closed_form_starts(const Problem& problem) {
   std::vector<internal::LmPose> starts;
   const double f = problem.options.camera.focal_length;
   internal::PinholeStart start;
-  if (problem.plane.planarity > kPositPlanarity &&
+  if (problem.plane.planarity > internal::kPlanarStartPlanarity &&
       internal::scaled_orthographic_start(problem.z, problem.centred, problem.weights, f,
                                           internal::PositSettings{}, &start)) {
     starts.push_back(from(start));
