@@ -19,12 +19,30 @@ using internal::fail;
 // A quaternion shorter than this cannot be normalised into a rotation meaningfully.
 constexpr double kMinQuaternionNorm = 1e-12;
 
+// yaml-cpp's messages may quote the offending character raw ("unknown escape character: " and
+// a newline, say): control characters become \xNN so that the error stays one line.
+std::string printable(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte != 0x7f) {
+      out += c;
+      continue;
+    }
+    static constexpr char kHex[] = "0123456789abcdef";
+    out += "\\x";
+    out += kHex[byte >> 4];
+    out += kHex[byte & 0xf];
+  }
+  return out;
+}
+
 YAML::Node parse_yaml(std::string_view text, const std::string& source) {
   try {
     return YAML::Load(std::string(text));
   } catch (const YAML::Exception& e) {
     fail(source, "not valid YAML: line " + std::to_string(e.mark.line + 1) + ", column " +
-                     std::to_string(e.mark.column + 1) + ": " + e.msg);
+                     std::to_string(e.mark.column + 1) + ": " + printable(e.msg));
   }
 }
 

@@ -58,6 +58,9 @@ const std::string kTwoTags =
 
 const BadBundle kBadBundles[] = {
     {"NotYaml", "tag_bundles: [ {name: b, layout: [", "not valid YAML: line 1"},
+    // Found by the fuzzer: after a NUL byte yaml-cpp quotes the next character (a newline) raw
+    // in its message.
+    {"NulThenNewline", std::string("a: b\0\nc\"\n", 9), "unknown escape character: \\x0a"},
     {"Scalar", "42", "the top level must be a YAML map"},
     {"NoBundles", "standalone_tags: []\n", "tag_bundles: missing"},
     {"BundlesNotAList", "tag_bundles: 3\n", "tag_bundles: expected a non-empty list"},
