@@ -27,8 +27,9 @@ class WorstViewpointWithAdditions {
   /// Prepares `base` (3 x m, m >= 1, non-zero finite columns) at the level `level` in (0, 1]
   /// (a t* that the augmented layouts of interest are expected to reach, e.g. a fraction of the
   /// base layout's t*). The preparation costs about (base t* / level)^2 whole-sphere searches
-  /// of the base: patches crossed by a circle are refined until their bound is below level. options: tie_tolerance and max_patches are used
-  /// here and must be those of every solve(). Throws InvalidArgument on bad input.
+  /// of the base: patches crossed by a circle are refined until their bound is below level.
+  /// options: tie_tolerance and max_patches are used here and must be those of every solve().
+  /// Throws InvalidArgument on bad input.
   WorstViewpointWithAdditions(const Eigen::Matrix3Xd& base, double level,
                               const WorstViewpointOptions& options = {});
   ~WorstViewpointWithAdditions();
