@@ -58,7 +58,9 @@ std::string layout_to_json(const Layout& layout) {
   out["weights"] =
       std::vector<double>(layout.weights.data(), layout.weights.data() + layout.weights.size());
   if (layout.candidates.cols() > 0) out["candidates"] = rows(layout.candidates);
-  return out.dump(2) + "\n";
+  // Names read from CSV or YAML files may not be UTF-8 (JSON requires it): such bytes are
+  // written as U+FFFD instead of throwing.
+  return out.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 void write_layout(const std::string& path, const Layout& layout, bool overwrite) {

@@ -145,6 +145,18 @@ TEST(LayoutFile, RoundTripsThroughWrite) {
   EXPECT_EIGEN_NEAR(again.candidates, layout.candidates, 0.0);
 }
 
+// Found by the fuzzer: a name read from a YAML or CSV file need not be UTF-8; writing it as JSON
+// threw nlohmann's type_error. The bytes become U+FFFD and the layout round-trips.
+TEST(LayoutFile, NonUtf8NameIsWrittenAsReplacementCharacters) {
+  Layout layout = parse_layout(R"({"name": "x", "vectors": [[1,0,0],[0,1,0],[0,0,1]]})", "t.json");
+  layout.name = "bad \xc3( name";
+  std::string text;
+  ASSERT_NO_THROW(text = layout_to_json(layout));
+  const Layout again = parse_layout(text, "again.json");
+  EXPECT_EQ(again.name, "bad \xef\xbf\xbd( name");
+  EXPECT_EIGEN_NEAR(again.entries, layout.entries, 0.0);
+}
+
 TEST(LayoutFile, CoincidenceIsScaleInvariant) {
   // The same layout in units from 1e-140 to 1e140: accepted at every scale (an absolute
   // threshold would call the small ones coincident), and the same near-coincidence (1e-13 of
