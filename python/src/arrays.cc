@@ -84,6 +84,14 @@ Eigen::VectorXd vector_from_array(const py::handle& object, const char* name) {
   return out;
 }
 
+Eigen::Vector2d pair_from_array(const py::handle& array, const char* name, const char* unit) {
+  const Eigen::VectorXd c = vector_from_array(array, name);
+  if (c.size() != 2 || !c.allFinite()) {
+    throw InvalidArgument(std::string(name) + ": must be two finite numbers (" + unit + ")");
+  }
+  return {c(0), c(1)};
+}
+
 template <int Rows>
 py::array_t<double> array_from_columns(const Eigen::Matrix<double, Rows, Eigen::Dynamic>& columns) {
   py::array_t<double> out({static_cast<py::ssize_t>(columns.cols()), py::ssize_t{Rows}});

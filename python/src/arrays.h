@@ -26,6 +26,10 @@ Eigen::Matrix<double, Cols, Eigen::Dynamic> rows_from_array(const py::handle& ar
 /// A 1-D array of numbers.
 Eigen::VectorXd vector_from_array(const py::handle& array, const char* name);
 
+/// Two finite numbers (a principal point, an offset); throws InvalidArgument naming `name`
+/// with `unit` ("pixels") in the message otherwise.
+Eigen::Vector2d pair_from_array(const py::handle& array, const char* name, const char* unit);
+
 /// A Rows x n matrix (Rows = 2 or 3) as an n x Rows numpy array (one row per column).
 template <int Rows>
 py::array_t<double> array_from_columns(const Eigen::Matrix<double, Rows, Eigen::Dynamic>& columns);

@@ -193,14 +193,11 @@ void read_camera(const py::object& focal, const py::object& principal_point, Pos
     }
   }
   if (!principal_point.is_none()) {
-    const Eigen::VectorXd c = vector_from_array(principal_point, "principal_point");
-    if (c.size() != 2 || !c.allFinite()) {
-      throw InvalidArgument("principal_point: must be two finite numbers (pixels)");
-    }
+    const Eigen::Vector2d c = pair_from_array(principal_point, "principal_point", "pixels");
     if (in->method == "full3d" || in->method == "two-view") {
       throw InvalidArgument("principal_point: not used by method='" + in->method + "'");
     }
-    in->principal_point = Eigen::Vector2d(c(0), c(1));
+    in->principal_point = c;
   }
 }
 

@@ -7,6 +7,7 @@
 
 #include <optional>
 
+#include "arrays.h"
 #include "layouts.h"
 #include "results.h"
 #include "vantage/analysis/common.h"
@@ -16,19 +17,11 @@ namespace vantage::python {
 
 namespace {
 
-Eigen::Vector2d pair_argument(const std::vector<double>& values, const std::string& name) {
-  if (values.size() != 2) {
-    throw InvalidArgument(name + ": expected 2 numbers, got " + std::to_string(values.size()));
-  }
-  return {values[0], values[1]};
-}
-
 py::object simulate_layout(const py::object& layout_arg, const py::object& vectors,
                            const py::object& points, long trials, const std::string& camera,
                            double noise_px, std::optional<double> snr_db, const std::string& noise,
-                           double range, double focal_px,
-                           const std::vector<double>& principal_point,
-                           const std::vector<double>& lateral_offset, const std::string& viewpoint,
+                           double range, double focal_px, const py::object& principal_point,
+                           const py::object& lateral_offset, const std::string& viewpoint,
                            const std::vector<std::string>& methods, std::uint64_t seed, int threads,
                            bool per_trial, const py::kwargs& kwargs) {
   std::string source;
@@ -46,8 +39,8 @@ py::object simulate_layout(const py::object& layout_arg, const py::object& vecto
   scene.noise = simulate::parse_noise_kind(noise, "noise");
   scene.range = range;
   scene.focal_px = focal_px;
-  scene.principal_point = pair_argument(principal_point, "principal_point");
-  scene.lateral_offset = pair_argument(lateral_offset, "lateral_offset");
+  scene.principal_point = pair_from_array(principal_point, "principal_point", "pixels");
+  scene.lateral_offset = pair_from_array(lateral_offset, "lateral_offset", "object sizes");
   if (viewpoint != "random" && viewpoint != "worst") {
     throw InvalidArgument("viewpoint: expected random or worst, got '" + viewpoint + "'");
   }
