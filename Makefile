@@ -9,6 +9,10 @@ JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 BUILD_TYPE ?= RelWithDebInfo
 FUZZ_SECONDS ?= 60
 FORMATS_FUZZ_SECONDS ?= 20
+# Sanitizer and fuzzer builds: -O1 with line tables only. They compile about 2.3x faster than
+# -O2 -g (analysis/src/perspective_start.cc under ASan+UBSan: 77 s against 177 s) and their
+# reports still name file and line.
+INSTRUMENTED_FLAGS ?= -O1 -g1 -DNDEBUG
 
 .PHONY: all deps configure build demo test bench test-sanitize test-consumer fuzz format clean
 
@@ -40,12 +44,16 @@ bench: build
 	$(BUILD_DIR)/bench/vantage_bench --benchmark_min_time=0.2
 
 # The whole test suite once more under AddressSanitizer + UndefinedBehaviorSanitizer.
+# print_suppressions=0: LeakSanitizer would otherwise print its table of suppressed leaks to
+# stderr at exit, and the CLI tests require an empty stderr from a successful run.
 test-sanitize: deps
 	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVANTAGE_SANITIZE=ON \
+	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$(INSTRUMENTED_FLAGS)" \
+	  -DCMAKE_C_FLAGS_RELWITHDEBINFO="$(INSTRUMENTED_FLAGS)" \
 	  -DVANTAGE_BUILD_BENCH=OFF -DVANTAGE_BUILD_EXAMPLES=OFF -DVANTAGE_BUILD_VIEWER=OFF
 	cmake --build $(SANITIZE_DIR) -j $(JOBS)
 	cd $(SANITIZE_DIR) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
-	  LSAN_OPTIONS=suppressions=$(CURDIR)/scripts/lsan.supp \
+	  LSAN_OPTIONS=suppressions=$(CURDIR)/scripts/lsan.supp:print_suppressions=0 \
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j $(JOBS)
 
 # Installs the library and builds tests/consumer against it with find_package(vantage).
@@ -59,6 +67,8 @@ test-consumer: build
 # A short libFuzzer run of the layout parser on the seed corpus in examples/layouts.
 fuzz: deps
 	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$(INSTRUMENTED_FLAGS)" \
+	  -DCMAKE_C_FLAGS_RELWITHDEBINFO="$(INSTRUMENTED_FLAGS)" \
 	  -DVANTAGE_FUZZ=ON -DVANTAGE_BUILD_TESTS=OFF -DVANTAGE_BUILD_BENCH=OFF \
 	  -DVANTAGE_BUILD_EXAMPLES=OFF -DVANTAGE_BUILD_VIEWER=OFF
 	cmake --build $(FUZZ_DIR) -j $(JOBS) --target vantage_fuzz_layout
