@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <random>
 
+#include "vantage/sdp/layout_analysis.h"
 #include "vantage/sdp/worst_viewpoint.h"
 #include "vantage/sdp/worst_viewpoint_additions.h"
 
@@ -35,12 +36,31 @@ void BM_WorstViewpoint_Global(benchmark::State& state) {
   state.counters["patches"] = static_cast<double>(patches);
 }
 
+// The baseline of the global search: one CSDP solve of the paper's single LMI on all m vectors.
 void BM_WorstViewpoint_PaperLmi(benchmark::State& state) {
   const Eigen::Matrix3Xd z = random_unit_vectors(static_cast<int>(state.range(0)));
+  const Eigen::Matrix3Xd p = z * vantage::sdp::paper_signs(z).asDiagonal();
+  for (auto _ : state) {
+    const vantage::sdp::SdpResult whole =
+        vantage::sdp::solve_lmi(vantage::sdp::cell_lmi_problem(p));
+    benchmark::DoNotOptimize(whole.y);
+  }
+}
+
+// The same LMI as paper_worst_viewpoint() solves it: constraint generation from the cell's
+// minimum-norm direction, each answer checked against all m vectors.
+void BM_WorstViewpoint_PaperLmiGenerated(benchmark::State& state) {
+  const Eigen::Matrix3Xd z = random_unit_vectors(static_cast<int>(state.range(0)));
+  int solves = 0;
+  int vectors = 0;
   for (auto _ : state) {
     const vantage::sdp::CellViewpoint paper = vantage::sdp::paper_worst_viewpoint(z);
     benchmark::DoNotOptimize(paper.t);
+    solves = paper.lmi_solves;
+    vectors = paper.lmi_vectors;
   }
+  state.counters["lmi_solves"] = solves;
+  state.counters["lmi_vectors"] = vectors;
 }
 
 // The global answer plus its confirming CSDP solve of the optimal cell (what analyze reports).
@@ -67,6 +87,16 @@ void BM_WorstViewpoint_CrossCheck(benchmark::State& state) {
     samples = check.samples;
   }
   state.counters["samples"] = static_cast<double>(samples);
+}
+
+// What `vantage analyze` computes (analyze_vectors with default options): the global search with
+// its confirming cell LMI, the paper's single LMI, the NLopt cross-check and the swap analysis.
+void BM_WorstViewpoint_Analyze(benchmark::State& state) {
+  const Eigen::Matrix3Xd z = random_unit_vectors(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    const vantage::sdp::LayoutAnalysis report = vantage::sdp::analyze_vectors(z);
+    benchmark::DoNotOptimize(report.t);
+  }
 }
 
 // The augmenter's inner solve: m random directions plus 50 more (another seed), solved whole
@@ -111,11 +141,18 @@ BENCHMARK(BM_WorstViewpoint_PaperLmi)
     ->Arg(5000)
     ->Arg(20000)
     ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_WorstViewpoint_PaperLmiGenerated)
+    ->Arg(100)
+    ->Arg(1000)
+    ->Arg(5000)
+    ->Arg(20000)
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_WorstViewpoint_GlobalConfirmed)
     ->Arg(3)
     ->Arg(10)
     ->Arg(100)
     ->Arg(1000)
+    ->Arg(5000)
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_WorstViewpoint_CrossCheck)
     ->Arg(10)
@@ -123,3 +160,9 @@ BENCHMARK(BM_WorstViewpoint_CrossCheck)
     ->Arg(1000)
     ->Arg(5000)
     ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_WorstViewpoint_Analyze)
+    ->Arg(100)
+    ->Arg(1000)
+    ->Arg(5000)
+    ->Arg(20000)
+    ->Unit(benchmark::kMillisecond);

@@ -58,16 +58,33 @@ struct CellViewpoint {
   Eigen::Vector3d viewpoint = Eigen::Vector3d::UnitZ();  ///< a / ||a||, upper hemisphere
   double t = 0.0;                                        ///< the LMI's optimal t (Eq. 28)
   double pbar = 1.0;                                     ///< sqrt(1 - t^2)
-  SdpResult sdp;                                         ///< the backend's raw result (y = [a; t])
+  /// The backend's raw result (y = [a; t]) of the last LMI solved: on lmi_vectors of the cell's
+  /// vectors (see solve_cell_lmi()).
+  SdpResult sdp;
+  int lmi_solves = 0;   ///< LMIs solved (constraint generation rounds)
+  int lmi_vectors = 0;  ///< data vectors (2x2 blocks) in the last LMI
   std::string message;
 };
 
 /// "ok", "empty_cell" or "solver_failed".
 const char* to_string(CellViewpoint::Status status);
 
+/// The LMI of Eq. (28) on the columns p_i = s_i n_i (signed unit vectors), whole: variables
+/// y = [a_x, a_y, a_z, t], objective min -t, blocks [[p_i.a, t], [t, p_i.a]] >= 0 (one dense 2x2
+/// per column, in order) and [[I, a], [a^T, 1]] >= 0 (the last, dense 4x4). For solving it on
+/// another backend or as a reference; solve_cell_lmi() is the checked, faster way.
+LmiProblem cell_lmi_problem(const Eigen::Matrix3Xd& signed_unit_vectors);
+
 /// The cell LMI of Eq. (28) for data vectors (3 x m, m >= 1, non-zero columns; normalised here)
 /// and signs s_i (m entries, each +1 or -1), solved with options.backend. Variables y = [a; t],
-/// objective min -t, blocks: m dense 2x2 blocks and one dense 4x4 block.
+/// objective min -t, blocks: one dense 2x2 block per vector and one dense 4x4 block.
+/// Up to 32 vectors the LMI is solved whole. Beyond, by constraint generation (docs/math.md §13):
+/// first on the 32 vectors nearest to active at the cell's minimum-norm direction, then with the
+/// vectors its answer violates by more than options.tolerance added, until none is (the answer of
+/// a subset's LMI is then the whole cell's optimum to the SDP's tolerance: the subset's optimum is
+/// at least the cell's, and it is feasible for the cell), or on all m after 8 rounds. Every
+/// answer is checked against all m vectors, so the guess only decides how fast it converges.
+/// t is min_i s_i a.n_i over all m vectors at a = y.head<3>() normalised.
 /// Throws InvalidArgument on bad vectors, signs or options.
 CellViewpoint solve_cell_lmi(const Eigen::Matrix3Xd& vectors, const Eigen::VectorXd& signs,
                              const SdpOptions& options = {});
