@@ -1,6 +1,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <nlopt.hpp>
 #include <numeric>
 #include <sstream>
@@ -12,14 +13,17 @@
 namespace vantage::sdp {
 namespace {
 
-// Sample evaluations are done in blocks of this many directions (bounded temporary memory).
-constexpr int kSampleBlock = 512;
 // Automatic sample count (see automatic_samples()): bounds, samples per optimal inradius, and
 // the smallest inradius considered (t of 1e-6 would ask for 1e13 samples).
 constexpr double kMinSamples = 20000;
 constexpr double kMaxSamples = 400000;
 constexpr double kSpacingsPerRadius = 2.0;
 constexpr double kMinRadius = 1e-6;
+// Sample scans test their running minimum every this many vectors; samples ranked first, and
+// the factor by which the ranking grows when their distinct cells run out.
+constexpr int kScanBlock = 64;
+constexpr int kFirstRanked = 256;
+constexpr int kRankMore = 4;
 // Constraints the polish starts with: the ones nearest to active at the start. A cell optimum
 // has at most three active constraints; the rest are added when the result violates them.
 constexpr int kWorkingSet = 16;
@@ -156,16 +160,50 @@ Eigen::Matrix3Xd fibonacci_hemisphere(int samples) {
   return directions;
 }
 
-// min_i |a.n_i| for every column a of `directions` (nt: the unit vectors as rows).
-Eigen::VectorXd min_abs_values(const Eigen::MatrixXd& nt, const Eigen::Matrix3Xd& directions) {
-  const int samples = static_cast<int>(directions.cols());
-  Eigen::VectorXd values(samples);
-  for (int start = 0; start < samples; start += kSampleBlock) {
-    const int count = std::min(kSampleBlock, samples - start);
-    const Eigen::MatrixXd dots = nt * directions.middleCols(start, count);
-    values.segment(start, count) = dots.cwiseAbs().colwise().minCoeff().transpose();
+struct RankedSample {
+  int index;     // column of the directions
+  double value;  // min_i |a.n_i|
+};
+
+// Ranking of samples: larger value first, ties by lower index (deterministic).
+bool ranks_before(const RankedSample& a, const RankedSample& b) {
+  return a.value > b.value || (a.value == b.value && a.index < b.index);
+}
+
+// The `count` samples (columns of `directions`) with the largest min_i |a.n_i|, best first, with
+// exact values: the first `count` of a full evaluation sorted by ranks_before. A sample's scan
+// over the n_i stops once its running minimum cannot beat the count-th best so far, so most
+// samples cost a block or two of the m dot products instead of all of them.
+std::vector<RankedSample> best_samples(const Eigen::Matrix3Xd& n,
+                                       const Eigen::Matrix3Xd& directions, int count) {
+  const Eigen::ArrayXd x = n.row(0).transpose(), y = n.row(1).transpose(), z = n.row(2).transpose();
+  const Eigen::Index m = n.cols();
+  std::vector<RankedSample> kept;  // a heap under ranks_before: front() is the worst kept
+  kept.reserve(count + 1);
+  for (int k = 0; k < static_cast<int>(directions.cols()); ++k) {
+    const double floor = static_cast<int>(kept.size()) == count
+                             ? kept.front().value
+                             : -std::numeric_limits<double>::infinity();
+    const Eigen::Vector3d a = directions.col(k);
+    double running = std::numeric_limits<double>::infinity();
+    // A later sample equal to the worst kept ranks after it: stop at equality too.
+    for (Eigen::Index s = 0; s < m && running > floor; s += kScanBlock) {
+      const Eigen::Index e = std::min<Eigen::Index>(kScanBlock, m - s);
+      running = std::min(
+          running, (x.segment(s, e) * a.x() + y.segment(s, e) * a.y() + z.segment(s, e) * a.z())
+                       .abs()
+                       .minCoeff());
+    }
+    if (running <= floor) continue;
+    kept.push_back({k, running});
+    std::push_heap(kept.begin(), kept.end(), ranks_before);
+    if (static_cast<int>(kept.size()) > count) {
+      std::pop_heap(kept.begin(), kept.end(), ranks_before);
+      kept.pop_back();
+    }
   }
-  return values;
+  std::sort_heap(kept.begin(), kept.end(), ranks_before);
+  return kept;
 }
 
 }  // namespace
@@ -208,10 +246,8 @@ CrossCheck crosscheck_worst_viewpoint(const Eigen::Matrix3Xd& vectors, double t_
 
   const Eigen::Matrix3Xd directions = fibonacci_hemisphere(samples);
   const Eigen::MatrixXd nt = n.transpose();
-  const Eigen::VectorXd values = min_abs_values(nt, directions);
-  std::vector<int> order(samples);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return values(a) > values(b); });
+  int ranked = std::min(samples, kFirstRanked);
+  std::vector<RankedSample> best = best_samples(n, directions, ranked);
 
   CrossCheck result;
   result.method = "nlopt_multistart_cobyla";
@@ -231,14 +267,20 @@ CrossCheck crosscheck_worst_viewpoint(const Eigen::Matrix3Xd& vectors, double t_
   };
   std::vector<Eigen::VectorXd> cells;  // sign patterns already polished
   for (int k = 0; k < samples && static_cast<int>(cells.size()) < options.polish_starts; ++k) {
-    const Eigen::Vector3d start = directions.col(order[k]);
+    if (k == static_cast<int>(best.size())) {
+      // The ranked samples ran out before polish_starts distinct cells: rank more (the same
+      // ranking, longer).
+      ranked = std::min(samples, kRankMore * ranked);
+      best = best_samples(n, directions, ranked);
+    }
+    const Eigen::Vector3d start = directions.col(best[k].index);
     Eigen::VectorXd signs = (nt * start).array().sign().matrix();
     bool seen = false;
     for (const Eigen::VectorXd& s : cells) seen = seen || s == signs;
     if (seen) continue;
     cells.push_back(signs);
     polish_and_consider(start);
-    consider(start, values(order[k]));
+    consider(start, best[k].value);
   }
   for (const Eigen::Vector3d& a : reference_viewpoints) polish_and_consider(a.normalized());
   result.difference = result.t - t_reference;
