@@ -3,8 +3,10 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <numeric>
+#include <thread>
 
 #include "min_norm_point.h"
 
@@ -24,6 +26,10 @@ constexpr double kMinPatchSin = 1e-11;
 constexpr int kGrid = 4;
 // Recursion depth limit; patches halve per level, so kMinPatchRadius is reached long before.
 constexpr int kMaxDepth = 120;
+// Layouts with at least this many distinct directions are searched in two halves (see
+// search_worst_viewpoint()): below it a search takes under ~10 ms and a thread costs more than it
+// saves.
+constexpr int kSplitColumns = 2000;
 // Circles scanned between early-prune checks.
 constexpr int kScanBlock = 8;
 // Margin of the early prune against the rounding of sin_minus and sin_plus (a few ulps of 1).
@@ -104,14 +110,19 @@ class BranchAndBound {
     }
   }
 
-  void run() {
+  // A patch of the initial grid (kGrid x kGrid per cube face) and the objective at its centre.
+  struct Root {
+    int face;
+    double u, v;
+    double value;
+  };
+
+  // What every search does first: the hints, then the initial grid sorted by the objective at
+  // the patch centres (best first) and the exact cells of the best four centres, so that the
+  // branch and bound prunes with a good attained value from its first patch.
+  std::vector<Root> prepare() {
     apply_hints();
-    if (stopped_) return;
-    struct Root {
-      int face;
-      double u, v;
-      double value;
-    };
+    if (stopped_) return {};
     std::vector<Root> roots;
     const double h = 1.0 / kGrid;
     for (int face = 0; face < 3; ++face) {
@@ -128,8 +139,34 @@ class BranchAndBound {
     for (int s = 0; s < std::min<int>(4, static_cast<int>(roots.size())) && !stopped_; ++s) {
       solve_full_cell(face_point(roots[s].face, roots[s].u, roots[s].v));
     }
-    for (const Root& root : roots) process(root.face, root.u, root.v, h, m_, 0);
+    return roots;
   }
+
+  // The branch and bound below roots[first], roots[first + stride], ...
+  void search_roots(const std::vector<Root>& roots, int first, int stride) {
+    for (std::size_t k = first; k < roots.size(); k += stride) {
+      process(roots[k].face, roots[k].u, roots[k].v, 1.0 / kGrid, m_, 0);
+    }
+  }
+
+  void run() { search_roots(prepare(), 0, 1); }
+
+  // Adds what `other`, a copy of this search made after prepare() and run on other roots, found
+  // and proved. prepared_cells: the cells both counted in prepare().
+  void absorb(const BranchAndBound& other, long prepared_cells) {
+    candidates_.insert(candidates_.end(), other.candidates_.begin(), other.candidates_.end());
+    lower_ = std::max(lower_, other.lower_);
+    upper_ = std::max(upper_, other.upper_);
+    cells_solved_ += other.cells_solved_ - prepared_cells;
+    patches_ += other.patches_;
+    exhausted_ = exhausted_ || other.exhausted_;
+    if (!stopped_ && other.stopped_) {
+      stopped_ = true;
+      stop_point_ = other.stop_point_;
+    }
+  }
+
+  long cells_solved() const { return cells_solved_; }
 
   // Collection of the frontier at a fixed level (collect_frontier()).
   void collect(double level, Frontier* frontier) {
@@ -440,8 +477,38 @@ SearchOutcome search_frontier(const Frontier& frontier, const Eigen::Matrix3Xd& 
 
 SearchOutcome search_worst_viewpoint(const Eigen::Matrix3Xd& n,
                                      const WorstViewpointOptions& options) {
-  BranchAndBound search(n, options);
-  search.run();
+  if (n.cols() < kSplitColumns) {
+    BranchAndBound search(n, options);
+    search.run();
+    return search.outcome();
+  }
+  // Two halves of the initial grid (alternate roots in the sorted order), each searched with its
+  // own attained values from the common start and half the patch budget: what each finds and
+  // proves does not depend on the other, so the outcome is the same whether the halves run on
+  // two threads or one.
+  WorstViewpointOptions half = options;
+  half.max_patches = std::max(1L, options.max_patches / 2);
+  BranchAndBound search(n, half);
+  const auto roots = search.prepare();
+  const long prepared_cells = search.cells_solved();
+  BranchAndBound second = search;
+  if (options.threads >= 2) {
+    std::exception_ptr failure;
+    std::thread worker([&] {
+      try {
+        second.search_roots(roots, 1, 2);
+      } catch (...) {
+        failure = std::current_exception();
+      }
+    });
+    search.search_roots(roots, 0, 2);
+    worker.join();
+    if (failure) std::rethrow_exception(failure);
+  } else {
+    search.search_roots(roots, 0, 2);
+    second.search_roots(roots, 1, 2);
+  }
+  search.absorb(second, prepared_cells);
   return search.outcome();
 }
 

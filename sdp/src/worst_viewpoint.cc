@@ -109,6 +109,7 @@ bool WorstViewpointOptions::is_valid(std::string* why) const {
     return fail("WorstViewpointOptions::tie_tolerance must be in [0, 1e-3]");
   }
   if (max_patches < 1) return fail("WorstViewpointOptions::max_patches must be >= 1");
+  if (threads != 1 && threads != 2) return fail("WorstViewpointOptions::threads must be 1 or 2");
   if (std::isnan(stop_above)) return fail("WorstViewpointOptions::stop_above must not be NaN");
   for (const Eigen::Vector3d& h : hints) {
     if (!h.allFinite() || h.norm() == 0.0) {
