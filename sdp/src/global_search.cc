@@ -477,7 +477,9 @@ SearchOutcome search_frontier(const Frontier& frontier, const Eigen::Matrix3Xd& 
 
 SearchOutcome search_worst_viewpoint(const Eigen::Matrix3Xd& n,
                                      const WorstViewpointOptions& options) {
-  if (n.cols() < kSplitColumns) {
+  // A search that may stop early (stop_above) stays serial: a half could not stop the other
+  // without making the outcome depend on timing.
+  if (n.cols() < kSplitColumns || options.stop_above < std::numeric_limits<double>::infinity()) {
     BranchAndBound search(n, options);
     search.run();
     return search.outcome();

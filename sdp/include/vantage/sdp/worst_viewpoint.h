@@ -121,8 +121,9 @@ struct WorstViewpointOptions {
   /// +infinity never stops.
   double stop_above = std::numeric_limits<double>::infinity();
   /// Threads the branch and bound may use, 1 or 2. A layout of 2000 or more distinct directions
-  /// is searched as two halves of the sphere (each with half of max_patches), on two threads when
-  /// this is 2; the result (viewpoints, t, certificate, patch count) is the same for 1 and 2.
+  /// without a finite stop_above is searched as two halves of the sphere (each with half of
+  /// max_patches, docs/math.md §14), on two threads when this is 2; the result (viewpoints, t,
+  /// certificate, patch count) is the same for 1 and 2.
   int threads = 2;
   /// Also solve the best cell's LMI (Eq. 28) on the SDP backend and compare (confirmation).
   bool confirm_with_sdp = false;
