@@ -495,17 +495,21 @@ SearchOutcome search_worst_viewpoint(const Eigen::Matrix3Xd& n,
   const long prepared_cells = search.cells_solved();
   BranchAndBound second = search;
   if (options.threads >= 2) {
-    std::exception_ptr failure;
-    std::thread worker([&] {
+    // Both halves catch, so the worker is always joined (e.g. after a bad_alloc).
+    std::exception_ptr failures[2];
+    auto guarded = [&roots, &failures](BranchAndBound* half_search, int index) {
       try {
-        second.search_roots(roots, 1, 2);
+        half_search->search_roots(roots, index, 2);
       } catch (...) {
-        failure = std::current_exception();
+        failures[index] = std::current_exception();
       }
-    });
-    search.search_roots(roots, 0, 2);
+    };
+    std::thread worker(guarded, &second, 1);
+    guarded(&search, 0);
     worker.join();
-    if (failure) std::rethrow_exception(failure);
+    for (const std::exception_ptr& failure : failures) {
+      if (failure) std::rethrow_exception(failure);
+    }
   } else {
     search.search_roots(roots, 0, 2);
     second.search_roots(roots, 1, 2);
