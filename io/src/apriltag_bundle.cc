@@ -8,6 +8,7 @@
 
 #include "entry_labels.h"
 #include "json_fields.h"
+#include "printable.h"
 #include "vantage/analysis/common.h"
 
 namespace vantage::io {
@@ -19,30 +20,14 @@ using internal::fail;
 // A quaternion shorter than this cannot be normalised into a rotation meaningfully.
 constexpr double kMinQuaternionNorm = 1e-12;
 
-// yaml-cpp's messages may quote the offending character raw ("unknown escape character: " and
-// a newline, say): control characters become \xNN so that the error stays one line.
-std::string printable(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (byte >= 0x20 && byte != 0x7f) {
-      out += c;
-      continue;
-    }
-    static constexpr char kHex[] = "0123456789abcdef";
-    out += "\\x";
-    out += kHex[byte >> 4];
-    out += kHex[byte & 0xf];
-  }
-  return out;
-}
-
 YAML::Node parse_yaml(std::string_view text, const std::string& source) {
   try {
     return YAML::Load(std::string(text));
   } catch (const YAML::Exception& e) {
+    // yaml-cpp may quote the offending character raw (a newline after a NUL, say): fail() makes
+    // the message printable.
     fail(source, "not valid YAML: line " + std::to_string(e.mark.line + 1) + ", column " +
-                     std::to_string(e.mark.column + 1) + ": " + printable(e.msg));
+                     std::to_string(e.mark.column + 1) + ": " + e.msg);
   }
 }
 
@@ -80,7 +65,8 @@ std::size_t choose_bundle(const YAML::Node& bundles, const std::string& source,
 TagPoints tag_points_from_string(const std::string& name, const std::string& option) {
   if (name == "corners") return TagPoints::kCorners;
   if (name == "centres" || name == "centers") return TagPoints::kCentres;
-  throw InvalidArgument(option + ": expected corners or centres, got \"" + name + "\"");
+  throw InvalidArgument(option + ": expected corners or centres, got \"" +
+                        internal::printable(name) + "\"");
 }
 
 namespace {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "printable.h"
 #include "vantage/analysis/common.h"
 
 namespace vantage::io {
@@ -11,8 +12,8 @@ BoardType board_type_from_string(const std::string& name, const std::string& opt
   if (name == "chessboard") return BoardType::kChessboard;
   if (name == "charuco") return BoardType::kCharuco;
   if (name == "aprilgrid") return BoardType::kAprilGrid;
-  throw InvalidArgument(option + ": expected chessboard, charuco or aprilgrid, got \"" + name +
-                        "\"");
+  throw InvalidArgument(option + ": expected chessboard, charuco or aprilgrid, got \"" +
+                        internal::printable(name) + "\"");
 }
 
 const char* to_string(BoardType type) {

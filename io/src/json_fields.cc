@@ -5,12 +5,13 @@
 #include <set>
 #include <vector>
 
+#include "printable.h"
 #include "vantage/analysis/common.h"
 
 namespace vantage::io::internal {
 
 void fail(const std::string& source, const std::string& what) {
-  throw InvalidArgument(source + ": " + what);
+  throw InvalidArgument(printable(source + ": " + what));
 }
 
 namespace {

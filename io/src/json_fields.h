@@ -11,7 +11,7 @@
 
 namespace vantage::io::internal {
 
-/// Throws InvalidArgument "<source>: <what>".
+/// Throws InvalidArgument "<source>: <what>", made printable().
 [[noreturn]] void fail(const std::string& source, const std::string& what);
 
 /// Parses `text` as a JSON object; errors for invalid JSON or a non-object root.

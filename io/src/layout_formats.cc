@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "json_fields.h"
+#include "printable.h"
 #include "vantage/analysis/common.h"
 #include "vantage/io/csv_layout.h"
 #include "vantage/io/layout_file.h"
@@ -16,7 +17,8 @@ LayoutFormat layout_format_from_string(const std::string& name, const std::strin
   if (name == "json") return LayoutFormat::kJson;
   if (name == "csv") return LayoutFormat::kCsv;
   if (name == "apriltag") return LayoutFormat::kAprilTag;
-  throw InvalidArgument(option + ": expected auto, json, csv or apriltag, got \"" + name + "\"");
+  throw InvalidArgument(option + ": expected auto, json, csv or apriltag, got \"" +
+                        internal::printable(name) + "\"");
 }
 
 const char* to_string(LayoutFormat format) {

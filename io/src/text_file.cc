@@ -11,6 +11,8 @@
 #include <cstring>
 #include <vector>
 
+#include "printable.h"
+
 namespace vantage::io {
 
 namespace {
@@ -19,7 +21,7 @@ namespace {
 constexpr std::size_t kReadChunk = std::size_t{1} << 16;
 
 [[noreturn]] void bad(const std::string& path, const std::string& problem) {
-  throw InvalidArgument(path + ": " + problem);
+  throw InvalidArgument(internal::printable(path + ": " + problem));
 }
 
 std::string errno_text(int error) { return std::strerror(error); }

@@ -101,6 +101,11 @@ const BadLayout kBadLayouts[] = {
     {"TinyVector", R"({"vectors": [[1,0,0],[1e-320,0,0]]})", "vectors[1]: length outside"},
     {"HugeWeight", R"({"vectors": [[1,0,0],[0,1,0]], "weights": [1e200, 1]})",
      "weights[0]: must be <= 1e100"},
+    // Found by the fuzzer: a key with an escaped newline, named in the error, kept it raw. Control
+    // characters of the user's text are written \xNN.
+    {"NewlineInKeyOfBadJson", R"({"po\ntsanem14": [1, )", "not valid JSON: po\\x0atsanem14"},
+    {"ControlCharactersInUnknownKey", R"({"vectors": [[1,0,0],[0,1,0]], "we\r\u0001ird": 1})",
+     "we\\x0d\\x01ird"},
 };
 
 INSTANTIATE_TEST_SUITE_P(LayoutFile, BadLayoutFile, ::testing::ValuesIn(kBadLayouts),
