@@ -17,9 +17,10 @@ namespace vantage::cli {
 constexpr std::size_t kMaxFileBytes = io::kMaxFileBytes;
 constexpr std::size_t kMaxFileBytesAllowLarge = std::size_t{1} << 30;
 
-/// `analyze`: data vectors (vectors, or the n (n - 1) / 2 free vectors of n points). Measured on
-/// this machine: 500 random vectors 2.2 s CPU, 2000 vectors 60 s; 1000 stays near 10 s.
-constexpr long kMaxAnalyzeVectors = 1000;
+/// `analyze`: data vectors (vectors, or the n (n - 1) / 2 free vectors of n points: 200 points).
+/// Measured on this machine (docs/benchmarks.md, issue 12 third pass): 5000 random vectors 0.14 s,
+/// 20 000 vectors 1.3 s and 20 MB.
+constexpr long kMaxAnalyzeVectors = 20000;
 /// `design`: data vectors after the additions (one --add step on 200 random vectors: 4.6 s CPU,
 /// about 1700 global solves), and the additions themselves (--add 100 on the triad: 40 s).
 constexpr long kMaxDesignVectors = 200;

@@ -126,6 +126,10 @@ DirectResult multistart_search(const Layout& layout, const AugmentOptions& optio
                     greedy.steps.empty() ? greedy.initial.t : greedy.steps.back().worst.t);
   RandomStarts random(options.seed);
   for (int start = 0; start < options.direct_starts; ++start) {
+    if (options.progress) {
+      options.progress("direct optimiser, start " + std::to_string(start + 1) + "/" +
+                       std::to_string(options.direct_starts));
+    }
     std::vector<double> x(3 * k);
     for (int j = 0; j < k; ++j) {
       const Eigen::Vector3d v = start == 0 ? greedy.steps[j].added : space.random_addition(&random);

@@ -96,12 +96,13 @@ def test_design_without_enough_candidates_raises_numerical_error(vantage):
 
 
 def test_the_gil_is_released_while_analysing(vantage):
-    layout = vantage.load_layout(LAYOUTS / "apriltag_cube.yaml")
+    # 3000 random directions: long enough to observe (about 0.1 s here), seeded.
+    vectors = np.random.default_rng(20061122).normal(size=(3000, 3))
     span = {}
 
     def work():
         span["start"] = time.perf_counter()
-        vantage.analyze(layout)
+        vantage.analyze(vectors=vectors)
         span["end"] = time.perf_counter()
 
     worker = threading.Thread(target=work)

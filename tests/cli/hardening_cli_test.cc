@@ -143,12 +143,12 @@ TEST(HardeningCli, LimitsAreCheckedBeforeAnyWork) {
                    "--add: 1000000 exceeds the limit of 20 for `vantage design` (--allow-large");
   // /dev/zero as a layout: the read stops at the file size bound.
   expect_bad_input(run_vantage("analyze /dev/zero", scratch), "/dev/zero: larger than 67108864");
-  // 46 points give 1035 free vectors, beyond analyze's 1000.
+  // 201 points give 20 100 free vectors, beyond analyze's 20 000.
   nlohmann::json many;
-  for (int k = 0; k < 46; ++k) many["points"].push_back({k, k * k % 17, k % 5});
+  for (int k = 0; k < 201; ++k) many["points"].push_back({k, k * k % 17, k % 5});
   scratch.write("many.json", many.dump());
   expect_bad_input(run_vantage("analyze many.json", scratch),
-                   "many.json: data vectors: 1035 exceeds the limit of 1000");
+                   "many.json: data vectors: 20100 exceeds the limit of 20000");
   // 50 000 points: an int would overflow in 49 999 * 50 000; now a clear bound, exit 2.
   std::ostringstream huge;
   huge << "{\"points\": [";
@@ -197,7 +197,8 @@ TEST(HardeningCli, ProgressOnlyOnATerminal) {
   // run_json checks that everywhere).
   ScratchDir scratch;
   const std::string design = "design '" + kSatellite + "' --add 6";
-  const std::regex progress("vantage design: (step [0-9]/6|direct optimiser), [0-9]+ s");
+  const std::regex progress(
+      "vantage design: (step [0-9]/6|direct optimiser(, start [0-9]+/[0-9]+)?), [0-9]+ s");
   const std::string shown = run_on_terminal(design, scratch);
   EXPECT_TRUE(std::regex_search(shown, progress)) << shown;
   const std::string quiet = run_on_terminal(design + " --quiet", scratch);

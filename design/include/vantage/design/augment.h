@@ -106,8 +106,8 @@ struct AugmentOptions {
   /// the same choices, slower (the reference the tests compare with).
   bool prune_solves = true;
 
-  /// Called with the stage about to run ("step 2/5", "direct optimiser"), e.g. to show
-  /// progress; empty: nothing is called.
+  /// Called with the stage about to run ("step 2/5", "direct optimiser", then "direct optimiser,
+  /// start 3/8" per multistart start), e.g. to show progress; empty: nothing is called.
   std::function<void(const std::string& stage)> progress;
 
   /// True when every field is in range; otherwise *why names the field and the constraint.
