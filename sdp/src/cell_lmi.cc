@@ -14,8 +14,8 @@ namespace vantage::sdp {
 namespace {
 
 // Data vectors in the first LMI solve: the ones nearest to active at the cell's minimum-norm
-// direction (a cell optimum has at most three active). A cell of at most this many is solved
-// whole in one LMI.
+// direction (at most three are needed to support a cell optimum). A cell of at most this many is
+// solved whole in one LMI.
 constexpr int kFirstWorkingSet = 32;
 // Most violated data vectors added per round, and rounds before the whole cell is solved.
 constexpr int kAddPerRound = 32;
@@ -60,7 +60,7 @@ std::vector<int> violated(const Eigen::Matrix3Xd& p, const std::vector<char>& in
 
 // Solves the LMI on growing subsets of the cell's vectors until its answer satisfies all of them
 // (then it is the whole cell's optimum: a subset's optimum is >= the cell's, and it is feasible
-// for the cell), or solves the whole cell after kMaxRounds.
+// for the cell), or solves the whole cell after kMaxRounds or when the backend fails on a subset.
 SdpResult solve_by_constraint_generation(const Eigen::Matrix3Xd& p, const SdpOptions& options,
                                          CellViewpoint* cell) {
   const int m = static_cast<int>(p.cols());
@@ -69,19 +69,24 @@ SdpResult solve_by_constraint_generation(const Eigen::Matrix3Xd& p, const SdpOpt
   if (m > kFirstWorkingSet) working = first_working_set(p);
   std::vector<char> in_working(m, 0);
   for (int i : working) in_working[i] = 1;
-  for (int round = 0;; ++round) {
-    if (round == kMaxRounds) {
-      working.resize(m);
-      std::iota(working.begin(), working.end(), 0);
-    }
+  for (int round = 1;; ++round) {
     Eigen::Matrix3Xd subset(3, working.size());
     for (std::size_t k = 0; k < working.size(); ++k) subset.col(k) = p.col(working[k]);
     SdpResult sdp = solve_lmi(cell_lmi_problem(subset), options);
     ++cell->lmi_solves;
     cell->lmi_vectors = static_cast<int>(working.size());
-    if (!has_solution(sdp.status) || static_cast<int>(working.size()) == m) return sdp;
-    const std::vector<int> add = violated(p, in_working, sdp.y, options.tolerance);
-    if (add.empty()) return sdp;
+    if (static_cast<int>(working.size()) == m) return sdp;
+    std::vector<int> add;
+    if (has_solution(sdp.status)) {
+      add = violated(p, in_working, sdp.y, options.tolerance);
+      if (add.empty()) return sdp;
+    }
+    if (add.empty() || round == kMaxRounds) {
+      // The backend failed on a subset, or the rounds ran out: the whole cell, once.
+      working.resize(m);
+      std::iota(working.begin(), working.end(), 0);
+      continue;
+    }
     for (int i : add) in_working[i] = 1;
     working.insert(working.end(), add.begin(), add.end());
     std::sort(working.begin(), working.end());

@@ -80,9 +80,13 @@ DropoutAnalysis dropout_analysis(const Layout& layout, const DropoutOptions& opt
 
   DropoutAnalysis result;
   result.entries.resize(n);
+  // The entries already run on every thread asked for: each search then stays on its own (its
+  // result does not depend on it).
+  WorstViewpointOptions search = options.worst_viewpoint;
+  if (thread_count(options.threads, n) > 1) search.threads = 1;
   parallel_blocks(n, options.threads, [&](long begin, long end) {
     for (long k = begin; k < end; ++k) {
-      result.entries[k] = analyse_without(data, static_cast<int>(k), options.worst_viewpoint);
+      result.entries[k] = analyse_without(data, static_cast<int>(k), search);
     }
   });
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -20,8 +21,9 @@ inline int thread_count(int requested, long work_items) {
 }
 
 /// Calls body(begin, end) on disjoint contiguous blocks that cover [0, n), on
-/// thread_count(threads, n) threads (the calling thread takes the first block). The first
-/// exception a block throws is rethrown here after every thread has joined.
+/// thread_count(threads, n) threads (the calling thread takes the first block, and any block
+/// whose thread cannot be started). The first exception a block throws is rethrown here after
+/// every thread has joined.
 template <typename Body>
 void parallel_blocks(long n, int threads, Body&& body) {
   if (n <= 0) return;
@@ -38,8 +40,15 @@ void parallel_blocks(long n, int threads, Body&& body) {
   };
   std::vector<std::thread> workers;
   workers.reserve(count - 1);
-  for (int k = 1; k < count; ++k) workers.emplace_back(run, k);
-  run(0);
+  std::vector<int> here = {0};  // blocks run on the calling thread
+  for (int k = 1; k < count; ++k) {
+    try {
+      workers.emplace_back(run, k);
+    } catch (const std::system_error&) {
+      here.push_back(k);  // no thread available (a limit, a sandbox): same result, later
+    }
+  }
+  for (int k : here) run(k);
   for (std::thread& worker : workers) worker.join();
   for (const std::exception_ptr& error : errors) {
     if (error) std::rethrow_exception(error);

@@ -109,7 +109,8 @@ struct WorstViewpointOptions {
   /// Cells whose optimum is within this of t* are reported as further global optima (ties, e.g.
   /// the four of Z = I). Dimensionless, in [0, 1e-3].
   double tie_tolerance = 1e-9;
-  /// Patch budget of the branch and bound, >= 1. When exhausted the result is kNotCertified.
+  /// Patch budget of the branch and bound, >= 1 (a search split in two halves gives each
+  /// max_patches / 2, at least 1). When exhausted the result is kNotCertified.
   long max_patches = 50'000'000;
   /// Viewpoints to try first (any length > 0 and sign), e.g. the optima of a layout that differs
   /// by a few vectors: the best value min_i |a.n_i| attained at them is a lower bound on t* that
