@@ -7,15 +7,17 @@
 
 #include "command.h"
 #include "vantage/analysis/common.h"
+#include "vantage/io/printable.h"
 #include "vantage/io/text_file.h"
 
 namespace {
 
-/// Errors are exactly one line on stderr.
+/// Errors are exactly one line on stderr: line breaks become spaces, other control characters
+/// (an escape sequence in a file name, say) \xNN.
 void print_error(const std::string& kind, std::string message) {
   for (char& c : message)
     if (c == '\n' || c == '\r') c = ' ';
-  std::cerr << "vantage: " << kind << ": " << message << std::endl;
+  std::cerr << "vantage: " << kind << ": " << vantage::io::printable(message) << std::endl;
 }
 
 /// The first word when it is neither an option nor a subcommand ("vantage frob"), else empty.

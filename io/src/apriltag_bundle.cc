@@ -8,8 +8,8 @@
 
 #include "entry_labels.h"
 #include "json_fields.h"
-#include "printable.h"
 #include "vantage/analysis/common.h"
+#include "vantage/io/printable.h"
 
 namespace vantage::io {
 
@@ -65,8 +65,7 @@ std::size_t choose_bundle(const YAML::Node& bundles, const std::string& source,
 TagPoints tag_points_from_string(const std::string& name, const std::string& option) {
   if (name == "corners") return TagPoints::kCorners;
   if (name == "centres" || name == "centers") return TagPoints::kCentres;
-  throw InvalidArgument(option + ": expected corners or centres, got \"" +
-                        internal::printable(name) + "\"");
+  throw InvalidArgument(option + ": expected corners or centres, got \"" + printable(name) + "\"");
 }
 
 namespace {

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "printable.h"
 #include "vantage/analysis/common.h"
+#include "vantage/io/printable.h"
 
 namespace vantage::io {
 
@@ -13,7 +13,7 @@ BoardType board_type_from_string(const std::string& name, const std::string& opt
   if (name == "charuco") return BoardType::kCharuco;
   if (name == "aprilgrid") return BoardType::kAprilGrid;
   throw InvalidArgument(option + ": expected chessboard, charuco or aprilgrid, got \"" +
-                        internal::printable(name) + "\"");
+                        printable(name) + "\"");
 }
 
 const char* to_string(BoardType type) {

@@ -5,8 +5,8 @@
 #include <set>
 #include <vector>
 
-#include "printable.h"
 #include "vantage/analysis/common.h"
+#include "vantage/io/printable.h"
 
 namespace vantage::io::internal {
 

@@ -5,10 +5,10 @@
 #include <filesystem>
 
 #include "json_fields.h"
-#include "printable.h"
 #include "vantage/analysis/common.h"
 #include "vantage/io/csv_layout.h"
 #include "vantage/io/layout_file.h"
+#include "vantage/io/printable.h"
 
 namespace vantage::io {
 
@@ -18,7 +18,7 @@ LayoutFormat layout_format_from_string(const std::string& name, const std::strin
   if (name == "csv") return LayoutFormat::kCsv;
   if (name == "apriltag") return LayoutFormat::kAprilTag;
   throw InvalidArgument(option + ": expected auto, json, csv or apriltag, got \"" +
-                        internal::printable(name) + "\"");
+                        printable(name) + "\"");
 }
 
 const char* to_string(LayoutFormat format) {

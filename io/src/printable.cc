@@ -1,6 +1,6 @@
-#include "printable.h"
+#include "vantage/io/printable.h"
 
-namespace vantage::io::internal {
+namespace vantage::io {
 
 std::string printable(const std::string& text) {
   static constexpr char kHex[] = "0123456789abcdef";
@@ -19,4 +19,4 @@ std::string printable(const std::string& text) {
   return out;
 }
 
-}  // namespace vantage::io::internal
+}  // namespace vantage::io

@@ -11,7 +11,7 @@
 #include <cstring>
 #include <vector>
 
-#include "printable.h"
+#include "vantage/io/printable.h"
 
 namespace vantage::io {
 
@@ -21,7 +21,7 @@ namespace {
 constexpr std::size_t kReadChunk = std::size_t{1} << 16;
 
 [[noreturn]] void bad(const std::string& path, const std::string& problem) {
-  throw InvalidArgument(internal::printable(path + ": " + problem));
+  throw InvalidArgument(printable(path + ": " + problem));
 }
 
 std::string errno_text(int error) { return std::strerror(error); }
@@ -74,7 +74,8 @@ void write_all(const Temporary& temp, const std::string& target, const std::stri
     const ssize_t written = ::write(temp.fd(), data, left);
     if (written < 0) {
       if (errno == EINTR) continue;
-      throw WriteError(target + ": write failed: " + errno_text(errno) + "; nothing written");
+      throw WriteError(printable(target) + ": write failed: " + errno_text(errno) +
+                       "; nothing written");
     }
     data += written;
     left -= static_cast<std::size_t>(written);
@@ -133,7 +134,7 @@ std::string read_text_file(const std::string& path, std::size_t max_bytes) {
     }
     if (got == 0) break;
     if (text.size() + static_cast<std::size_t>(got) > max_bytes) {
-      throw FileTooLarge(path + ": larger than " + std::to_string(max_bytes) +
+      throw FileTooLarge(printable(path) + ": larger than " + std::to_string(max_bytes) +
                          " bytes, the input size limit");
     }
     text.append(chunk.data(), static_cast<std::size_t>(got));
@@ -171,10 +172,12 @@ void write_text_file(const std::string& path, const std::string& text, bool over
   Temporary temp(fd, pattern);
   write_all(temp, path, text);
   if (::fchmod(temp.fd(), 0666 & ~current_umask()) != 0 || ::fsync(temp.fd()) != 0) {
-    throw WriteError(path + ": write failed: " + errno_text(errno) + "; nothing written");
+    throw WriteError(printable(path) + ": write failed: " + errno_text(errno) +
+                     "; nothing written");
   }
   if (temp.close() != 0) {
-    throw WriteError(path + ": write failed: " + errno_text(errno) + "; nothing written");
+    throw WriteError(printable(path) + ": write failed: " + errno_text(errno) +
+                     "; nothing written");
   }
   move_into_place(temp.path(), path, overwrite);
   temp.release();
