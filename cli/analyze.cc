@@ -201,6 +201,10 @@ int run_analyze(const AnalyzeArgs& args) {
   const Layout layout = args.input.read(args.file, args.allow_large);
   check_limit(args.file + ": data vectors", data_vector_count(layout), kMaxAnalyzeVectors,
               "analyze", args.allow_large);
+  if (args.dropout) {
+    check_limit(args.file + ": data vectors with --dropout", data_vector_count(layout),
+                kMaxDropoutVectors, "analyze --dropout", args.allow_large);
+  }
   const DataVectors data = against_source(args.file, [&] {
     return data_vectors(layout, args.pair_weighting == "arithmetic"
                                     ? PairWeighting::kArithmeticMean

@@ -21,6 +21,9 @@ constexpr std::size_t kMaxFileBytesAllowLarge = std::size_t{1} << 30;
 /// Measured on this machine (docs/benchmarks.md, issue 12 third pass): 5000 random vectors 0.14 s,
 /// 20 000 vectors 1.3 s and 20 MB.
 constexpr long kMaxAnalyzeVectors = 20000;
+/// `analyze --dropout`: one global search per entry (marker or vector), so the bound on data
+/// vectors stays where the single search's was: 1000 vectors take about 1000 searches of 15 ms.
+constexpr long kMaxDropoutVectors = 1000;
 /// `design`: data vectors after the additions (one --add step on 200 random vectors: 4.6 s CPU,
 /// about 1700 global solves), and the additions themselves (--add 100 on the triad: 40 s).
 constexpr long kMaxDesignVectors = 200;

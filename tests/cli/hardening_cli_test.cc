@@ -149,6 +149,12 @@ TEST(HardeningCli, LimitsAreCheckedBeforeAnyWork) {
   scratch.write("many.json", many.dump());
   expect_bad_input(run_vantage("analyze many.json", scratch),
                    "many.json: data vectors: 20100 exceeds the limit of 20000");
+  // --dropout runs one search per entry: 46 points (1035 free vectors) are beyond its 1000.
+  nlohmann::json dropout;
+  for (int k = 0; k < 46; ++k) dropout["points"].push_back({k, k * k % 17, k % 5});
+  scratch.write("dropout.json", dropout.dump());
+  expect_bad_input(run_vantage("analyze dropout.json --dropout", scratch),
+                   "dropout.json: data vectors with --dropout: 1035 exceeds the limit of 1000");
   // 50 000 points: an int would overflow in 49 999 * 50 000; now a clear bound, exit 2.
   std::ostringstream huge;
   huge << "{\"points\": [";
@@ -204,6 +210,13 @@ TEST(HardeningCli, ProgressOnlyOnATerminal) {
   const std::string quiet = run_on_terminal(design + " --quiet", scratch);
   EXPECT_THAT(quiet, HasSubstr("final p-bar_min"));
   EXPECT_FALSE(std::regex_search(quiet, progress)) << quiet;
+}
+
+TEST(HardeningCli, ControlCharactersInAFileNameAreEscaped) {
+  // An escape sequence in a file name must not reach the terminal raw: written \x1b.
+  ScratchDir scratch;
+  expect_bad_input(run_vantage("analyze \"$(printf 'no\\033[2Jsuch.json')\"", scratch),
+                   "no\\x1b[2Jsuch.json");
 }
 
 // ---- Writes: all or nothing -----------------------------------------------------------------
