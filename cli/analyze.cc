@@ -160,6 +160,11 @@ void print_report(const AnalyzeArgs& args, const Layout& layout, const DataVecto
   if (r.crosscheck.ran) {
     std::cout << r.crosscheck.method << " t " << format_number(r.crosscheck.t, 9)
               << (r.crosscheck.agrees ? "  agrees" : "  DISAGREES") << "\n";
+    if (!r.crosscheck.samples_cover_cells) {
+      std::cout << "                       (" << r.crosscheck.samples << " samples "
+                << format_number(r.crosscheck.sample_spacing, 3)
+                << " rad apart, wider than the optimal cell: other cells only spot-checked)\n";
+    }
   } else {
     std::cout << "skipped (--no-crosscheck)\n";
   }

@@ -37,8 +37,12 @@ Json analysis(const Layout& layout, const DataVectors& data, const sdp::LayoutAn
                       {"pbar", r.paper_lmi.pbar},
                       {"status", sdp::to_string(r.paper_lmi.status)}};
   if (r.crosscheck.ran) {
-    out["crosscheck"] = {
-        {"method", r.crosscheck.method}, {"t", r.crosscheck.t}, {"agrees", r.crosscheck.agrees}};
+    out["crosscheck"] = {{"method", r.crosscheck.method},
+                         {"t", r.crosscheck.t},
+                         {"agrees", r.crosscheck.agrees},
+                         {"samples", r.crosscheck.samples},
+                         {"sample_spacing_rad", r.crosscheck.sample_spacing},
+                         {"samples_cover_cells", r.crosscheck.samples_cover_cells}};
   } else {
     out["crosscheck"] = {{"method", "skipped"}};
   }

@@ -1,6 +1,7 @@
 #include "vantage/sdp/layout_analysis.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -102,7 +103,14 @@ LayoutAnalysis analyze_vectors(const Eigen::Matrix3Xd& vectors, const Eigen::Vec
     stage("cross-check");
     const CrossCheck check =
         crosscheck_worst_viewpoint(scaled, global.t, options.crosscheck, global.viewpoints);
-    report.crosscheck = {true, check.method, check.t, check.agrees, check.message};
+    report.crosscheck = {true,
+                         check.method,
+                         check.t,
+                         check.agrees,
+                         check.message,
+                         check.samples,
+                         check.sample_spacing,
+                         check.sample_spacing < std::asin(std::clamp(global.t, 0.0, 1.0))};
     if (!check.agrees) append(&report.message, check.message);
   }
   stage("swap sensitivity");

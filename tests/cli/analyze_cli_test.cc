@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <random>
 
 #include "support/cli_runner.h"
 #include "vantage/analysis/common.h"
@@ -50,6 +51,30 @@ TEST(AnalyzeCli, TriadHasFourWorstViewpointsAndTheContractFields) {
   EXPECT_EQ(json["solver"]["status"], "certified");
   EXPECT_EQ(json["swaps"].size(), 3u);  // all pairs of three vectors
   EXPECT_NEAR(json["paper_lmi"]["pbar"].get<double>(), kTriadPbar, 1e-6);
+}
+
+TEST(AnalyzeCli, CrossCheckSaysWhetherItsSamplesCoverTheCells) {
+  // The triad's optimal cell (inradius asin(1/sqrt 3) = 0.62 rad) is far wider than 20 000
+  // samples' spacing; 3000 random directions (t* ~ 0.006) get 4e7 / 3000 = 13 333 samples,
+  // 0.022 rad apart: other cells are only spot-checked, and the report says so.
+  ScratchDir scratch;
+  const auto triad = analyze_json(layout("triad"), scratch)["crosscheck"];
+  EXPECT_TRUE(triad["samples_cover_cells"].get<bool>());
+  EXPECT_EQ(triad["samples"], 20000);
+  EXPECT_NEAR(triad["sample_spacing_rad"].get<double>(), std::sqrt(2.0 * M_PI / 20000), 1e-12);
+  std::mt19937 rng(20261126);
+  std::normal_distribution<double> gauss;
+  nlohmann::json many;
+  for (int k = 0; k < 3000; ++k) many["vectors"].push_back({gauss(rng), gauss(rng), gauss(rng)});
+  scratch.write("many.json", many.dump());
+  const auto json = analyze_json("many.json --swaps 1", scratch);
+  const auto check = json["crosscheck"];
+  EXPECT_TRUE(check["agrees"].get<bool>());
+  EXPECT_FALSE(check["samples_cover_cells"].get<bool>());
+  EXPECT_EQ(check["samples"], 13333);
+  EXPECT_GT(check["sample_spacing_rad"].get<double>(), std::asin(json["t"].get<double>()));
+  const auto text = run_vantage("analyze many.json", scratch);
+  EXPECT_THAT(text.out, HasSubstr("other cells only spot-checked"));
 }
 
 TEST(AnalyzeCli, NoteThreeLayoutGlobalVersusPaper) {
