@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <numeric>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "min_norm_point.h"
@@ -21,6 +22,17 @@ constexpr int kFirstWorkingSet = 32;
 constexpr int kAddPerRound = 32;
 constexpr int kMaxRounds = 8;
 
+// The (at most) `count` indices of `candidates` with the smallest values, smallest first, ties
+// by index.
+std::vector<int> smallest(std::vector<int> candidates, const Eigen::VectorXd& values, int count) {
+  const int kept = std::min<int>(count, static_cast<int>(candidates.size()));
+  std::partial_sort(
+      candidates.begin(), candidates.begin() + kept, candidates.end(),
+      [&](int a, int b) { return values(a) < values(b) || (values(a) == values(b) && a < b); });
+  candidates.resize(kept);
+  return candidates;
+}
+
 // The kFirstWorkingSet vectors with the smallest p_i.a0, a0 the direction of the minimum-norm
 // point of conv{p_i} (the cell's optimum, docs/math.md §13), or of the sum of the p_i when the
 // origin is in the hull. Only a guess: the rounds below add whatever the LMI's answer violates.
@@ -29,15 +41,11 @@ std::vector<int> first_working_set(const Eigen::Matrix3Xd& p) {
   const internal::MinNormPoint hull = internal::min_norm_point(p.data(), m);
   Eigen::Vector3d a0 = hull.contains_origin ? Eigen::Vector3d(p.rowwise().sum()) : hull.x;
   if (!(a0.norm() > 0.0)) a0 = Eigen::Vector3d::UnitZ();
-  const Eigen::VectorXd values = p.transpose() * a0;
-  std::vector<int> order(m);
-  std::iota(order.begin(), order.end(), 0);
-  std::partial_sort(
-      order.begin(), order.begin() + kFirstWorkingSet, order.end(),
-      [&](int a, int b) { return values(a) < values(b) || (values(a) == values(b) && a < b); });
-  order.resize(kFirstWorkingSet);
-  std::sort(order.begin(), order.end());
-  return order;
+  std::vector<int> all(m);
+  std::iota(all.begin(), all.end(), 0);
+  std::vector<int> working = smallest(std::move(all), p.transpose() * a0, kFirstWorkingSet);
+  std::sort(working.begin(), working.end());
+  return working;
 }
 
 // The vectors outside `working` that the LMI answer y = [a; t] violates by more than the SDP's
@@ -50,12 +58,7 @@ std::vector<int> violated(const Eigen::Matrix3Xd& p, const std::vector<char>& in
   for (int i = 0; i < static_cast<int>(p.cols()); ++i) {
     if (!in_working[i] && values(i) < below) out.push_back(i);
   }
-  const int add = std::min<int>(kAddPerRound, static_cast<int>(out.size()));
-  std::partial_sort(out.begin(), out.begin() + add, out.end(), [&](int a, int b) {
-    return values(a) < values(b) || (values(a) == values(b) && a < b);
-  });
-  out.resize(add);
-  return out;
+  return smallest(std::move(out), values, kAddPerRound);
 }
 
 // Solves the LMI on growing subsets of the cell's vectors until its answer satisfies all of them

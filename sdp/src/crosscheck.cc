@@ -254,6 +254,7 @@ CrossCheck crosscheck_worst_viewpoint(const Eigen::Matrix3Xd& vectors, double t_
   result.t = -1.0;
   result.samples = samples;
   result.sample_spacing = std::sqrt(2.0 * M_PI / samples);
+  result.samples_cover_cells = result.sample_spacing < std::asin(std::clamp(t_reference, 0.0, 1.0));
   auto consider = [&](const Eigen::Vector3d& a, double value) {
     if (value > result.t) {
       result.t = value;

@@ -1,7 +1,6 @@
 #include "vantage/sdp/layout_analysis.h"
 
 #include <Eigen/Geometry>
-#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -110,7 +109,7 @@ LayoutAnalysis analyze_vectors(const Eigen::Matrix3Xd& vectors, const Eigen::Vec
                          check.message,
                          check.samples,
                          check.sample_spacing,
-                         check.sample_spacing < std::asin(std::clamp(global.t, 0.0, 1.0))};
+                         check.samples_cover_cells};
     if (!check.agrees) append(&report.message, check.message);
   }
   stage("swap sensitivity");

@@ -64,13 +64,10 @@ struct LayoutAnalysis {
     std::string method;  ///< "nlopt_multistart_cobyla" (when ran)
     double t = 0.0;
     bool agrees = false;
-    std::string message;          ///< non-empty (loud) on disagreement
-    int samples = 0;              ///< CrossCheck::samples
-    double sample_spacing = 0.0;  ///< CrossCheck::sample_spacing, rad
-    /// sample_spacing < asin(t): the samples put a start in every cell as large as the optimal
-    /// one. false (large layouts, where the sample count is bounded): other cells are only
-    /// spot-checked, and `agrees` mainly re-solves the certified viewpoints' cells.
-    bool samples_cover_cells = false;
+    std::string message;               ///< non-empty (loud) on disagreement
+    int samples = 0;                   ///< CrossCheck::samples
+    double sample_spacing = 0.0;       ///< CrossCheck::sample_spacing, rad
+    bool samples_cover_cells = false;  ///< CrossCheck::samples_cover_cells
   } crosscheck;
 
   std::vector<SwapError> swaps;  ///< worst pairs, decreasing error_deg

@@ -216,6 +216,10 @@ struct CrossCheck {
   /// Angular spacing of the samples, sqrt(2 pi / samples) rad. When it is below asin(t) the
   /// samples alone put a start inside every cell as large as the optimal one.
   double sample_spacing = 0.0;
+  /// sample_spacing < asin(t_reference): the samples put a start in every cell as large as the
+  /// optimal one. false (large layouts, whose sample count is bounded): other cells are only
+  /// spot-checked, and agreement mainly rests on re-solving the reference viewpoints' cells.
+  bool samples_cover_cells = false;
   int polished = 0;  ///< starts polished: samples in distinct sign cells, then reference_viewpoints
   std::string message;  ///< empty when it agrees; otherwise says so loudly
 };
