@@ -42,19 +42,15 @@ Command add_plot_command(CLI::App& root);
 /// "qmethod" | "svd" | "foam" (already checked by CLI11) to the enum.
 OrientationMethod parse_orientation_method(const std::string& name);
 
-/// Throws InvalidArgument "<source>: <message>", with the library's argument names replaced by
-/// the file's field names (model_object and z_object -> model, q_camera and v_camera ->
-/// measured, d_image -> image), so that every error names the file.
-[[noreturn]] void rethrow_against(const std::string& source, const std::exception& error);
-
 /// Runs a library call on data read from `source`; its InvalidArgument (too few points,
-/// coincident points, ...) is reported against the file.
+/// coincident points, ...) is reported against the file: the same error, with the file as its
+/// source. The library names the fields as the file does, so nothing is renamed.
 template <typename Call>
 auto against_source(const std::string& source, Call&& call) {
   try {
     return call();
   } catch (const InvalidArgument& e) {
-    rethrow_against(source, e);
+    throw e.against(source);
   }
 }
 

@@ -36,8 +36,15 @@ int run_orient(const OrientArgs& args) {
   file.require({"model", "measured"}, "vantage orient");
   OrientationOptions options;
   options.method = parse_orientation_method(args.method);
-  const PoseResult pose = against_source(
-      file.source, [&] { return absolute_pose(file.model, file.measured, file.weights, options); });
+  const PoseResult pose = against_source(file.source, [&] {
+    try {
+      return absolute_pose(file.model, file.measured, file.weights, options);
+    } catch (const InvalidArgument& e) {
+      // absolute_pose() names its arguments z_object and measured; the file says model.
+      if (e.field() == "z_object") throw e.renamed("model", e.index());
+      throw;
+    }
+  });
 
   if (args.json) {
     Json out;

@@ -2,29 +2,10 @@
 #include <cstdio>
 #include <iostream>
 #include <sstream>
-#include <utility>
 
 #include "command.h"
 
 namespace vantage::cli {
-
-void rethrow_against(const std::string& source, const std::exception& error) {
-  // The library's argument names and the file fields they come from (longest first, so that
-  // "model_object" is not half-replaced by "object").
-  static const std::pair<const char*, const char*> kFileFields[] = {
-      {"model_object", "model"}, {"z_object", "model"}, {"q_camera", "measured"},
-      {"v_camera", "measured"},  {"d_image", "image"},
-  };
-  std::string message = error.what();
-  for (const auto& [library_name, field] : kFileFields) {
-    const std::string name = library_name;
-    for (auto at = message.find(name); at != std::string::npos;
-         at = message.find(name, at + std::string(field).size())) {
-      message.replace(at, name.size(), field);
-    }
-  }
-  throw InvalidArgument(source + ": " + message);
-}
 
 Json json_rows(const Eigen::MatrixXd& m) {
   Json rows = Json::array();

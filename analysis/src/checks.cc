@@ -6,24 +6,19 @@
 namespace vantage::internal {
 
 void fail(std::string_view arg, std::string_view problem) {
-  std::string message(arg);
-  message += ": ";
-  message += problem;
-  throw InvalidArgument(message);
+  throw InvalidArgument(std::string(arg), std::string(problem));
 }
 
 void fail_at(std::string_view arg, Eigen::Index index, std::string_view problem) {
-  std::string message(arg);
-  message += "[" + std::to_string(index) + "]: ";
-  message += problem;
-  throw InvalidArgument(message);
+  throw InvalidArgument(std::string(arg), static_cast<long>(index), std::string(problem));
 }
 
 void fail_options(std::string_view arg, std::string_view why) {
-  std::string message(arg);
-  message += ".";
-  message += why;
-  throw InvalidArgument(message);
+  // why is "<field>: <problem>" (invalid_option()): the field is "<arg>.<field>".
+  const std::size_t colon = why.find(": ");
+  if (colon == std::string_view::npos) throw InvalidArgument(std::string(arg), std::string(why));
+  throw InvalidArgument(std::string(arg) + "." + std::string(why.substr(0, colon)),
+                        std::string(why.substr(colon + 2)));
 }
 
 bool invalid_option(std::string* why, std::string_view field, std::string_view problem) {

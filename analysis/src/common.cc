@@ -1,6 +1,49 @@
 #include "vantage/analysis/common.h"
 
 #include <sstream>
+#include <utility>
+
+namespace vantage {
+
+InvalidArgument::InvalidArgument(std::string field, std::string problem)
+    : InvalidArgument({}, std::move(field), std::nullopt, std::move(problem)) {}
+
+InvalidArgument::InvalidArgument(std::string field, long index, std::string problem)
+    : InvalidArgument({}, std::move(field), index, std::move(problem)) {}
+
+InvalidArgument::InvalidArgument(std::string problem)
+    : InvalidArgument({}, {}, std::nullopt, std::move(problem)) {}
+
+InvalidArgument::InvalidArgument(std::string source, std::string field, std::optional<long> index,
+                                 std::string problem)
+    : std::invalid_argument(compose(source, field, index, problem)),
+      source_(std::move(source)),
+      field_(std::move(field)),
+      index_(index),
+      problem_(std::move(problem)) {}
+
+std::string InvalidArgument::compose(const std::string& source, const std::string& field,
+                                     std::optional<long> index, const std::string& problem) {
+  std::string out;
+  if (!source.empty()) out += source + ": ";
+  if (!field.empty()) {
+    out += field;
+    if (index) out += "[" + std::to_string(*index) + "]";
+    out += ": ";
+  }
+  return out + problem;
+}
+
+InvalidArgument InvalidArgument::against(const std::string& source) const {
+  if (!source_.empty()) return *this;
+  return InvalidArgument(source, field_, index_, problem_);
+}
+
+InvalidArgument InvalidArgument::renamed(std::string field, std::optional<long> index) const {
+  return InvalidArgument(source_, std::move(field), index, problem_);
+}
+
+}  // namespace vantage
 
 namespace vantage::internal {
 

@@ -8,6 +8,7 @@
 ///  - broken internal invariants throw vantage::InternalError through VANTAGE_CHECK, which stays
 ///    on in Release builds.
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -18,10 +19,44 @@ inline constexpr double kPi = 3.14159265358979323846;
 /// Degrees per radian: an angle in radians times this is in degrees.
 inline constexpr double kDegreesPerRadian = 180.0 / kPi;
 
-/// Thrown when a caller passes input that violates a documented precondition.
+/// Thrown when a caller passes input that violates a documented precondition. The error is
+/// data, not text to rewrite: which input (`source`: a file or "" when the caller's own
+/// argument), which field of it (`field`: an argument, a file field such as "points" or an
+/// option such as "--trials"; "" when none applies), which entry (`index`, or none) and what is
+/// wrong (`problem`, a lower-case phrase). what() is "<source>: <field>[<index>]: <problem>",
+/// the absent parts left out. A front end adds the source (against()) and prints what(): it
+/// never parses or rewrites the text.
 class InvalidArgument : public std::invalid_argument {
  public:
-  using std::invalid_argument::invalid_argument;
+  /// "<field>: <problem>".
+  InvalidArgument(std::string field, std::string problem);
+  /// "<field>[<index>]: <problem>".
+  InvalidArgument(std::string field, long index, std::string problem);
+  /// A problem that names no field of its own (e.g. a whole-file error).
+  explicit InvalidArgument(std::string problem);
+
+  const std::string& source() const { return source_; }
+  const std::string& field() const { return field_; }
+  std::optional<long> index() const { return index_; }
+  const std::string& problem() const { return problem_; }
+
+  /// The same error against `source` (a file name): "<source>: ..." unless it has a source
+  /// already, in which case it is returned unchanged.
+  InvalidArgument against(const std::string& source) const;
+  /// The same problem named as another field and index (e.g. the file's "points[3]" for the
+  /// library's "vectors[7]").
+  InvalidArgument renamed(std::string field, std::optional<long> index) const;
+
+ private:
+  InvalidArgument(std::string source, std::string field, std::optional<long> index,
+                  std::string problem);
+  static std::string compose(const std::string& source, const std::string& field,
+                             std::optional<long> index, const std::string& problem);
+
+  std::string source_;
+  std::string field_;
+  std::optional<long> index_;
+  std::string problem_;
 };
 
 /// Thrown when an internal invariant does not hold (a bug in vantage, not in the input).
