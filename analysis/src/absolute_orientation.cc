@@ -259,8 +259,8 @@ OrientationStatus classify(const RotationSolve& solve, const Eigen::Matrix3d& H,
   const double scale = 2.0 * H.norm();
   if (!(solve.gap > options.degenerate_gap * scale) || !(scale > 0.0)) {
     *message =
-        "the data do not determine the rotation (relative eigen gap below degenerate_gap): "
-        "fewer than two non-parallel vectors?";
+        "the data do not determine the rotation: the vectors are all parallel (collinear "
+        "points) or too few";
     return OrientationStatus::kDegenerate;
   }
   return OrientationStatus::kOk;

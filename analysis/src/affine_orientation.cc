@@ -29,18 +29,6 @@ const char* to_string(SignEnumeration enumeration) {
   return "unknown";
 }
 
-const char* to_string(AffineStatus status) {
-  switch (status) {
-    case AffineStatus::kOk:
-      return "ok";
-    case AffineStatus::kAmbiguous:
-      return "ambiguous";
-    case AffineStatus::kDegenerate:
-      return "degenerate";
-  }
-  return "unknown";
-}
-
 bool AffineOrientationOptions::is_valid(std::string* why) const {
   if (!(max_vectors >= 1 && max_vectors <= kMaxAffineVectorsCeiling))
     return internal::invalid_option(why, "max_vectors", "must be in [1, 30]");
@@ -135,15 +123,15 @@ AffineOrientationResult solve_affine(const Eigen::Matrix3Xd& z, const Eigen::Mat
   }
 
   if (winner.status == OrientationStatus::kDegenerate) {
-    result.status = AffineStatus::kDegenerate;
-    result.message = "the winning sign pattern's 3-D problem is degenerate: " + winner.message;
+    result.status = PoseStatus::kDegenerate;
+    result.message = winner.message;
   } else if (result.ambiguity_margin <= options.ambiguity_tolerance * problem.energy &&
              result.runner_up_angle > options.distinct_rotation_angle) {
     std::ostringstream out;
     out << "two poses fit equally well (runner-up " << result.runner_up_angle
         << " rad away, margin " << result.ambiguity_margin
         << "): coplanar vectors give the two-fold affine ambiguity";
-    result.status = AffineStatus::kAmbiguous;
+    result.ambiguous = true;
     result.message = out.str();
   }
   return result;

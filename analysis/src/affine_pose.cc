@@ -41,9 +41,11 @@ void validate_points(const Eigen::Matrix3Xd& model,
   internal::check_distinct_columns("model_object", model);
 }
 
-/// The pairs of options.free_vectors; kAllPairs beyond orientation.max_vectors is refused.
-Eigen::Matrix2Xi checked_pairs(const Eigen::Matrix3Xd& model, const AffinePoseOptions& options) {
-  const Eigen::Matrix2Xi pairs = free_vector_pairs(model, options.free_vectors);
+/// The pairs of options.free_vectors for this image; kAllPairs beyond orientation.max_vectors
+/// is refused.
+Eigen::Matrix2Xi checked_pairs(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& image,
+                               const AffinePoseOptions& options) {
+  const Eigen::Matrix2Xi pairs = free_vector_pairs<2>(model, image, options.free_vectors);
   if (options.free_vectors != FreeVectorSet::kAuto) {
     check_count(pairs.cols(), options.orientation,
                 "; use FreeVectorSet::kAuto (never more than 12 free vectors)");
@@ -130,9 +132,8 @@ void finish_affine_pose(const Eigen::Matrix3Xd& model, const Eigen::Matrix2Xd& i
                      alternative.p_camera_object, o.alpha, &alternative.reprojection_rms_px);
     result->alternative = alternative;
   }
-  result->status =
-      o.status == AffineStatus::kDegenerate ? PoseStatus::kDegenerate : PoseStatus::kOk;
-  result->ambiguous = o.status == AffineStatus::kAmbiguous;
+  result->status = o.status;
+  result->ambiguous = o.ambiguous;
   result->message = o.message;
 }
 
@@ -146,15 +147,16 @@ FreeVectors affine_free_vectors(const Eigen::Matrix3Xd& model_object, const Eige
                                 const Eigen::VectorXd& weights, const AffinePoseOptions& options) {
   validate_points<2>(model_object, image, weights, options, "image");
   return build_free_vectors<2>(model_object, image, weights,
-                               free_vector_pairs(model_object, options.free_vectors),
+                               free_vector_pairs<2>(model_object, image, options.free_vectors),
                                options.pair_weighting);
 }
 
 AffinePoseResult affine_pose(const Eigen::Matrix3Xd& model_object, const Eigen::Matrix2Xd& image,
                              const Eigen::VectorXd& weights, const AffinePoseOptions& options) {
   validate_points<2>(model_object, image, weights, options, "image");
-  const FreeVectors free = build_free_vectors<2>(
-      model_object, image, weights, checked_pairs(model_object, options), options.pair_weighting);
+  const FreeVectors free =
+      build_free_vectors<2>(model_object, image, weights,
+                            checked_pairs(model_object, image, options), options.pair_weighting);
   AffinePoseResult result;
   result.pairs = free.pairs;
   result.orientation =
@@ -192,7 +194,7 @@ AffinePoseResult standard_affine_pose(const Eigen::Matrix3Xd& model_object,
   o.sign_patterns = 1;
   o.eigen_gap = solve.eigen_gap;
   if (solve.status == OrientationStatus::kDegenerate) {
-    o.status = AffineStatus::kDegenerate;
+    o.status = PoseStatus::kDegenerate;
     o.message = solve.message;
   }
   finish_affine_pose(model_object, image, weights, options, &result);

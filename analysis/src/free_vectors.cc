@@ -39,6 +39,20 @@ namespace {
 
 bool auto_uses_all_pairs(Eigen::Index n) { return n * (n - 1) / 2 <= kAutoAllPairsLimit; }
 
+/// All pairs (i, j), i < j, in lexicographic order.
+Eigen::Matrix2Xi all_pairs(Eigen::Index n) {
+  Eigen::Matrix2Xi pairs(2, n * (n - 1) / 2);
+  int k = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) pairs.col(k++) << i, j;
+  return pairs;
+}
+
+/// The column of (i, j), i < j, in all_pairs(n).
+Eigen::Index pair_index(Eigen::Index n, Eigen::Index i, Eigen::Index j) {
+  return i * n - i * (i + 1) / 2 + (j - i - 1);
+}
+
 /// Prim's algorithm for the maximum spanning tree of the distances |z_j - z_i|; the edges in
 /// order of addition, each with its length.
 Eigen::Matrix2Xi max_spanning_tree(const Eigen::Matrix3Xd& points, std::vector<double>* lengths) {
@@ -78,31 +92,85 @@ Eigen::Index free_vector_count(Eigen::Index n, FreeVectorSet set) {
     case FreeVectorSet::kAuto:
       break;
   }
-  return auto_uses_all_pairs(n) ? n * (n - 1) / 2
-                                : std::min<Eigen::Index>(n - 1, kAutoSpanningLimit);
+  return auto_uses_all_pairs(n) ? n * (n - 1) / 2 : kAutoBudget;
 }
 
 Eigen::Matrix2Xi free_vector_pairs(const Eigen::Matrix3Xd& points, FreeVectorSet set) {
   const Eigen::Index n = points.cols();
   if (set == FreeVectorSet::kAllPairs || (set == FreeVectorSet::kAuto && auto_uses_all_pairs(n))) {
-    Eigen::Matrix2Xi pairs(2, n * (n - 1) / 2);
-    int k = 0;
-    for (int i = 0; i < n; ++i)
-      for (int j = i + 1; j < n; ++j) pairs.col(k++) << i, j;
-    return pairs;
+    return all_pairs(n);
   }
   std::vector<double> lengths;
   const Eigen::Matrix2Xi tree = max_spanning_tree(points, &lengths);
-  if (set == FreeVectorSet::kMaxSpanningTree || tree.cols() <= kAutoSpanningLimit) return tree;
-  // The longest kAutoSpanningLimit edges (stable: ties keep the order of addition).
-  std::vector<int> order(tree.cols());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return lengths[a] > lengths[b]; });
-  Eigen::Matrix2Xi kept(2, kAutoSpanningLimit);
-  for (int k = 0; k < kAutoSpanningLimit; ++k) kept.col(k) = tree.col(order[k]);
+  if (set == FreeVectorSet::kMaxSpanningTree) return tree;
+  if (tree.cols() >= kAutoBudget) {
+    // The longest kAutoBudget edges (stable: ties keep the order of addition).
+    std::vector<int> order(tree.cols());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return lengths[a] > lengths[b]; });
+    Eigen::Matrix2Xi kept(2, kAutoBudget);
+    for (int k = 0; k < kAutoBudget; ++k) kept.col(k) = tree.col(order[k]);
+    return kept;
+  }
+  // The tree, then the longest pairs it does not hold (ties by (i, j)).
+  const Eigen::Matrix2Xi every = all_pairs(n);
+  std::vector<bool> in_tree(static_cast<std::size_t>(every.cols()), false);
+  for (Eigen::Index k = 0; k < tree.cols(); ++k) {
+    in_tree[static_cast<std::size_t>(pair_index(n, tree(0, k), tree(1, k)))] = true;
+  }
+  std::vector<int> further;
+  for (int k = 0; k < every.cols(); ++k) {
+    if (!in_tree[static_cast<std::size_t>(k)]) further.push_back(k);
+  }
+  auto length = [&](int k) { return (points.col(every(1, k)) - points.col(every(0, k))).norm(); };
+  std::stable_sort(further.begin(), further.end(),
+                   [&](int a, int b) { return length(a) > length(b); });
+  Eigen::Matrix2Xi kept(2, kAutoBudget);
+  kept.leftCols(tree.cols()) = tree;
+  for (Eigen::Index k = tree.cols(); k < kAutoBudget; ++k) {
+    kept.col(k) = every.col(further[static_cast<std::size_t>(k - tree.cols())]);
+  }
   return kept;
 }
+
+template <int MeasuredRows>
+Eigen::Matrix2Xi free_vector_pairs(
+    const Eigen::Matrix3Xd& points,
+    const Eigen::Matrix<double, MeasuredRows, Eigen::Dynamic>& measured, FreeVectorSet set) {
+  Eigen::Matrix2Xi pairs = free_vector_pairs(points, set);
+  const Eigen::Index n = points.cols();
+  if (set != FreeVectorSet::kAuto || auto_uses_all_pairs(n)) return pairs;
+  // The pair of largest |q_j - q_i| / |z_j - z_i| over all pairs (ratios compared as
+  // cross-multiplied squares: no division by a short object vector).
+  int best_i = 0;
+  int best_j = 1;
+  double best_q = -1.0;
+  double best_z = 1.0;
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      const double q = (measured.col(j) - measured.col(i)).squaredNorm();
+      const double z = (points.col(j) - points.col(i)).squaredNorm();
+      if (q * best_z > best_q * z) {
+        best_q = q;
+        best_z = z;
+        best_i = i;
+        best_j = j;
+      }
+    }
+  }
+  if (!(best_q > 0.0)) return pairs;  // no measured differences: no scale to protect
+  for (Eigen::Index k = 0; k < pairs.cols(); ++k) {
+    if (pairs(0, k) == best_i && pairs(1, k) == best_j) return pairs;
+  }
+  pairs.col(pairs.cols() - 1) << best_i, best_j;
+  return pairs;
+}
+
+template Eigen::Matrix2Xi free_vector_pairs<2>(const Eigen::Matrix3Xd&, const Eigen::Matrix2Xd&,
+                                               FreeVectorSet);
+template Eigen::Matrix2Xi free_vector_pairs<3>(const Eigen::Matrix3Xd&, const Eigen::Matrix3Xd&,
+                                               FreeVectorSet);
 
 template <int MeasuredRows>
 FreeVectorsOf<MeasuredRows> build_free_vectors(

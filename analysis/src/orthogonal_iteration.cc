@@ -318,8 +318,8 @@ OrthogonalIterationResult orthogonal_iteration_pose(const Eigen::Matrix3Xd& mode
     result.R_camera_object = start;
     result.status = PoseStatus::kDegenerate;
     result.message =
-        "the weak-perspective start is degenerate: the centred model or the centred image "
-        "points span less than a plane (coincident or collinear points?)";
+        "the model points or their images are collinear (or coincide): they do not determine "
+        "the pose";
     return result;
   }
   const internal::PlaneFit plane = internal::fit_plane(model_object, weights);

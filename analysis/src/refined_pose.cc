@@ -241,7 +241,7 @@ RefinedPoseResult refined_pose(Model model, const Eigen::Matrix3Xd& z,
       result.p_camera_object = affine.p_camera_object;
       result.start_reprojection_rms_px = affine.reprojection_rms_px;
       result.status = PoseStatus::kDegenerate;
-      result.message = "the affine start is degenerate: " + affine.message;
+      result.message = affine.message;
       return result;
     }
   }

@@ -1,250 +1,93 @@
 // vantage.pose and vantage.orient: the estimators behind `vantage pose` and `vantage orient`,
-// returning the fields of their --json output (vantage pose's objects come from the command's
-// own conversion, cli/json/pose_json.h). Each estimator is one row of kMethods.
+// returning the fields of their --json output. vantage.pose goes through estimate_pose(), the
+// front door `vantage pose` and `vantage simulate` use, and its object is the command's own
+// conversion (cli/json/pose_json.h).
 
 #include "pose_commands.h"
 
 #include <pybind11/stl.h>
 
 #include <cmath>
-#include <functional>
-#include <map>
-#include <optional>
 
 #include "arrays.h"
 #include "pose_json.h"
 #include "results.h"
 #include "vantage/analysis/absolute_orientation.h"
-#include "vantage/analysis/affine_pose.h"
 #include "vantage/analysis/common.h"
-#include "vantage/analysis/free_vectors.h"
-#include "vantage/analysis/orthogonal_iteration.h"
-#include "vantage/analysis/refined_pose.h"
-#include "vantage/analysis/two_view.h"
+#include "vantage/analysis/estimate_pose.h"
+#include "vantage/analysis/pose_method.h"
 #include "vantage/io/correspondence_file.h"
 
 namespace vantage::python {
 
 namespace {
 
-/// The correspondences and options of one vantage.pose call (absent arrays have no columns).
-struct PoseInput {
-  std::string method;
-  Eigen::Matrix3Xd model;
-  Eigen::Matrix3Xd measured;
-  Eigen::Matrix2Xd image;
-  Eigen::Matrix2Xd image1;
-  Eigen::Matrix2Xd image2;
-  Eigen::VectorXd weights;
-  std::optional<double> focal;
-  std::optional<Eigen::Vector2d> principal_point;
-  FreeVectorSet free_vectors = FreeVectorSet::kAuto;
-
-  void require(bool present, const char* field) const {
-    if (!present) {
-      throw InvalidArgument(std::string(field) + ": required by vantage.pose(method='" + method +
-                            "')");
-    }
+/// free_vectors= (auto, all or spanning; only for the methods that use free vectors).
+FreeVectorSet read_free_vectors(const py::object& free_vectors, PoseMethod method) {
+  if (free_vectors.is_none()) return FreeVectorSet::kAuto;
+  const std::string expected = "expected auto, all or spanning";
+  if (!py::isinstance<py::str>(free_vectors)) throw InvalidArgument("free_vectors", expected);
+  const std::string name = free_vectors.cast<std::string>();
+  if (!uses_free_vectors(method)) {
+    throw InvalidArgument("free_vectors",
+                          "only affine, affine-refined, perspective, standard and full3d use free "
+                          "vectors, not " +
+                              std::string(to_string(method)));
   }
-  bool perspective_family() const {
-    return method == "perspective" || method == "oi-foam" || method == "oi-svd";
-  }
-};
-
-/// What one estimator produced: the --json object and whether the CLI would exit 1.
-struct Outcome {
-  Json json;
-  bool failed = false;
-};
-
-/// The camera of `vantage pose`: focal and principal point as given; perspective methods without
-/// a focal length read the image as normalised coordinates (f = 1).
-Camera camera_of(const PoseInput& in) {
-  Camera camera;
-  camera.focal_length = in.focal.value_or(0.0);
-  if (in.principal_point) camera.principal_point = *in.principal_point;
-  if (in.perspective_family() && !camera.has_focal_length()) camera.focal_length = 1.0;
-  return camera;
-}
-
-AffinePoseOptions affine_options(const PoseInput& in) {
-  AffinePoseOptions options;
-  options.free_vectors = in.free_vectors;
-  options.camera = camera_of(in);
-  return options;
-}
-
-/// Prop. 4 enumerates 2^m sign patterns: refuse an explicit set beyond the limit before the
-/// library does, with the way out.
-void check_free_vector_count(const PoseInput& in, const AffinePoseOptions& options) {
-  if (options.free_vectors == FreeVectorSet::kAuto) return;
-  const Eigen::Index n = in.model.cols();
-  const Eigen::Index m = free_vector_count(n, options.free_vectors);
-  if (m > options.orientation.max_vectors) {
-    throw InvalidArgument("model: " + std::to_string(n) + " points give " + std::to_string(m) +
-                          " free vectors, more than the limit " +
-                          std::to_string(options.orientation.max_vectors) + " (Prop. 4 solves 2^" +
-                          std::to_string(m) + " problems); use free_vectors='auto' or 'spanning'");
-  }
-}
-
-Outcome run_affine(const PoseInput& in) {
-  in.require(in.model.cols() > 0, "model");
-  in.require(in.image.cols() > 0, "image");
-  const AffinePoseOptions options = affine_options(in);
-  const bool standard = in.method == "standard";
-  if (!standard) check_free_vector_count(in, options);
-  const AffinePoseResult pose = without_gil([&] {
-    return standard ? standard_affine_pose(in.model, in.image, in.weights, options)
-                    : affine_pose(in.model, in.image, in.weights, options);
-  });
-  return {pose_json::affine(in.method, in.model.cols(), options, pose),
-          pose.status != PoseStatus::kOk};
-}
-
-Outcome run_refined(const PoseInput& in) {
-  in.require(in.model.cols() > 0, "model");
-  in.require(in.image.cols() > 0, "image");
-  RefinedPoseOptions options;
-  options.start = affine_options(in);
-  options.camera = options.start.camera;
-  check_free_vector_count(in, options.start);
-  const RefinedPoseResult pose = without_gil([&] {
-    return in.method == "perspective"
-               ? perspective_pose(in.model, in.image, in.weights, options)
-               : affine_refined_pose(in.model, in.image, in.weights, options);
-  });
-  return {pose_json::refined(in.method, in.model.cols(), options, pose),
-          pose.status != PoseStatus::kOk};
-}
-
-Outcome run_full3d(const PoseInput& in) {
-  in.require(in.model.cols() > 0, "model");
-  in.require(in.measured.cols() > 0, "measured");
-  const AffinePoseOptions options = affine_options(in);
-  const PoseResult pose =
-      without_gil([&] { return full_3d_pose(in.model, in.measured, in.weights, options); });
-  return {pose_json::full3d(in.method, in.model.cols(), options, pose),
-          pose.status != OrientationStatus::kOk};
-}
-
-Outcome run_orthogonal_iteration(const PoseInput& in) {
-  in.require(in.model.cols() > 0, "model");
-  in.require(in.image.cols() > 0, "image");
-  OrthogonalIterationOptions options;
-  options.rotation_step =
-      in.method == "oi-svd" ? OrientationMethod::kSvd : OrientationMethod::kFoam;
-  options.camera = camera_of(in);
-  const OrthogonalIterationResult pose = without_gil(
-      [&] { return orthogonal_iteration_pose(in.model, in.image, in.weights, options); });
-  return {pose_json::orthogonal_iteration(in.method, in.model.cols(), options, pose),
-          pose.status != PoseStatus::kOk};
-}
-
-Outcome run_two_view(const PoseInput& in) {
-  in.require(in.image1.cols() > 0, "image1");
-  in.require(in.image2.cols() > 0, "image2");
-  if (in.weights.size() != 0) {
-    throw InvalidArgument(
-        "weights: not used by vantage.pose(method='two-view') (the two-view "
-        "algorithm is unweighted)");
-  }
-  TwoViewOptions options;
-  if (in.focal) options.focal_length = *in.focal;
-  const TwoViewResult pose =
-      without_gil([&] { return two_view_pose(in.image1, in.image2, options); });
-  return {pose_json::two_view(in.method, in.image1.cols(), options, pose),
-          pose.status != TwoViewStatus::kOk};
-}
-
-/// The estimators of `vantage pose --method`, one row each.
-const std::map<std::string, std::function<Outcome(const PoseInput&)>>& methods() {
-  static const std::map<std::string, std::function<Outcome(const PoseInput&)>> kMethods = {
-      {"affine", run_affine},
-      {"standard", run_affine},
-      {"affine-refined", run_refined},
-      {"perspective", run_refined},
-      {"full3d", run_full3d},
-      {"oi-foam", run_orthogonal_iteration},
-      {"oi-svd", run_orthogonal_iteration},
-      {"two-view", run_two_view},
-  };
-  return kMethods;
-}
-
-std::string method_names() {
-  std::string names;
-  for (const auto& row : methods()) names += (names.empty() ? "" : ", ") + row.first;
-  return names;
+  if (name == "all") return FreeVectorSet::kAllPairs;
+  if (name == "spanning") return FreeVectorSet::kMaxSpanningTree;
+  if (name != "auto") throw InvalidArgument("free_vectors", expected);
+  return FreeVectorSet::kAuto;
 }
 
 /// focal= and principal_point= (checked as the CLI checks --focal and --principal-point).
-void read_camera(const py::object& focal, const py::object& principal_point, PoseInput* in) {
+Camera read_camera(const py::object& focal, const py::object& principal_point, PoseMethod method) {
+  Camera camera;
+  const bool no_camera =
+      pose_data(method) == PoseData::kMeasured || pose_data(method) == PoseData::kPlanar;
   if (!focal.is_none()) {
     if (!py::isinstance<py::float_>(focal) && !py::isinstance<py::int_>(focal)) {
-      throw InvalidArgument("focal: must be a finite number > 0");
+      throw InvalidArgument("focal", "must be a finite number > 0");
     }
-    in->focal = focal.cast<double>();
-    if (!(*in->focal > 0.0 && std::isfinite(*in->focal))) {
-      throw InvalidArgument("focal: must be a finite number > 0");
+    camera.focal_length = focal.cast<double>();
+    if (!(camera.focal_length > 0.0 && std::isfinite(camera.focal_length))) {
+      throw InvalidArgument("focal", "must be a finite number > 0");
     }
-    if (in->method == "full3d") {
-      throw InvalidArgument("focal: not used by method='full3d' (3-D measurements)");
+    if (no_camera) {
+      throw InvalidArgument("focal", std::string("not used by method='") + to_string(method) +
+                                         "' (it measures without a camera)");
     }
   }
   if (!principal_point.is_none()) {
-    const Eigen::Vector2d c = pair_from_array(principal_point, "principal_point", "pixels");
-    if (in->method == "full3d" || in->method == "two-view") {
-      throw InvalidArgument("principal_point: not used by method='" + in->method + "'");
+    camera.principal_point = pair_from_array(principal_point, "principal_point", "pixels");
+    if (no_camera) {
+      throw InvalidArgument("principal_point",
+                            std::string("not used by method='") + to_string(method) + "'");
     }
-    in->principal_point = c;
   }
+  return camera;
 }
 
-/// free_vectors= (auto, all or spanning; only for the methods that use free vectors).
-void read_free_vectors(const py::object& free_vectors, PoseInput* in) {
-  if (free_vectors.is_none()) return;
-  const std::string expected = "free_vectors: expected auto, all or spanning";
-  if (!py::isinstance<py::str>(free_vectors)) throw InvalidArgument(expected);
-  const std::string name = free_vectors.cast<std::string>();
-  if (name == "all") {
-    in->free_vectors = FreeVectorSet::kAllPairs;
-  } else if (name == "spanning") {
-    in->free_vectors = FreeVectorSet::kMaxSpanningTree;
-  } else if (name != "auto") {
-    throw InvalidArgument(expected);
-  }
-  const std::string& m = in->method;
-  if (m != "affine" && m != "standard" && m != "affine-refined" && m != "perspective" &&
-      m != "full3d") {
-    throw InvalidArgument(
-        "free_vectors: only affine, affine-refined, perspective, standard and full3d use free "
-        "vectors, not " +
-        m);
-  }
-}
-
-py::object pose(const py::object& model, const py::object& image, const std::string& method,
+py::object pose(const py::object& model, const py::object& image, const std::string& method_name,
                 const py::object& measured, const py::object& image1, const py::object& image2,
                 const py::object& weights, const py::object& focal,
                 const py::object& principal_point, const py::object& free_vectors) {
-  const auto row = methods().find(method);
-  if (row == methods().end()) {
-    throw InvalidArgument("method: expected one of " + method_names() + ", got \"" + method + "\"");
-  }
-  PoseInput in;
-  in.method = method;
-  if (!model.is_none()) in.model = rows_from_array<3>(model, "model");
-  if (!measured.is_none()) in.measured = rows_from_array<3>(measured, "measured");
-  if (!image.is_none()) in.image = rows_from_array<2>(image, "image");
-  if (!image1.is_none()) in.image1 = rows_from_array<2>(image1, "image1");
-  if (!image2.is_none()) in.image2 = rows_from_array<2>(image2, "image2");
-  if (!weights.is_none()) in.weights = vector_from_array(weights, "weights");
-  read_camera(focal, principal_point, &in);
-  read_free_vectors(free_vectors, &in);
-  const Outcome outcome = row->second(in);
-  return result_or_raise(outcome.failed, outcome.json["status"].get<std::string>(),
-                         outcome.json.value("message", std::string()), outcome.json);
+  const PoseMethod method = parse_pose_method_or_throw(method_name, "method");
+  Correspondences data;
+  if (!model.is_none()) data.model = rows_from_array<3>(model, "model");
+  if (!measured.is_none()) data.measured = rows_from_array<3>(measured, "measured");
+  if (!image.is_none()) data.image = rows_from_array<2>(image, "image");
+  if (!image1.is_none()) data.image1 = rows_from_array<2>(image1, "image1");
+  if (!image2.is_none()) data.image2 = rows_from_array<2>(image2, "image2");
+  if (!weights.is_none()) data.weights = vector_from_array(weights, "weights");
+  data.camera = read_camera(focal, principal_point, method);
+  PoseOptions options;
+  options.free_vectors = read_free_vectors(free_vectors, method);
+  const PoseEstimate estimate = without_gil([&] { return estimate_pose(method, data, options); });
+  const Eigen::Index n =
+      pose_data(method) == PoseData::kTwoViews ? data.image1.cols() : data.model.cols();
+  return result_or_raise(estimate.status != PoseStatus::kOk, to_string(estimate.status),
+                         estimate.message, pose_json::estimate(estimate, n));
 }
 
 py::object orient(const py::object& model, const py::object& measured, const py::object& weights,
@@ -315,7 +158,7 @@ void bind_pose_commands(py::module_& module) {
       "pose_methods",
       [] {
         std::vector<std::string> names;
-        for (const auto& row : methods()) names.push_back(row.first);
+        for (PoseMethod method : kPoseMethods) names.push_back(to_string(method));
         return names;
       },
       "The names vantage.pose accepts as method=.");

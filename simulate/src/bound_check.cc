@@ -28,16 +28,15 @@ VectorSetBound certify(const std::string& name, const Eigen::Matrix3Xd& vectors,
   set.worst_viewpoint = worst.viewpoint;
   set.t_lower = worst.t_lower;
   set.t_upper = worst.t_upper;
-  set.pbar_min = worst.pbar;
+  set.pbar_min = worst.pbar_min;
   set.bound_rad = std::asin(std::min(1.0, worst.t_upper));
   return set;
 }
 
+/// The free vectors of `which` for the object points alone (kAuto: before an image's LUB pair).
 VectorSetBound free_vector_bound(const Eigen::Matrix3Xd& points, FreeVectorSet which) {
-  AffinePoseOptions options;
-  options.free_vectors = which;
-  const FreeVectors free =
-      affine_free_vectors(points, Eigen::Matrix2Xd::Zero(2, points.cols()), {}, options);
+  const FreeVectorsOf<3> free = build_free_vectors<3>(
+      points, points, {}, free_vector_pairs(points, which), PairWeighting::kGeometricMean);
   return certify(to_string(which), free.z_object, free.pairs);
 }
 
@@ -92,13 +91,14 @@ BoundLayout prepare_bound_layout(const Eigen::Matrix3Xd& entries, bool vectors) 
   layout.vectors = vectors;
   if (vectors) {
     layout.data = certify("vectors", entries, Eigen::Matrix2Xi());
-    layout.affine_free_vectors = "vectors";
+    layout.affine = layout.data;
     return layout;
   }
   layout.data = free_vector_bound(entries, FreeVectorSet::kAllPairs);
   layout.spanning = free_vector_bound(entries, FreeVectorSet::kMaxSpanningTree);
-  layout.affine_free_vectors =
-      layout.data.vectors.cols() <= kMaxAllPairs ? "all_pairs" : "max_spanning_tree";
+  layout.affine = layout.data.vectors.cols() <= kAutoAllPairsLimit
+                      ? layout.data
+                      : free_vector_bound(entries, FreeVectorSet::kAuto);
   return layout;
 }
 
@@ -144,7 +144,7 @@ BoundTrial check_bound_trial(const BoundLayout& layout, const Scene& scene) {
     const Estimator* estimator = find_estimator(name);
     VANTAGE_CHECK(estimator != nullptr, std::string("registry lacks ") + name);
     if (!estimator->applies(clean)) return kNaN;  // e.g. too many markers to enumerate
-    return rotation_angle_between(estimator->solve(clean).R, scene.R_true);
+    return rotation_angle_between(estimator->solve(clean).R_camera_object, scene.R_true);
   };
   trial.affine_rot_err_rad = rot_err("affine");
   trial.spanning_rot_err_rad = layout.vectors ? kNaN : rot_err("affine-spanning");
@@ -171,9 +171,7 @@ BoundCheck summarize_bound_check(const BoundLayout& layout, const std::vector<Bo
   check.max_abs_eq26_mismatch_deg = max_mismatch * kDegreesPerRadian;
   check.max_ratio = layout.data.bound_rad > 0.0 ? max_error / layout.data.bound_rad : 0.0;
   check.passed = check.max_ratio <= 1.0 + kBoundRatioTolerance && max_mismatch <= kEq26Tolerance;
-  const VectorSetBound& used =
-      layout.affine_free_vectors == "max_spanning_tree" ? layout.spanning : layout.data;
-  check.relations.push_back(relate("affine", used, layout.data.bound_rad, affine));
+  check.relations.push_back(relate("affine", layout.affine, layout.data.bound_rad, affine));
   if (!layout.vectors) {
     check.relations.push_back(
         relate("affine-spanning", layout.spanning, layout.data.bound_rad, spanning));

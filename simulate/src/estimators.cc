@@ -1,16 +1,8 @@
 #include "vantage/simulate/estimators.h"
 
 #include <algorithm>
-#include <cmath>
 
-#include "vantage/analysis/absolute_orientation.h"
-#include "vantage/analysis/affine_pose.h"
 #include "vantage/analysis/common.h"
-#include "vantage/analysis/free_vectors.h"
-#include "vantage/analysis/haralick_2d.h"
-#include "vantage/analysis/orthogonal_iteration.h"
-#include "vantage/analysis/refined_pose.h"
-#include "vantage/analysis/two_view.h"
 
 namespace vantage::simulate {
 namespace {
@@ -19,189 +11,89 @@ bool is_image(const Scene& s) {
   return s.kind == SceneKind::kAffineImage || s.kind == SceneKind::kPinholeImage;
 }
 
-Eigen::Index all_pairs(const Scene& s) { return s.model.cols() * (s.model.cols() - 1) / 2; }
+bool image_points(const Scene& s) { return is_image(s) && s.model.cols() >= 3; }
 
-Eigen::Matrix2Xd centred_image(const Scene& s) { return s.image.colwise() - s.principal_point; }
-
-/// The free-vector set "affine" uses: all pairs while they are few, else the spanning tree.
-FreeVectorSet affine_set(const Scene& s) {
-  return all_pairs(s) <= kMaxAllPairs ? FreeVectorSet::kAllPairs : FreeVectorSet::kMaxSpanningTree;
-}
-
+/// Lemma 7 enumerates 2^m patterns of the m data vectors; an image's kAuto set is bounded.
 bool affine_applies(const Scene& s) {
   if (s.kind == SceneKind::kAffineVectors) return s.model.cols() <= kMaxAffineVectors;
-  return is_image(s) && s.model.cols() >= 3 && s.model.cols() - 1 <= kMaxAffineVectors;
-}
-
-/// The camera the estimators see: the scene's focal length, image points centred at c.
-Camera centred_camera(const Scene& s) {
-  Camera camera;
-  camera.focal_length = s.focal;
-  return camera;
-}
-
-/// A single-image pose estimate: ok when the status is kOk and the result is not ambiguous
-/// ("ambiguous" is reported as the status, as AffineStatus::kAmbiguous was).
-Estimate from_pose_estimate(const PoseEstimate& pose) {
-  Estimate e;
-  e.R = pose.R_camera_object;
-  e.p = pose.p_camera_object;
-  e.has_translation = std::isfinite(pose.p_camera_object.z());
-  e.status = pose.ambiguous ? "ambiguous" : to_string(pose.status);
-  e.ok = pose.status == PoseStatus::kOk && !pose.ambiguous;
-  return e;
-}
-
-Estimate from_affine(const AffinePoseResult& pose) {
-  Estimate e = from_pose_estimate(pose);
-  e.has_translation = pose.depth_known;
-  e.alpha = pose.alpha;
-  return e;
-}
-
-Estimate affine_points(const Scene& s, FreeVectorSet set) {
-  AffinePoseOptions options;
-  options.free_vectors = set;
-  options.camera = centred_camera(s);
-  return from_affine(affine_pose(s.model, centred_image(s), {}, options));
-}
-
-Estimate solve_affine(const Scene& s) {
-  if (s.kind != SceneKind::kAffineVectors) return affine_points(s, affine_set(s));
-  const AffineOrientationResult o = affine_orientation_unknown_scale(s.model, s.image);
-  Estimate e;
-  e.R = o.R_camera_object;
-  e.alpha = o.alpha;
-  e.status = to_string(o.status);
-  e.ok = o.status == AffineStatus::kOk;
-  return e;
-}
-
-Estimate solve_standard(const Scene& s) {
-  if (s.kind != SceneKind::kAffineVectors) {
-    AffinePoseOptions options;
-    options.free_vectors = FreeVectorSet::kAllPairs;
-    options.camera = centred_camera(s);
-    return from_affine(standard_affine_pose(s.model, centred_image(s), {}, options));
-  }
-  Eigen::Matrix3Xd v = Eigen::Matrix3Xd::Zero(3, s.image.cols());
-  v.topRows<2>() = s.image;
-  const OrientationResult o = absolute_orientation(s.model, v);
-  Estimate e;
-  e.R = o.R_camera_object;
-  e.alpha = o.alpha;  // Eq. (4): alpha v ~= R z, the affine scale of Eq. (15)
-  e.status = to_string(o.status);
-  e.ok = o.status == OrientationStatus::kOk;
-  return e;
-}
-
-/// A 3-D pose result (PoseResult): ok when status == OrientationStatus::kOk.
-Estimate from_pose(const PoseResult& pose) {
-  Estimate e;
-  e.R = pose.R_camera_object;
-  e.p = pose.p_camera_object;
-  e.has_translation = true;
-  e.status = to_string(pose.status);
-  e.ok = pose.status == OrientationStatus::kOk;
-  return e;
-}
-
-Estimate solve_full3d(const Scene& s) {
-  AffinePoseOptions options;
-  options.free_vectors = FreeVectorSet::kAllPairs;
-  return from_pose(full_3d_pose(s.model, s.measured, {}, options));
-}
-
-Estimate solve_oi(const Scene& s, OrientationMethod step) {
-  OrthogonalIterationOptions options;
-  options.rotation_step = step;
-  options.camera = centred_camera(s);
-  return from_pose_estimate(orthogonal_iteration_pose(s.model, centred_image(s), {}, options));
-}
-
-/// affine_refined_pose() or perspective_pose() from Prop. 8's start (library defaults).
-Estimate solve_refined(const Scene& s, bool perspective) {
-  RefinedPoseOptions options;
-  options.camera = centred_camera(s);
-  const RefinedPoseResult pose = perspective
-                                     ? perspective_pose(s.model, centred_image(s), {}, options)
-                                     : affine_refined_pose(s.model, centred_image(s), {}, options);
-  Estimate e = from_pose_estimate(pose);
-  e.alpha = pose.alpha;
-  return e;
-}
-
-Estimate solve_haralick_2d(const Scene& s) {
-  const Pose2dResult pose = pose_2d(s.model.topRows<2>(), s.image);
-  Estimate e;
-  e.R.topLeftCorner<2, 2>() = pose.R_to_from;
-  e.p.head<2>() = pose.t_to_from;
-  e.has_translation = true;
-  e.status = to_string(pose.status);
-  e.ok = pose.status == Pose2dStatus::kOk;
-  return e;
-}
-
-Estimate solve_haralick_3d(const Scene& s) {
-  OrientationOptions options;
-  options.method = OrientationMethod::kSvd;
-  return from_pose(absolute_pose(s.model, s.measured, {}, options));
-}
-
-Estimate solve_two_view(const Scene& s) {
-  const TwoViewResult pose = two_view_pose(s.first_view, s.image);
-  Estimate e;
-  e.R = pose.R_camera2_camera1;
-  e.p = pose.t_camera2_camera1;
-  e.has_translation = true;
-  e.status = to_string(pose.status);
-  e.ok = pose.status == TwoViewStatus::kOk;
-  return e;
+  return image_points(s);
 }
 
 std::vector<Estimator> make_registry() {
-  const auto image_points = [](const Scene& s) { return is_image(s) && s.model.cols() >= 3; };
+  const auto row = [](PoseMethod method, std::function<bool(const Scene&)> applies) {
+    Estimator e;
+    e.name = to_string(method);
+    e.description = describe(method);
+    e.method = method;
+    e.applies = std::move(applies);
+    return e;
+  };
+  Estimator spanning = row(PoseMethod::kAffine, [](const Scene& s) {
+    return image_points(s) && s.model.cols() - 1 <= kMaxAffineVectors;
+  });
+  spanning.name = "affine-spanning";
+  spanning.description = "affine on the n - 1 free vectors of the maximum spanning tree";
+  spanning.free_vectors = FreeVectorSet::kMaxSpanningTree;
+  const auto pinhole = [](const Scene& s) {
+    return s.kind == SceneKind::kPinholeImage && s.model.cols() >= 3;
+  };
   return {
-      {"affine",
-       "Prop. 8 / Lemma 7 (McInroy et al. 'new 2-D'): free vectors, LUB scale, 2^m sign patterns",
-       affine_applies, solve_affine},
-      {"affine-spanning", "Prop. 8 on the n - 1 free vectors of the maximum spanning tree",
-       [](const Scene& s) {
-         return is_image(s) && s.model.cols() >= 3 && s.model.cols() - 1 <= kMaxAffineVectors;
-       },
-       [](const Scene& s) { return affine_points(s, FreeVectorSet::kMaxSpanningTree); }},
-      {"affine-refined",
-       "Prop. 8 refined by Levenberg-Marquardt on the affine image residual (affine cameras)",
-       [](const Scene& s) { return s.kind == SceneKind::kAffineImage && s.model.cols() >= 3; },
-       [](const Scene& s) { return solve_refined(s, false); }},
-      {"standard", "the paper's standard approach: Theorem 1 with v_z = 0",
-       [image_points](const Scene& s) {
-         return s.kind == SceneKind::kAffineVectors || image_points(s);
-       },
-       solve_standard},
-      {"full3d", "the paper's full 3-D baseline: Theorem 1 + Eq. 13 on 3-D measurements",
-       image_points, solve_full3d},
-      {"oi-foam", "orthogonal iteration with the FOAM step (Wu & Wu)",
-       [](const Scene& s) { return s.kind == SceneKind::kPinholeImage && s.model.cols() >= 3; },
-       [](const Scene& s) { return solve_oi(s, OrientationMethod::kFoam); }},
-      {"oi-svd", "orthogonal iteration with the SVD step (Lu et al.)",
-       [](const Scene& s) { return s.kind == SceneKind::kPinholeImage && s.model.cols() >= 3; },
-       [](const Scene& s) { return solve_oi(s, OrientationMethod::kSvd); }},
-      {"perspective",
-       "maximum-likelihood pinhole pose: Levenberg-Marquardt from Prop. 8 (pinhole images)",
-       [](const Scene& s) { return s.kind == SceneKind::kPinholeImage && s.model.cols() >= 3; },
-       [](const Scene& s) { return solve_refined(s, true); }},
-      {"haralick-2d", "Haralick et al. Sec. 2: closed-form 2D-2D rigid pose",
-       [](const Scene& s) { return s.kind == SceneKind::kPlanar2d; }, solve_haralick_2d},
-      {"haralick-3d", "Haralick et al. Sec. 3: 3D-3D pose by the SVD",
-       [](const Scene& s) { return s.kind == SceneKind::kPoints3d; }, solve_haralick_3d},
-      {"two-view", "Haralick et al. Sec. 4: simplified linear two-view algorithm",
-       [](const Scene& s) { return s.kind == SceneKind::kTwoView && s.image.cols() >= 8; },
-       solve_two_view},
+      row(PoseMethod::kAffine, affine_applies),
+      spanning,
+      row(PoseMethod::kAffineRefined,
+          [](const Scene& s) { return s.kind == SceneKind::kAffineImage && s.model.cols() >= 3; }),
+      row(PoseMethod::kStandard,
+          [](const Scene& s) { return s.kind == SceneKind::kAffineVectors || image_points(s); }),
+      row(PoseMethod::kFull3d, image_points),
+      row(PoseMethod::kOiFoam, pinhole),
+      row(PoseMethod::kOiSvd, pinhole),
+      row(PoseMethod::kPerspective, pinhole),
+      row(PoseMethod::kHaralick2d, [](const Scene& s) { return s.kind == SceneKind::kPlanar2d; }),
+      row(PoseMethod::kHaralick3d, [](const Scene& s) { return s.kind == SceneKind::kPoints3d; }),
+      row(PoseMethod::kTwoView,
+          [](const Scene& s) { return s.kind == SceneKind::kTwoView && s.image.cols() >= 8; }),
   };
 }
 
 }  // namespace
+
+Correspondences scene_correspondences(const Scene& scene) {
+  Correspondences data;
+  switch (scene.kind) {
+    case SceneKind::kAffineVectors:
+      data.model = scene.model;
+      data.image = scene.image;
+      data.directions = true;
+      break;
+    case SceneKind::kAffineImage:
+    case SceneKind::kPinholeImage:
+      data.model = scene.model;
+      data.image = scene.image.colwise() - scene.principal_point;
+      data.measured = scene.measured;
+      data.camera.focal_length = scene.focal;
+      break;
+    case SceneKind::kPlanar2d:
+      data.model = scene.model;
+      data.image = scene.image;
+      break;
+    case SceneKind::kPoints3d:
+      data.model = scene.model;
+      data.measured = scene.measured;
+      break;
+    case SceneKind::kTwoView:
+      data.image1 = scene.first_view;
+      data.image2 = scene.image;
+      data.camera.focal_length = 1.0;
+      break;
+  }
+  return data;
+}
+
+PoseEstimate Estimator::solve(const Scene& scene) const {
+  PoseOptions options;
+  options.free_vectors = free_vectors;
+  return estimate_pose(method, scene_correspondences(scene), options);
+}
 
 const std::vector<Estimator>& estimator_registry() {
   static const std::vector<Estimator> registry = make_registry();
@@ -226,13 +118,13 @@ std::vector<Estimator> select_estimators(const std::vector<std::string>& names, 
   for (const std::string& name : names) {
     const Estimator* e = find_estimator(name);
     if (!e) {
-      throw InvalidArgument(argument + ": unknown estimator '" + name +
-                            "' (known: " + estimator_names() + ")");
+      throw InvalidArgument(argument,
+                            "unknown estimator '" + name + "' (known: " + estimator_names() + ")");
     }
     if (!e->applies(scene)) {
-      throw InvalidArgument(argument + ": estimator '" + name + "' does not apply to a " +
-                            to_string(scene.kind) + " scene of " +
-                            std::to_string(scene.model.cols()) + " entries");
+      throw InvalidArgument(argument, "estimator '" + name + "' does not apply to a " +
+                                          to_string(scene.kind) + " scene of " +
+                                          std::to_string(scene.model.cols()) + " entries");
     }
   }
   std::vector<Estimator> selected;

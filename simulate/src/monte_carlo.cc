@@ -66,18 +66,20 @@ std::pair<long, long> shard_range(long total, const Shard& shard) {
   return {bound(shard.index - 1), bound(shard.index)};
 }
 
-TrialError trial_error(const Estimate& estimate, const Scene& scene) {
+TrialError trial_error(const PoseEstimate& estimate, const Scene& scene) {
   TrialError error;
-  error.rot_err_deg = rotation_angle_between(estimate.R, scene.R_true) * kDegreesPerRadian;
-  const bool translation = estimate.has_translation && scene.has_translation;
-  error.trans_err = translation ? (estimate.p - scene.p_true).norm() : kNaN;
+  const Eigen::Vector3d& p = estimate.p_camera_object;
+  error.rot_err_deg =
+      rotation_angle_between(estimate.R_camera_object, scene.R_true) * kDegreesPerRadian;
+  const bool translation = p.allFinite() && scene.has_translation;
+  error.trans_err = translation ? (p - scene.p_true).norm() : kNaN;
   error.trans_err_rel = error.trans_err / scene.p_true.norm();
-  error.trans_err_deg =
-      translation ? angle_between(estimate.p, scene.p_true) * kDegreesPerRadian : kNaN;
+  error.trans_err_deg = translation ? angle_between(p, scene.p_true) * kDegreesPerRadian : kNaN;
   error.scale_err =
       std::isnan(estimate.alpha) ? kNaN : std::abs(estimate.alpha / scene.alpha_true - 1.0);
-  error.status = estimate.status;
-  error.ok = estimate.ok;
+  const bool ok = estimate.status == PoseStatus::kOk;
+  error.status = ok && estimate.ambiguous ? "ambiguous" : to_string(estimate.status);
+  error.ok = ok && !estimate.ambiguous;
   return error;
 }
 
@@ -140,7 +142,7 @@ MonteCarloRun run_monte_carlo(const SceneGenerator& generator,
                  const Scene scene = generator(trial, random);
                  for (std::size_t e = 0; e < estimators.size(); ++e) {
                    const auto start = std::chrono::steady_clock::now();
-                   const Estimate estimate = estimators[e].solve(scene);
+                   const PoseEstimate estimate = estimators[e].solve(scene);
                    const auto stop = std::chrono::steady_clock::now();
                    TrialError error = trial_error(estimate, scene);
                    error.time_us = std::chrono::duration<double, std::micro>(stop - start).count();

@@ -54,7 +54,8 @@ TEST(AffineOrientation, NoiseFreeDataReturnTruth) {
     const Eigen::Matrix3Xd z = testing::random_points(rng, n);
     const Eigen::Matrix2Xd d = testing::affine_image(R, z, alpha);
     const AffineOrientationResult result = affine_orientation(z, d, alpha, test_weights(n));
-    EXPECT_EQ(result.status, AffineStatus::kOk) << result.message;
+    EXPECT_EQ(result.status, PoseStatus::kOk) << result.message;
+    EXPECT_FALSE(result.ambiguous) << result.message;
     EXPECT_THAT(result.R_camera_object, IsRotation());
     EXPECT_LT(rotation_angle_between(result.R_camera_object, R), kNoiseFreeRadians) << n;
     EXPECT_LT(result.residual, kNoiseFreeResidual * n);
@@ -212,14 +213,16 @@ TEST(AffineOrientation, GlobalSignFlipIsTheMirrorOnlyForCoplanarVectors) {
     const Eigen::Matrix3d R_flip = absolute_orientation(z, flipped).R_camera_object;
     EXPECT_GT(affine_residual(z, d, 1.0, R_flip), 1e-3);
     const AffineOrientationResult general = affine_orientation(z, d, 1.0);
-    EXPECT_EQ(general.status, AffineStatus::kOk);
+    EXPECT_EQ(general.status, PoseStatus::kOk);
+    EXPECT_FALSE(general.ambiguous);
 
     // Coplanar (object plane z = 0, normal e_z): the mirror pose M R N fits exactly.
     Eigen::Matrix3Xd planar = testing::random_points(rng, n);
     planar.row(2).setZero();
     const Eigen::Matrix2Xd d_planar = testing::affine_image(R, planar, 1.0);
     const AffineOrientationResult result = affine_orientation(planar, d_planar, 1.0);
-    EXPECT_EQ(result.status, AffineStatus::kAmbiguous) << result.message;
+    EXPECT_EQ(result.status, PoseStatus::kOk) << result.message;
+    EXPECT_TRUE(result.ambiguous) << result.message;
     EXPECT_LT(result.ambiguity_margin, kNoiseFreeResidual * n);
     const Eigen::Matrix3d mirror = M * R * M;  // N = I - 2 e_z e_z^T = M
     const double to_truth = rotation_angle_between(result.R_camera_object, R);
@@ -325,7 +328,7 @@ TEST(Lemma7, NoiseFreeDataWithAnInPlaneVectorReturnTruth) {
     const Eigen::Matrix3d R = testing::rotation_with_in_plane(rng, z.col(trial % n));
     const Eigen::Matrix2Xd d = testing::affine_image(R, z, alpha);
     const AffineOrientationResult result = affine_orientation_unknown_scale(z, d, test_weights(n));
-    EXPECT_EQ(result.status, AffineStatus::kOk) << result.message;
+    EXPECT_EQ(result.status, PoseStatus::kOk) << result.message;
     EXPECT_THAT(result.R_camera_object, IsRotation());
     EXPECT_LT(rotation_angle_between(result.R_camera_object, R), kNoiseFreeRadians) << n;
     EXPECT_NEAR(result.alpha, alpha, kNoiseFreeRelative * alpha);

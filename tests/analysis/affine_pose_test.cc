@@ -145,17 +145,96 @@ TEST(AffinePose, ThreePointsGiveTheTwoFoldAmbiguity) {
 }
 
 TEST(AffinePose, AutoFreeVectorsNeverThrowAndStayBounded) {
-  // kAuto: all pairs up to 5 points (10 vectors), then the longest edges of the maximum
-  // spanning tree, at most kAutoSpanningLimit: no cost cliff and no throw at any n.
+  // kAuto: all pairs up to 5 points (10 vectors), then a budget of kAutoBudget vectors: no
+  // cost cliff and no throw at any n.
   std::mt19937 rng(kSeed + 27);
   for (const int n : {3, 5, 6, 8, 13, 14, 30}) {
     const Scene s = make_scene(rng, n, 1.0);
     const AffinePoseResult result = affine_pose(s.model, s.image);
-    const Eigen::Index expected = n <= 5 ? n * (n - 1) / 2 : std::min(n - 1, kAutoSpanningLimit);
+    const Eigen::Index expected = n <= 5 ? n * (n - 1) / 2 : kAutoBudget;
     EXPECT_EQ(result.pairs.cols(), expected) << n;
     EXPECT_EQ(free_vector_count(n, FreeVectorSet::kAuto), expected);
-    EXPECT_LE(result.orientation.sign_patterns, std::uint64_t{1} << kAutoSpanningLimit);
+    EXPECT_LE(result.orientation.sign_patterns, std::uint64_t{1} << kAutoBudget);
     if (n > 3) expect_pose(result, s, n);  // the farthest pair is kept: exact LUB scale
+  }
+}
+
+TEST(AffinePose, AutoFreeVectorsKeepThePairInTheImagePlane) {
+  // Lemma 7's LUB scale is exact when the free vector of largest image-to-object ratio lies in
+  // the image plane. Here that pair is the shortest of all: never an edge of the maximum
+  // spanning tree (it is the shortest edge of every triangle it is in), nor one of the longest
+  // further pairs. kAuto must still hold it, and so return the truth as all pairs do.
+  std::mt19937 rng(kSeed + 40);
+  for (const int n : {6, 7, 9, 14, 20}) {
+    const Eigen::Matrix3Xd model = testing::random_points(rng, n);
+    int short_i = 0;
+    int short_j = 1;
+    for (int i = 0; i < n; ++i) {
+      for (int j = i + 1; j < n; ++j) {
+        if ((model.col(j) - model.col(i)).norm() <
+            (model.col(short_j) - model.col(short_i)).norm()) {
+          short_i = i;
+          short_j = j;
+        }
+      }
+    }
+    const Eigen::Matrix3d R =
+        testing::rotation_with_in_plane(rng, model.col(short_j) - model.col(short_i));
+    const Eigen::Matrix2Xd image = testing::affine_image(R, model, 1.0);
+
+    const AffinePoseResult result = affine_pose(model, image);
+    EXPECT_EQ(result.pairs.cols(), kAutoBudget) << n;
+    bool holds_pair = false;
+    for (Eigen::Index k = 0; k < result.pairs.cols(); ++k) {
+      holds_pair |= result.pairs(0, k) == short_i && result.pairs(1, k) == short_j;
+    }
+    EXPECT_TRUE(holds_pair) << n;
+    EXPECT_LT(rotation_angle_between(result.R_camera_object, R), kNoiseFreeRadians) << n;
+    EXPECT_NEAR(result.alpha, 1.0, kNoiseFreeRelative) << n;
+
+    // Control: the spanning tree alone lacks the pair, so its LUB scale is off and the pose is
+    // not exact (the defect kAuto had at 6+ points).
+    AffinePoseOptions spanning;
+    spanning.free_vectors = FreeVectorSet::kMaxSpanningTree;
+    EXPECT_GT(rotation_angle_between(affine_pose(model, image, {}, spanning).R_camera_object, R),
+              1e3 * kNoiseFreeRadians)
+        << n;
+  }
+}
+
+TEST(FreeVectors, AutoIsTheTreeThenTheLongestOtherPairs) {
+  // Independent truth: every pair sorted by length; the tree edges are checked to be a
+  // spanning tree of maximum total length by comparing with the greedy (Kruskal) total.
+  std::mt19937 rng(kSeed + 41);
+  for (const int n : {6, 8, 12, 13}) {
+    const Eigen::Matrix3Xd points = testing::random_points(rng, n);
+    const Eigen::Matrix2Xi pairs = free_vector_pairs(points, FreeVectorSet::kAuto);
+    ASSERT_EQ(pairs.cols(), kAutoBudget);
+    std::set<std::pair<int, int>> chosen;
+    for (Eigen::Index k = 0; k < pairs.cols(); ++k) chosen.insert({pairs(0, k), pairs(1, k)});
+    EXPECT_EQ(chosen.size(), static_cast<std::size_t>(kAutoBudget)) << "repeated pairs";
+    const Eigen::Matrix2Xi tree = free_vector_pairs(points, FreeVectorSet::kMaxSpanningTree);
+    for (Eigen::Index k = 0; k < tree.cols(); ++k) {
+      EXPECT_EQ(chosen.count({tree(0, k), tree(1, k)}), 1u) << "tree edge missing, n " << n;
+    }
+    // The further pairs are the longest non-tree pairs.
+    std::vector<double> further_lengths;
+    std::vector<double> other_lengths;
+    for (int i = 0; i < n; ++i) {
+      for (int j = i + 1; j < n; ++j) {
+        bool in_tree = false;
+        for (Eigen::Index k = 0; k < tree.cols(); ++k) {
+          in_tree |= tree(0, k) == i && tree(1, k) == j;
+        }
+        if (in_tree) continue;
+        const double length = (points.col(j) - points.col(i)).norm();
+        (chosen.count({i, j}) ? further_lengths : other_lengths).push_back(length);
+      }
+    }
+    ASSERT_EQ(further_lengths.size(), static_cast<std::size_t>(kAutoBudget - (n - 1)));
+    for (double kept : further_lengths) {
+      for (double left : other_lengths) EXPECT_GE(kept, left) << n;
+    }
   }
 }
 

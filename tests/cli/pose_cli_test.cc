@@ -81,11 +81,25 @@ void expect_vector_near(const nlohmann::json& list, const Vector& expected, doub
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(list.at(i).get<double>(), expected[i], tolerance) << i;
 }
 
+/// A numerical failure (exit 1) says why: one line on stderr, "vantage: pose: <status>: ...".
+void expect_reason_on_stderr(const testing::CliRun& run, const std::string& what) {
+  EXPECT_EQ(run.status, 1) << what;
+  EXPECT_EQ(testing::line_count(run.err), 1) << what << "\n" << run.err;
+  EXPECT_THAT(run.err, HasSubstr("vantage: pose: ")) << what;
+  for (const char* internal : {"degenerate_gap", "sign pattern", "3-D problem", "start is"}) {
+    EXPECT_THAT(run.err, ::testing::Not(HasSubstr(internal))) << what;
+  }
+}
+
 nlohmann::json run_json(const std::string& args, int expected_status = 0) {
   ScratchDir scratch;
   const auto run = run_vantage("pose " + args + " --json", scratch);
   EXPECT_EQ(run.status, expected_status) << args << "\n" << run.err;
-  EXPECT_EQ(run.err, "") << args;
+  if (expected_status == 1) {
+    expect_reason_on_stderr(run, args);
+  } else {
+    EXPECT_EQ(run.err, "") << args;
+  }
   // JSON has no NaN or Infinity: the command prints null instead.
   EXPECT_THAT(run.out, ::testing::Not(HasSubstr("NaN"))) << args;
   EXPECT_THAT(run.out, ::testing::Not(HasSubstr("Infinity"))) << args;
@@ -362,6 +376,34 @@ TEST(PoseCli, EstimatorFailureExitsOneAndStillPrintsTheResult) {
   EXPECT_THAT(run.out, HasSubstr("status       degenerate"));
 }
 
+TEST(PoseCli, EveryNumericalFailureSaysWhyOnStderr) {
+  // The cases that used to exit 1 with an empty stderr (issue "Hardening II").
+  ScratchDir scratch;
+  const std::string collinear = scratch.write(
+      "line.json",
+      R"({"model": [[0,0,0],[1,1,1],[2,2,2],[3,3,3]], "image": [[0,0],[10,12],[20,24],[30,36]],
+          "measured": [[0,0,5],[1,1,6],[2,2,7],[3,3,8]]})");
+  for (const char* method : {"affine", "full3d", "standard", "perspective", "oi-foam"}) {
+    expect_reason_on_stderr(
+        run_vantage("pose '" + collinear + "' --method " + std::string(method), scratch), method);
+  }
+  auto views = nlohmann::json::parse(testing::read_file(kTwoView));
+  views["image2"] = views["image1"];
+  const std::string same = scratch.write("same.json", views.dump());
+  expect_reason_on_stderr(run_vantage("pose '" + same + "' --method two-view", scratch),
+                          "identical views");
+  for (auto& point : views["image1"]) point = {0.0, 0.0};
+  views["image2"] = views["image1"];
+  const std::string zeros = scratch.write("zeros.json", views.dump());
+  expect_reason_on_stderr(run_vantage("pose '" + zeros + "' --method two-view", scratch),
+                          "all zeros");
+  const std::string still = scratch.write(
+      "still.json",
+      R"({"model": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]], "image": [[5,5],[5,5],[5,5],[5,5]]})");
+  expect_reason_on_stderr(run_vantage("pose '" + still + "' --method oi-svd", scratch),
+                          "identical image points");
+}
+
 TEST(PoseCli, HelpExitsZero) {
   ScratchDir scratch;
   const auto run = run_vantage("pose --help", scratch);
@@ -404,25 +446,27 @@ const BadCall kBadCalls[] = {
     {"OverflowInFile", R"({"model": [[0,0,1e999]], "image": [[0,0]]})", "in.json --method affine",
      "in.json"},
     {"AffineWithoutImage", R"({"model": [[0,0,0],[1,0,0],[0,1,0]]})", "in.json --method affine",
-     "in.json: image: missing, required by vantage pose --method affine"},
+     "in.json: image: missing, required by the affine method"},
     {"OiWithoutModel", R"({"image1": [[0,0]], "image2": [[0,0]]})", "in.json --method oi-svd",
-     "model: missing, required by vantage pose --method oi-svd"},
+     "in.json: model: missing, required by the oi-svd method"},
     {"Full3dWithoutMeasured",
      R"({"model": [[0,0,0],[1,0,0],[0,1,0]], "image": [[0,0],[1,0],[0,1]]})",
-     "in.json --method full3d", "measured: missing, required by vantage pose --method full3d"},
+     "in.json --method full3d", "in.json: measured: missing, required by the full3d method"},
     {"TwoViewWithoutImages", nullptr, "AFFINE --method two-view",
-     "image1: missing, required by vantage pose --method two-view"},
+     "image1: missing, required by the two-view method"},
     {"ImageCountMismatch", R"({"model": [[0,0,0],[1,0,0],[0,1,0]], "image": [[0,0],[1,0]]})",
      "in.json --method affine", "image: has 2 entries but model has 3"},
     {"ViewCountMismatch", R"({"image1": [[0,0],[1,0]], "image2": [[0,0]]})",
      "in.json --method two-view", "image2: has 1 entries but image1 has 2"},
     {"AffineTwoPoints", R"({"model": [[0,0,0],[1,0,0]], "image": [[0,0],[1,0]]})",
-     "in.json --method affine", "in.json: model: need at least 3 points, got 2"},
+     "in.json --method affine", "in.json: model: has 2 points, the affine method needs at least 3"},
     {"OiTwoPoints", R"({"model": [[0,0,0],[1,0,0]], "image": [[0,0],[1,0]]})",
-     "in.json --method oi-foam", "in.json: model: need at least 3 points, got 2"},
+     "in.json --method oi-foam",
+     "in.json: model: has 2 points, the oi-foam method needs at least 3"},
     {"TwoViewFivePoints",
      R"({"image1": [[0,0],[1,0],[0,1],[1,1],[2,1]], "image2": [[0,0],[1,0],[0,1],[1,1],[2,1]]})",
-     "in.json --method two-view", "in.json: image1: need at least 8 correspondences, got 5"},
+     "in.json --method two-view",
+     "in.json: image1: has 5 points, the two-view method needs at least 8"},
     {"WeightsForTwoView",
      R"({"image1": [[0,0],[1,0],[0,1],[1,1],[2,1],[3,1],[1,3],[2,2]],
          "image2": [[0,0],[1,0],[0,1],[1,1],[2,1],[3,1],[1,3],[2,2]],
@@ -430,11 +474,12 @@ const BadCall kBadCalls[] = {
      "in.json --method two-view", "in.json: weights: not used"},
     {"CoincidentModelPoints",
      R"({"model": [[0,0,0],[1,0,0],[1,0,0]], "image": [[0,0],[1,0],[1,1]]})",
-     "in.json --method affine", "in.json: model: points 1 and 2 coincide"},
+     "in.json --method affine", "in.json: model[2]: coincides with model[1]"},
     {"TooManyFreeVectors",
      R"({"model": [[0,0,0],[1,0,0],[0,1,0],[0,0,1],[1,1,0],[1,0,1],[0,1,1],[1,1,1]],
          "image": [[0,0],[1,0],[0,1],[0,0],[1,1],[1,0],[0,1],[1,1]]})",
-     "in.json --method affine --free-vectors all", "use --free-vectors auto or spanning"},
+     "in.json --method affine --free-vectors all",
+     "in.json: model: 8 points give 28 free vectors, more than the limit 24"},
     {"CameraFocalNegative",
      R"({"model": [[0,0,0],[1,0,0],[0,1,0]], "image": [[0,0],[1,0],[0,1]],
          "camera": {"focal": -5}})",
@@ -449,8 +494,27 @@ const BadCall kBadCalls[] = {
      "in.json --method affine", "unknown field \"fx\""},
     {"PrincipalPointOneNumber", nullptr, "AFFINE --method perspective --principal-point 3",
      "--principal-point"},
-    {"PrincipalPointForTwoView", nullptr, "AFFINE --method two-view --principal-point 3 4",
+    {"PrincipalPointForFull3d", nullptr, "AFFINE --method full3d --principal-point 3 4",
      "--principal-point: not used"},
+    {"FocalBeyondRange", nullptr, "AFFINE --method oi-svd --focal 1e308",
+     "--focal: must be a finite number in (0, 1e150]"},
+    {"HugeModelOi",
+     R"({"model": [[0,0,0],[1,0,0],[0,1,0],[0,0,1e308]], "image": [[0,0],[1,0],[0,1],[1,1]]})",
+     "in.json --method oi-foam", "in.json: model[3]: a coordinate beyond 1e150"},
+    {"HugeModelFull3d",
+     R"({"model": [[0,0,0],[1,0,0],[0,1,0],[1e308,0,0]],
+         "measured": [[0,0,0],[1,0,0],[0,1,0],[1,1,0]]})",
+     "in.json --method full3d", "in.json: model[3]: a coordinate beyond 1e150"},
+    {"HugeModelAffine",
+     R"({"model": [[0,0,0],[1,0,0],[0,1,0],[1e308,0,0]], "image": [[0,0],[1,0],[0,1],[1,1]]})",
+     "in.json --method affine", "in.json: model[3]: a coordinate beyond 1e150"},
+    {"HugeImageStandard",
+     R"({"model": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]], "image": [[0,0],[1,0],[0,1],[1e308,1]]})",
+     "in.json --method standard", "in.json: image[3]: a coordinate beyond 1e150"},
+    {"HugeTwoView",
+     R"({"image1": [[0,0],[1,0],[0,1],[1,1],[2,1],[3,1],[1,3],[1e308,2]],
+         "image2": [[0,0],[1,0],[0,1],[1,1],[2,1],[3,1],[1,3],[2,2]]})",
+     "in.json --method two-view", "in.json: image1[7]: a coordinate beyond 1e150"},
 };
 
 INSTANTIATE_TEST_SUITE_P(PoseCli, PoseCliBadInput, ::testing::ValuesIn(kBadCalls),

@@ -50,7 +50,7 @@ TEST(SimulateCli, WorstViewpointReachesTheBound) {
       scratch);
   EXPECT_NEAR(json["bound_check"]["max_ratio"].get<double>(), 1.0, 1e-6);
   EXPECT_EQ(json["bound_check"]["vectors"], 66);
-  EXPECT_EQ(json["bound_check"]["affine_relation"][0]["free_vectors"], "max_spanning_tree");
+  EXPECT_EQ(json["bound_check"]["affine_relation"][0]["free_vectors"], "auto");
 }
 
 TEST(SimulateCli, ShardsMergeToTheUnshardedRun) {

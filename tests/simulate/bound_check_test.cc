@@ -93,7 +93,7 @@ TEST(BoundCheck, TriadMatchesThePaper) {
   const BoundLayout layout = prepare_bound_layout(Eigen::Matrix3d::Identity(), true);
   EXPECT_NEAR(layout.data.pbar_min, std::sqrt(2.0 / 3.0), 1e-9);
   EXPECT_NEAR(layout.data.bound_rad * kDegreesPerRadian, 35.2644, 1e-4);
-  EXPECT_EQ(layout.affine_free_vectors, "vectors");
+  EXPECT_EQ(layout.affine.free_vectors, "vectors");
 }
 
 TEST(BoundCheck, StableEq26AgreesWithTheAcosForm) {

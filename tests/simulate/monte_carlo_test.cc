@@ -146,16 +146,24 @@ TEST(MonteCarlo, NoiseFreeAffineRefinedReturnsTheTruthWhereTheLubScaleDoesNot) {
 TEST(MonteCarlo, TrialErrorMeasuresTheRotationAngle) {
   Scene scene;
   scene.p_true = Eigen::Vector3d(0.0, 0.0, 2.0);
-  Estimate estimate;
-  estimate.R = Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()).matrix();
-  estimate.p = Eigen::Vector3d(0.0, 0.0, 3.0);
-  estimate.has_translation = true;
+  PoseEstimate estimate;
+  estimate.R_camera_object = Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()).matrix();
+  estimate.p_camera_object = Eigen::Vector3d(0.0, 0.0, 3.0);
   estimate.alpha = 2.0;
   const TrialError e = trial_error(estimate, scene);
   EXPECT_NEAR(e.rot_err_deg, 0.3 * kDegreesPerRadian, 1e-12);
   EXPECT_NEAR(e.trans_err_rel, 0.5, 1e-15);
   EXPECT_NEAR(e.trans_err_deg, 0.0, 1e-12);
   EXPECT_NEAR(e.scale_err, 1.0, 1e-15);
+  EXPECT_EQ(e.status, "ok");
+  EXPECT_TRUE(e.ok);
+  // No translation (a NaN entry): no translation error; an ambiguous estimate is not ok.
+  estimate.p_camera_object.setConstant(std::nan(""));
+  estimate.ambiguous = true;
+  const TrialError f = trial_error(estimate, scene);
+  EXPECT_TRUE(std::isnan(f.trans_err));
+  EXPECT_EQ(f.status, "ambiguous");
+  EXPECT_FALSE(f.ok);
 }
 
 TEST(Statistics, OrderStatisticsAndNaN) {

@@ -70,22 +70,6 @@ enum class SignEnumeration {
 /// "gray_code", "gray_code_eigen" or "naive".
 const char* to_string(SignEnumeration enumeration);
 
-/// Outcome of an affine orientation or pose solve.
-enum class AffineStatus {
-  kOk,  ///< a unique winner: neither of the conditions below holds
-  /// The runner-up pattern fits as well as the winner, runner_up_residual - residual <=
-  /// ambiguity_tolerance * sum w_i |z_i|^2, with a rotation more than distinct_rotation_angle
-  /// away: the data cannot tell two poses apart (e.g. the two-fold "Necker" reversal of coplanar
-  /// vectors, docs/math.md §15). R is one of them; runner_up_R_camera_object is the other.
-  kAmbiguous,
-  /// The winning pattern's 3-D problem is degenerate (relative eigen gap of D <= degenerate_gap,
-  /// e.g. all vectors parallel): the data do not determine R.
-  kDegenerate,
-};
-
-/// "ok", "ambiguous" or "degenerate".
-const char* to_string(AffineStatus status);
-
 /// Options of affine_orientation() and affine_orientation_unknown_scale().
 struct AffineOrientationOptions {
   SignEnumeration enumeration = SignEnumeration::kGrayCode;
@@ -99,7 +83,8 @@ struct AffineOrientationOptions {
   /// the image plane: v_zi = 0 and it is not enumerated (the LUB vector of Lemma 7 is one).
   /// Dimensionless, in [0, 1).
   double in_plane_tolerance = 1e-12;
-  /// Relative margin (see AffineStatus::kAmbiguous), dimensionless, >= 0.
+  /// Relative margin of the ambiguity test (see AffineOrientationResult::ambiguous),
+  /// dimensionless, >= 0.
   double ambiguity_tolerance = 1e-9;
   /// Rotations closer than this are the same answer for the ambiguity test and the runner-up.
   /// Radians, >= 0. A vector near the image plane (small |v_zi| / |z_i|) makes its two sign
@@ -107,8 +92,8 @@ struct AffineOrientationOptions {
   /// examples/correspondences/affine_pose.json): not an ambiguity. A mirror pose is about twice
   /// the tilt away, so 1 deg separates the two for any tilt worth calling a view.
   double distinct_rotation_angle = kPi / 180.0;
-  /// Relative eigen gap of the winning D at or below which the status is kDegenerate, as in
-  /// OrientationOptions::degenerate_gap. Dimensionless, in [0, 1).
+  /// Relative eigen gap of the winning D at or below which the status is
+  /// PoseStatus::kDegenerate, as in OrientationOptions::degenerate_gap. Dimensionless, in [0, 1).
   double degenerate_gap = 1e-10;
 
   /// True when every field is in range; otherwise *why names the field and the constraint.
@@ -139,8 +124,15 @@ struct AffineOrientationResult {
   /// plus top_eigenpair() calls that used the full eigensolver.
   std::uint64_t eigen_fallbacks = 0;
   double eigen_gap = 0.0;  ///< lambda_1 - lambda_2 of the winner's D
-  AffineStatus status = AffineStatus::kOk;
-  std::string message;  ///< empty when status is kOk
+  /// kOk, or kDegenerate: the winner's Theorem-1 problem is degenerate (relative eigen gap of D
+  /// <= degenerate_gap, e.g. all vectors parallel), so the data do not determine R.
+  PoseStatus status = PoseStatus::kOk;
+  /// The runner-up fits as well as the winner, runner_up_residual - residual <=
+  /// ambiguity_tolerance * sum w_i |z_i|^2, with a rotation more than distinct_rotation_angle
+  /// away: the data cannot tell two poses apart (e.g. the two-fold "Necker" reversal of
+  /// coplanar vectors, docs/math.md §15). R is one of them; runner_up_R_camera_object the other.
+  bool ambiguous = false;
+  std::string message;  ///< empty when status is kOk and not ambiguous
 };
 
 /// Prop. 4: minimises J_2d = sum w_i |P R z_i - alpha d_i|^2 (Eq. 15 with the scale of Eq. 14)
@@ -151,7 +143,7 @@ struct AffineOrientationResult {
 /// symmetry in general: it fits R z_i with the reflection diag(1, 1, -1) R, so its Theorem-1
 /// rotation is a different (usually poor) answer. Only for coplanar z_i does it give the mirror
 /// pose R' = diag(1, 1, -1) R (I - 2 n n^T) (n the plane normal) with the same J_2d, which is
-/// exactly the two-fold ambiguity reported as kAmbiguous; so 2^(m-1) patterns would lose it.
+/// exactly the two-fold ambiguity reported as `ambiguous`; so 2^(m-1) patterns would lose it.
 ///
 /// z_object: 3 x n, n >= 2, finite, non-zero columns; d_image: 2 x n, finite; weights: n positive
 /// entries or empty; n <= options.max_vectors. Gray-code per-pattern work allocates nothing.
@@ -212,16 +204,16 @@ FreeVectors affine_free_vectors(const Eigen::Matrix3Xd& model_object, const Eige
                                 const Eigen::VectorXd& weights, const AffinePoseOptions& options);
 
 /// Result of Prop. 8 and of the 2-D standard approach. PoseEstimate's fields:
-///  - status: kDegenerate when Prop. 4's winner is (AffineStatus::kDegenerate), else kOk;
-///  - ambiguous: Prop. 4's runner-up fits as well (AffineStatus::kAmbiguous: for coplanar points
+///  - status: kDegenerate when Prop. 4's winner is (orientation.status), else kOk;
+///  - ambiguous: Prop. 4's runner-up fits as well (orientation.ambiguous: for coplanar points
 ///    the Necker pair, which the affine model cannot tell apart); alternative: the runner-up
 ///    rotation with its Eq. (36) translation, whenever Prop. 4 had one;
+///  - alpha: the scale, object units per pixel: alpha (q_i - c) ~= P (R z_i + p);
+///  - objective: J of Eq. (35) at the estimate, sum w_i |P (R z_i + p) - alpha (q_i - c)|^2
+///    (object units^2);
 ///  - reprojection_rms_px = sqrt(objective / (alpha^2 sum w)): the affine model's image residual.
 struct AffinePoseResult : PoseEstimate {
-  double alpha = 1.0;        ///< scale, object units per pixel: alpha (q_i - c) ~= P (R z_i + p)
   bool depth_known = false;  ///< true when p_z came from Eq. (37) (a focal length was given)
-  /// J of Eq. (35) at the estimate: sum w_i |P (R z_i + p) - alpha (q_i - c)|^2 (object units^2).
-  double objective = 0.0;
   /// Prop. 4 / Lemma 7 on the free vectors (sign_patterns, ambiguity_margin, clamped, ...).
   /// For the standard approach: one pattern (v_z = 0), runner-up +infinity.
   AffineOrientationResult orientation;

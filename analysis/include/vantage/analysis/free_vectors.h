@@ -26,9 +26,13 @@ double pair_weight(double w_i, double w_j, PairWeighting weighting);
 /// Which free vectors to build from n points.
 enum class FreeVectorSet {
   /// All pairs while n (n - 1) / 2 <= kAutoAllPairsLimit (n <= 5: at most 2^10 sign patterns
-  /// in Prop. 4); otherwise the maximum spanning tree, of which only the longest
-  /// kAutoSpanningLimit edges are kept beyond kAutoSpanningLimit + 1 points (2^12 patterns at
-  /// most). Never throws for the number of points.
+  /// in Prop. 4). Beyond, a budget of kAutoBudget vectors (2^12 patterns at most): the edges of
+  /// the maximum spanning tree (the longest kAutoBudget of them beyond kAutoBudget + 1 points),
+  /// then the longest other pairs until the budget is full. With an image, affine_pose() also
+  /// makes sure of the pair with the largest image-to-object length ratio: the pair that sets
+  /// Lemma 7's LUB scale, so the scale is the one all pairs would give (exact whenever some
+  /// pair lies in the image plane, as the paper's all-pairs estimator is). Never throws for the
+  /// number of points.
   kAuto,
   kAllPairs,  ///< all n (n - 1) / 2 pairs i < j, as in the paper
   /// n - 1 pairs forming the maximum spanning tree of the object distances |z_j - z_i| (Prim):
@@ -38,8 +42,8 @@ enum class FreeVectorSet {
 
 /// Largest all-pairs set kAuto uses (10 vectors: 5 points).
 inline constexpr int kAutoAllPairsLimit = 10;
-/// Largest spanning set kAuto uses (12 vectors: 4096 sign patterns).
-inline constexpr int kAutoSpanningLimit = 12;
+/// Free vectors kAuto uses beyond the all-pairs limit (12 vectors: 4096 sign patterns).
+inline constexpr int kAutoBudget = 12;
 
 /// "auto", "all_pairs" or "max_spanning_tree".
 const char* to_string(FreeVectorSet set);
@@ -48,9 +52,24 @@ const char* to_string(FreeVectorSet set);
 Eigen::Index free_vector_count(Eigen::Index n, FreeVectorSet set);
 
 /// The pairs (i, j), i < j, of `set` for these points, one per column. all_pairs in
-/// lexicographic order of (i, j); spanning sets in order of addition to the tree.
+/// lexicographic order of (i, j); the spanning tree in order of addition to it; kAuto beyond
+/// all pairs: its tree edges, then the further pairs by decreasing length (ties by (i, j)).
 /// points: 3 x n, n >= 2 (not validated here: callers validate their own input).
 Eigen::Matrix2Xi free_vector_pairs(const Eigen::Matrix3Xd& points, FreeVectorSet set);
+
+/// free_vector_pairs(points, set) for points with a measurement each (image points, 2 x n, or
+/// 3-D measurements): for kAuto beyond all pairs, the pair of largest |q_j - q_i| / |z_j - z_i|
+/// replaces the last (shortest further) pair when the set does not hold it already, so that
+/// the LUB scale of Eq. (23) over the set is the one over all pairs. Other sets are as above.
+template <int MeasuredRows>
+Eigen::Matrix2Xi free_vector_pairs(
+    const Eigen::Matrix3Xd& points,
+    const Eigen::Matrix<double, MeasuredRows, Eigen::Dynamic>& measured, FreeVectorSet set);
+
+extern template Eigen::Matrix2Xi free_vector_pairs<2>(const Eigen::Matrix3Xd&,
+                                                      const Eigen::Matrix2Xd&, FreeVectorSet);
+extern template Eigen::Matrix2Xi free_vector_pairs<3>(const Eigen::Matrix3Xd&,
+                                                      const Eigen::Matrix3Xd&, FreeVectorSet);
 
 /// Free vectors with their measurements and weights.
 template <int MeasuredRows>

@@ -1,8 +1,8 @@
 #pragma once
 
 /// Pose from one perspective image by orthogonal iteration (Lu, Hager & Mjolsness 2000) with the
-/// absolute-orientation step done by FOAM, as proposed by Wu & Wu (seed 004; docs/math.md §5
-/// and §17), or by Haralick's SVD (seed 003, Sec. 3) for the seed's comparison.
+/// absolute-orientation step done by FOAM, as proposed by Wu & Wu ([W]; docs/math.md §5
+/// and §17), or by Haralick's SVD ([H] Sec. 3) for [W]'s comparison.
 ///
 /// Frames: x_camera = R_camera_object * x_object + p_camera_object; the camera looks along +z.
 ///
@@ -76,10 +76,9 @@ struct OrthogonalIterationOptions {
 ///    iterate); kDegenerate: all lines of sight (nearly) parallel, so F is singular (smallest
 ///    eigenvalue <= degenerate_tolerance * sum w_i), or the absolute-orientation step had a
 ///    relative eigen gap <= degenerate_tolerance (e.g. collinear or coincident model points);
-///  - reprojection_rms_px: pinhole RMS image residual (+infinity with a point behind the camera).
+///  - reprojection_rms_px: pinhole RMS image residual (+infinity with a point behind the camera);
+///  - objective: E(R, p) at the returned pose, squared object units times weight.
 struct OrthogonalIterationResult : PoseEstimate {
-  /// E(R, p) at the returned pose: squared object units times weight.
-  double objective = 0.0;
   double initial_objective = 0.0;  ///< E at the weak-perspective start of the returned branch
   int points_behind_camera = 0;    ///< points with (R x_i + p)_z <= 0 at the returned pose
   int branches = 1;                ///< starts iterated: 1, or 2 with the Necker mirror

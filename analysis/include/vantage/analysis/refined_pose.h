@@ -78,10 +78,9 @@ struct RefinedPoseOptions {
   bool is_valid(std::string* why = nullptr) const;
 };
 
-/// Result of affine_refined_pose() and perspective_pose().
+/// Result of affine_refined_pose() and perspective_pose(). PoseEstimate's alpha is the refined
+/// scale (affine) or p_z / f (perspective), object units per pixel.
 struct RefinedPoseResult : PoseEstimate {
-  /// Object units per pixel: the refined scale (affine) or p_z / f (perspective).
-  double alpha = std::numeric_limits<double>::quiet_NaN();
   int branches = 0;        ///< starts refined: 1, 2 with the Necker mirror (3: kProp8, planar)
   double planarity = 0.0;  ///< sigma_3 / sigma_1 of the centred model
   /// RMS residual of the best start in the method's own model: Prop. 8 under the affine model

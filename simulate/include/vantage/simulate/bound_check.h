@@ -58,8 +58,11 @@ struct BoundLayout {
   bool vectors = false;
   VectorSetBound data;      ///< every data vector
   VectorSetBound spanning;  ///< point mode only (free_vectors empty in direction mode)
-  /// The set the registry's "affine" estimator uses on this layout (all pairs or spanning).
-  std::string affine_free_vectors;
+  /// The set the registry's "affine" estimator uses on this layout: all pairs up to
+  /// kAutoAllPairsLimit free vectors, else the kAuto set of the object points (the estimator
+  /// may swap its last pair for the image's LUB pair, free_vectors.h); the data vectors in
+  /// direction mode.
+  VectorSetBound affine;
 };
 
 /// Prepares a layout: entries 3 x n (points, n >= 3, or vectors, n >= 2). Runs the certified

@@ -63,12 +63,15 @@ struct TrialError {
   double trans_err_deg = 0.0;
   double scale_err = 0.0;
   double time_us = 0.0;  ///< wall-clock time of the solve, microseconds
-  std::string status;    ///< the estimator's status string
-  bool ok = true;
+  /// The estimate's PoseStatus name ("ok", "degenerate", ...), or "ambiguous" for an ok estimate
+  /// that is PoseEstimate::ambiguous (the data cannot tell it from its alternative).
+  std::string status;
+  bool ok = true;  ///< status "ok": PoseStatus::kOk and not ambiguous
 };
 
-/// The errors of (R, p, alpha) against the scene's truth (file comment); time_us stays 0.
-TrialError trial_error(const Estimate& estimate, const Scene& scene);
+/// The errors of (R, p, alpha) against the scene's truth (file comment; a NaN entry of p means
+/// no translation); time_us stays 0.
+TrialError trial_error(const PoseEstimate& estimate, const Scene& scene);
 
 /// A run (or a shard of one, or a merge of shards): the per-trial errors of every estimator.
 struct MonteCarloRun {
