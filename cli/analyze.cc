@@ -7,19 +7,15 @@
 #include <iostream>
 #include <memory>
 #include <numeric>
-#include <regex>
 
-#include "analysis_json.h"
 #include "command.h"
 #include "layout_input.h"
 #include "limits.h"
 #include "progress.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/layout.h"
-#include "vantage/design/augment.h"
 #include "vantage/io/layout_file.h"
-#include "vantage/sdp/dropout.h"
-#include "vantage/sdp/layout_analysis.h"
+#include "vantage/sdp/layout_report.h"
 
 namespace vantage::cli {
 
@@ -45,27 +41,6 @@ struct AnalyzeArgs {
   bool allow_large = false;
 };
 
-/// "v3" for a vector, "p2-p7" for the free vector from marker 2 to marker 7.
-std::string vector_label(const DataVectors& data, long k) {
-  if (data.pairs.empty()) return "v" + std::to_string(k);
-  return "p" + std::to_string(data.pairs[k].first) + "-p" + std::to_string(data.pairs[k].second);
-}
-
-/// The library names data vector k "vectors[k]"; in point mode that is a free vector of the
-/// file's points: name those.
-[[noreturn]] void rethrow_for_layout(const std::string& source, const Layout& layout,
-                                     const DataVectors& data, const InvalidArgument& error) {
-  std::string message = error.what();
-  std::smatch match;
-  if (layout.mode == LayoutMode::kPoints &&
-      std::regex_search(message, match, std::regex(R"(vectors\[(\d+)\])"))) {
-    const auto& pair = data.pairs[std::stoul(match[1].str())];
-    message = match.prefix().str() + "points[" + std::to_string(pair.second) + "] - points[" +
-              std::to_string(pair.first) + "] (a free vector)" + match.suffix().str();
-  }
-  throw InvalidArgument(source + ": " + message);
-}
-
 /// Indices of the data vectors by decreasing worst-case error (ties by index).
 std::vector<long> by_decreasing_error(const Eigen::VectorXd& errors) {
   std::vector<long> order(static_cast<std::size_t>(errors.size()));
@@ -75,8 +50,9 @@ std::vector<long> by_decreasing_error(const Eigen::VectorXd& errors) {
   return order;
 }
 
-void print_vectors(const DataVectors& data, const sdp::LayoutAnalysis& r, bool verbose) {
-  const long m = data.vectors.cols();
+void print_vectors(const sdp::LayoutReport& report, bool verbose) {
+  const sdp::LayoutAnalysis& r = report.analysis;
+  const long m = report.data.vectors.cols();
   const bool all = verbose || m <= kShownVectors + 2;
   const long shown = all ? m : kShownVectors;
   std::cout << "\nworst-case error per vector at a (deg, Eq. 30), worst first";
@@ -88,13 +64,14 @@ void print_vectors(const DataVectors& data, const sdp::LayoutAnalysis& r, bool v
   const std::vector<long> order = by_decreasing_error(r.worst_case_errors_deg);
   for (long k = 0; k < shown; ++k) {
     const long v = order[static_cast<std::size_t>(k)];
-    std::cout << "  " << vector_label(data, v) << "  "
+    std::cout << "  " << report.vector_label(v) << "  "
               << format_number(r.worst_case_errors_deg(v), 6) << "\n";
   }
 }
 
-void print_swaps(const DataVectors& data, const sdp::LayoutAnalysis& r) {
-  const long m = data.vectors.cols();
+void print_swaps(const sdp::LayoutReport& report) {
+  const sdp::LayoutAnalysis& r = report.analysis;
+  const long m = report.data.vectors.cols();
   const bool all_zero = std::all_of(r.swaps.begin(), r.swaps.end(), [](const SwapError& s) {
     return !s.ambiguous && s.error_deg <= kZeroSwapDeg;
   });
@@ -107,7 +84,7 @@ void print_swaps(const DataVectors& data, const sdp::LayoutAnalysis& r) {
   std::cout << "\nswap sensitivity (Prop. 2), worst pairs (rotation error when two measurements "
                "are swapped):\n";
   for (const SwapError& s : r.swaps) {
-    std::cout << "  " << vector_label(data, s.i) << " <-> " << vector_label(data, s.j) << "  "
+    std::cout << "  " << report.vector_label(s.i) << " <-> " << report.vector_label(s.j) << "  "
               << format_number(s.error_deg, 6) << " deg"
               << (s.ambiguous ? "  (ambiguous: the swapped optimum is not unique)" : "") << "\n";
   }
@@ -117,7 +94,7 @@ std::string paper_lmi_line(const sdp::LayoutAnalysis& r) {
   using Status = sdp::CellViewpoint::Status;
   switch (r.paper_lmi.status) {
     case Status::kOk:
-      return "pbar " + format_number(r.paper_lmi.pbar, 6) + " at " +
+      return "pbar " + format_number(r.paper_lmi.pbar_at, 6) + " at " +
              format_vector(r.paper_lmi.viewpoint) + "  (one sign cell only; >= the global value)";
     case Status::kEmptyCell:
       return "empty_cell: its sign cell holds no viewpoint with every a.n_i > 0, so it gives no "
@@ -128,32 +105,15 @@ std::string paper_lmi_line(const sdp::LayoutAnalysis& r) {
   return std::string(sdp::to_string(r.paper_lmi.status)) + ": the SDP gave no solution";
 }
 
-void print_report(const AnalyzeArgs& args, const Layout& layout, const DataVectors& data,
-                  const sdp::LayoutAnalysis& r, double ceiling) {
-  const long m = data.vectors.cols();
+void print_report(const AnalyzeArgs& args, const sdp::LayoutReport& report) {
+  const Layout& layout = report.layout;
+  const sdp::LayoutAnalysis& r = report.analysis;
   std::cout << "vantage analyze: " << (layout.name.empty() ? args.file : layout.name) << "\n"
             << "  " << to_string(layout.mode) << " mode, " << layout.entries.cols() << " "
-            << to_string(layout.mode) << " -> " << m << " data vectors\n\n";
-  if (r.degenerate) {
-    std::cout << "DEGENERATE             every data vector is parallel to one line: the rotation "
-                 "about it is not determined\n";
-  }
-  std::cout << "pbar_min = sqrt(1-t^2) " << format_number(r.pbar_min, 9) << "   (ceiling for " << m
-            << " vectors: " << format_number(ceiling, 6) << ")\n"
-            << "max worst-case error   " << format_number(r.max_worst_case_error_deg, 6)
-            << " deg (Eq. 30)" << (r.degenerate ? ", and the rotation about the line is free" : "")
-            << "\n"
-            << "worst viewpoint a      " << format_vector(r.worst_viewpoint) << "\n";
-  for (std::size_t k = 1; k < r.worst_viewpoints.size(); ++k) {
-    std::cout << "  also (tie)           " << format_vector(r.worst_viewpoints[k]) << "\n";
-  }
-  std::cout << "certificate            t in [" << format_number(r.certificate.t_lower, 12) << ", "
-            << format_number(r.certificate.t_upper, 12) << "], " << sdp::to_string(r.solver.status)
-            << ", " << r.solver.cells_solved << " cells solved, confirmed on "
-            << sdp::to_string(r.solver.backend) << " (" << sdp::to_string(r.solver.sdp_status)
-            << ")\n";
-  print_vectors(data, r, args.verbose);
-  print_swaps(data, r);
+            << to_string(layout.mode) << " -> " << report.data.vectors.cols() << " data vectors\n\n"
+            << report.brief_report();
+  print_vectors(report, args.verbose);
+  print_swaps(report);
   std::cout << "\nt = min_i |a.n_i|      " << format_number(r.t, 9) << "\n"
             << "paper's single LMI     " << paper_lmi_line(r) << "\n"
             << "cross-check            ";
@@ -170,31 +130,14 @@ void print_report(const AnalyzeArgs& args, const Layout& layout, const DataVecto
   }
 }
 
-/// "p3" for marker 3 (point mode), "v3" for vector 3.
-std::string entry_label(const Layout& layout, int k) {
-  return (layout.mode == LayoutMode::kPoints ? "p" : "v") + std::to_string(k);
-}
-
-Json dropout_json(const sdp::DropoutAnalysis& dropout) {
-  Json list = Json::array();
-  for (const sdp::DropoutEntry& e : dropout.entries) {
-    list.push_back({{"index", e.index},
-                    {"pbar_min", e.pbar_min},
-                    {"max_worst_case_error_deg", e.max_worst_case_error_deg},
-                    {"worst_viewpoint", json_list(e.worst_viewpoint)},
-                    {"n_vectors", e.n_vectors},
-                    {"certified", e.certified}});
-  }
-  return list;
-}
-
-void print_dropout(const Layout& layout, const sdp::DropoutAnalysis& dropout) {
+void print_dropout(const sdp::LayoutReport& report) {
+  const sdp::DropoutAnalysis& dropout = *report.dropout;
   std::cout << "\ndropout: the layout without one "
-            << (layout.mode == LayoutMode::kPoints ? "marker" : "vector")
+            << (report.layout.mode == LayoutMode::kPoints ? "marker" : "vector")
             << ", most harmful first (pbar_min, max worst-case error):\n";
   for (int k : dropout.by_harm) {
     const sdp::DropoutEntry& e = dropout.entries[k];
-    std::cout << "  without " << entry_label(layout, e.index) << "  pbar_min "
+    std::cout << "  without " << report.entry_label(e.index) << "  pbar_min "
               << format_number(e.pbar_min, 6) << "  "
               << format_number(e.max_worst_case_error_deg, 6) << " deg"
               << (e.certified ? "" : "  (NOT certified)") << "\n";
@@ -202,7 +145,7 @@ void print_dropout(const Layout& layout, const sdp::DropoutAnalysis& dropout) {
 }
 
 int run_analyze(const AnalyzeArgs& args) {
-  if (args.swaps < 1) throw InvalidArgument("--swaps: must be >= 1");
+  if (args.swaps < 1) throw InvalidArgument("--swaps", "must be >= 1");
   const Layout layout = args.input.read(args.file, args.allow_large);
   check_limit(args.file + ": data vectors", data_vector_count(layout), kMaxAnalyzeVectors,
               "analyze", args.allow_large);
@@ -210,40 +153,26 @@ int run_analyze(const AnalyzeArgs& args) {
     check_limit(args.file + ": data vectors with --dropout", data_vector_count(layout),
                 kMaxDropoutVectors, "analyze --dropout", args.allow_large);
   }
-  const DataVectors data = against_source(args.file, [&] {
-    return data_vectors(layout, args.pair_weighting == "arithmetic"
-                                    ? PairWeighting::kArithmeticMean
-                                    : PairWeighting::kGeometricMean);
-  });
-  sdp::LayoutAnalysisOptions options;
-  options.swap_count = args.swaps;
-  options.run_crosscheck = args.crosscheck;
-  sdp::LayoutAnalysis report;
-  try {
+  sdp::LayoutReportOptions options;
+  options.pair_weighting = args.pair_weighting == "arithmetic" ? PairWeighting::kArithmeticMean
+                                                               : PairWeighting::kGeometricMean;
+  options.analysis.swap_count = args.swaps;
+  options.analysis.run_crosscheck = args.crosscheck;
+  options.dropout = args.dropout;
+  sdp::LayoutReport report;
+  {
     Progress progress("analyze", !args.json && !args.quiet);  // cleared before the report
-    options.progress = progress.callback();
-    report = sdp::analyze_vectors(data.vectors, data.weights, options);
-  } catch (const InvalidArgument& e) {
-    rethrow_for_layout(args.file, layout, data, e);
+    options.analysis.progress = progress.callback();
+    report = against_source(args.file, [&] { return sdp::analyze_layout(layout, options); });
   }
-  const double ceiling = design::pbar_ceiling(static_cast<int>(data.vectors.cols()));
-  sdp::DropoutAnalysis dropout;
-  if (args.dropout) dropout = sdp::dropout_analysis(layout);
-  const bool dropout_certified =
-      !args.dropout || dropout.status == sdp::DropoutAnalysis::Status::kCertified;
-
   if (args.json) {
-    Json out = analysis_json::analysis(layout, data, report, ceiling);
-    if (args.dropout) out["dropout"] = dropout_json(dropout);
-    print_json(out);
+    std::cout << sdp::to_json(report) << std::endl;
   } else {
-    print_report(args, layout, data, report, ceiling);
-    if (args.dropout) print_dropout(layout, dropout);
+    print_report(args, report);
+    if (report.dropout) print_dropout(report);
   }
-  if (!report.trusted() || report.degenerate || !dropout_certified) {
-    std::string message = report.message.empty() ? "result not certified" : report.message;
-    if (!dropout_certified && !dropout.message.empty()) message += "; dropout: " + dropout.message;
-    std::cerr << "vantage: warning: " << message << std::endl;
+  if (!report.is_usable()) {
+    std::cerr << "vantage: warning: " << report.message() << std::endl;
     return kExitFailure;
   }
   return kExitOk;

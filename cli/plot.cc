@@ -172,7 +172,7 @@ int run_plot(const PlotArgs& args) {
   try {
     plot::selected_figures(options, !args.design.empty());
   } catch (const InvalidArgument& e) {
-    bad(std::string("--") + e.what());
+    throw e.renamed("--" + e.field(), e.index());
   }
   check_figure_directory("--out", args.out);
   const Layout layout = io::read_layout(args.file);
@@ -183,9 +183,14 @@ int run_plot(const PlotArgs& args) {
   }
   create_figure_directory("--out", args.out);
 
+  sdp::LayoutReportOptions report_options;
+  report_options.dropout = plot::needs_dropout(options, design != nullptr);
+  report_options.dropout_options.threads = options.figure.threads;
+  const sdp::LayoutReport report =
+      against_source(args.file, [&] { return sdp::analyze_layout(layout, report_options); });
   plot::LayoutFigures figures;
   try {
-    figures = plot::write_layout_figures(layout, args.out, options, design.get());
+    figures = plot::write_layout_figures(report, args.out, options, design.get());
   } catch (const plot::RenderError& e) {
     std::cerr << "vantage: plot: " << e.what() << std::endl;
     return kExitFailure;

@@ -1,4 +1,3 @@
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 
@@ -27,7 +26,7 @@ WorstCase worst_case_of(const sdp::WorstViewpoint& w, const Eigen::Matrix3Xd& ve
   if (stopped != nullptr) *stopped = w.status == sdp::WorstViewpoint::Status::kStoppedAbove;
   WorstCase out;
   out.t = w.t;
-  out.pbar_min = w.pbar;
+  out.pbar_min = w.pbar_min;
   out.worst_viewpoints = w.viewpoints;
   if (out.worst_viewpoints.empty()) out.worst_viewpoints.push_back(w.viewpoint);
   out.certified = w.status == sdp::WorstViewpoint::Status::kCertified;
@@ -39,24 +38,5 @@ WorstCase worst_case_of(const sdp::WorstViewpoint& w, const Eigen::Matrix3Xd& ve
 }
 
 }  // namespace internal
-
-double pbar_ceiling(int m) {
-  vantage::internal::check_min_count("m", m, 1, "data vector");
-  return std::cos(kPi / (2.0 * m));
-}
-
-Coplanarity coplanarity(const Eigen::Matrix3Xd& vectors, double threshold) {
-  if (!(threshold >= 0.0)) vantage::internal::fail("threshold", "must be >= 0");
-  vantage::internal::check_min_count("vectors", vectors.cols(), 1, "column");
-  const Eigen::Matrix3Xd n = sdp::normalized_columns(vectors, "vectors");
-  // Singular values of N / sqrt(m) are the square roots of the eigenvalues of N N^T / m.
-  const Eigen::Matrix3d scatter = n * n.transpose() / static_cast<double>(n.cols());
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(scatter);
-  Coplanarity out;
-  out.smallest_singular_value = std::sqrt(std::max(0.0, eig.eigenvalues()(0)));
-  out.normal = eig.eigenvectors().col(0);
-  out.nearly_coplanar = out.smallest_singular_value < threshold;
-  return out;
-}
 
 }  // namespace vantage::design

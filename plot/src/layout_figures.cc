@@ -9,8 +9,6 @@
 #include "vantage/plot/error_surface.h"
 #include "vantage/plot/vectors_figure.h"
 #include "vantage/plot/viewpoint_map.h"
-#include "vantage/sdp/dropout.h"
-#include "vantage/sdp/worst_viewpoint.h"
 
 namespace vantage::plot {
 namespace {
@@ -19,15 +17,6 @@ constexpr int kMinLayoutMapSamples = 400;
 
 bool wants(const std::vector<std::string>& names, const char* name) {
   return std::find(names.begin(), names.end(), name) != names.end();
-}
-
-// The largest Eq. (30) error over the worst viewpoints, as `vantage analyze` reports it.
-double max_error_deg(const Eigen::Matrix3Xd& vectors, const sdp::WorstViewpoint& worst) {
-  double largest = 0.0;
-  for (const Eigen::Vector3d& a : worst.viewpoints) {
-    largest = std::max(largest, worst_case_errors_deg(vectors, a).maxCoeff());
-  }
-  return largest;
 }
 
 }  // namespace
@@ -69,10 +58,10 @@ std::vector<std::string> selected_figures(const LayoutFiguresOptions& options, b
     }
     if (std::find(options.only.begin(), options.only.begin() + k, name) !=
         options.only.begin() + k) {
-      throw InvalidArgument("only: figure \"" + name + "\" given twice");
+      throw InvalidArgument("only", "figure \"" + name + "\" given twice");
     }
     if (name == "design" && !has_design) {
-      throw InvalidArgument("only: the design figure needs a design result");
+      throw InvalidArgument("only", "the design figure needs a design result");
     }
   }
   std::vector<std::string> ordered;
@@ -82,34 +71,39 @@ std::vector<std::string> selected_figures(const LayoutFiguresOptions& options, b
   return ordered;
 }
 
-LayoutFigures write_layout_figures(const Layout& layout, const std::filesystem::path& directory,
+bool needs_dropout(const LayoutFiguresOptions& options, bool has_design) {
+  return wants(selected_figures(options, has_design), "dropout");
+}
+
+LayoutFigures write_layout_figures(const sdp::LayoutReport& report,
+                                   const std::filesystem::path& directory,
                                    const LayoutFiguresOptions& options, const DesignCurve* design) {
   std::string why;
-  if (!options.is_valid(&why)) throw InvalidArgument("write_layout_figures: options." + why);
+  if (!options.is_valid(&why)) throw InvalidArgument("options", why);
   const std::vector<std::string> names = selected_figures(options, design != nullptr);
-  const DataVectors data = data_vectors(layout);
+  if (wants(names, "dropout") && !report.dropout) {
+    throw InvalidArgument("report", "the dropout figure needs the report's dropout analysis");
+  }
   std::error_code ec;
   if (!std::filesystem::is_directory(directory, ec)) {
-    throw InvalidArgument("directory: " + directory.string() + " is not a directory");
+    throw InvalidArgument("directory", directory.string() + " is not a directory");
   }
-
-  const sdp::WorstViewpoint worst = sdp::global_worst_viewpoint(data.vectors);
-  const sdp::CellViewpoint paper = sdp::paper_worst_viewpoint(data.vectors);
+  const Layout& layout = report.layout;
+  const sdp::LayoutAnalysis& r = report.analysis;
   LayoutFigures result;
-  result.pbar_min = worst.pbar;
-  result.max_worst_case_error_deg = max_error_deg(data.vectors, worst);
-  bool certified = worst.status == sdp::WorstViewpoint::Status::kCertified;
-  if (!certified) result.message = "the layout's global worst viewpoint is not certified";
+  result.pbar_min = r.pbar_min;
+  result.max_worst_case_error_deg = r.max_worst_case_error_deg;
+  if (!report.is_usable()) result.message = report.message();
   const FigureOptions& figure = options.figure;
 
   if (wants(names, "viewpoint_map")) {
     ViewpointMapData map;
     map.layout_name = layout.name;
-    map.vectors = data.vectors;
-    map.worst_viewpoints = worst.viewpoints;
-    map.pbar_min = worst.pbar;
-    map.paper_lmi_viewpoint = paper.viewpoint;
-    map.paper_lmi_pbar = paper.pbar;
+    map.vectors = report.data.vectors;
+    map.worst_viewpoints = r.worst_viewpoints;
+    map.pbar_min = r.pbar_min;
+    map.paper_lmi_viewpoint = r.paper_lmi.viewpoint;
+    map.paper_lmi_pbar = r.paper_lmi.pbar_at;
     map.threshold_deg = options.threshold_deg;
     map.samples_per_axis = options.map_samples;
     result.files.push_back(write_viewpoint_map(map, directory, figure));
@@ -118,21 +112,15 @@ LayoutFigures write_layout_figures(const Layout& layout, const std::filesystem::
     DropoutChartData chart;
     chart.layout_name = layout.name;
     chart.mode = layout.mode;
-    chart.intact_pbar_min = worst.pbar;
-    chart.intact_max_error_deg = result.max_worst_case_error_deg;
-    sdp::DropoutOptions dropout_options;
-    dropout_options.threads = figure.threads;
-    chart.dropout = sdp::dropout_analysis(layout, dropout_options);
-    if (chart.dropout.status != sdp::DropoutAnalysis::Status::kCertified) {
-      certified = false;
-      result.message += (result.message.empty() ? "" : "; ") + chart.dropout.message;
-    }
+    chart.intact_pbar_min = r.pbar_min;
+    chart.intact_max_error_deg = r.max_worst_case_error_deg;
+    chart.dropout = *report.dropout;
     result.files.push_back(write_dropout_chart(chart, directory, figure));
   }
   if (wants(names, "error_surface")) {
     ErrorSurfaceData surface;
     surface.layout_name = layout.name;
-    surface.p_at_worst = projected_fractions(data.vectors, worst.viewpoint);
+    surface.p_at_worst = projected_fractions(report.data.vectors, r.worst_viewpoint);
     result.files.push_back(write_error_surface(surface, directory, figure));
   }
   if (wants(names, "vectors")) {
@@ -140,16 +128,17 @@ LayoutFigures write_layout_figures(const Layout& layout, const std::filesystem::
     vectors.layout_name = layout.name;
     vectors.mode = layout.mode;
     vectors.entries = layout.entries;
-    vectors.worst_viewpoints = worst.viewpoints;
-    vectors.pbar_min = worst.pbar;
-    vectors.paper_lmi_viewpoint = paper.viewpoint;
-    vectors.paper_lmi_pbar = paper.pbar;
+    vectors.worst_viewpoints = r.worst_viewpoints;
+    vectors.pbar_min = r.pbar_min;
+    vectors.paper_lmi_viewpoint = r.paper_lmi.viewpoint;
+    vectors.paper_lmi_pbar = r.paper_lmi.pbar_at;
     result.files.push_back(write_vectors_figure(vectors, directory, figure));
   }
-  if (wants(names, "design"))
+  if (wants(names, "design")) {
     result.files.push_back(write_design_curve(*design, directory, figure));
+  }
   result.status =
-      certified ? LayoutFigures::Status::kCertified : LayoutFigures::Status::kNotCertified;
+      report.is_usable() ? LayoutFigures::Status::kCertified : LayoutFigures::Status::kNotCertified;
   return result;
 }
 

@@ -5,7 +5,6 @@
 
 #include <pybind11/stl.h>
 
-#include "analysis_json.h"
 #include "arrays.h"
 #include "design_json.h"
 #include "layouts.h"
@@ -14,7 +13,7 @@
 #include "vantage/analysis/free_vectors.h"
 #include "vantage/design/augment.h"
 #include "vantage/design/weights.h"
-#include "vantage/sdp/layout_analysis.h"
+#include "vantage/sdp/layout_report.h"
 
 namespace vantage::python {
 
@@ -27,28 +26,27 @@ Json source_json(const std::string& source) {
 py::object analyze(const py::object& layout_arg, const py::object& vectors,
                    const py::object& points, const py::object& weights, int swaps, bool crosscheck,
                    const std::string& pair_weighting, const py::kwargs& kwargs) {
-  if (swaps < 1) throw InvalidArgument("swaps: must be >= 1");
+  if (swaps < 1) throw InvalidArgument("swaps", "must be >= 1");
   if (pair_weighting != "geometric" && pair_weighting != "arithmetic") {
-    throw InvalidArgument("pair_weighting: expected geometric or arithmetic");
+    throw InvalidArgument("pair_weighting", "expected geometric or arithmetic");
   }
   std::string source;
   const Layout layout =
       layout_from_arguments(layout_arg, vectors, points, weights, py::none(), kwargs, &source);
-  const DataVectors data =
-      data_vectors(layout, pair_weighting == "arithmetic" ? PairWeighting::kArithmeticMean
-                                                          : PairWeighting::kGeometricMean);
-  sdp::LayoutAnalysisOptions options;
-  options.swap_count = swaps;
-  options.run_crosscheck = crosscheck;
-  const sdp::LayoutAnalysis report =
-      without_gil([&] { return sdp::analyze_vectors(data.vectors, data.weights, options); });
-  const bool certified = report.solver.status == sdp::WorstViewpoint::Status::kCertified;
-  const std::string status = report.degenerate ? "degenerate"
-                             : !certified      ? sdp::to_string(report.solver.status)
-                                               : "crosscheck_disagrees";
-  const Json out = analysis_json::analysis(
-      layout, data, report, design::pbar_ceiling(static_cast<int>(data.vectors.cols())));
-  return result_or_raise(!report.trusted() || report.degenerate, status, report.message, out);
+  sdp::LayoutReportOptions options;
+  options.pair_weighting = pair_weighting == "arithmetic" ? PairWeighting::kArithmeticMean
+                                                          : PairWeighting::kGeometricMean;
+  options.analysis.swap_count = swaps;
+  options.analysis.run_crosscheck = crosscheck;
+  const sdp::LayoutReport report =
+      without_gil([&] { return sdp::analyze_layout(layout, options); });
+  const sdp::LayoutAnalysis& r = report.analysis;
+  const bool certified = r.solver.status == sdp::WorstViewpoint::Status::kCertified;
+  const std::string status = r.degenerate ? "degenerate"
+                             : !certified ? sdp::to_string(r.solver.status)
+                                          : "crosscheck_disagrees";
+  return result_or_raise(!report.is_usable(), status, report.message(),
+                         Json::parse(sdp::to_json(report)));
 }
 
 py::object design_layout(const py::object& layout_arg, const py::object& vectors,

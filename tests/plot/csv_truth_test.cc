@@ -20,6 +20,7 @@ namespace {
 using testing::Csv;
 using testing::example_layout;
 using testing::read_csv;
+using testing::report_of;
 using testing::TempDir;
 
 // The bounds: samples never beat the certified optimum by more than rounding ...
@@ -51,12 +52,13 @@ class CsvTruth : public ::testing::TestWithParam<const char*> {
     options.run_crosscheck = false;
     analysis_ = sdp::analyze_vectors(data_.vectors, data_.weights, options);
     design_ = testing::example_design_curve();
+    report_ = report_of(layout_);
   }
   // Writes only the named figure and reads its CSV.
   Csv csv(const std::string& name) {
     LayoutFiguresOptions options;
     options.only = {name};
-    figures_ = write_layout_figures(layout_, dir_.path(), options, &design_);
+    figures_ = write_layout_figures(report_, dir_.path(), options, &design_);
     EXPECT_EQ(figures_.status, LayoutFigures::Status::kCertified);
     return read_csv(dir_.path() / (name + ".csv"));
   }
@@ -65,6 +67,7 @@ class CsvTruth : public ::testing::TestWithParam<const char*> {
   Layout layout_;
   DataVectors data_;
   sdp::LayoutAnalysis analysis_;
+  sdp::LayoutReport report_;
   DesignCurve design_;
   LayoutFigures figures_;
 };

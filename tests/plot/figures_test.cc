@@ -33,6 +33,7 @@ namespace {
 
 using testing::example_design_curve;
 using testing::example_layout;
+using testing::report_of;
 using testing::TempDir;
 
 struct Png {
@@ -96,7 +97,8 @@ TEST_P(EveryFigure, RendersWithItsCsv) {
   TempDir dir("render");
   ::testing::internal::CaptureStdout();
   ::testing::internal::CaptureStderr();
-  const LayoutFigures figures = write_layout_figures(layout, dir.path(), options, &design);
+  const LayoutFigures figures =
+      write_layout_figures(report_of(layout), dir.path(), options, &design);
   EXPECT_EQ(::testing::internal::GetCapturedStdout(), "") << "the library must stay silent";
   EXPECT_EQ(::testing::internal::GetCapturedStderr(), "") << "the library must stay silent";
   EXPECT_EQ(figures.status, LayoutFigures::Status::kCertified);
@@ -145,7 +147,7 @@ TEST(Figures, DefaultPageIs1000By800) {
   LayoutFiguresOptions options;
   options.only = {"vectors"};
   const LayoutFigures figures =
-      write_layout_figures(example_layout("triad.json"), dir.path(), options);
+      write_layout_figures(report_of(example_layout("triad.json")), dir.path(), options);
   ASSERT_EQ(figures.files.size(), 1u);
   const Png png = decode_png(figures.files[0].image);
   EXPECT_EQ(png.width, 1000);
@@ -172,18 +174,19 @@ TEST(Figures, BadInputThrowsAndWritesNothing) {
   const Layout layout = example_layout("triad.json");
   LayoutFiguresOptions options;
   options.figure.width = 10;
-  EXPECT_THROW(write_layout_figures(layout, dir.path(), options), InvalidArgument);
+  EXPECT_THROW(write_layout_figures(report_of(layout), dir.path(), options), InvalidArgument);
   options = {};
   options.threshold_deg = 95.0;
-  EXPECT_THROW(write_layout_figures(layout, dir.path(), options), InvalidArgument);
+  EXPECT_THROW(write_layout_figures(report_of(layout), dir.path(), options), InvalidArgument);
   options = {};
   options.map_samples = 100;
-  EXPECT_THROW(write_layout_figures(layout, dir.path(), options), InvalidArgument);
+  EXPECT_THROW(write_layout_figures(report_of(layout), dir.path(), options), InvalidArgument);
   options = {};
-  EXPECT_THROW(write_layout_figures(layout, dir.path() / "missing", options), InvalidArgument);
+  EXPECT_THROW(write_layout_figures(report_of(layout), dir.path() / "missing", options),
+               InvalidArgument);
   Layout broken = layout;
   broken.entries.col(1).setZero();
-  EXPECT_THROW(write_layout_figures(broken, dir.path(), options), InvalidArgument);
+  EXPECT_THROW(write_layout_figures(report_of(broken), dir.path(), options), InvalidArgument);
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
 }
 

@@ -18,10 +18,7 @@ AnalysisSnapshot analyze_layout(const Layout& layout, std::uint64_t revision) {
   snapshot.revision = revision;
   snapshot.layout = layout;
   try {
-    snapshot.data = data_vectors(layout);
-    snapshot.analysis = sdp::analyze_vectors(snapshot.data.vectors, snapshot.data.weights);
-    snapshot.coplanarity = design::coplanarity(snapshot.data.vectors);
-    snapshot.ceiling = design::pbar_ceiling(static_cast<int>(snapshot.data.vectors.cols()));
+    static_cast<sdp::LayoutReport&>(snapshot) = sdp::analyze_layout(layout);
   } catch (const std::exception& e) {
     snapshot.error = e.what();
   }

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "vantage/analysis/layout.h"
+#include "vantage/sdp/layout_measures.h"
 
 namespace vantage::design {
 
@@ -51,21 +52,11 @@ struct WorstCase {
 /// sdp::global_worst_viewpoint. Throws InvalidArgument on bad vectors.
 WorstCase evaluate_worst_case(const Eigen::Matrix3Xd& vectors);
 
-/// The ceiling of docs/math.md §15: cos(pi / (2 m)) for m >= 1 data vectors.
-double pbar_ceiling(int m);
-
-/// How close the data vectors are to one plane: the two-fold ambiguity risk.
-struct Coplanarity {
-  /// Smallest singular value of [n_1 ... n_m] / sqrt(m) (n_i = z_i / ||z_i||): 0 for coplanar
-  /// vectors, 1/sqrt(3) = 0.577 for an isotropic set (e.g. Z = I); about the RMS sine of the
-  /// angle between the vectors and their best-fit plane.
-  double smallest_singular_value = 0.0;
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< normal of the best-fit plane
-  bool nearly_coplanar = false;  ///< smallest_singular_value < the threshold used
-};
-
-/// Coplanarity of `vectors` (3 x m, m >= 1, non-zero columns). threshold >= 0.
-Coplanarity coplanarity(const Eigen::Matrix3Xd& vectors, double threshold = 0.1);
+/// The ceiling cos(pi / (2 m)) and the coplanarity measure live with the layout report
+/// (sdp/layout_measures.h); the augmenter reports both for every step.
+using sdp::Coplanarity;
+using sdp::coplanarity;
+using sdp::pbar_ceiling;
 
 /// Options of augment_layout().
 struct AugmentOptions {

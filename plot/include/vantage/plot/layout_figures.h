@@ -1,7 +1,7 @@
 #pragma once
 
-/// All figures of one layout in one call: runs the analysis each needs (global worst viewpoint,
-/// the paper's single LMI, dropout) and writes the chosen figures into a directory. This is what
+/// All figures of one layout in one call, drawn from its report (sdp::analyze_layout(), the
+/// report `vantage analyze` prints): the figures compute no analysis of their own. This is what
 /// `vantage plot` and `make figures` run.
 
 #include <array>
@@ -12,6 +12,7 @@
 #include "vantage/analysis/layout.h"
 #include "vantage/plot/design_curve.h"
 #include "vantage/plot/figure.h"
+#include "vantage/sdp/layout_report.h"
 
 namespace vantage::plot {
 
@@ -38,8 +39,8 @@ struct LayoutFiguresOptions {
 /// Result of write_layout_figures().
 struct LayoutFigures {
   enum class Status {
-    kCertified,     ///< every global worst-viewpoint solve behind the figures is certified
-    kNotCertified,  ///< some solve's certificate did not close; figures drawn anyway (message)
+    kCertified,     ///< the report behind the figures is usable (LayoutReport::is_usable())
+    kNotCertified,  ///< it is not; figures drawn anyway (message says why)
   };
   Status status = Status::kNotCertified;
   std::vector<FigureFiles> files;  ///< in kFigureNames order
@@ -53,10 +54,16 @@ struct LayoutFigures {
 /// without a design curve.
 std::vector<std::string> selected_figures(const LayoutFiguresOptions& options, bool has_design);
 
-/// Writes the selected figures of `layout` into `directory` (which must exist). design may be
-/// null (no design figure). Throws InvalidArgument on an invalid layout, options or curve,
-/// RenderError when drawing or writing fails.
-LayoutFigures write_layout_figures(const Layout& layout, const std::filesystem::path& directory,
+/// True when the figures `options` select need the report's dropout analysis (the dropout
+/// figure): run sdp::analyze_layout() with LayoutReportOptions::dropout then.
+bool needs_dropout(const LayoutFiguresOptions& options, bool has_design);
+
+/// Writes the selected figures of the layout of `report` into `directory` (which must exist).
+/// design may be null (no design figure). Throws InvalidArgument on invalid options or curve, or
+/// a dropout figure without the report's dropout analysis; RenderError when drawing or writing
+/// fails.
+LayoutFigures write_layout_figures(const sdp::LayoutReport& report,
+                                   const std::filesystem::path& directory,
                                    const LayoutFiguresOptions& options,
                                    const DesignCurve* design = nullptr);
 

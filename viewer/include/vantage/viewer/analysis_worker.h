@@ -2,9 +2,9 @@
 
 /// The viewer's global analysis, off the UI thread.
 ///
-/// The viewer computes nothing itself: analyze_layout() calls io/analysis/sdp/design
-/// (data_vectors, sdp::analyze_vectors — the same call as `vantage analyze` — coplanarity and the
-/// ceiling), augment_once() calls design::augment_layout for one greedy step. AnalysisWorker runs
+/// The viewer computes nothing itself: analyze_layout() calls sdp::analyze_layout() — the same
+/// call as `vantage analyze` — and augment_once() calls design::augment_layout for one greedy
+/// step. AnalysisWorker runs
 /// them on one background thread. Each request carries the document revision it was made for;
 /// a newer request replaces a pending one, and a finished result whose revision is older than the
 /// newest request is dropped, so the UI only ever receives results for what it last asked.
@@ -19,20 +19,16 @@
 
 #include "vantage/analysis/layout.h"
 #include "vantage/design/augment.h"
-#include "vantage/sdp/layout_analysis.h"
+#include "vantage/sdp/layout_report.h"
 
 namespace vantage::viewer {
 
-/// Everything the viewer shows about one revision of the layout.
-struct AnalysisSnapshot {
+/// Everything the viewer shows about one revision of the layout: the report `vantage analyze`
+/// prints (sdp::analyze_layout()), with the revision it belongs to.
+struct AnalysisSnapshot : sdp::LayoutReport {
   std::uint64_t revision = 0;
-  Layout layout;                    ///< the layout analysed
-  DataVectors data;                 ///< its data vectors (free vectors in point mode)
-  sdp::LayoutAnalysis analysis;     ///< sdp::analyze_vectors(data.vectors, data.weights)
-  design::Coplanarity coplanarity;  ///< design::coplanarity(data.vectors)
-  double ceiling = 1.0;             ///< design::pbar_ceiling(m): cos(pi / (2 m))
-  double seconds = 0.0;             ///< wall time of the whole analysis
-  std::string error;                ///< non-empty when the analysis threw (then only layout is set)
+  double seconds = 0.0;  ///< wall time of the whole analysis
+  std::string error;     ///< non-empty when the analysis threw (then only layout is set)
 };
 
 /// One greedy augmenter step on a layout.

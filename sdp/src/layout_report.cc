@@ -1,0 +1,130 @@
+// analyze_layout(): the one assembly of a layout's report (the analysis seen whole, the
+// ceiling, coplanarity and, when asked, dropout), and its verdict in words.
+
+#include "vantage/sdp/layout_report.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "vantage/analysis/common.h"
+#include "vantage/analysis/internal/checks.h"
+
+namespace vantage::sdp {
+namespace {
+
+void append(std::string* message, const std::string& part) {
+  if (part.empty()) return;
+  if (!message->empty()) *message += "; ";
+  *message += part;
+}
+
+std::string number(double x, int digits) {
+  std::ostringstream out;
+  out.precision(digits);
+  out << (x == 0.0 ? 0.0 : x);
+  return out.str();
+}
+
+std::string vector_text(const Eigen::Vector3d& v) {
+  std::string out = "[";
+  for (int i = 0; i < 3; ++i) {
+    const double x = std::abs(v(i)) < 5e-7 ? 0.0 : v(i);
+    char buffer[32];
+    std::snprintf(buffer, sizeof(buffer), " %10.6f", x);
+    out += buffer;
+  }
+  return out + " ]";
+}
+
+/// The analysis of the data vectors; a library error about data vector k is named as the file
+/// names it: vectors[k], or the two points of free vector k.
+LayoutAnalysis analyze_data(const Layout& layout, const DataVectors& data,
+                            const LayoutAnalysisOptions& options) {
+  try {
+    return analyze_vectors(data.vectors, data.weights, options);
+  } catch (const InvalidArgument& e) {
+    if (layout.mode != LayoutMode::kPoints || e.field() != "vectors" || !e.index()) throw;
+    const auto& [i, j] = data.pairs[static_cast<std::size_t>(*e.index())];
+    throw InvalidArgument(
+        "points", j, "minus points[" + std::to_string(i) + "] (a free vector): " + e.problem());
+  }
+}
+
+}  // namespace
+
+bool LayoutReportOptions::is_valid(std::string* why) const {
+  std::string inner;
+  if (!analysis.is_valid(&inner)) return internal::invalid_option(why, "analysis", inner);
+  if (!dropout_options.is_valid(&inner)) {
+    return internal::invalid_option(why, "dropout_options", inner);
+  }
+  if (!(coplanarity_threshold >= 0.0)) {
+    return internal::invalid_option(why, "coplanarity_threshold", "must be >= 0");
+  }
+  return true;
+}
+
+LayoutReport analyze_layout(const Layout& layout, const LayoutReportOptions& options) {
+  internal::check_options("options", options);
+  LayoutReport report;
+  report.layout = layout;
+  report.data = data_vectors(layout, options.pair_weighting);
+  report.analysis = analyze_data(layout, report.data, options.analysis);
+  report.ceiling = pbar_ceiling(report.data.vectors.cols());
+  report.coplanarity = coplanarity(report.data.vectors, options.coplanarity_threshold);
+  if (options.dropout) {
+    if (options.analysis.progress) options.analysis.progress("dropout");
+    report.dropout = dropout_analysis(layout, options.dropout_options);
+  }
+  return report;
+}
+
+bool LayoutReport::is_usable() const {
+  return analysis.trusted() && !analysis.degenerate &&
+         (!dropout || dropout->status == DropoutAnalysis::Status::kCertified);
+}
+
+std::string LayoutReport::message() const {
+  std::string out = analysis.message;
+  if (out.empty() && !analysis.trusted()) out = "result not certified";
+  if (dropout && dropout->status != DropoutAnalysis::Status::kCertified) {
+    append(&out, "dropout: " +
+                     (dropout->message.empty() ? std::string("not certified") : dropout->message));
+  }
+  return out;
+}
+
+std::string LayoutReport::brief_report() const {
+  const LayoutAnalysis& r = analysis;
+  std::ostringstream out;
+  if (r.degenerate) {
+    out << "DEGENERATE             every data vector is parallel to one line: the rotation "
+           "about it is not determined\n";
+  }
+  out << "pbar_min = sqrt(1-t^2) " << number(r.pbar_min, 9) << "   (ceiling for "
+      << data.vectors.cols() << " vectors: " << number(ceiling, 6) << ")\n"
+      << "max worst-case error   " << number(r.max_worst_case_error_deg, 6) << " deg (Eq. 30)"
+      << (r.degenerate ? ", and the rotation about the line is free" : "") << "\n"
+      << "worst viewpoint a      " << vector_text(r.worst_viewpoint) << "\n";
+  for (std::size_t k = 1; k < r.worst_viewpoints.size(); ++k) {
+    out << "  also (tie)           " << vector_text(r.worst_viewpoints[k]) << "\n";
+  }
+  out << "certificate            t in [" << number(r.certificate.t_lower, 12) << ", "
+      << number(r.certificate.t_upper, 12) << "], " << to_string(r.solver.status) << ", "
+      << r.solver.cells_solved << " cells solved, confirmed on " << to_string(r.solver.backend)
+      << " (" << to_string(r.solver.sdp_status) << ")\n";
+  return out.str();
+}
+
+std::string LayoutReport::entry_label(long k) const {
+  return (layout.mode == LayoutMode::kPoints ? "p" : "v") + std::to_string(k);
+}
+
+std::string LayoutReport::vector_label(long k) const {
+  if (data.pairs.empty()) return "v" + std::to_string(k);
+  const auto& [i, j] = data.pairs[static_cast<std::size_t>(k)];
+  return entry_label(i) + "-" + entry_label(j);
+}
+
+}  // namespace vantage::sdp
