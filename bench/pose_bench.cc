@@ -1,4 +1,4 @@
-// Orthogonal iteration with the FOAM absolute-orientation step (Wu & Wu, seed 004) against the
+// Orthogonal iteration with the FOAM absolute-orientation step (Wu & Wu [W]) against the
 // same iteration with the SVD step (Lu et al.), on identical seeded scenes.
 //
 // BM_Pose_OiFoam/n and BM_Pose_OiSvd/n: one full pose solve (weak-perspective start, iteration

@@ -146,14 +146,14 @@ CellViewpoint solve_cell_lmi(const Eigen::Matrix3Xd& vectors, const Eigen::Vecto
   const double t_sdp = result.sdp.y(3);
   if (t_sdp <= CellViewpoint::kEmptyCellT || !(a.norm() > 0.0)) {
     result.t = t_sdp;
-    result.pbar = pbar_from_t(std::max(0.0, t_sdp));
+    result.pbar_at = pbar_from_t(std::max(0.0, t_sdp));
     result.status = CellViewpoint::Status::kEmptyCell;
     result.message = "the sign cell is empty: 0 is in conv{s_i n_i}";
     return result;
   }
   const Eigen::Vector3d unit_a = a.normalized();
   result.t = (p.transpose() * unit_a).minCoeff();
-  result.pbar = pbar_from_t(std::max(0.0, result.t));
+  result.pbar_at = pbar_from_t(std::max(0.0, result.t));
   result.viewpoint = upper_hemisphere(unit_a);
   result.status = CellViewpoint::Status::kOk;
   return result;

@@ -44,7 +44,7 @@ DropoutEntry analyse_without(const DataVectors& data, int k, const WorstViewpoin
   entry.worst_viewpoint = global.viewpoint;
   entry.worst_viewpoints = global.viewpoints;
   entry.t = global.t;
-  entry.pbar_min = global.pbar;
+  entry.pbar_min = global.pbar_min;
   for (const Eigen::Vector3d& a : global.viewpoints) {
     entry.max_worst_case_error_deg =
         std::max(entry.max_worst_case_error_deg, worst_case_errors_deg(vectors, a).maxCoeff());

@@ -77,7 +77,7 @@ LayoutAnalysis analyze_vectors(const Eigen::Matrix3Xd& vectors, const Eigen::Vec
   report.worst_viewpoint = global.viewpoint;
   report.worst_viewpoints = global.viewpoints;
   report.t = global.t;
-  report.pbar_min = global.pbar;
+  report.pbar_min = global.pbar_min;
   report.worst_case_errors_deg = worst_case_errors_deg(scaled, global.viewpoint);
   // With tied worst viewpoints the bound is the largest over all of them (design reports the same).
   report.max_worst_case_error_deg = report.worst_case_errors_deg.maxCoeff();
@@ -85,8 +85,7 @@ LayoutAnalysis analyze_vectors(const Eigen::Matrix3Xd& vectors, const Eigen::Vec
     report.max_worst_case_error_deg =
         std::max(report.max_worst_case_error_deg, worst_case_errors_deg(scaled, a).maxCoeff());
   }
-  report.certificate = {global.t_upper, global.t_lower,
-                        global.status != WorstViewpoint::Status::kNotCertified};
+  report.certificate = {global.t_upper, global.t_lower, global.certified()};
   report.solver.backend = wv.sdp.backend;
   report.solver.status = global.status;
   report.solver.cells_solved = global.cells_solved;
@@ -96,7 +95,7 @@ LayoutAnalysis analyze_vectors(const Eigen::Matrix3Xd& vectors, const Eigen::Vec
 
   stage("paper's single LMI");
   const CellViewpoint paper = paper_worst_viewpoint(scaled, wv.sdp);
-  report.paper_lmi = {paper.viewpoint, paper.t, paper.pbar, paper.status};
+  report.paper_lmi = {paper.viewpoint, paper.t, paper.pbar_at, paper.status};
 
   if (options.run_crosscheck) {
     stage("cross-check");

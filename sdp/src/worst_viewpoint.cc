@@ -165,7 +165,7 @@ WorstViewpoint worst_viewpoint_result(const Eigen::Matrix3Xd& n, const SearchOut
     result.t = min_abs_projection(n, result.viewpoint);
     result.t_lower = result.t;
     result.t_upper = 1.0;
-    result.pbar = pbar_from_t(result.t);
+    result.pbar_min = pbar_from_t(result.t);
     result.cells_solved = search.cells_solved;
     result.patches = search.patches;
     result.message = "stopped: an attained value exceeds stop_above";
@@ -197,7 +197,7 @@ WorstViewpoint worst_viewpoint_result(const Eigen::Matrix3Xd& n, const SearchOut
   result.t = min_abs_projection(n, result.viewpoint);
   result.t_lower = result.t;
   result.t_upper = std::max(search.upper, result.t);
-  result.pbar = pbar_from_t(result.t);
+  result.pbar_min = pbar_from_t(result.t);
   result.cells_solved = search.cells_solved;
   result.patches = search.patches;
   const bool certified =

@@ -1,4 +1,4 @@
-// Haralick et al. (seed 003): error vs SNR and number of point pairs, and the SNR knees.
+// Haralick et al. [H]: error vs SNR and number of point pairs, and the SNR knees.
 
 #include <cmath>
 

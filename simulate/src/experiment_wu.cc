@@ -1,4 +1,4 @@
-// Wu & Wu (seed 004) Sec. 3: accuracy and time per solve vs number of points and vs SNR.
+// Wu & Wu [W] Sec. 3: accuracy and time per solve vs number of points and vs SNR.
 
 #include "experiment_support.h"
 #include "vantage/simulate/report_json.h"

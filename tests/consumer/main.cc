@@ -38,9 +38,9 @@ int main() {
   const vantage::sdp::WorstViewpoint worst =
       vantage::sdp::global_worst_viewpoint(vantage::data_vectors(triad).vectors);
   const vantage::design::Weights weights = vantage::design::layout_weights(triad);
-  std::printf("triad: pbar_min %.12g with %zu worst viewpoints; weights feasible: %s\n", worst.pbar,
-              worst.viewpoints.size(), weights.feasible ? "yes" : "no");
-  const bool worst_ok = std::abs(worst.pbar - std::sqrt(2.0 / 3.0)) < kToleranceRadians &&
+  std::printf("triad: pbar_min %.12g with %zu worst viewpoints; weights feasible: %s\n",
+              worst.pbar_min, worst.viewpoints.size(), weights.feasible ? "yes" : "no");
+  const bool worst_ok = std::abs(worst.pbar_min - std::sqrt(2.0 / 3.0)) < kToleranceRadians &&
                         worst.viewpoints.size() == 4 && !weights.feasible;
   return orientation_ok && worst_ok ? 0 : 1;
 }

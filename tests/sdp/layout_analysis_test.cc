@@ -125,7 +125,7 @@ TEST(AnalyzeVectors, RandomLayoutIsConsistent) {
   const Eigen::VectorXd w = Eigen::VectorXd::LinSpaced(12, 0.5, 2.0);
   const LayoutAnalysis r = analyze_vectors(z, w);
   EXPECT_TRUE(r.certificate.certified);
-  EXPECT_GE(r.paper_lmi.pbar, r.pbar_min - kSdp);
+  EXPECT_GE(r.paper_lmi.pbar_at, r.pbar_min - kSdp);
   EXPECT_TRUE(r.crosscheck.agrees) << r.crosscheck.message;
   EXPECT_EQ(r.swaps.size(), 5u);
   EXPECT_TRUE(r.worst_case_errors_deg.allFinite());

@@ -75,14 +75,14 @@ void expect_consistent(const WorstViewpoint& w, const Eigen::Matrix3Xd& vectors)
   EXPECT_NEAR(min_abs_projection(n, w.viewpoint), w.t, 1e-15) << "the viewpoint attains t";
   EXPECT_NEAR(w.viewpoint.norm(), 1.0, 1e-12);
   // sqrt(1 - t^2) loses digits near t = 1 (narrow cones): its rounding is ~1e-16 / p-bar.
-  EXPECT_NEAR(w.pbar, std::sqrt(1.0 - w.t * w.t), 1e-15 * (1.0 + 1.0 / w.pbar));
+  EXPECT_NEAR(w.pbar_min, std::sqrt(1.0 - w.t * w.t), 1e-15 * (1.0 + 1.0 / w.pbar_min));
   ASSERT_FALSE(w.viewpoints.empty());
   EXPECT_EIGEN_NEAR(w.viewpoints.front(), w.viewpoint, 0.0);
   for (const Eigen::Vector3d& a : w.viewpoints) {
     EXPECT_NEAR(min_abs_projection(n, a), w.t, 1e-9) << "every reported optimum attains t";
     EXPECT_EQ(upper_hemisphere(a), a);
   }
-  EXPECT_TRUE(std::isfinite(w.t) && std::isfinite(w.pbar));
+  EXPECT_TRUE(std::isfinite(w.t) && std::isfinite(w.pbar_min));
 }
 
 TEST(PaperSigns, UpperHemisphereWithTieBreaks) {
@@ -105,7 +105,7 @@ TEST(CellLmi, OrthogonalTriadMatchesPaper) {
   const CellViewpoint paper = paper_worst_viewpoint(Eigen::Matrix3d::Identity());
   ASSERT_EQ(paper.status, CellViewpoint::Status::kOk) << paper.message;
   EXPECT_NEAR(paper.t, kInvSqrt3, kSdp);
-  EXPECT_NEAR(paper.pbar, std::sqrt(2.0 / 3.0), kSdp);
+  EXPECT_NEAR(paper.pbar_at, std::sqrt(2.0 / 3.0), kSdp);
   EXPECT_EIGEN_NEAR(paper.viewpoint, Eigen::Vector3d::Constant(kInvSqrt3), kSdp);
   EXPECT_EQ(paper.sdp.backend, "csdp");
   EXPECT_NEAR(paper.sdp.gap, 0.0, kSdp);
@@ -131,7 +131,7 @@ TEST(GlobalWorstViewpoint, OrthogonalTriadHasFourOptima) {
   const WorstViewpoint w = global_worst_viewpoint(Eigen::Matrix3d::Identity(), options);
   expect_consistent(w, Eigen::Matrix3d::Identity());
   EXPECT_NEAR(w.t, kInvSqrt3, kExact);
-  EXPECT_NEAR(w.pbar, 0.8165, 1e-4);
+  EXPECT_NEAR(w.pbar_min, 0.8165, 1e-4);
   ASSERT_EQ(w.viewpoints.size(), 4u);
   for (double sx : {-1.0, 1.0}) {
     for (double sy : {-1.0, 1.0}) {
@@ -153,7 +153,7 @@ TEST(GlobalWorstViewpoint, NoteThreeLayoutGlobalVersusPaper) {
   const WorstViewpoint w = global_worst_viewpoint(z);
   expect_consistent(w, z);
   EXPECT_NEAR(w.t, kInvSqrt3, kExact);
-  EXPECT_NEAR(w.pbar, std::sqrt(2.0 / 3.0), kExact);
+  EXPECT_NEAR(w.pbar_min, std::sqrt(2.0 / 3.0), kExact);
   bool has_111 = false;
   for (const Eigen::Vector3d& a : w.viewpoints) {
     has_111 = has_111 || (a - Eigen::Vector3d(-1, -1, 1) * kInvSqrt3).norm() < 1e-9;
@@ -165,22 +165,22 @@ TEST(GlobalWorstViewpoint, NoteThreeLayoutGlobalVersusPaper) {
   const CellViewpoint all_positive = solve_cell_lmi(z, Eigen::Vector4d::Ones());
   ASSERT_EQ(all_positive.status, CellViewpoint::Status::kOk);
   EXPECT_NEAR(all_positive.t, 1.0 / std::sqrt(2.0 * k * k + 1.0), kSdp);
-  EXPECT_NEAR(all_positive.pbar, 0.953, kPrinted);
+  EXPECT_NEAR(all_positive.pbar_at, 0.953, kPrinted);
   // The four vectors as given lie in one open hemisphere, so the paper keeps their signs and
   // its single LMI is the all-positive cell: the paper's 0.95.
   EXPECT_EIGEN_NEAR(paper_signs(z), Eigen::Vector4d::Ones(), 0.0);
   const CellViewpoint paper = paper_worst_viewpoint(z);
   ASSERT_EQ(paper.status, CellViewpoint::Status::kOk);
   EXPECT_NEAR(paper.t, all_positive.t, kSdp);
-  EXPECT_NEAR(paper.pbar, 0.953, kPrinted);
-  EXPECT_GE(paper.pbar, w.pbar);
+  EXPECT_NEAR(paper.pbar_at, 0.953, kPrinted);
+  EXPECT_GE(paper.pbar_at, w.pbar_min);
   // Negating by the z > 0 rule alone would flip (1, 1, -2)/sqrt(6) into another cell:
   // t^2 = 1 / (2 + (1 + sqrt(6)/2)^2), p-bar = 0.9253.
   const CellViewpoint z_rule = solve_cell_lmi(z, upper_hemisphere_signs(z));
   ASSERT_EQ(z_rule.status, CellViewpoint::Status::kOk);
   EXPECT_NEAR(z_rule.t, 1.0 / std::sqrt(2.0 + k * k), kSdp);
-  EXPECT_NEAR(z_rule.pbar, 0.9253, kPrinted);
-  EXPECT_GE(all_positive.pbar, w.pbar);
+  EXPECT_NEAR(z_rule.pbar_at, 0.9253, kPrinted);
+  EXPECT_GE(all_positive.pbar_at, w.pbar_min);
 }
 
 TEST(GlobalWorstViewpoint, RandomLayoutsMatchBruteForce) {
@@ -198,7 +198,7 @@ TEST(GlobalWorstViewpoint, RandomLayoutsMatchBruteForce) {
     const CellViewpoint paper = paper_worst_viewpoint(z);
     ASSERT_EQ(paper.status, CellViewpoint::Status::kOk);
     EXPECT_LE(paper.t, w.t + kSdp) << "the paper's single cell cannot beat the global optimum";
-    EXPECT_GE(paper.pbar, w.pbar - kSdp);
+    EXPECT_GE(paper.pbar_at, w.pbar_min - kSdp);
     const CrossCheck check = crosscheck_worst_viewpoint(z, w.t);
     EXPECT_TRUE(check.agrees) << check.message;
     EXPECT_NEAR(check.t, w.t, kBruteForce);
@@ -227,7 +227,7 @@ TEST(GlobalWorstViewpoint, CoplanarFanReachesTheZoneCeiling) {
     for (int i = 0; i < m; ++i) z.col(i) << std::cos(kPi * i / m), std::sin(kPi * i / m), 0.0;
     const WorstViewpoint w = global_worst_viewpoint(z);
     expect_consistent(w, z);
-    EXPECT_NEAR(w.pbar, std::cos(kPi / (2 * m)), kExact);
+    EXPECT_NEAR(w.pbar_min, std::cos(kPi / (2 * m)), kExact);
     EXPECT_EQ(static_cast<int>(w.viewpoints.size()), m);
   }
 }
@@ -301,7 +301,7 @@ TEST(GlobalWorstViewpoint, DegenerateLayouts) {
   const WorstViewpoint wp = global_worst_viewpoint(parallel);
   expect_consistent(wp, parallel);
   EXPECT_NEAR(wp.t, 1.0, kExact);
-  EXPECT_NEAR(wp.pbar, 0.0, 1e-4);
+  EXPECT_NEAR(wp.pbar_min, 0.0, 1e-4);
   EXPECT_EIGEN_NEAR(wp.viewpoint, d, 1e-9);
   EXPECT_EQ(wp.viewpoints.size(), 1u);
 

@@ -40,7 +40,7 @@ void expect_same_analysis(const sdp::LayoutAnalysis& got, const sdp::LayoutAnaly
   EXPECT_EIGEN_NEAR(got.worst_case_errors_deg, want.worst_case_errors_deg, kSameRun);
   EXPECT_NEAR(got.certificate.t_upper, want.certificate.t_upper, kSameRun);
   EXPECT_EQ(got.certificate.certified, want.certificate.certified);
-  EXPECT_NEAR(got.paper_lmi.pbar, want.paper_lmi.pbar, kSameRun);
+  EXPECT_NEAR(got.paper_lmi.pbar_at, want.paper_lmi.pbar_at, kSameRun);
   EXPECT_EQ(got.solver.status, want.solver.status);
 }
 
@@ -156,9 +156,9 @@ TEST(ViewerSession, ShadingAndReadoutAgreeWithTheCertifiedWorstCase) {
     const double top_deg = kDegreesPerRadian * std::acos(report.pbar_min);
     EXPECT_LE(session.shading().error_deg.maxCoeff(), top_deg + kCertificateSlack * 180.0);
     const ViewpointReadout r = read_viewpoint(session.data().vectors, report.worst_viewpoint);
-    EXPECT_NEAR(r.pbar, report.pbar_min, kCertificateSlack);
+    EXPECT_NEAR(r.pbar_at, report.pbar_min, kCertificateSlack);
     EXPECT_NEAR(r.max_error_deg, report.max_worst_case_error_deg, 1e-6);
-    EXPECT_NEAR(r.p(r.limiting), r.pbar, 0.0);
+    EXPECT_NEAR(r.p(r.limiting), r.pbar_at, 0.0);
   }
 }
 

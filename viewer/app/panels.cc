@@ -99,7 +99,7 @@ void Panels::analysis_summary(const ViewerSession& session) {
               r.worst_viewpoints.size() > 1
                   ? (" + " + std::to_string(r.worst_viewpoints.size() - 1) + " ties").c_str()
                   : "");
-  ImGui::Text("paper's single LMI p\u0304 %.4f (%s)", r.paper_lmi.pbar,
+  ImGui::Text("paper's single LMI p\u0304 %.4f (%s)", r.paper_lmi.pbar_at,
               sdp::to_string(r.paper_lmi.status));
   ImGui::Text("NLopt cross-check %s", !r.crosscheck.ran     ? "skipped"
                                       : r.crosscheck.agrees ? "agrees"

@@ -64,7 +64,7 @@ void Panels::readout_panel(const ViewerSession& session,
   const ViewpointReadout r = read_viewpoint(data.vectors, *a);
   ImGui::TextDisabled("%s", what);
   ImGui::Text("a = (%.3f, %.3f, %.3f)", a->x(), a->y(), a->z());
-  ImGui::Text("p\u0304(a) = %.4f   worst-case error arccos p\u0304 = %.2f\u00b0", r.pbar,
+  ImGui::Text("p\u0304(a) = %.4f   worst-case error arccos p\u0304 = %.2f\u00b0", r.pbar_at,
               r.max_error_deg);
   std::vector<int> order(static_cast<std::size_t>(r.p.size()));
   std::iota(order.begin(), order.end(), 0);
@@ -137,10 +137,10 @@ void Panels::error_surface_panel(const ViewerSession& session,
   const char* what = "";
   if (const std::optional<Eigen::Vector3d> a = shown_viewpoint(session, hovered, &what)) {
     const ViewpointReadout r = read_viewpoint(session.data().vectors, *a);
-    list->AddLine(at(0, r.pbar), at(r.pbar, r.pbar), kProbeColour, 1.0f);
+    list->AddLine(at(0, r.pbar_at), at(r.pbar_at, r.pbar_at), kProbeColour, 1.0f);
     for (Eigen::Index i = 0; i < r.p.size(); ++i) {
-      list->AddCircleFilled(at(r.p(i), r.pbar), 4.5f, kProbeColour);
-      list->AddCircleFilled(at(r.p(i), r.pbar), 3.0f, to_imgui(plot::kDataVectorColour));
+      list->AddCircleFilled(at(r.p(i), r.pbar_at), 4.5f, kProbeColour);
+      list->AddCircleFilled(at(r.p(i), r.pbar_at), 3.0f, to_imgui(plot::kDataVectorColour));
     }
   }
   const float legend_x = lo.x + side + 18.0f;

@@ -14,7 +14,7 @@ ViewpointReadout read_viewpoint(const Eigen::Matrix3Xd& vectors, const Eigen::Ve
   ViewpointReadout readout;
   readout.viewpoint = a;
   readout.p = projected_fractions(vectors, a);
-  readout.pbar = readout.p.maxCoeff(&readout.limiting);
+  readout.pbar_at = readout.p.maxCoeff(&readout.limiting);
   readout.errors_deg = worst_case_errors_deg(vectors, a);
   readout.max_error_deg = readout.errors_deg.maxCoeff();
   return readout;

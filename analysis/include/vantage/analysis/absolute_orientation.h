@@ -1,7 +1,7 @@
 #pragma once
 
 /// Absolute orientation and pose from 3-D correspondences: Theorem 1 (the q-method of McInroy et
-/// al.), Haralick et al.'s SVD solution (seed 003, Sec. 3) and FOAM (seed 004, Markley 1993),
+/// al.), Haralick et al.'s SVD solution ([H] Sec. 3) and FOAM ([W]; Markley 1993),
 /// plus Prop. 2 (swap sensitivity) and Prop. 3 (decoupled pose).
 ///
 /// Frames: x_camera = R_camera_object * x_object + p_camera_object. Measured data live in the

@@ -1,6 +1,6 @@
 #pragma once
 
-/// Haralick et al. (seed 003), Sec. 2: closed-form weighted least-squares 2-D rotation and
+/// Haralick et al. [H], Sec. 2: closed-form weighted least-squares 2-D rotation and
 /// translation between corresponding 2-D point sets (2D-2D pose estimation).
 ///
 /// Frames: to_i ~= R_to_from * from_i + t_to_from, with R the counter-clockwise rotation by theta

@@ -1,7 +1,7 @@
 #pragma once
 
 /// Relative pose from two perspective views: Haralick et al.'s simplified linear algorithm
-/// (seed 003, Sec. 4, after Zhuang & Haralick).
+/// ([H] Sec. 4, after Zhuang & Haralick).
 ///
 /// Frames: x_camera2 = R_camera2_camera1 * x_camera1 + T (Haralick's Eq. b, P2 = R0 P1 + T0);
 /// both cameras look along +z (Haralick's cameras look along -z; every sign below is for +z).

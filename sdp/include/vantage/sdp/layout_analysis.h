@@ -46,15 +46,15 @@ struct LayoutAnalysis {
   double max_worst_case_error_deg = 0.0;
 
   struct Certificate {
-    double t_upper = 1.0;  ///< proven bound on t over the whole sphere
-    double t_lower = 0.0;  ///< attained t
-    bool certified = false;
+    double t_upper = 1.0;    ///< proven bound on t over the whole sphere
+    double t_lower = 0.0;    ///< attained t
+    bool certified = false;  ///< WorstViewpoint::certified(): the search's status is kCertified
   } certificate;
 
   struct PaperLmi {
     Eigen::Vector3d viewpoint = Eigen::Vector3d::UnitZ();
     double t = 0.0;
-    double pbar = 1.0;
+    double pbar_at = 1.0;  ///< p-bar(a) = sqrt(1 - t^2) at `viewpoint` (>= the global pbar_min)
     /// kEmptyCell: the all-positive cell is empty and viewpoint/t/pbar mean nothing.
     CellViewpoint::Status status = CellViewpoint::Status::kSolverFailed;
   } paper_lmi;

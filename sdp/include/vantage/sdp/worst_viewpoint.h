@@ -57,7 +57,7 @@ struct CellViewpoint {
   Status status = Status::kSolverFailed;
   Eigen::Vector3d viewpoint = Eigen::Vector3d::UnitZ();  ///< a / ||a||, upper hemisphere
   double t = 0.0;                                        ///< the LMI's optimal t (Eq. 28)
-  double pbar = 1.0;                                     ///< sqrt(1 - t^2)
+  double pbar_at = 1.0;  ///< p-bar(a) = sqrt(1 - t^2) at `viewpoint`, the cell's optimum
   /// The backend's raw result (y = [a; t]) of the last LMI solved: on lmi_vectors of the cell's
   /// vectors (see solve_cell_lmi()).
   SdpResult sdp;
@@ -158,7 +158,7 @@ struct WorstViewpoint {
   /// by decreasing value.
   std::vector<Eigen::Vector3d> viewpoints;
   double t = 0.0;              ///< min_i |a.n_i| at `viewpoint` (= t_lower)
-  double pbar = 1.0;           ///< p-bar_min = sqrt(1 - t^2)
+  double pbar_min = 1.0;       ///< p-bar_min = sqrt(1 - t^2)
   double t_upper = 1.0;        ///< proven upper bound on min_i |a.n_i| over the whole sphere
   double t_lower = 0.0;        ///< attained value (t)
   long cells_solved = 0;       ///< exact cell problems (minimum-norm points) solved
@@ -166,6 +166,10 @@ struct WorstViewpoint {
   bool sdp_confirmed = false;  ///< confirm_with_sdp was set and the confirmation ran
   CellViewpoint confirmation;  ///< the confirming cell LMI (when sdp_confirmed)
   std::string message;
+
+  /// The one criterion of "certified" everywhere in vantage: status == kCertified (the
+  /// certificate closed and, when asked, the SDP confirmation agrees).
+  bool certified() const { return status == Status::kCertified; }
 };
 
 /// "certified", "not_certified", "sdp_disagrees" or "stopped_above".

@@ -4,18 +4,18 @@
 ///
 /// Every noise sample has mean 0 and standard deviation sigma, whatever its distribution, so a
 /// Gaussian and a uniform run at the same sigma (or SNR) are comparable, as in Haralick et al.
-/// (seed 003), who vary the "kind of noise distribution" at fixed SNR.
+/// [H], who vary the "kind of noise distribution" at fixed SNR.
 ///
 /// SNR in dB, as each seed defines it (sigma = signal / 10^(SNR / 20) in all of them):
-///  - seed 003 Sec. 2.3 (2D-2D): "20 log peak-to-peak signal / rms noise"; the points fill the
+///  - [H] Sec. 2.3 (2D-2D): "20 log peak-to-peak signal / rms noise"; the points fill the
 ///    square [-2, 2]^2, so the signal is its side, 4.
-///  - seed 003 Sec. 3.3 (3D-3D): "20 log (range of 3D points / standard deviation of noise)";
+///  - [H] Sec. 3.3 (3D-3D): "20 log (range of 3D points / standard deviation of noise)";
 ///    the range of a cube [-2, 2]^3 is its side, 4.
-///  - seed 003 Sec. 4.4 (two views): SNR 92 dB <-> sigma 0.0001 and 26 dB <-> 0.2 for "an object
+///  - [H] Sec. 4.4 (two views): SNR 92 dB <-> sigma 0.0001 and 26 dB <-> 0.2 for "an object
 ///    image size [that] is a square whose sides extend from -2 to 2": the same definition with
 ///    the peak-to-peak extent 4 of the normalised image.
-///  - seed 004 Sec. 3 defines the standard deviation "as a function of the SNR", but the formula
-///    was lost in the text conversion; vantage uses the seed-003 definition on the image: the
+///  - [W] Sec. 3 defines the standard deviation "as a function of the SNR", but the formula
+///    was lost in the text conversion; vantage uses the [H] definition on the image: the
 ///    peak-to-peak extent of the noise-free image points, in pixels.
 /// peak_to_peak() measures that extent on data; the Haralick experiments use the nominal sides.
 

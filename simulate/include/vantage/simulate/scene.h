@@ -32,9 +32,9 @@ enum class SceneKind {
   kAffineVectors,  ///< data vectors z_i and their affine images d_i (Prop. 4, Lemma 7)
   kAffineImage,    ///< marker points and their scaled-orthographic image (+ 3-D measurements)
   kPinholeImage,   ///< marker points and their pinhole image (+ 3-D measurements)
-  kPlanar2d,       ///< 2-D points (model z = 0) and a rigidly moved noisy copy (seed 003 Sec. 2)
-  kPoints3d,       ///< 3-D points and a rigidly moved noisy copy (seed 003 Sec. 3)
-  kTwoView,        ///< two perspective views of 3-D points (seed 003 Sec. 4)
+  kPlanar2d,       ///< 2-D points (model z = 0) and a rigidly moved noisy copy ([H] Sec. 2)
+  kPoints3d,       ///< 3-D points and a rigidly moved noisy copy ([H] Sec. 3)
+  kTwoView,        ///< two perspective views of 3-D points ([H] Sec. 4)
 };
 
 /// "affine_vectors", "affine_image", "pinhole_image", "planar_2d", "points_3d", "two_view".
@@ -84,7 +84,7 @@ struct LayoutSceneOptions {
   Eigen::Vector2d lateral_offset = Eigen::Vector2d::Zero();   ///< p_x, p_y in object sizes
   NoiseKind noise = NoiseKind::kGaussian;
   double noise_px = 0.0;  ///< image noise standard deviation, pixels, >= 0
-  /// When set, sigma = peak_to_peak(noise-free image) / 10^(snr_db / 20) per trial (the seed-003
+  /// When set, sigma = peak_to_peak(noise-free image) / 10^(snr_db / 20) per trial (the [H]
   /// definition, noise.h) and noise_px is ignored. Finite.
   std::optional<double> snr_db;
   /// When set, the camera looks along this object-frame direction (unit length; the third row

@@ -13,7 +13,7 @@ namespace vantage::viewer {
 struct ViewpointReadout {
   Eigen::Vector3d viewpoint = Eigen::Vector3d::UnitZ();  ///< unit
   Eigen::VectorXd p;           ///< p_i = sqrt(1 - (a.n_i)^2), projected_fractions (Eq. 19)
-  double pbar = 1.0;           ///< max_i p_i (Eq. 27)
+  double pbar_at = 1.0;        ///< p-bar(a) = max_i p_i (Eq. 27)
   Eigen::VectorXd errors_deg;  ///< Eq. (26) with p_i and p_bar: worst_case_errors_deg(vectors, a)
   double max_error_deg = 0.0;  ///< max_i errors_deg = arccos p_bar (docs/math.md §11)
   int limiting = 0;            ///< the vector that sets p_bar (first on ties)
