@@ -123,7 +123,7 @@ TEST(BoundCheck, SpanningSubsetHasTheLargerBound) {
   for (const Case& p : cases()) {
     if (p.vectors) continue;
     const BoundLayout layout = prepare_bound_layout(p.entries, false);
-    EXPECT_LE(layout.spanning.pbar_min, layout.data.pbar_min + 1e-9) << p.name;
+    EXPECT_LE(layout.spanning.pbar_min, layout.data.pbar_min + kCertifiedPbar) << p.name;
     EXPECT_EQ(layout.spanning.vectors.cols(), p.entries.cols() - 1);
     ++checked;
   }
