@@ -19,6 +19,8 @@ using testing::ScratchDir;
 // 1e-9. Here: the paper's printed values (three decimals) and exact closed forms.
 constexpr double kClosedForm = 1e-9;
 constexpr double kPrinted = 5e-4;
+// The default certificate tolerance: certified means t_upper - t_lower <= it.
+constexpr double kCertificateTolerance = 1e-9;
 
 // The paper's single LMI is solved by CSDP, accurate to ~1e-8 relative.
 constexpr double kSdpAccuracy = 1e-6;
@@ -50,7 +52,7 @@ TEST(AnalyzeCli, TriadHasFourWorstViewpointsAndTheContractFields) {
   EXPECT_EQ(json["worst_case_errors_deg"].size(), 3u);
   EXPECT_LE(
       json["certificate"]["t_upper"].get<double>() - json["certificate"]["t_lower"].get<double>(),
-      1e-9);
+      kCertificateTolerance);
   EXPECT_TRUE(json["crosscheck"]["agrees"].get<bool>());
   EXPECT_EQ(json["solver"]["backend"], "csdp");
   EXPECT_EQ(json["solver"]["status"], "certified");

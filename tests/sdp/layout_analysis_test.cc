@@ -27,7 +27,7 @@ TEST(AnalyzeVectors, OrthogonalTriadReport) {
   EXPECT_NEAR(r.pbar_min, std::sqrt(2.0 / 3.0), kCertified);
   EXPECT_EQ(r.worst_viewpoints.size(), 4u);
   EXPECT_TRUE(r.certificate.certified);
-  EXPECT_LE(r.certificate.t_upper - r.certificate.t_lower, 1e-9);
+  EXPECT_LE(r.certificate.t_upper - r.certificate.t_lower, kCertified);
   ASSERT_EQ(r.worst_case_errors_deg.size(), 3);
   // Every p_i equals p-bar at (1,1,1)/sqrt(3): the error is acos(p-bar) = 35.26 degrees.
   EXPECT_NEAR(r.max_worst_case_error_deg, std::acos(std::sqrt(2.0 / 3.0)) * kDegreesPerRadian,

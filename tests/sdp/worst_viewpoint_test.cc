@@ -35,6 +35,8 @@ constexpr double kUnitRounding = 1e-12;
 // t or an angle evaluated at a polished point, or by another formula: rounding of a few dot
 // products, asin or sqrt of unit vectors.
 constexpr double kEvaluationRounding = 1e-12;
+// WorstViewpointOptions::certificate_tolerance's default: certified means t_upper - t_lower <= it.
+constexpr double kCertificateTolerance = 1e-9;
 // docs/math.md prints p-bar = 0.8165 to four decimals.
 constexpr double kFourDecimals = 1e-4;
 // p-bar = sqrt(1 - t^2) at t = 1: a t certified to 1e-9 gives p-bar up to sqrt(2e-9) = 4.5e-5.
@@ -85,12 +87,12 @@ Eigen::Matrix3Xd random_unit_columns(std::mt19937& rng, int m) {
 void expect_consistent(const WorstViewpoint& w, const Eigen::Matrix3Xd& vectors) {
   const Eigen::Matrix3Xd n = vectors.colwise().normalized();
   EXPECT_EQ(w.status, WorstViewpoint::Status::kCertified) << w.message;
-  EXPECT_LE(w.t_upper - w.t_lower, 1e-9);
+  EXPECT_LE(w.t_upper - w.t_lower, kCertificateTolerance);
   EXPECT_NEAR(w.t, w.t_lower, kIdentical);
   EXPECT_NEAR(min_abs_projection(n, w.viewpoint), w.t, kRounding) << "the viewpoint attains t";
   EXPECT_NEAR(w.viewpoint.norm(), 1.0, kUnitRounding);
   // sqrt(1 - t^2) loses digits near t = 1 (narrow cones): its rounding is ~1e-16 / p-bar.
-  EXPECT_NEAR(w.pbar, std::sqrt(1.0 - w.t * w.t), 1e-15 * (1.0 + 1.0 / w.pbar));
+  EXPECT_NEAR(w.pbar, std::sqrt(1.0 - w.t * w.t), kRounding * (1.0 + 1.0 / w.pbar));
   ASSERT_FALSE(w.viewpoints.empty());
   EXPECT_EIGEN_NEAR(w.viewpoints.front(), w.viewpoint, kIdentical);
   for (const Eigen::Vector3d& a : w.viewpoints) {
@@ -131,7 +133,7 @@ TEST(CellLmi, EmptyCellIsReported) {
   const Eigen::Matrix3Xd z = columns({{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}});
   const CellViewpoint cell = solve_cell_lmi(z, Eigen::Vector3d(1, 1, 1));
   EXPECT_NE(cell.status, CellViewpoint::Status::kOk);
-  EXPECT_LE(cell.t, 1e-6);
+  EXPECT_LE(cell.t, kSdp);
 }
 
 TEST(CellLmi, RejectsBadSigns) {
