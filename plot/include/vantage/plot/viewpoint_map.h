@@ -65,9 +65,9 @@ struct ViewpointMapData {
   double threshold_deg = 5.0;  ///< contour of arccos p_bar = threshold, in (0, 90) degrees
   int samples_per_axis = 400;  ///< N of sample_viewpoints, >= 400 keeps the minimum visible
   /// N of the CSV's samples, in [kMinMapSamples, kMaxMapSamples]; the CSV uses
-  /// min(csv_samples_per_axis, samples_per_axis). 100 gives 7 860 rows (0.7 MB) where the
-  /// picture's 400 would give 125 600 (11.7 MB): the same map, a cell of 2/N, for the reader's
-  /// own analysis; the picture's raster is not repeated.
+  /// min(csv_samples_per_axis, samples_per_axis). 100 gives 7 860 rows (0.72 MB for the
+  /// satellite) where the picture's 400 has 125 676 (11.7 MB): the same map on cells of side
+  /// 2/N, for the reader's own analysis; the picture's raster is not repeated.
   int csv_samples_per_axis = 100;
 };
 
