@@ -104,8 +104,8 @@ bench-peers: configure
 # seed papers' experiments (each experiment run with its default trials and seed 1 into
 # $(EXPERIMENTS_DIR)/NAME, drawn there by `vantage plot --experiment`, copied here as
 # experiment_<figure>.png) and the viewer's screenshot (under xvfb-run). Not part of `make test`
-# or `make demo`. Once built: 33 s on this shared 2-core machine for all but the screenshot
-# (measured with another build running).
+# or `make demo`. Once built: 23 s on this shared 2-core machine, screenshot included. Every
+# figure is deterministic except experiment_wu_points_time.png, whose times vary between runs.
 FIGURES_DIR ?= docs/figures
 EXPERIMENTS_DIR ?= $(BUILD_DIR)/experiments
 # experiment NAME : the figures it draws (vantage plot --experiment NAME).
