@@ -98,10 +98,20 @@ bench-peers: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target vantage_pose_peers
 	$(BUILD_DIR)/bench/peers/vantage_pose_peers --trials 500
 
-# The five figures of the satellite example (PNG + the CSV of each) in docs/figures/, shown in
-# README.md: a design run (two markers added greedily, and by the direct optimiser) feeds the
-# design figure.
+# Every figure in docs/figures (PNG + the CSV of each; only the PNGs are kept in git), shown in
+# README.md and docs/results.md: the five figures of the satellite example (a design run, two
+# markers added greedily and by the direct optimiser, feeds the design figure), the figures of the
+# seed papers' experiments (each experiment run with its default trials and seed 1 into
+# $(EXPERIMENTS_DIR)/NAME, drawn there by `vantage plot --experiment`, copied here as
+# experiment_<figure>.png) and the viewer's screenshot (under xvfb-run). Not part of `make test`
+# or `make demo`. Once built: 23 s on this shared 2-core machine, screenshot included. Every
+# figure is deterministic except experiment_wu_points_time.png, whose times vary between runs.
 FIGURES_DIR ?= docs/figures
+EXPERIMENTS_DIR ?= $(BUILD_DIR)/experiments
+# experiment NAME : the figures it draws (vantage plot --experiment NAME).
+FIGURE_EXPERIMENTS = bound:bound mcinroy-orientation:mcinroy_orientation \
+  mcinroy-pose:mcinroy_pose haralick-2d2d:haralick_2d2d_knee \
+  wu-points:wu_points_accuracy,wu_points_time wu-snr:wu_snr_accuracy
 .PHONY: figures
 figures: build
 	mkdir -p $(FIGURES_DIR)
@@ -109,3 +119,16 @@ figures: build
 	  > $(BUILD_DIR)/satellite_design.json
 	$(BUILD_DIR)/cli/vantage plot examples/layouts/satellite.json --out $(FIGURES_DIR) \
 	  --design $(BUILD_DIR)/satellite_design.json
+	set -e; for entry in $(FIGURE_EXPERIMENTS); do \
+	  name=$${entry%%:*}; dir=$(EXPERIMENTS_DIR)/$$name; \
+	  rm -rf $$dir; \
+	  $(BUILD_DIR)/cli/vantage experiment $$name --out $$dir --seed 1 --quiet; \
+	  $(BUILD_DIR)/cli/vantage plot --experiment $$name --out $$dir > /dev/null; \
+	  for figure in $$(echo $${entry#*:} | tr , ' '); do \
+	    cp $$dir/$$figure.png $(FIGURES_DIR)/experiment_$$figure.png; \
+	    cp $$dir/$$figure.csv $(FIGURES_DIR)/experiment_$$figure.csv; \
+	  done; \
+	done
+	xvfb-run -a -s '-screen 0 1600x1200x24' $(BUILD_DIR)/viewer/vantage-viewer \
+	  examples/layouts/satellite.json --screenshot $(FIGURES_DIR)/viewer.png --size 1400x900 \
+	  --view iso --frames 3

@@ -261,6 +261,45 @@ void Canvas::label(double x, double y, const std::string& text, double dx_px, do
   cairo_restore(cairo_);
 }
 
+namespace {
+
+// The legend box's layout (pixels) for rows of text size size_px; the font must be selected.
+struct LegendLayout {
+  double pad = 0.0, symbol = 0.0, row = 0.0, width = 0.0, height = 0.0;
+  cairo_font_extents_t font{};
+};
+
+LegendLayout legend_layout(cairo_t* cairo, const std::vector<Canvas::LegendEntry>& entries,
+                           double size_px) {
+  LegendLayout l;
+  cairo_font_extents(cairo, &l.font);
+  double text_width = 0.0;
+  for (const Canvas::LegendEntry& e : entries) {
+    cairo_text_extents_t extents;
+    cairo_text_extents(cairo, e.text.c_str(), &extents);
+    text_width = std::max(text_width, extents.x_advance);
+  }
+  l.pad = 0.7 * size_px;
+  l.symbol = 2.4 * size_px;
+  l.row = 1.6 * size_px;
+  l.width = l.pad + l.symbol + 0.5 * l.pad + text_width + l.pad;
+  l.height = 2 * l.pad + l.row * static_cast<double>(entries.size()) - (l.row - l.font.height);
+  return l;
+}
+
+}  // namespace
+
+Eigen::Vector2d Canvas::legend_size(const std::vector<LegendEntry>& entries, double size_px) {
+  if (entries.empty()) return Eigen::Vector2d::Zero();
+  cairo_save(cairo_);
+  cairo_identity_matrix(cairo_);  // PLplot's driver leaves its own (y-up) transform
+  cairo_select_font_face(cairo_, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cairo_, size_px);
+  const LegendLayout l = legend_layout(cairo_, entries, size_px);
+  cairo_restore(cairo_);
+  return {l.width / width_, l.height / height_};
+}
+
 void Canvas::legend(double x, double y, const std::vector<LegendEntry>& entries, double size_px,
                     double anchor) {
   if (entries.empty()) return;
@@ -268,21 +307,11 @@ void Canvas::legend(double x, double y, const std::vector<LegendEntry>& entries,
   cairo_identity_matrix(cairo_);  // PLplot's driver leaves its own (y-up) transform
   cairo_select_font_face(cairo_, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cairo_, size_px);
-  cairo_font_extents_t font;
-  cairo_font_extents(cairo_, &font);
-  double text_width = 0.0;
-  for (const LegendEntry& e : entries) {
-    cairo_text_extents_t extents;
-    cairo_text_extents(cairo_, e.text.c_str(), &extents);
-    text_width = std::max(text_width, extents.x_advance);
-  }
-  const double pad = 0.7 * size_px;
-  const double symbol = 2.4 * size_px;
-  const double row = 1.6 * size_px;
-  const double w = pad + symbol + 0.5 * pad + text_width + pad;
+  const LegendLayout l = legend_layout(cairo_, entries, size_px);
+  const cairo_font_extents_t& font = l.font;
+  const double pad = l.pad, symbol = l.symbol, row = l.row, w = l.width, h = l.height;
   const double x0 = x * width_ - anchor * w;
   const double y0 = (1.0 - y) * height_;
-  const double h = 2 * pad + row * static_cast<double>(entries.size()) - (row - font.height);
   cairo_rectangle(cairo_, x0, y0, w, h);
   set_source(cairo_, {255, 255, 255}, 0.94);
   cairo_fill_preserve(cairo_);
@@ -293,7 +322,7 @@ void Canvas::legend(double x, double y, const std::vector<LegendEntry>& entries,
     const LegendEntry& e = entries[k];
     const double centre_y = y0 + pad + row * static_cast<double>(k) + 0.5 * font.height;
     const double centre_x = x0 + pad + 0.5 * symbol;
-    if (e.symbol == LegendEntry::Symbol::kLine) {
+    if (e.symbol == LegendEntry::Symbol::kLine || e.symbol == LegendEntry::Symbol::kLineMarker) {
       cairo_save(cairo_);
       cairo_identity_matrix(cairo_);  // PLplot's driver leaves its own (y-up) transform
       if (e.dashed) {
@@ -315,7 +344,8 @@ void Canvas::legend(double x, double y, const std::vector<LegendEntry>& entries,
       cairo_line_to(cairo_, x0 + pad + symbol, centre_y);
       cairo_stroke(cairo_);
       cairo_restore(cairo_);
-    } else if (e.symbol == LegendEntry::Symbol::kMarker) {
+    }
+    if (e.symbol == LegendEntry::Symbol::kMarker || e.symbol == LegendEntry::Symbol::kLineMarker) {
       marker_at({centre_x, centre_y}, 0.42 * size_px, e.colour, e.shape);
     }
     cairo_move_to(cairo_, x0 + pad + symbol + 0.5 * pad,

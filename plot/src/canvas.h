@@ -90,10 +90,10 @@ class Canvas {
   void label(double x, double y, const std::string& text, double dx_px, double dy_px, double align,
              double size_px, Rgb colour, Rgb box = {255, 255, 255}, double box_alpha = 0.0);
 
-  /// One row of a legend: a marker (shape, fill), a line (colour, width, dashed) or nothing,
-  /// and its text.
+  /// One row of a legend: a marker (shape, fill), a line (colour, width, dashed), a line with a
+  /// marker on it, or nothing, and its text.
   struct LegendEntry {
-    enum class Symbol { kNone, kMarker, kLine };
+    enum class Symbol { kNone, kMarker, kLine, kLineMarker };
     std::string text;
     Symbol symbol = Symbol::kNone;
     Rgb colour;
@@ -108,12 +108,18 @@ class Canvas {
     static LegendEntry line(std::string text, Rgb colour, double width_px, bool dashed = false) {
       return {std::move(text), Symbol::kLine, colour, Shape::kCircle, width_px, dashed};
     }
+    static LegendEntry line_marker(std::string text, Rgb colour, double width_px, Shape shape,
+                                   bool dashed = false) {
+      return {std::move(text), Symbol::kLineMarker, colour, shape, width_px, dashed};
+    }
   };
   /// A legend box whose top edge is at page fraction y (0..1, y up) and whose left edge
   /// (anchor 0) or right edge (anchor 1) is at page fraction x; rows of text size size_px on a
   /// white box with a grey border.
   void legend(double x, double y, const std::vector<LegendEntry>& entries, double size_px,
               double anchor = 0.0);
+  /// The width and height (page fractions) of that legend box.
+  Eigen::Vector2d legend_size(const std::vector<LegendEntry>& entries, double size_px);
 
   /// A filled polygon in world coordinates with opacity alpha in [0, 1].
   void fill_polygon(const std::vector<double>& x, const std::vector<double>& y, Rgb fill,

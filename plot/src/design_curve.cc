@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "canvas.h"
+#include "experiment_plotting.h"
 #include "output_file.h"
 #include "style.h"
 #include "vantage/analysis/common.h"
@@ -61,8 +62,12 @@ void draw_curve(Canvas& canvas, const DesignCurve& curve, const FigureOptions& o
   const double pad = std::max(0.5, 0.04 * (range.m_hi - range.m_lo));
 
   plstream& pls = canvas.pls();
-  pls.vpor(0.115, 0.96, 0.11, 0.84);
+  const internal::Viewport viewport{0.115, 0.845, 0.11, 0.73};
+  pls.vpor(viewport.left, viewport.left + viewport.width, viewport.bottom,
+           viewport.bottom + viewport.height);
   pls.wind(range.m_lo - pad, range.m_hi + pad, lo, 1.0);
+  // The legend goes where neither the ceiling nor the points and their labels are.
+  internal::LegendPlacer placer(range.m_lo - pad, range.m_hi + pad, lo, 1.0, viewport);
   pls.col0(internal::kPenGrid);
   pls.width(0.8 * s);
   internal::set_text_size(canvas, internal::kSmallSize);
@@ -80,6 +85,7 @@ void draw_curve(Canvas& canvas, const DesignCurve& curve, const FigureOptions& o
   pls.lsty(2);
   pls.line(kCeilingPoints, cx.data(), cy.data());
   pls.lsty(1);
+  placer.add_line(cx, cy);
 
   const int steps = static_cast<int>(curve.n_vectors.size());
   std::vector<double> gx(steps), gy(steps);
@@ -90,12 +96,19 @@ void draw_curve(Canvas& canvas, const DesignCurve& curve, const FigureOptions& o
   pls.col0(internal::kPenWorst);
   pls.width(2.2 * s);
   pls.line(steps, gx.data(), gy.data());
+  placer.add_line(gx, gy);
+  // The step labels hang below their markers: their world height there.
+  const double label_drop = (1.0 - lo) * 26.0 * s / (viewport.height * canvas.height());
+  std::vector<double> label_y(gy);
+  for (double& v : label_y) v -= label_drop;
+  placer.add_points(gx, label_y);
   for (int k = 0; k < steps; ++k) {
     canvas.marker(gx[k], gy[k], 6.0 * s, kWorstViewpointColour);
     canvas.label(gx[k], gy[k], k == 0 ? "initial" : "step " + std::to_string(k), 0.0, 18 * s, 0.5,
                  internal::kSmallSize * s, {25, 25, 25}, {255, 255, 255}, 0.8);
   }
   if (curve.has_direct) {
+    placer.add_points({static_cast<double>(curve.direct_n_vectors)}, {curve.direct_pbar_min});
     canvas.marker(curve.direct_n_vectors, curve.direct_pbar_min, 8.0 * s, {33, 113, 181},
                   Canvas::Shape::kDiamond);
     canvas.label(curve.direct_n_vectors, curve.direct_pbar_min,
@@ -118,7 +131,9 @@ void draw_curve(Canvas& canvas, const DesignCurve& curve, const FigureOptions& o
                                                         fixed(curve.direct_pbar_min, 4) + ")",
                                                     {33, 113, 181}, Canvas::Shape::kDiamond));
   }
-  canvas.legend(0.13, 0.83, legend, internal::kSmallSize * s);
+  const auto [legend_x, legend_y] =
+      placer.corner(canvas.legend_size(legend, internal::kSmallSize * s));
+  canvas.legend(legend_x, legend_y, legend, internal::kSmallSize * s);
 }
 
 }  // namespace

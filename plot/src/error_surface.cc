@@ -18,6 +18,8 @@ constexpr int kMinSamples = 16;
 constexpr int kMaxSamples = 2000;
 // Contour levels of theta, degrees.
 constexpr double kContourStepDeg = 10.0;
+// Below this p-bar_min the layout's label goes over its line (under it would leave the plot).
+constexpr double kLabelBelowAbove = 0.08;
 
 double theta_deg(double p, double pbar) {
   return kDegreesPerRadian * lub_scale_error_angle(p, pbar);
@@ -121,6 +123,11 @@ void draw_surface(Canvas& canvas, const ErrorSurfaceData& data, const Eigen::Mat
   canvas.label(0.66, 0.42, "pᵢ > p̄: not possible (p̄ is the largest pⱼ)", 0.0, 0.0, 0.5,
                internal::kLabelSize * s, {110, 110, 110});
 
+  // The frame first: markers on a p-bar_min near 1 reach over the top edge and stay whole.
+  internal::draw_axes(canvas, "bcnst", "bcnstv", 0.1, 2,
+                      "pᵢ: fraction of data vector i's norm in the image (Eq. 19)", 3.0,
+                      "p̄ = maxⱼ pⱼ: largest fraction (Eq. 25)", 3.6);
+
   pls.col0(internal::kPenWorst);
   pls.width(1.6 * s);
   pls.lsty(2);
@@ -129,12 +136,11 @@ void draw_surface(Canvas& canvas, const ErrorSurfaceData& data, const Eigen::Mat
   for (Eigen::Index i = 0; i < data.p_at_worst.size(); ++i) {
     canvas.marker(std::min(data.p_at_worst(i), pbar_min), pbar_min, 5.5 * s, kWorstViewpointColour);
   }
+  // Under the line, or over it when the line runs along the bottom of the plot.
+  const bool below = pbar_min > kLabelBelowAbove;
   canvas.label(0.02, pbar_min, "layout at its worst viewpoint: p̄_min " + fixed(pbar_min, 4), 0.0,
-               18 * s, 0.0, internal::kSmallSize * s, {25, 25, 25}, {255, 255, 255}, 0.85);
-
-  internal::draw_axes(canvas, "bcnst", "bcnstv", 0.1, 2,
-                      "pᵢ: fraction of data vector i's norm in the image (Eq. 19)", 3.0,
-                      "p̄ = maxⱼ pⱼ: largest fraction (Eq. 25)", 3.6);
+               (below ? 18 : -18) * s, 0.0, internal::kSmallSize * s, {25, 25, 25}, {255, 255, 255},
+               0.85);
 
   internal::draw_colour_bar(canvas, 0.80, 0.825, 0.10, 0.86, 0.0, 90.0,
                             "error θ  [deg]  (contours every 10°)");

@@ -18,10 +18,15 @@ namespace vantage::plot::internal {
 namespace {
 
 // Errors below kSmallestDeg, or more than kMaxDecades below the largest, are drawn at the left
-// edge (exact estimators reach ~1e-10 degrees; 14 decades still label every decade legibly).
+// edge.
 constexpr double kSmallestDeg = 1e-12;
 constexpr double kMaxDecades = 14.0;
 constexpr std::size_t kCurvePoints = 300;
+// A curve whose median is below kExactDeg is an exact estimator on noise-free data (~1e-10
+// degrees): it is drawn at the left edge, so that the axis spans the curves that differ, from the
+// decade below the smallest kLeftQuantile-quantile of the others.
+constexpr double kExactDeg = 1e-6;
+constexpr double kLeftQuantile = 0.01;
 
 // Sorted finite errors of each (n, estimator).
 using Samples = std::map<std::pair<long, std::string>, std::vector<double>>;
@@ -55,6 +60,26 @@ Rgb estimator_colour(const std::string& name, std::size_t index) {
   return series_colour(index + 2);
 }
 
+bool is_exact(const std::vector<double>& sorted) {
+  return !sorted.empty() && sorted[sorted.size() / 2] < kExactDeg;
+}
+
+// The error axis (log10 degrees): up to 180 degrees, down to the decade below the curves that
+// differ (all curves when every one is exact).
+Decades error_axis(const Samples& samples) {
+  std::vector<double> all, lows;
+  for (const auto& [key, errors] : samples) {
+    all.insert(all.end(), errors.begin(), errors.end());
+    if (errors.empty() || is_exact(errors)) continue;
+    lows.push_back(errors[static_cast<std::size_t>(kLeftQuantile * (errors.size() - 1))]);
+  }
+  Decades x = decades(all, kSmallestDeg);
+  if (!lows.empty()) x.lo = decades(lows, kSmallestDeg).lo;
+  x.hi = std::min(x.hi, std::ceil(std::log10(180.0) * 10.0) / 10.0);
+  x.lo = std::min(std::max(x.lo, x.hi - kMaxDecades), x.hi - 1.0);
+  return x;
+}
+
 std::string median_text(double degrees) {
   if (degrees >= 1.0) return fixed(degrees, 1);
   if (degrees >= 1e-3) return fixed(degrees, 3);
@@ -69,19 +94,16 @@ void write_error_cdf_figure(const ErrorCdfFigure& spec, const FigureOptions& opt
                             std::vector<FigureFiles>& files) {
   const Samples samples = read_samples(spec.csv);
   if (samples.empty()) throw InvalidArgument(spec.csv.string() + ": no rows");
-  std::vector<double> all;
   std::vector<long> ns;
   std::vector<std::string> estimators;
+  bool clamped = false;
   for (const auto& [key, errors] : samples) {
-    all.insert(all.end(), errors.begin(), errors.end());
     if (std::find(ns.begin(), ns.end(), key.first) == ns.end()) ns.push_back(key.first);
     if (std::find(estimators.begin(), estimators.end(), key.second) == estimators.end()) {
       estimators.push_back(key.second);
     }
   }
-  Decades x = decades(all, kSmallestDeg);
-  x.hi = std::min(x.hi, std::ceil(std::log10(180.0) * 10.0) / 10.0);
-  x.lo = std::max(x.lo, x.hi - kMaxDecades);
+  const Decades x = error_axis(samples);
 
   const FigureFiles out = figure_files(spec.figure, spec.csv.parent_path(), options.format);
   Canvas canvas(out.image, options);
@@ -116,17 +138,22 @@ void write_error_cdf_figure(const ErrorCdfFigure& spec, const FigureOptions& opt
     draw_line(canvas, px, py, colour, dashed ? 2.0 : 2.6, dashed);
     placer.add_line(px, py);
     const double median = errors[errors.size() / 2];
+    const bool at_edge = log_clamped(median, kSmallestDeg) < x.lo;
+    clamped = clamped || at_edge;
     const std::string series =
         (ns.size() > 1 || key.first != 0 ? "n = " + std::to_string(key.first) + ", "
                                          : std::string()) +
         estimator_label(key.second);
     legend.push_back(Entry::line(series + " (median " + median_text(median) + "°, " +
-                                     std::to_string(errors.size()) + " trials)",
+                                     std::to_string(errors.size()) + " trials" +
+                                     (at_edge ? "; at the left edge" : "") + ")",
                                  colour, (dashed ? 2.0 : 2.6) * s, dashed));
   }
-  draw_axes(canvas, "bcnstl", "bcnstv", 0.0, 0, "rotation error (degrees, log scale)", 3.2,
-            "fraction of trials with error ≤ x", 4.2);
-  const auto [legend_x, legend_y] = placer.corner(legend.size());
+  draw_axes(canvas, "bcnstl", "bcnstv", 0.0, 0,
+            clamped ? "rotation error (degrees, log scale; smaller errors at the left edge)"
+                    : "rotation error (degrees, log scale)",
+            3.2, "fraction of trials with error ≤ x", 4.2);
+  const auto [legend_x, legend_y] = placer.corner(canvas.legend_size(legend, kSmallSize * s));
   canvas.legend(legend_x, legend_y, legend, kSmallSize * s);
   canvas.finish();
   csv.commit();

@@ -45,38 +45,64 @@ void plot_area(Canvas& canvas, double x0, double x1, double y0, double y1, const
 
 namespace {
 
-// The legend's approximate size (page fractions) at the default text size, and the places tried.
-constexpr double kLegendWidth = 0.32;
-constexpr double kLegendRowHeight = 0.025;
-constexpr std::pair<double, double> kLegendCorners[] = {
-    {0.12, 0.82}, {0.62, 0.82}, {0.36, 0.82}, {0.12, 0.42}, {0.62, 0.42}};
-constexpr int kSamplesPerSegment = 16;
+// Page-fraction gaps: between the legend and the frame, and around the legend, where no drawn
+// point may be either.
+constexpr double kLegendInset = 0.012;
+constexpr double kLegendMargin = 0.012;
+// Places tried per axis between the corners.
+constexpr int kLegendPlaces = 9;
+// A segment is sampled at least this often, and at most this far apart (page fraction), so that
+// no line crosses a legend between two samples.
+constexpr int kMinSamplesPerSegment = 16;
+constexpr double kSampleSpacing = 0.004;
 
 }  // namespace
 
+void LegendPlacer::record(double wx, double wy) {
+  page_x_.push_back(viewport_.left + (wx - x0_) / (x1_ - x0_) * viewport_.width);
+  page_y_.push_back(viewport_.bottom + (wy - y0_) / (y1_ - y0_) * viewport_.height);
+}
+
 void LegendPlacer::add_line(const std::vector<double>& x, const std::vector<double>& y) {
-  auto record = [this](double wx, double wy) {
-    page_x_.push_back(kPlotLeft + (wx - x0_) / (x1_ - x0_) * kPlotWidth);
-    page_y_.push_back(kPlotBottom + (wy - y0_) / (y1_ - y0_) * kPlotHeight);
-  };
   for (std::size_t k = 0; k + 1 < x.size(); ++k) {
-    for (int j = 0; j < kSamplesPerSegment; ++j) {
-      const double f = static_cast<double>(j) / kSamplesPerSegment;
+    const double page_length = std::hypot((x[k + 1] - x[k]) / (x1_ - x0_) * viewport_.width,
+                                          (y[k + 1] - y[k]) / (y1_ - y0_) * viewport_.height);
+    const int samples =
+        std::max(kMinSamplesPerSegment, static_cast<int>(std::ceil(page_length / kSampleSpacing)));
+    for (int j = 0; j < samples; ++j) {
+      const double f = static_cast<double>(j) / samples;
       record(x[k] + f * (x[k + 1] - x[k]), y[k] + f * (y[k + 1] - y[k]));
     }
   }
   if (!x.empty()) record(x.back(), y.back());
 }
 
-std::pair<double, double> LegendPlacer::corner(std::size_t rows) const {
-  const double height = kLegendRowHeight * static_cast<double>(rows) + 0.02;
-  std::pair<double, double> best = kLegendCorners[0];
+void LegendPlacer::add_points(const std::vector<double>& x, const std::vector<double>& y) {
+  for (std::size_t k = 0; k < x.size() && k < y.size(); ++k) record(x[k], y[k]);
+}
+
+std::pair<double, double> LegendPlacer::corner(const Eigen::Vector2d& size) const {
+  const double left0 = viewport_.left + kLegendInset;
+  const double left1 = std::max(left0, viewport_.left + viewport_.width - kLegendInset - size.x());
+  const double top1 = viewport_.bottom + viewport_.height - kLegendInset;
+  const double top0 = std::min(top1, viewport_.bottom + kLegendInset + size.y());
+  std::vector<std::pair<double, double>> places{
+      {left0, top1}, {left1, top1}, {left0, top0}, {left1, top0}};
+  for (int i = 0; i < kLegendPlaces; ++i) {
+    for (int j = 0; j < kLegendPlaces; ++j) {
+      const double fx = static_cast<double>(j) / (kLegendPlaces - 1);
+      const double fy = static_cast<double>(i) / (kLegendPlaces - 1);
+      places.emplace_back(left0 + fx * (left1 - left0), top1 - fy * (top1 - top0));
+    }
+  }
+  std::pair<double, double> best = places.front();
   std::size_t best_count = page_x_.size() + 1;
-  for (const auto& [left, top] : kLegendCorners) {
+  for (const auto& [left, top] : places) {
     std::size_t count = 0;
     for (std::size_t k = 0; k < page_x_.size(); ++k) {
-      count += page_x_[k] >= left && page_x_[k] <= left + kLegendWidth &&
-               page_y_[k] >= top - height && page_y_[k] <= top;
+      count += page_x_[k] >= left - kLegendMargin &&
+               page_x_[k] <= left + size.x() + kLegendMargin &&
+               page_y_[k] >= top - size.y() - kLegendMargin && page_y_[k] <= top + kLegendMargin;
     }
     if (count < best_count) {
       best_count = count;

@@ -1,7 +1,8 @@
 #pragma once
 
-// What the experiment figures share: series colours, lines in any colour, log-axis ranges and
-// the per-experiment drawing functions. Private to vantage::plot.
+// What the experiment figures share: series colours, lines in any colour, log-axis ranges, legend
+// placement (the design curve uses it too) and the per-experiment drawing functions. Private to
+// vantage::plot.
 
 #include <filesystem>
 #include <string>
@@ -32,19 +33,34 @@ inline constexpr double kPlotHeight = 0.73;
 void plot_area(Canvas& canvas, double x0, double x1, double y0, double y1, const char* xopt,
                double xtick, const char* yopt, double ytick);
 
-/// Where the legend goes: the drawn lines of a plot area (world window x0..x1, y0..y1) are
-/// recorded, and the legend takes the candidate place (upper left, middle or right, lower left
-/// or right) that covers the fewest of their points.
+/// A plot area's place on the page (fractions, y up).
+struct Viewport {
+  double left = kPlotLeft;
+  double width = kPlotWidth;
+  double bottom = kPlotBottom;
+  double height = kPlotHeight;
+};
+
+/// Where the legend goes: the drawn lines and markers of a plot area (world window x0..x1,
+/// y0..y1, on the page at `viewport`) are recorded, and the legend takes the place inside the
+/// plot area whose box, grown by a margin, covers the fewest of their points: the four corners
+/// first, then a grid of places between them (the first of equal ones wins).
 class LegendPlacer {
  public:
-  LegendPlacer(double x0, double x1, double y0, double y1) : x0_(x0), x1_(x1), y0_(y0), y1_(y1) {}
+  LegendPlacer(double x0, double x1, double y0, double y1, Viewport viewport = {})
+      : x0_(x0), x1_(x1), y0_(y0), y1_(y1), viewport_(viewport) {}
   /// Records a polyline (world coordinates), sampled densely enough to see every segment.
   void add_line(const std::vector<double>& x, const std::vector<double>& y);
-  /// The legend's left edge and top edge (page fractions) for `rows` rows.
-  std::pair<double, double> corner(std::size_t rows) const;
+  /// Records single points (markers, labels) in world coordinates.
+  void add_points(const std::vector<double>& x, const std::vector<double>& y);
+  /// The legend's left edge and top edge (page fractions) for a legend of `size` (width and
+  /// height, page fractions: Canvas::legend_size).
+  std::pair<double, double> corner(const Eigen::Vector2d& size) const;
 
  private:
+  void record(double x, double y);
   double x0_, x1_, y0_, y1_;
+  Viewport viewport_;
   std::vector<double> page_x_, page_y_;
 };
 

@@ -35,6 +35,11 @@ void check_data(const ViewpointMapData& data) {
   if (!(data.pbar_min >= 0.0 && data.pbar_min <= 1.0)) {
     throw InvalidArgument("write_viewpoint_map: pbar_min must be in [0, 1]");
   }
+  if (data.csv_samples_per_axis < kMinMapSamples || data.csv_samples_per_axis > kMaxMapSamples) {
+    throw InvalidArgument("write_viewpoint_map: csv_samples_per_axis must be in [" +
+                          std::to_string(kMinMapSamples) + ", " + std::to_string(kMaxMapSamples) +
+                          "]");
+  }
 }
 
 void write_csv(const ViewpointSamples& samples, const std::filesystem::path& path) {
@@ -248,7 +253,11 @@ FigureFiles write_viewpoint_map(const ViewpointMapData& data,
   Canvas canvas(files.image, options);
   draw_map(canvas, data, samples, options);
   canvas.finish();
-  write_csv(samples, files.csv);
+  const int csv_n = std::min(data.csv_samples_per_axis, data.samples_per_axis);
+  write_csv(csv_n == samples.samples_per_axis
+                ? samples
+                : sample_viewpoints(data.vectors, csv_n, options.threads),
+            files.csv);
   return files;
 }
 

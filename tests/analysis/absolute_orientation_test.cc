@@ -25,6 +25,30 @@ constexpr double kMethodAgreementRadians = 1e-9;
 // roots agree to a few ulps of ||H||, and the gap is their difference.
 constexpr double kSameSolverGap = 1e-13;
 
+// Noise-free translation, unit-size data: the rotation's and scale's rounding times the object
+// size.
+constexpr double kNoiseFreeTranslation = 1e-9;
+// Methods solve the same problem exactly: scale and residual agree to rounding (like the rotation).
+constexpr double kMethodAgreement = 1e-9;
+// The eigen-gap is a difference of two eigenvalues: each method's rounding of both.
+constexpr double kGapAgreement = 1e-8;
+// The residual recomputed here from its definition: rounding of a weighted sum.
+constexpr double kRounding = 1e-12;
+// D built two ways from the same unit-size terms: rounding of a few sums.
+constexpr double kMatrixRounding = 1e-14;
+// A swap's change of D, directly and as a difference of two D: rounding of unit-size sums.
+constexpr double kSwapDeltaRounding = 1e-13;
+// A noise-free residual is a sum of squares of rounding errors: ~1e-30 per term.
+constexpr double kNoiseFreeResidualZero = 1e-18;
+// The chosen weights balance the chosen points exactly, up to rounding of one small sum.
+constexpr double kBalancedWeights = 1e-15;
+// A degenerate layout's optimum still maps its one direction: rounding of a unit vector.
+constexpr double kDirectionRounding = 1e-9;
+// A noise-free residual in expanded form cancels O(n) unit-size terms: rounding per point.
+constexpr double kExpandedResidualPerPoint = 1e-12;
+// optimal_rotation() and absolute_orientation() run the same solver on the same H.
+constexpr double kSameSolverRadians = 1e-12;
+
 const OrientationMethod kMethods[] = {OrientationMethod::kQMethod, OrientationMethod::kSvd,
                                       OrientationMethod::kFoam};
 
@@ -50,7 +74,7 @@ TEST_P(EveryMethod, NoiseFreeDirectionsReturnTruth) {
     EXPECT_THAT(result.R_camera_object, IsRotation());
     EXPECT_LT(rotation_angle_between(result.R_camera_object, R), kNoiseFreeRadians);
     EXPECT_NEAR(result.alpha, alpha, kNoiseFreeRelative * alpha);
-    EXPECT_LT(result.residual, 1e-12 * n);  // expanded form: cancellation of O(n) terms
+    EXPECT_LT(result.residual, kExpandedResidualPerPoint * n);
     EXPECT_GT(result.eigen_gap, 0.0);
   }
 }
@@ -68,7 +92,7 @@ TEST_P(EveryMethod, NoiseFreePointsReturnPose) {
     EXPECT_EQ(result.status, OrientationStatus::kOk);
     EXPECT_THAT(result.R_camera_object, IsRotation());
     EXPECT_LT(rotation_angle_between(result.R_camera_object, R), kNoiseFreeRadians);
-    EXPECT_EIGEN_NEAR(result.p_camera_object, p, 1e-9);
+    EXPECT_EIGEN_NEAR(result.p_camera_object, p, kNoiseFreeTranslation);
     EXPECT_NEAR(result.alpha, alpha, kNoiseFreeRelative * alpha);
   }
 }
@@ -105,9 +129,9 @@ TEST(AbsoluteOrientation, MethodsAgreeOnNoisyData) {
       EXPECT_LT(rotation_angle_between(q.R_camera_object, other.R_camera_object),
                 kMethodAgreementRadians)
           << to_string(method);
-      EXPECT_NEAR(q.alpha, other.alpha, 1e-9);
-      EXPECT_NEAR(q.residual, other.residual, 1e-9);
-      EXPECT_NEAR(q.eigen_gap, other.eigen_gap, 1e-8);
+      EXPECT_NEAR(q.alpha, other.alpha, kMethodAgreement);
+      EXPECT_NEAR(q.residual, other.residual, kMethodAgreement);
+      EXPECT_NEAR(q.eigen_gap, other.eigen_gap, kGapAgreement);
     }
   }
 }
@@ -138,7 +162,7 @@ TEST(AbsoluteOrientation, ResidualIsTheObjective) {
   double J = 0.0;
   for (int i = 0; i < 7; ++i)
     J += w(i) * (r.R_camera_object * z.col(i) - r.alpha * v.col(i)).squaredNorm();
-  EXPECT_NEAR(r.residual, J, 1e-12);
+  EXPECT_NEAR(r.residual, J, kRounding);
   // Optimality: no nearby rotation does better (first-order condition).
   for (int axis = 0; axis < 3; ++axis) {
     const Eigen::Matrix3d dR =
@@ -146,7 +170,7 @@ TEST(AbsoluteOrientation, ResidualIsTheObjective) {
     double J_perturbed = 0.0;
     for (int i = 0; i < 7; ++i)
       J_perturbed += w(i) * (dR * r.R_camera_object * z.col(i) - r.alpha * v.col(i)).squaredNorm();
-    EXPECT_GE(J_perturbed, J - 1e-12);
+    EXPECT_GE(J_perturbed, J - kRounding);
   }
 }
 
@@ -157,9 +181,9 @@ TEST(AbsoluteOrientation, DIsTheSumOfK) {
   const Eigen::VectorXd w = Eigen::VectorXd::LinSpaced(5, 1.0, 2.0);
   Eigen::Matrix4d D = Eigen::Matrix4d::Zero();
   for (int i = 0; i < 5; ++i) D += w(i) * quaternion_k(v.col(i), z.col(i));
-  EXPECT_EIGEN_NEAR(orientation_matrix_d(z, v, w), D, 1e-14);
+  EXPECT_EIGEN_NEAR(orientation_matrix_d(z, v, w), D, kMatrixRounding);
   const OrientationResult r = absolute_orientation(z, v, w);
-  EXPECT_LT(rotation_angle_between(rotation_from_d(D), r.R_camera_object), 1e-10);
+  EXPECT_LT(rotation_angle_between(rotation_from_d(D), r.R_camera_object), kNoiseFreeRadians);
 }
 
 TEST(AbsoluteOrientation, OptimalRotationFromCrossCovarianceMatchesSolver) {
@@ -171,7 +195,7 @@ TEST(AbsoluteOrientation, OptimalRotationFromCrossCovarianceMatchesSolver) {
     double gap = -1.0;
     const Eigen::Matrix3d R = optimal_rotation(H, with_method(method), &gap);
     const OrientationResult reference = absolute_orientation(z, v, {}, with_method(method));
-    EXPECT_LT(rotation_angle_between(R, reference.R_camera_object), 1e-12);
+    EXPECT_LT(rotation_angle_between(R, reference.R_camera_object), kSameSolverRadians);
     EXPECT_NEAR(gap, reference.eigen_gap, kSameSolverGap) << to_string(method);
   }
 }
@@ -185,7 +209,8 @@ TEST(AbsoluteOrientation, ParallelVectorsAreDegenerate) {
     EXPECT_THAT(r.R_camera_object, IsRotationWithin(1e-10));
     EXPECT_FALSE(r.message.empty());
     // Any optimum still maps the one direction correctly.
-    EXPECT_EIGEN_NEAR(r.R_camera_object * Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitX(), 1e-9);
+    EXPECT_EIGEN_NEAR(r.R_camera_object * Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitX(),
+                      kDirectionRounding);
   }
 }
 
@@ -237,7 +262,7 @@ TEST(SwapSensitivity, DeltaDEqualsRecomputedD) {
       swapped.col(k) = v.col(j);
       const Eigen::Matrix4d expected = orientation_matrix_d(z, swapped, w) - D;
       EXPECT_EIGEN_NEAR(swap_delta_d(v.col(j), v.col(k), z.col(j), z.col(k), w(j), w(k)), expected,
-                        1e-13);
+                        kSwapDeltaRounding);
     }
   }
 }
@@ -255,8 +280,8 @@ TEST(DecoupledPose, CentredDataGivePoseWithKnownScale) {
   const PoseResult result = decoupled_pose(z, q, alpha);
   ASSERT_EQ(result.status, OrientationStatus::kOk) << result.message;
   EXPECT_LT(rotation_angle_between(result.R_camera_object, R), kNoiseFreeRadians);
-  EXPECT_EIGEN_NEAR(result.p_camera_object, p, 1e-9);
-  EXPECT_NEAR(result.residual, 0.0, 1e-18);
+  EXPECT_EIGEN_NEAR(result.p_camera_object, p, kNoiseFreeTranslation);
+  EXPECT_NEAR(result.residual, 0.0, kNoiseFreeResidualZero);
 }
 
 TEST(DecoupledPose, NonCentredDataAreReportedNotSolved) {
@@ -272,14 +297,14 @@ TEST(DecoupledPose, WeightsCanCentreTheData) {
   Eigen::Matrix3Xd z(3, 4);
   z << 1, -2, 0, 0, 0, 0, 1, -1, 0.5, -1, 0, 0;
   const Eigen::VectorXd w = (Eigen::VectorXd(4) << 2, 1, 0.5, 0.5).finished();
-  ASSERT_NEAR((z * w).norm(), 0.0, 1e-15);
+  ASSERT_NEAR((z * w).norm(), 0.0, kBalancedWeights);
   const Eigen::Matrix3d R =
       Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   const Eigen::Vector3d p(1, 2, 30);
   const PoseResult result = decoupled_pose(z, (R * z).colwise() + p, 1.0, w);
   ASSERT_EQ(result.status, OrientationStatus::kOk);
   EXPECT_LT(rotation_angle_between(result.R_camera_object, R), kNoiseFreeRadians);
-  EXPECT_EIGEN_NEAR(result.p_camera_object, p, 1e-9);
+  EXPECT_EIGEN_NEAR(result.p_camera_object, p, kNoiseFreeTranslation);
 }
 
 }  // namespace

@@ -36,6 +36,16 @@ constexpr double kEnumerationAgreementRadians = 1e-9;
 // noise-free agreement in angle is limited to about sqrt(rounding) of the objective.
 constexpr double kCrossCheckRadians = 1e-6;
 
+// The pruned and the naive enumeration pick the same signs: v_z and the residuals agree to
+// rounding.
+constexpr double kSameSignsRounding = 1e-12;
+// Printed and computed K (Eq. 17) have the same exact entries; p-bar is the largest p_i itself.
+constexpr double kIdentical = 0.0;
+// One sign toggle changes D by -2 w_j v_zj K_j: the rounding of one unit-size update.
+constexpr double kToggleRounding = 1e-15;
+// Eq. (19)'s fraction p_i = alpha |d_i| / |z_i| recomputed here: a few roundings of a number <= 1.
+constexpr double kFractionRounding = 1e-15;
+
 Eigen::VectorXd test_weights(int n) { return Eigen::VectorXd::LinSpaced(n, 0.5, 2.0); }
 
 AffineOrientationOptions with_enumeration(SignEnumeration enumeration) {
@@ -88,11 +98,11 @@ TEST_P(FastEnumeration, AgreesWithNaiveOnNoisyData) {
         affine_orientation(z, d, 1.0, test_weights(n), with_enumeration(GetParam()));
     EXPECT_EQ(result.sign_patterns, naive.sign_patterns);
     EXPECT_EQ(result.clamped, naive.clamped);
-    EXPECT_EIGEN_NEAR(result.v_z, naive.v_z, 1e-12);  // the same winning signs
+    EXPECT_EIGEN_NEAR(result.v_z, naive.v_z, kSameSignsRounding);  // the same winning signs
     EXPECT_LT(rotation_angle_between(result.R_camera_object, naive.R_camera_object),
               kEnumerationAgreementRadians);
-    EXPECT_NEAR(result.residual, naive.residual, 1e-12);
-    EXPECT_NEAR(result.runner_up_residual, naive.runner_up_residual, 1e-12);
+    EXPECT_NEAR(result.residual, naive.residual, kSameSignsRounding);
+    EXPECT_NEAR(result.runner_up_residual, naive.runner_up_residual, kSameSignsRounding);
   }
 }
 
@@ -131,7 +141,7 @@ TEST(AffineOrientation, NaiveMatchesBruteForceThroughPublicSolvers) {
     }
     const AffineOrientationResult naive =
         affine_orientation(z, d, 1.0, w, with_enumeration(SignEnumeration::kNaive));
-    EXPECT_NEAR(naive.residual, best, 1e-12 * (1.0 + best)) << trial;
+    EXPECT_NEAR(naive.residual, best, kSameSignsRounding * (1.0 + best)) << trial;
     EXPECT_LT(rotation_angle_between(naive.R_camera_object, best_R), kEnumerationAgreementRadians)
         << trial;
   }
@@ -166,7 +176,7 @@ TEST(AffineOrientation, ToggleChangesDByMinusTwoWVzK) {
       0, -2 * zj.z(), zj.y(), -zj.x(),        //
       zj.x(), zj.y(), 0, 0,                   //
       zj.y(), -zj.x(), 0, 0;
-  EXPECT_EIGEN_NEAR(quaternion_k(Eigen::Vector3d::UnitZ(), zj), printed, 0.0);
+  EXPECT_EIGEN_NEAR(quaternion_k(Eigen::Vector3d::UnitZ(), zj), printed, kIdentical);
 
   Eigen::Matrix3Xd z(3, 2);
   z << 1.0, zj.x(), 0.2, zj.y(), -0.5, zj.z();
@@ -176,9 +186,9 @@ TEST(AffineOrientation, ToggleChangesDByMinusTwoWVzK) {
   const Eigen::VectorXd w = Eigen::Vector2d(1.5, 2.5);
   const Eigen::Matrix4d before = internal::affine_pattern_d(z, d, v_z, w, 0b00);
   const Eigen::Matrix4d after = internal::affine_pattern_d(z, d, v_z, w, 0b10);
-  EXPECT_EIGEN_NEAR(after - before, -2.0 * w(1) * v_z(1) * printed, 1e-15);
+  EXPECT_EIGEN_NEAR(after - before, -2.0 * w(1) * v_z(1) * printed, kToggleRounding);
   // Toggling back: v_zj is now negative, so the step has the opposite sign.
-  EXPECT_EIGEN_NEAR(before - after, -2.0 * w(1) * (-v_z(1)) * printed, 1e-15);
+  EXPECT_EIGEN_NEAR(before - after, -2.0 * w(1) * (-v_z(1)) * printed, kToggleRounding);
 }
 
 TEST(AffineOrientation, ClampedVectorsAreCountedAndNeverNaN) {
@@ -311,9 +321,9 @@ TEST(LubScale, MatchesEquations19To25) {
     const ProjectionFractions fractions = projection_fractions(z, d, alpha);
     EXPECT_GE(lub.alpha, alpha * (1.0 - kNoiseFreeRelative));
     EXPECT_NEAR(fractions.beta, lub.alpha / alpha, kNoiseFreeRelative * fractions.beta);
-    EXPECT_NEAR(fractions.p_bar, fractions.p.maxCoeff(), 0.0);
+    EXPECT_NEAR(fractions.p_bar, fractions.p.maxCoeff(), kIdentical);
     for (int i = 0; i < n; ++i) {
-      EXPECT_NEAR(fractions.p(i), alpha * d.col(i).norm() / z.col(i).norm(), 1e-15);
+      EXPECT_NEAR(fractions.p(i), alpha * d.col(i).norm() / z.col(i).norm(), kFractionRounding);
       EXPECT_LE(fractions.p(i), 1.0 + kNoiseFreeRelative);
     }
   }
@@ -350,7 +360,7 @@ TEST(AffineCrossCheck, AgreesWithProp4OnNoiseFreeData) {
     EXPECT_THAT(direct.R_camera_object, IsRotation());
     EXPECT_LT(rotation_angle_between(direct.R_camera_object, prop4.R_camera_object),
               kCrossCheckRadians);
-    EXPECT_LT(direct.residual, 1e-12);
+    EXPECT_LT(direct.residual, kSameSignsRounding);
     EXPECT_EQ(direct.failed_starts, 0);
   }
 }
@@ -373,7 +383,7 @@ TEST(AffineCrossCheck, UnderNoiseProp4IsOptimalOnlyForItsSubproblem) {
     for (Eigen::Index i = 0; i < d.size(); ++i) d.data()[i] += noise(rng);
     const AffineOrientationResult prop4 = affine_orientation(z, d, 1.0);
     const AffineCrossCheckResult direct = minimize_affine_residual(z, d, 1.0);
-    EXPECT_LE(direct.residual, prop4.residual * (1.0 + 1e-9) + 1e-15);
+    EXPECT_LE(direct.residual, prop4.residual * (1.0 + kNoiseFreeRelative) + kFractionRounding);
     if (direct.residual < prop4.residual * (1.0 - 1e-6)) ++strictly_better;
     EXPECT_LT(rotation_angle_between(direct.R_camera_object, prop4.R_camera_object), 20.0 * kNoise);
   }

@@ -20,6 +20,9 @@
 namespace vantage {
 namespace {
 
+// The determinant of a computed rotation: 1 to rounding.
+constexpr double kDeterminantRounding = 1e-12;
+
 using testing::CountAllocations;
 using testing::kSeed;
 
@@ -102,7 +105,7 @@ TEST(Allocation, OptimalRotationAllocatesNothing) {
     }
     EXPECT_EQ(count, 0) << to_string(method);
     EXPECT_GT(gap, 0.0);
-    EXPECT_NEAR(R.determinant(), 1.0, 1e-12);
+    EXPECT_NEAR(R.determinant(), 1.0, kDeterminantRounding);
   }
 }
 

@@ -17,6 +17,11 @@ using testing::kSeed;
 // (acos amplifies a 1e-16 cosine error to ~1e-8 rad at tiny angles).
 constexpr double kAngle = 1e-7;
 
+// The same fraction, scale or angle by two formulas of unit-size quantities: rounding.
+constexpr double kRounding = 1e-12;
+// An angle of 35 degrees from acos away from 1: rounding, in degrees.
+constexpr double kDegreesRounding = 1e-9;
+
 // Measured (true) vector v = R z / alpha and the reconstruction v_e from d = P v and alpha_e
 // (Eqs. 21-22, same depth sign); returns the angle between them in radians.
 double reconstructed_angle(const Eigen::Matrix3d& R, const Eigen::Vector3d& z, double alpha,
@@ -70,10 +75,11 @@ TEST(ErrorBounds, Eq26AndEq30AtTheWorstViewpoint) {
     const double alpha_e = 1.0 / ratio;
     const Eigen::VectorXd p = projected_fractions(z, a);
     const double pbar = p.maxCoeff();
-    EXPECT_NEAR(alpha_e / alpha, 1.0 / pbar, 1e-12) << "Eq. (25): beta = 1 / p-bar";
+    EXPECT_NEAR(alpha_e / alpha, 1.0 / pbar, kRounding) << "Eq. (25): beta = 1 / p-bar";
     const Eigen::VectorXd errors = worst_case_errors_deg(z, a);
     for (int i = 0; i < m; ++i) {
-      EXPECT_NEAR(p(i), alpha * (R * z.col(i) / alpha).head<2>().norm() / z.col(i).norm(), 1e-12)
+      EXPECT_NEAR(p(i), alpha * (R * z.col(i) / alpha).head<2>().norm() / z.col(i).norm(),
+                  kRounding)
           << "Eq. (19)";
       const double measured = reconstructed_angle(R, z.col(i), alpha, alpha_e);
       EXPECT_NEAR(lub_scale_error_angle(p(i), pbar), measured, kAngle);
@@ -91,15 +97,15 @@ TEST(ErrorBounds, PbarAtViewpointsIsTheLargestProjectedFraction) {
   const Eigen::VectorXd pbar = pbar_at_viewpoints(z, viewpoints);
   ASSERT_EQ(pbar.size(), 50);
   for (int k = 0; k < 50; ++k) {
-    EXPECT_NEAR(pbar(k), projected_fractions(z, viewpoints.col(k)).maxCoeff(), 1e-12);
+    EXPECT_NEAR(pbar(k), projected_fractions(z, viewpoints.col(k)).maxCoeff(), kRounding);
   }
   // Z = I: p_bar is sqrt(2/3) at (1, 1, 1)/sqrt(3) and 1 along a coordinate axis.
   const Eigen::Matrix3Xd a = (Eigen::Matrix3Xd(3, 2) << 1, 1, 1, 0, 1, 0).finished();
   Eigen::Matrix3Xd unit = a;
   unit.colwise().normalize();
   const Eigen::VectorXd identity_pbar = pbar_at_viewpoints(Eigen::Matrix3d::Identity(), unit);
-  EXPECT_NEAR(identity_pbar(0), std::sqrt(2.0 / 3.0), 1e-12);
-  EXPECT_NEAR(identity_pbar(1), 1.0, 1e-12);
+  EXPECT_NEAR(identity_pbar(0), std::sqrt(2.0 / 3.0), kRounding);
+  EXPECT_NEAR(identity_pbar(1), 1.0, kRounding);
   EXPECT_THROW(pbar_at_viewpoints(Eigen::Matrix3Xd(3, 0), unit), InvalidArgument);
   EXPECT_THROW(pbar_at_viewpoints(Eigen::Matrix3d::Identity(), a), InvalidArgument);
 }
@@ -137,14 +143,14 @@ TEST(ErrorBounds, WorstErrorAtAViewpointIsArccosPbar) {
 TEST(ErrorBounds, KnownValuesAndEdges) {
   EXPECT_EQ(scale_error_angle(1.0, 0.7), 0.0) << "exact scale: no error";
   // beta p = 1 puts v_e in the image plane: the error is v's elevation, acos(p).
-  EXPECT_NEAR(scale_error_angle(2.0, 0.5), std::acos(0.5), 1e-12);
+  EXPECT_NEAR(scale_error_angle(2.0, 0.5), std::acos(0.5), kRounding);
   EXPECT_EQ(lub_scale_error_angle(0.0, 0.0), 0.0) << "all vectors along the axis";
-  EXPECT_NEAR(lub_scale_error_angle(0.5, 1.0), 0.0, 1e-12) << "p-bar = 1: no error (Fig. 1)";
+  EXPECT_NEAR(lub_scale_error_angle(0.5, 1.0), 0.0, kRounding) << "p-bar = 1: no error (Fig. 1)";
   // Z = I at (1, 1, 1)/sqrt(3): every p_i = p-bar = sqrt(2/3), error acos(p-bar).
   const Eigen::VectorXd e =
       worst_case_errors_deg(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Ones().normalized());
   for (int i = 0; i < 3; ++i)
-    EXPECT_NEAR(e(i), kDegreesPerRadian * std::acos(std::sqrt(2.0 / 3.0)), 1e-9);
+    EXPECT_NEAR(e(i), kDegreesPerRadian * std::acos(std::sqrt(2.0 / 3.0)), kDegreesRounding);
   EXPECT_THROW(scale_error_angle(2.0, 0.9), InvalidArgument);
   EXPECT_THROW(scale_error_angle(-1.0, 0.5), InvalidArgument);
   EXPECT_THROW(scale_error_angle(1.0, 1.5), InvalidArgument);

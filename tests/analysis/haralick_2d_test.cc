@@ -25,6 +25,18 @@ constexpr double kNoiseFreeResidual = 1e-20;
 // The closed form is the exact minimiser, so no scanned angle may beat it beyond rounding.
 constexpr double kResidualRounding = 1e-12;
 
+// A zero weight, or all weights scaled, leaves the same least-squares problem: the angle agrees to
+// the rounding of a few weighted sums.
+constexpr double kSameProblemRadians = 1e-14;
+// ... and the translation (unit-size coordinates) to the rounding of the rotated centroid.
+constexpr double kSameProblemTranslation = 1e-13;
+// ... and the residual to the rounding of its weighted sum.
+constexpr double kSameProblemResidual = 1e-14;
+// The residual with every weight scaled by 7 is 7 times the residual: rounding of the larger sum.
+constexpr double kScaledResidual = 1e-12;
+// The translation maps the centroid onto the centroid: rounding of unit-size coordinates.
+constexpr double kCentroidRounding = 1e-12;
+
 /// Signed difference a - b wrapped into [-pi, pi].
 double angle_difference(double a, double b) { return std::remainder(a - b, 2.0 * kPi); }
 
@@ -152,14 +164,14 @@ TEST(Pose2d, ZeroWeightIgnoresAPointAndScaledWeightsChangeNothing) {
   w(5) = 0.0;
   const Pose2dResult weighted = pose_2d(from, to, w);
   const Pose2dResult dropped = pose_2d(from.leftCols(5), to.leftCols(5), w.head(5));
-  EXPECT_NEAR(weighted.theta, dropped.theta, 1e-14);
-  EXPECT_EIGEN_NEAR(weighted.t_to_from, dropped.t_to_from, 1e-13);
-  EXPECT_NEAR(weighted.residual, dropped.residual, 1e-14);
+  EXPECT_NEAR(weighted.theta, dropped.theta, kSameProblemRadians);
+  EXPECT_EIGEN_NEAR(weighted.t_to_from, dropped.t_to_from, kSameProblemTranslation);
+  EXPECT_NEAR(weighted.residual, dropped.residual, kSameProblemResidual);
 
   const Pose2dResult scaled = pose_2d(from, to, 7.0 * w);
-  EXPECT_NEAR(scaled.theta, weighted.theta, 1e-14);
-  EXPECT_EIGEN_NEAR(scaled.t_to_from, weighted.t_to_from, 1e-13);
-  EXPECT_NEAR(scaled.residual, 7.0 * weighted.residual, 1e-12);
+  EXPECT_NEAR(scaled.theta, weighted.theta, kSameProblemRadians);
+  EXPECT_EIGEN_NEAR(scaled.t_to_from, weighted.t_to_from, kSameProblemTranslation);
+  EXPECT_NEAR(scaled.residual, 7.0 * weighted.residual, kScaledResidual);
 }
 
 TEST(Pose2d, CoincidentPointsAreDegenerate) {
@@ -170,12 +182,13 @@ TEST(Pose2d, CoincidentPointsAreDegenerate) {
   EXPECT_EQ(result.status, Pose2dStatus::kDegenerate);
   EXPECT_FALSE(result.message.empty());
   // Whatever the angle, the translation maps the centroid onto the centroid.
-  EXPECT_EIGEN_NEAR(result.R_to_from * from.col(0) + result.t_to_from, to.col(0), 1e-12);
+  EXPECT_EIGEN_NEAR(result.R_to_from * from.col(0) + result.t_to_from, to.col(0),
+                    kCentroidRounding);
 
   const Pose2dResult single = pose_2d(from.leftCols(1), to.leftCols(1));
   EXPECT_EQ(single.status, Pose2dStatus::kDegenerate);
   EXPECT_EQ(single.theta, 0.0);
-  EXPECT_EIGEN_NEAR(single.t_to_from, to.col(0) - from.col(0), 1e-12);
+  EXPECT_EIGEN_NEAR(single.t_to_from, to.col(0) - from.col(0), kCentroidRounding);
 }
 
 TEST(Pose2d, BadInputThrowsNamingTheArgument) {

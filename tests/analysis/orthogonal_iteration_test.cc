@@ -33,6 +33,15 @@ constexpr double kImageNoise = 1e-3;
 constexpr double kNoisyRadians = 2e-2;
 constexpr double kNoisyTranslation = 0.1;  // object units, mostly along the line of sight
 
+// The object-space error recomputed here from its definition: rounding of six small squared norms.
+constexpr double kObjectSpaceRounding = 1e-15;
+// An iteration never raises the objective beyond the relative rounding of its evaluation.
+constexpr double kObjectiveRelative = 1e-12;
+// All weights scaled by 7 scale the objective by 7: the two runs stop at their own tolerances.
+constexpr double kScaledObjectiveRelative = 1e-9;
+// A noise-free objective is rounding itself, below the stopping level kTightAbsolute.
+constexpr double kObjectiveFloor = 1e-24;
+
 /// A random perspective scene: n object points in [-1, 1]^3, a random rotation, the object's
 /// origin at depth 4-8 with a small lateral offset, so every point is in front of the camera.
 struct Scene {
@@ -133,7 +142,7 @@ TEST_P(EveryStep, ErrorNeverIncreases) {
     const OrthogonalIterationResult result =
         orthogonal_iteration_pose(s.model, s.image, {}, options);
     EXPECT_EQ(result.iterations, k);
-    EXPECT_LE(result.objective, previous * (1.0 + 1e-12)) << "step " << k;
+    EXPECT_LE(result.objective, previous * (1.0 + kObjectiveRelative)) << "step " << k;
     previous = result.objective;
   }
 }
@@ -182,7 +191,8 @@ TEST(OrthogonalIteration, FoamAndSvdStepsConvergeToTheSamePose) {
               kStepAgreementRadians)
         << "trial " << trial;
     EXPECT_EIGEN_NEAR(foam.p_camera_object, svd.p_camera_object, kStepAgreementTranslation);
-    EXPECT_NEAR(foam.objective, svd.objective, 1e-12 * svd.objective + 1e-24);
+    EXPECT_NEAR(foam.objective, svd.objective,
+                kObjectiveRelative * svd.objective + kObjectiveFloor);
   }
 }
 
@@ -208,7 +218,7 @@ TEST(OrthogonalIteration, WeightsAreRelative) {
   const OrthogonalIterationResult b =
       orthogonal_iteration_pose(s.model, s.image, Eigen::VectorXd(7.0 * w), options);
   EXPECT_LT(rotation_angle_between(a.R_camera_object, b.R_camera_object), kStepAgreementRadians);
-  EXPECT_NEAR(b.objective, 7.0 * a.objective, 1e-9 * b.objective);
+  EXPECT_NEAR(b.objective, 7.0 * a.objective, kScaledObjectiveRelative * b.objective);
 }
 
 TEST(OrthogonalIteration, DownweightedOutlierIsIgnored) {
@@ -235,7 +245,8 @@ TEST(OrthogonalIteration, ObjectSpaceErrorMatchesDefinition) {
     expected +=
         w(i) * ((Eigen::Matrix3d::Identity() - V) * (s.R * s.model.col(i) + s.p)).squaredNorm();
   }
-  EXPECT_NEAR(object_space_error(s.model, s.image, s.R, s.p, w, normalised()), expected, 1e-15);
+  EXPECT_NEAR(object_space_error(s.model, s.image, s.R, s.p, w, normalised()), expected,
+              kObjectSpaceRounding);
 }
 
 TEST(OrthogonalIteration, WeakPerspectiveStartIsExactForDistantIsotropicObjects) {

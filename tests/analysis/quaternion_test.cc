@@ -19,7 +19,17 @@ using testing::kSeed;
 
 // Eigen-solver agreement: the fast path and Eigen's solver differ by rounding only.
 constexpr double kEigenTolerance = 1e-10;
+// A rotation through its quaternion and back: rounding of products of unit-size entries.
 constexpr double kExact = 1e-14;
+
+// K is built symmetric, and from a zero vector it is zero: no rounding at all.
+constexpr double kIdentical = 0.0;
+// K is linear in v: a combination with coefficients 2 and -3 of unit-size entries, rounded.
+constexpr double kBilinearRounding = 1e-13;
+// The fallback's eigen-equation residual: the eigensolver's accuracy on a unit-size matrix.
+constexpr double kFallbackEigenvector = 1e-9;
+// The top eigenvalues 2 and 2 + 1e-9 of Q diag Q^T, Q orthogonal: rounding of unit-size entries.
+constexpr double kGapRounding = 1e-12;
 
 TEST(QuaternionK, IsSymmetricAndBilinear) {
   std::mt19937 rng(kSeed);
@@ -28,10 +38,11 @@ TEST(QuaternionK, IsSymmetricAndBilinear) {
     const Eigen::Vector3d v2 = testing::random_points(rng, 1).col(0);
     const Eigen::Vector3d z = testing::random_points(rng, 1).col(0);
     const Eigen::Matrix4d K = quaternion_k(v1, z);
-    EXPECT_EIGEN_NEAR(K, K.transpose(), 0.0);
+    EXPECT_EIGEN_NEAR(K, K.transpose(), kIdentical);
     EXPECT_EIGEN_NEAR(quaternion_k(2.0 * v1 - 3.0 * v2, z),
-                      2.0 * quaternion_k(v1, z) - 3.0 * quaternion_k(v2, z), 1e-13);
-    EXPECT_EIGEN_NEAR(quaternion_k(v1, Eigen::Vector3d::Zero()), Eigen::Matrix4d::Zero(), 0.0);
+                      2.0 * quaternion_k(v1, z) - 3.0 * quaternion_k(v2, z), kBilinearRounding);
+    EXPECT_EIGEN_NEAR(quaternion_k(v1, Eigen::Vector3d::Zero()), Eigen::Matrix4d::Zero(),
+                      kIdentical);
   }
 }
 
@@ -43,7 +54,7 @@ TEST(QuaternionK, QuadraticFormIsCorrelationShiftedByDotProduct) {
     const Eigen::Vector3d z = testing::random_points(rng, 1).col(0);
     const Eigen::Matrix3d R = testing::random_rotation(rng);
     const Eigen::Vector4d eps = quaternion_from_rotation(R);
-    EXPECT_NEAR(eps.dot(quaternion_k(v, z) * eps), v.dot(R * z) - v.dot(z), 1e-13);
+    EXPECT_NEAR(eps.dot(quaternion_k(v, z) * eps), v.dot(R * z) - v.dot(z), kBilinearRounding);
   }
 }
 
@@ -55,8 +66,8 @@ TEST(RotationFromQuaternion, MatchesEigenAndIsRotation) {
     EXPECT_GE(eps(3), 0.0);
     EXPECT_NEAR(eps.norm(), 1.0, kExact);
     EXPECT_THAT(rotation_from_quaternion(eps), IsRotation());
-    EXPECT_EIGEN_NEAR(rotation_from_quaternion(eps), R, 1e-14);
-    EXPECT_EIGEN_NEAR(rotation_from_quaternion(-eps), R, 1e-14);
+    EXPECT_EIGEN_NEAR(rotation_from_quaternion(eps), R, kExact);
+    EXPECT_EIGEN_NEAR(rotation_from_quaternion(-eps), R, kExact);
   }
 }
 
@@ -72,7 +83,7 @@ TEST(RotationFromQuaternion, HalfTurnRoundTrips) {
                                   Eigen::Vector3d(1, 1, 1).normalized()};
   for (const Eigen::Vector3d& axis : axes) {
     const Eigen::Matrix3d R = Eigen::AngleAxisd(kPi, axis).toRotationMatrix();
-    EXPECT_EIGEN_NEAR(rotation_from_quaternion(quaternion_from_rotation(R)), R, 1e-14);
+    EXPECT_EIGEN_NEAR(rotation_from_quaternion(quaternion_from_rotation(R)), R, kExact);
   }
 }
 
@@ -94,7 +105,7 @@ TEST(TopEigenpair, FastPathAgreesWithFullSolver) {
     EXPECT_NEAR(got.lambda, reference.eigenvalues()(3), kEigenTolerance);
     EXPECT_NEAR(got.gap, reference.eigenvalues()(3) - reference.eigenvalues()(2), kEigenTolerance);
     EXPECT_THAT(got.vector, IsNearQuaternion(reference.eigenvectors().col(3), 1e-9));
-    EXPECT_EIGEN_NEAR(D * got.vector, got.lambda * got.vector, 1e-9);
+    EXPECT_EIGEN_NEAR(D * got.vector, got.lambda * got.vector, kFallbackEigenvector);
     fast += got.used_fallback ? 0 : 1;
   }
   EXPECT_GT(fast, 190);  // random matrices almost never have a near-double top eigenvalue
@@ -108,8 +119,8 @@ TEST(TopEigenpair, FallsBackWhenTopEigenvaluesNearlyCoincide) {
   const Eigen::Matrix4d D = Q * eigenvalues.asDiagonal() * Q.transpose();
   const TopEigenpair got = top_eigenpair(D);
   EXPECT_TRUE(got.used_fallback);
-  EXPECT_NEAR(got.gap, 1e-9, 1e-12);
-  EXPECT_NEAR(got.lambda, 2.0 + 1e-9, 1e-12);
+  EXPECT_NEAR(got.gap, 1e-9, kGapRounding);
+  EXPECT_NEAR(got.lambda, 2.0 + 1e-9, kGapRounding);
 }
 
 TEST(TopEigenpair, HandlesMultiplesOfIdentityAndZero) {

@@ -68,7 +68,7 @@ TEST(SwapSensitivity, WellDeterminedSwapsLeaveTheRotation) {
       const OrientationResult direct = absolute_orientation(z, v);
       EXPECT_NEAR(rotation_angle_between(direct.R_camera_object, Eigen::Matrix3d::Identity()) *
                       kDegreesPerRadian,
-                  s.error_deg, 1e-6);
+                  s.error_deg, kDegrees);
     }
   }
   EXPECT_GT(unchanged, 0);

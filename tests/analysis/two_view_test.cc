@@ -33,6 +33,12 @@ constexpr double kImageNoise = 1e-4;
 constexpr double kNoisyRadians = 1e-2;
 constexpr double kNoisyDirectionRadians = 5e-2;
 
+// The translation direction and the essential matrix's singular values, constraint and product form
+// are normalised unit-size quantities: rounding.
+constexpr double kUnitRounding = 1e-12;
+// Noise-free: the eight-point matrix's smallest singular value is rounding next to its second.
+constexpr double kNoiseFreeNullSpace = 1e-9;
+
 /// Two views of n random points: camera 1 sees them at depths 3-7 in a +-1.5 box; camera 2 is
 /// displaced by a random T (length 0.5-1.5) and rotated by up to 0.6 rad. Points that would be
 /// behind camera 2 are redrawn, so every point is in front of both cameras.
@@ -87,11 +93,11 @@ TEST(TwoView, NoiseFreeViewsReturnTheMotion) {
     EXPECT_THAT(result.R_camera2_camera1, IsRotationWithin(kRotationRounding));
     EXPECT_LT(rotation_angle_between(result.R_camera2_camera1, v.R), kNoiseFreeRadians)
         << "trial " << trial;
-    EXPECT_NEAR(result.t_camera2_camera1.norm(), 1.0, 1e-12);
+    EXPECT_NEAR(result.t_camera2_camera1.norm(), 1.0, kUnitRounding);
     EXPECT_EIGEN_NEAR(result.t_camera2_camera1, v.T.normalized(), kNoiseFreeDirection);
     EXPECT_EQ(result.points_in_front, n);
     EXPECT_LT(result.residual, kNoiseFreeResidual);
-    EXPECT_LT(result.null_space_ratio, 1e-9);
+    EXPECT_LT(result.null_space_ratio, kNoiseFreeNullSpace);
     EXPECT_TRUE(result.message.empty());
   }
 }
@@ -132,11 +138,11 @@ TEST(TwoView, EssentialMatrixIsRankTwoAndConsistent) {
   const TwoViews v = random_views(rng, 15, kImageNoise);
   const TwoViewResult result = two_view_pose(v.image1, v.image2);
   const Eigen::JacobiSVD<Eigen::Matrix3d> svd(result.essential);
-  EXPECT_EIGEN_NEAR(svd.singularValues(), Eigen::Vector3d(1.0, 1.0, 0.0), 1e-12);
+  EXPECT_EIGEN_NEAR(svd.singularValues(), Eigen::Vector3d(1.0, 1.0, 0.0), kUnitRounding);
   EXPECT_EIGEN_NEAR(result.essential, hat(result.t_camera2_camera1) * result.R_camera2_camera1,
-                    1e-12);
+                    kUnitRounding);
   EXPECT_EIGEN_NEAR(result.essential.transpose() * result.t_camera2_camera1,
-                    Eigen::Vector3d::Zero(), 1e-12);
+                    Eigen::Vector3d::Zero(), kUnitRounding);
   EXPECT_THAT(result.R_camera2_camera1, IsRotationWithin(kRotationRounding));
 }
 

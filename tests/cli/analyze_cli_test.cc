@@ -19,6 +19,13 @@ using testing::ScratchDir;
 // 1e-9. Here: the paper's printed values (three decimals) and exact closed forms.
 constexpr double kClosedForm = 1e-9;
 constexpr double kPrinted = 5e-4;
+// The default certificate tolerance: certified means t_upper - t_lower <= it.
+constexpr double kCertificateTolerance = 1e-9;
+
+// The paper's single LMI is solved by CSDP, accurate to ~1e-8 relative.
+constexpr double kSdpAccuracy = 1e-6;
+// sqrt(2 pi / N) evaluated twice: an ulp or two.
+constexpr double kRounding = 1e-12;
 const double kTriadPbar = std::sqrt(2.0 / 3.0);
 
 std::string layout(const char* name) {
@@ -45,12 +52,12 @@ TEST(AnalyzeCli, TriadHasFourWorstViewpointsAndTheContractFields) {
   EXPECT_EQ(json["worst_case_errors_deg"].size(), 3u);
   EXPECT_LE(
       json["certificate"]["t_upper"].get<double>() - json["certificate"]["t_lower"].get<double>(),
-      1e-9);
+      kCertificateTolerance);
   EXPECT_TRUE(json["crosscheck"]["agrees"].get<bool>());
   EXPECT_EQ(json["solver"]["backend"], "csdp");
   EXPECT_EQ(json["solver"]["status"], "certified");
   EXPECT_EQ(json["swaps"].size(), 3u);  // all pairs of three vectors
-  EXPECT_NEAR(json["paper_lmi"]["pbar"].get<double>(), kTriadPbar, 1e-6);
+  EXPECT_NEAR(json["paper_lmi"]["pbar"].get<double>(), kTriadPbar, kSdpAccuracy);
 }
 
 TEST(AnalyzeCli, CrossCheckSaysWhetherItsSamplesCoverTheCells) {
@@ -61,7 +68,7 @@ TEST(AnalyzeCli, CrossCheckSaysWhetherItsSamplesCoverTheCells) {
   const auto triad = analyze_json(layout("triad"), scratch)["crosscheck"];
   EXPECT_TRUE(triad["samples_cover_cells"].get<bool>());
   EXPECT_EQ(triad["samples"], 20000);
-  EXPECT_NEAR(triad["sample_spacing_rad"].get<double>(), std::sqrt(2.0 * M_PI / 20000), 1e-12);
+  EXPECT_NEAR(triad["sample_spacing_rad"].get<double>(), std::sqrt(2.0 * M_PI / 20000), kRounding);
   std::mt19937 rng(20261126);
   std::normal_distribution<double> gauss;
   nlohmann::json many;
@@ -92,7 +99,7 @@ TEST(AnalyzeCli, PointModeUsesFreeVectors) {
   EXPECT_EQ(json["swaps"].size(), 3u);
   EXPECT_TRUE(json["swaps"][0].contains("pair_i"));
   EXPECT_LE(json["pbar_min"].get<double>(), json["ceiling"].get<double>());
-  EXPECT_GE(json["paper_lmi"]["pbar"].get<double>(), json["pbar_min"].get<double>() - 1e-6);
+  EXPECT_GE(json["paper_lmi"]["pbar"].get<double>(), json["pbar_min"].get<double>() - kSdpAccuracy);
 }
 
 TEST(AnalyzeCli, CoplanarFanReachesItsCeiling) {

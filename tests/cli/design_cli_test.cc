@@ -29,6 +29,11 @@ constexpr double kSameLayout = 1e-9;
 // Adding data never lowers p-bar_min; the values come from independent certified solves.
 constexpr double kMonotone = 1e-9;
 
+// cos(pi / (2 m)) computed twice: an ulp of a number below 1.
+constexpr double kCosRounding = 1e-15;
+// arccos of p-bars kSameLayout apart, in degrees: 57 x 1e-9 / sin(theta), far below this.
+constexpr double kSameLayoutDeg = 1e-6;
+
 using testing::run_json;
 
 double ceiling(int m) { return std::cos(kPi / (2.0 * m)); }
@@ -56,7 +61,7 @@ void expect_contract(const nlohmann::json& json, int add) {
     EXPECT_GE(pbar, previous - kMonotone) << "a greedy step lowered p-bar_min";
     EXPECT_LE(pbar, step["ceiling"].get<double>() + kMonotone)
         << "above the ceiling (docs/math.md §15)";
-    EXPECT_NEAR(step["ceiling"].get<double>(), ceiling(step["n_vectors"].get<int>()), 1e-15);
+    EXPECT_NEAR(step["ceiling"].get<double>(), ceiling(step["n_vectors"].get<int>()), kCosRounding);
     EXPECT_EQ(step["added"].size(), 3u);
     EXPECT_GE(step["worst_viewpoints"].size(), 1u);
     previous = pbar;
@@ -92,7 +97,7 @@ TEST(DesignCli, CoplanarFanStartsAtItsCeilingAndIsFlagged) {
   EXPECT_FALSE(json.contains("direct"));
   // Three coplanar vectors 60 degrees apart reach cos(pi/6), the ceiling for m = 3.
   EXPECT_NEAR(json["initial"]["pbar_min"].get<double>(), ceiling(3), kSameLayout);
-  EXPECT_NEAR(json["initial"]["ceiling"].get<double>(), ceiling(3), 1e-15);
+  EXPECT_NEAR(json["initial"]["ceiling"].get<double>(), ceiling(3), kCosRounding);
   EXPECT_LT(json["coplanarity"]["initial"].get<double>(), 1e-12);
   // The augmenter leaves the plane: the ambiguity measure rises off zero.
   EXPECT_GT(json["coplanarity"]["final"].get<double>(), 0.1);
@@ -139,7 +144,7 @@ TEST(DesignCli, WrittenLayoutReanalysesToEveryReportedStep) {
   EXPECT_NEAR(again_one["initial"]["pbar_min"].get<double>(),
               two["steps"][0]["pbar_min"].get<double>(), kSameLayout);
   EXPECT_NEAR(again_two["initial"]["max_worst_case_error_deg"].get<double>(),
-              two["steps"][1]["max_worst_case_error_deg"].get<double>(), 1e-6);
+              two["steps"][1]["max_worst_case_error_deg"].get<double>(), kSameLayoutDeg);
 }
 
 TEST(DesignCli, CandidatesOnlyPicksACandidateAndWritesItAsAMarker) {

@@ -24,6 +24,9 @@ constexpr double kCoordinate = 1e-12;
 // The same layout read from two formats gives the same analysis up to the solver's rounding.
 constexpr double kSameAnalysis = 1e-12;
 
+// The global search certifies t, and so the viewpoint and p-bar, to 1e-9.
+constexpr double kCertified = 1e-9;
+
 const std::string kLayouts = std::string(VANTAGE_SOURCE_DIR) + "/examples/layouts/";
 
 nlohmann::json points_of(const ScratchDir& scratch, const std::string& name) {
@@ -93,7 +96,7 @@ TEST(LayoutBoardCli, BoardIsAnalysedAsACoplanarLayout) {
   EXPECT_EQ(json["n_vectors"], 15);  // 6 corners -> 15 free vectors
   // All free vectors lie in z = 0, so the viewpoint along the board's normal sees them whole
   // and the worst viewpoint lies in the board's plane.
-  EXPECT_NEAR(json["worst_viewpoint"][2].get<double>(), 0.0, 1e-9);
+  EXPECT_NEAR(json["worst_viewpoint"][2].get<double>(), 0.0, kCertified);
 }
 
 const BadCall kBadBoards[] = {
@@ -159,7 +162,7 @@ TEST(LayoutFormatsCli, AprilTagBundleAnalysesItsCornersOrCentres) {
   EXPECT_EQ(centres["n_vectors"], 3);
   // The three centres are (0.05, 0, 0), (0, 0.05, 0), (0, 0, 0.05): their free vectors are
   // the coplanar fan of three directions 60 degrees apart, whose worst case is p-bar = 0.866.
-  EXPECT_NEAR(centres["pbar_min"].get<double>(), std::sqrt(3.0) / 2, 1e-9);
+  EXPECT_NEAR(centres["pbar_min"].get<double>(), std::sqrt(3.0) / 2, kCertified);
 }
 
 TEST(LayoutFormatsCli, FormatOverridesTheExtension) {

@@ -19,6 +19,15 @@ constexpr double kCertified = 1e-9;
 // A coplanar design reaches its ceiling up to the compass search's stopping step (1e-7 rad),
 // which moves p-bar by at most ~1e-7.
 constexpr double kCeilingReach = 1e-6;
+
+// The augmenter copies its input and candidate vectors: bit for bit.
+constexpr double kExact = 0.0;
+// cos(pi / (2 m)) computed twice, or against a 16-digit literal: an ulp of a number below 1.
+constexpr double kCosRounding = 1e-15;
+// A closed-form level or an SVD of a few unit vectors: tens of ulps of O(1) values.
+constexpr double kRounding = 1e-12;
+// The compass search stops at a step of 1e-7 rad (see kCeilingReach), 6e-6 degrees.
+constexpr double kCompassAngleDeg = 1e-4;
 const double kTriadPbar = std::sqrt(2.0 / 3.0);  // docs/math.md §12: 0.8165
 
 Layout direction_layout(const Eigen::Matrix3Xd& vectors) {
@@ -57,9 +66,9 @@ void expect_agrees_with_fresh_analysis(const AugmentResult& r, const Layout& inp
     const sdp::WorstViewpoint fresh = sdp::global_worst_viewpoint(data_vectors(partial).vectors);
     EXPECT_NEAR(r.steps[s].worst.pbar_min, fresh.pbar_min, kCertified) << "step " << s + 1;
     EXPECT_EQ(r.steps[s].vector_count, data_vectors(partial).vectors.cols());
-    EXPECT_NEAR(r.steps[s].ceiling, std::cos(kPi / (2.0 * r.steps[s].vector_count)), 1e-15);
+    EXPECT_NEAR(r.steps[s].ceiling, std::cos(kPi / (2.0 * r.steps[s].vector_count)), kCosRounding);
   }
-  EXPECT_EIGEN_NEAR(r.augmented.entries, partial.entries, 0.0);
+  EXPECT_EIGEN_NEAR(r.augmented.entries, partial.entries, kExact);
   const sdp::WorstViewpoint final_fresh =
       sdp::global_worst_viewpoint(data_vectors(r.augmented).vectors);
   EXPECT_NEAR(r.final_pbar_min, final_fresh.pbar_min, kCertified);
@@ -86,7 +95,7 @@ TEST(Augment, TriadPlusOneVectorNeverExceedsItsValue) {
   EXPECT_LE(st.worst.pbar_min, kTriadPbar + kCertified);
   EXPECT_FALSE(st.improved);
   EXPECT_FALSE(st.single_vector_can_improve);
-  EXPECT_NEAR(st.best_kill_level, 1.0 / std::sqrt(3.0), 1e-12);
+  EXPECT_NEAR(st.best_kill_level, 1.0 / std::sqrt(3.0), kRounding);
   EXPECT_NE(st.note.find("no single vector can raise"), std::string::npos) << st.note;
   // The tie-break keeps the fewest worst viewpoints: (1,1,-1)/sqrt(3) kills three of four.
   EXPECT_EQ(st.worst.worst_viewpoints.size(), 1u);
@@ -112,11 +121,12 @@ TEST(Augment, CoplanarStartReachesItsCeiling) {
   const AugmentResult r = augment_layout(three, greedy_only(1));
   ASSERT_EQ(r.steps.size(), 1u);
   EXPECT_TRUE(r.initial_coplanarity.nearly_coplanar);
-  EXPECT_NEAR(r.initial_coplanarity.smallest_singular_value, 0.0, 1e-12);
+  EXPECT_NEAR(r.initial_coplanarity.smallest_singular_value, 0.0, kRounding);
   EXPECT_NEAR(r.steps[0].worst.pbar_min, pbar_ceiling(4), kCeilingReach);
   EXPECT_NEAR(std::abs(r.steps[0].added.dot(Eigen::Vector3d(-1, 1, 0).normalized())), 1.0,
               kCeilingReach);
-  EXPECT_NEAR(r.steps[0].angle_from_worst_plane_deg, 0.0, 1e-4) << "the paper's a^perp rule";
+  EXPECT_NEAR(r.steps[0].angle_from_worst_plane_deg, 0.0, kCompassAngleDeg)
+      << "the paper's a^perp rule";
   EXPECT_TRUE(r.final_coplanarity.nearly_coplanar) << "the two-fold ambiguity is reported";
   expect_agrees_with_fresh_analysis(r, three);
 
@@ -184,7 +194,7 @@ TEST(Augment, CandidatesOnlyChoosesAmongCandidates) {
   EXPECT_NE(r.steps[0].candidate_index, r.steps[1].candidate_index) << "each used once";
   for (const AugmentStep& st : r.steps) {
     ASSERT_GE(st.candidate_index, 0);
-    EXPECT_EIGEN_NEAR(st.added, Eigen::Vector3d(layout.candidates.col(st.candidate_index)), 0.0);
+    EXPECT_EIGEN_NEAR(st.added, Eigen::Vector3d(layout.candidates.col(st.candidate_index)), kExact);
   }
   expect_never_lowers(r);
   expect_agrees_with_fresh_analysis(r, layout);
@@ -218,12 +228,12 @@ TEST(Augment, PointModeSearchesTheGrownBox) {
 
 TEST(Augment, CoplanarityAndCeiling) {
   EXPECT_NEAR(coplanarity(Eigen::Matrix3d::Identity()).smallest_singular_value,
-              1.0 / std::sqrt(3.0), 1e-12);
+              1.0 / std::sqrt(3.0), kRounding);
   const Coplanarity fan = coplanarity(planar({0.0, 60.0, 120.0}));
   EXPECT_TRUE(fan.nearly_coplanar);
-  EXPECT_NEAR(std::abs(fan.normal.z()), 1.0, 1e-12);
-  EXPECT_NEAR(pbar_ceiling(3), std::sqrt(3.0) / 2.0, 1e-15);
-  EXPECT_NEAR(pbar_ceiling(4), 0.9238795325112867, 1e-15);
+  EXPECT_NEAR(std::abs(fan.normal.z()), 1.0, kRounding);
+  EXPECT_NEAR(pbar_ceiling(3), std::sqrt(3.0) / 2.0, kCosRounding);
+  EXPECT_NEAR(pbar_ceiling(4), 0.9238795325112867, kCosRounding);
   EXPECT_THROW(pbar_ceiling(0), InvalidArgument);
 }
 

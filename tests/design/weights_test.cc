@@ -23,13 +23,24 @@ constexpr double kLpTolerance = 1e-6;
 // Sum of weights equals n up to rounding.
 constexpr double kSumTolerance = 1e-9;
 
+// A suggested entry is the negated sum or partner of exact inputs: no rounding.
+constexpr double kExact = 0.0;
+// The reported residual is the same norm recomputed here: rounding of a norm of O(1e-15).
+constexpr double kResidualRecomputed = 1e-15;
+// The origin shift is a centroid of four exact points: rounding of a few sums.
+constexpr double kShiftRounding = 1e-12;
+// Sum of 100 000 weights equals n up to the rounding of the sum (~1e5 x eps x 1e5).
+constexpr double kLargeSumTolerance = 1e-6;
+// Eq. (11) on 100 000 entries: a few thousand ulps of the size of the terms summed.
+constexpr double kRelativeResidual = 1e-12;
+
 void expect_valid_weights(const Eigen::Matrix3Xd& z, const Weights& w) {
   ASSERT_TRUE(w.feasible) << w.message;
   ASSERT_EQ(w.weights.size(), z.cols());
   EXPECT_GE(w.weights.minCoeff(), 0.0);
   EXPECT_NEAR(w.weights.sum(), static_cast<double>(z.cols()), kSumTolerance);
   EXPECT_LE((z * w.weights).norm(), kNullSpaceTolerance);
-  EXPECT_NEAR(w.residual, (z * w.weights).norm(), 1e-15);
+  EXPECT_NEAR(w.residual, (z * w.weights).norm(), kResidualRecomputed);
   EXPECT_DOUBLE_EQ(w.min_weight, w.weights.minCoeff());
 }
 
@@ -124,7 +135,7 @@ TEST(NullspaceWeights, OriginOutsideHullIsInfeasibleAndPartnerFixVerified) {
   ASSERT_NE(partner, nullptr);
   const WeightsSuggestion& s = *partner;
   ASSERT_GE(s.index, 0);
-  EXPECT_EIGEN_NEAR(s.added, Eigen::Vector3d(-z.col(s.index)), 0.0);
+  EXPECT_EIGEN_NEAR(s.added, Eigen::Vector3d(-z.col(s.index)), kExact);
   Eigen::Matrix3Xd fixed(3, 5);
   fixed << z, s.added;
   const Weights again = nullspace_weights(fixed);
@@ -153,7 +164,7 @@ TEST(NullspaceWeights, PointsOnAPlaneMissingTheOriginAreInfeasibleAndShiftFixes)
   for (const WeightsSuggestion& s : w.suggestions) {
     if (s.kind != WeightsSuggestion::Kind::kShiftOrigin) continue;
     have_shift = true;
-    EXPECT_EIGEN_NEAR(s.shift, Eigen::Vector3d(0.5, 0.5, 2.0), 1e-12);
+    EXPECT_EIGEN_NEAR(s.shift, Eigen::Vector3d(0.5, 0.5, 2.0), kShiftRounding);
     const Eigen::Matrix3Xd shifted = layout.entries.colwise() - s.shift;
     const Weights again = nullspace_weights(shifted);
     EXPECT_EQ(again.status, Weights::Status::kPositive);
@@ -182,7 +193,7 @@ TEST(NullspaceWeights, BalancingEntryAlwaysGivesStrictlyPositiveWeights) {
   ASSERT_FALSE(w.suggestions.empty());
   const WeightsSuggestion& best = w.suggestions.front();
   EXPECT_EQ(best.kind, WeightsSuggestion::Kind::kBalancingEntry);
-  EXPECT_EIGEN_NEAR(best.added, Eigen::Vector3d(-1, -1, -1), 0.0);
+  EXPECT_EIGEN_NEAR(best.added, Eigen::Vector3d(-1, -1, -1), kExact);
   EXPECT_NEAR(best.min_weight, 1.0, kLpTolerance);
   Eigen::Matrix3Xd fixed(3, 4);
   fixed << Eigen::Matrix3d::Identity(), best.added;
@@ -285,10 +296,10 @@ TEST(NullspaceWeights, HundredThousandEntriesInLinearMemory) {
   ASSERT_EQ(w.status, Weights::Status::kPositive) << w.message;
   ASSERT_EQ(w.weights.size(), kEntries);
   EXPECT_GE(w.weights.minCoeff(), 0.0);
-  EXPECT_NEAR(w.weights.sum(), kEntries, 1e-6);
+  EXPECT_NEAR(w.weights.sum(), kEntries, kLargeSumTolerance);
   // Eq. (11) relative to the size of the terms summed.
   const double terms = (z.colwise().norm().transpose().array() * w.weights.array()).sum();
-  EXPECT_LE((z * w.weights).norm(), 1e-12 * terms);
+  EXPECT_LE((z * w.weights).norm(), kRelativeResidual * terms);
   // Optimality is checked independently where CSDP is quick: on the first 200 entries.
   const Eigen::Matrix3Xd head = z.leftCols(200);
   WeightsOptions csdp;

@@ -17,6 +17,15 @@ using ::testing::Not;
 // Corners are rotations and shifts of exact decimal offsets: a few ulps of the inputs.
 constexpr double kGeometryTolerance = 1e-14;
 
+// Decimal numbers are read with correct rounding: the file and this literal give the same double.
+constexpr double kExact = 0.0;
+// A corner is the centre (|p| ~ 3, normal draws) plus a rotated offset of at most 0.25: tens of
+// ulps of the centre.
+constexpr double kRotatedTagTolerance = 1e-13;
+// The cosine of two unit vectors is second order in their angle; what is left is the rounding of
+// two normalisations and a dot product, far below this.
+constexpr double kTurnTolerance = 1e-12;
+
 std::string bundle(const std::string& tags, const std::string& name = "b") {
   return "tag_bundles:\n  - name: " + name + "\n    layout:\n" + tags;
 }
@@ -113,7 +122,7 @@ TEST(AprilTagBundle, IdentityTagCornersAreHalfSizeOffsetsInApriltagRosOrder) {
   EXPECT_EQ(m.tag_ids[3], 7);
   EXPECT_EQ(m.tag_ids[4], 8);
   EXPECT_EQ(m.corners[6], 2);
-  EXPECT_EIGEN_NEAR(m.layout.weights, Eigen::VectorXd::Ones(8), 0.0);
+  EXPECT_EIGEN_NEAR(m.layout.weights, Eigen::VectorXd::Ones(8), kExact);
 }
 
 TEST(AprilTagBundle, RotatedTagsKeepTheirSizeAndLieInTheirPlane) {
@@ -133,16 +142,17 @@ TEST(AprilTagBundle, RotatedTagsKeepTheirSizeAndLieInTheirPlane) {
         "t.yaml");
     const Eigen::Matrix3d R = q.normalized().toRotationMatrix();
     const Eigen::Matrix3Xd corners = m.layout.entries.leftCols(4);
-    EXPECT_EIGEN_NEAR(corners.rowwise().mean(), p, 1e-13);
+    EXPECT_EIGEN_NEAR(corners.rowwise().mean(), p, kRotatedTagTolerance);
     for (int c = 0; c < 4; ++c) {
       const Eigen::Vector3d edge = corners.col((c + 1) % 4) - corners.col(c);
-      EXPECT_NEAR(edge.norm(), size, 1e-13) << trial;
-      EXPECT_NEAR(R.col(2).dot(corners.col(c) - p), 0.0, 1e-13) << trial;  // in the tag plane
+      EXPECT_NEAR(edge.norm(), size, kRotatedTagTolerance) << trial;
+      EXPECT_NEAR(R.col(2).dot(corners.col(c) - p), 0.0, kRotatedTagTolerance)
+          << trial;  // in the tag plane
     }
     // Counter-clockwise about the tag normal: (c1 - c0) x (c2 - c1) is along +z_tag.
     const Eigen::Vector3d turn =
         (corners.col(1) - corners.col(0)).cross(corners.col(2) - corners.col(1));
-    EXPECT_NEAR(turn.normalized().dot(R.col(2)), 1.0, 1e-12) << trial;
+    EXPECT_NEAR(turn.normalized().dot(R.col(2)), 1.0, kTurnTolerance) << trial;
   }
 }
 
@@ -154,7 +164,7 @@ TEST(AprilTagBundle, CentresModeGivesOneMarkerPerTagAtItsPosition) {
       options);
   Eigen::Matrix3Xd expected(3, 3);
   expected << 0, 1, 0, 0, 0, 2, 0, 0, 0.5;
-  EXPECT_EIGEN_NEAR(m.layout.entries, expected, 0.0);
+  EXPECT_EIGEN_NEAR(m.layout.entries, expected, kExact);
   EXPECT_EQ(m.corners[2], -1);
 }
 

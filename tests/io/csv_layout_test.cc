@@ -9,6 +9,9 @@
 namespace vantage::io {
 namespace {
 
+// Decimal numbers are read with correct rounding: the file and this literal give the same double.
+constexpr double kExact = 0.0;
+
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 using ::testing::Not;
@@ -72,8 +75,8 @@ TEST(CsvLayout, ReadsMarkersWithoutHeaderOrWeights) {
   EXPECT_THAT(m.names, ElementsAre("a", "b", "c"));
   Eigen::Matrix3Xd expected(3, 3);
   expected << 0, 1, 0, 0, 0, 2, 0, 0, 0.5;
-  EXPECT_EIGEN_NEAR(m.layout.entries, expected, 0.0);
-  EXPECT_EIGEN_NEAR(m.layout.weights, Eigen::VectorXd::Ones(3), 0.0);
+  EXPECT_EIGEN_NEAR(m.layout.entries, expected, kExact);
+  EXPECT_EIGEN_NEAR(m.layout.weights, Eigen::VectorXd::Ones(3), kExact);
   EXPECT_EQ(m.layout.candidates.cols(), 0);
 }
 
@@ -88,8 +91,8 @@ TEST(CsvLayout, HeaderCommentsBlanksQuotesCrlfAndBomAreTolerated) {
       "m3,0,1,0,1";
   const CsvMarkers m = parse_csv_markers(text, "t.csv");
   EXPECT_THAT(m.names, ElementsAre("m 1", "m2", "m3"));
-  EXPECT_EIGEN_NEAR(m.layout.entries.col(0), Eigen::Vector3d(1.5, -2, 0.3), 0.0);
-  EXPECT_EIGEN_NEAR(m.layout.weights, Eigen::Vector3d(2, 0.5, 1), 0.0);
+  EXPECT_EIGEN_NEAR(m.layout.entries.col(0), Eigen::Vector3d(1.5, -2, 0.3), kExact);
+  EXPECT_EIGEN_NEAR(m.layout.weights, Eigen::Vector3d(2, 0.5, 1), kExact);
 }
 
 TEST(CsvLayout, ErrorLinesCountCommentsAndBlanks) {

@@ -12,6 +12,11 @@
 namespace vantage::io {
 namespace {
 
+// Decimal numbers are read with correct rounding: the file and this literal give the same double.
+constexpr double kExact = 0.0;
+// A pair weight is one correctly rounded sqrt or mean of small integers: at most one ulp of 6.5.
+constexpr double kPairWeightTolerance = 1e-15;
+
 using ::testing::HasSubstr;
 using ::testing::Not;
 
@@ -115,7 +120,7 @@ TEST(LayoutFile, ParsesDirectionModeWithDefaults) {
   const Layout layout = parse_layout(R"({"vectors": [[1,0,0],[0,2,0],[0,0,3]]})", "t.json");
   EXPECT_EQ(layout.mode, LayoutMode::kVectors);
   EXPECT_EQ(layout.entries.cols(), 3);
-  EXPECT_EIGEN_NEAR(layout.weights, Eigen::VectorXd::Ones(3), 0.0);
+  EXPECT_EIGEN_NEAR(layout.weights, Eigen::VectorXd::Ones(3), kExact);
   EXPECT_EQ(layout.candidates.cols(), 0);
   EXPECT_EQ(layout.name, "");
 }
@@ -126,12 +131,12 @@ TEST(LayoutFile, PointModeExpandsToWeightedFreeVectors) {
   EXPECT_EQ(layout.mode, LayoutMode::kPoints);
   const DataVectors data = data_vectors(layout);
   ASSERT_EQ(data.vectors.cols(), 3);
-  EXPECT_EIGEN_NEAR(data.vectors.col(0), Eigen::Vector3d(1, 0, 0), 0.0);   // z1 - z0
-  EXPECT_EIGEN_NEAR(data.vectors.col(1), Eigen::Vector3d(0, 2, 0), 0.0);   // z2 - z0
-  EXPECT_EIGEN_NEAR(data.vectors.col(2), Eigen::Vector3d(-1, 2, 0), 0.0);  // z2 - z1
-  EXPECT_EIGEN_NEAR(data.weights, Eigen::Vector3d(2, 3, 6), 1e-15);        // sqrt(w_i w_j)
+  EXPECT_EIGEN_NEAR(data.vectors.col(0), Eigen::Vector3d(1, 0, 0), kExact);         // z1 - z0
+  EXPECT_EIGEN_NEAR(data.vectors.col(1), Eigen::Vector3d(0, 2, 0), kExact);         // z2 - z0
+  EXPECT_EIGEN_NEAR(data.vectors.col(2), Eigen::Vector3d(-1, 2, 0), kExact);        // z2 - z1
+  EXPECT_EIGEN_NEAR(data.weights, Eigen::Vector3d(2, 3, 6), kPairWeightTolerance);  // sqrt(w_i w_j)
   EXPECT_EIGEN_NEAR(data_vectors(layout, PairWeighting::kArithmeticMean).weights,
-                    Eigen::Vector3d(2.5, 5, 6.5), 1e-15);
+                    Eigen::Vector3d(2.5, 5, 6.5), kPairWeightTolerance);
   EXPECT_EQ(data.pairs[2], std::make_pair(1, 2));
 }
 
@@ -145,9 +150,9 @@ TEST(LayoutFile, RoundTripsThroughWrite) {
   EXPECT_EQ(again.name, "rt");
   EXPECT_EQ(again.description, "round trip");
   EXPECT_EQ(again.mode, LayoutMode::kPoints);
-  EXPECT_EIGEN_NEAR(again.entries, layout.entries, 0.0);
-  EXPECT_EIGEN_NEAR(again.weights, layout.weights, 0.0);
-  EXPECT_EIGEN_NEAR(again.candidates, layout.candidates, 0.0);
+  EXPECT_EIGEN_NEAR(again.entries, layout.entries, kExact);
+  EXPECT_EIGEN_NEAR(again.weights, layout.weights, kExact);
+  EXPECT_EIGEN_NEAR(again.candidates, layout.candidates, kExact);
 }
 
 // Found by the fuzzer: a name read from a YAML or CSV file need not be UTF-8; writing it as JSON
@@ -159,7 +164,7 @@ TEST(LayoutFile, NonUtf8NameIsWrittenAsReplacementCharacters) {
   ASSERT_NO_THROW(text = layout_to_json(layout));
   const Layout again = parse_layout(text, "again.json");
   EXPECT_EQ(again.name, "bad \xef\xbf\xbd( name");
-  EXPECT_EIGEN_NEAR(again.entries, layout.entries, 0.0);
+  EXPECT_EIGEN_NEAR(again.entries, layout.entries, kExact);
 }
 
 TEST(LayoutFile, CoincidenceIsScaleInvariant) {
@@ -229,7 +234,7 @@ TEST(LayoutFile, WriteRefusesToOverwriteUnlessTold) {
   write_layout(path, layout);
   EXPECT_THROW(write_layout(path, layout), InvalidArgument);
   EXPECT_NO_THROW(write_layout(path, layout, /*overwrite=*/true));
-  EXPECT_EIGEN_NEAR(read_layout(path).entries, layout.entries, 0.0);
+  EXPECT_EIGEN_NEAR(read_layout(path).entries, layout.entries, kExact);
   std::filesystem::remove(path);
 }
 

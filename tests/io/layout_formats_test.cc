@@ -17,6 +17,9 @@ const std::string kExamples = std::string(VANTAGE_SOURCE_DIR) + "/examples/layou
 // The cube's corners are rotations of exact decimal offsets by 7-digit quaternions.
 constexpr double kCubeTolerance = 1e-7;
 
+// Decimal numbers are read with correct rounding: the file and this literal give the same double.
+constexpr double kExact = 0.0;
+
 TEST(LayoutFormats, ExtensionChoosesTheFormat) {
   EXPECT_EQ(layout_format_of("a/b.json"), LayoutFormat::kJson);
   EXPECT_EQ(layout_format_of("b.CSV"), LayoutFormat::kCsv);
@@ -51,12 +54,12 @@ TEST(LayoutFormats, CsvExampleMatchesTheJsonItStandsFor) {
   const Layout csv = load_layout(kExamples + "mocap_rigid_body.csv");
   EXPECT_EQ(csv.name, "mocap_rigid_body");
   ASSERT_EQ(csv.entries.cols(), 5);
-  EXPECT_EIGEN_NEAR(csv.entries.col(4), Eigen::Vector3d(0.010, 0.015, 0.085), 0.0);
-  EXPECT_EIGEN_NEAR(csv.weights, (Eigen::VectorXd(5) << 1, 1, 0.5, 1, 0.5).finished(), 0.0);
+  EXPECT_EIGEN_NEAR(csv.entries.col(4), Eigen::Vector3d(0.010, 0.015, 0.085), kExact);
+  EXPECT_EIGEN_NEAR(csv.weights, (Eigen::VectorXd(5) << 1, 1, 0.5, 1, 0.5).finished(), kExact);
   // Written as JSON and read back: the same layout.
   const Layout again = parse_layout(layout_to_json(csv), "again.json");
-  EXPECT_EIGEN_NEAR(again.entries, csv.entries, 0.0);
-  EXPECT_EIGEN_NEAR(again.weights, csv.weights, 0.0);
+  EXPECT_EIGEN_NEAR(again.entries, csv.entries, kExact);
+  EXPECT_EIGEN_NEAR(again.weights, csv.weights, kExact);
 }
 
 TEST(LayoutFormats, AprilTagCubeCornersLieOnTheCubeFaces) {
@@ -81,12 +84,12 @@ TEST(LayoutFormats, AprilTagCubeCornersLieOnTheCubeFaces) {
   const Layout centred = load_layout(kExamples + "apriltag_cube.yaml", centres);
   Eigen::Matrix3Xd expected(3, 3);
   expected << 0, 0.05, 0, 0, 0, 0.05, 0.05, 0, 0;
-  EXPECT_EIGEN_NEAR(centred.entries, expected, 0.0);
+  EXPECT_EIGEN_NEAR(centred.entries, expected, kExact);
 }
 
 TEST(LayoutFormats, JsonStillReadsAsBefore) {
   const Layout json = load_layout(kExamples + "triad.json");
-  EXPECT_EIGEN_NEAR(json.entries, read_layout(kExamples + "triad.json").entries, 0.0);
+  EXPECT_EIGEN_NEAR(json.entries, read_layout(kExamples + "triad.json").entries, kExact);
 }
 
 }  // namespace

@@ -210,6 +210,27 @@ TEST(Figures, UnwritableTargetIsARenderErrorAndLeavesNoFile) {
   EXPECT_EQ(entries, 1u) << "only the blocking directory";
 }
 
+TEST(Figures, ViewpointMapCsvGridIsCheckedAndCappedByThePicture) {
+  TempDir dir("csvgrid");
+  ViewpointMapData data;
+  data.vectors = Eigen::Matrix3d::Identity();
+  data.worst_viewpoints = {Eigen::Vector3d::Ones().normalized()};
+  data.pbar_min = std::sqrt(2.0 / 3.0);
+  for (int bad : {kMinMapSamples - 1, kMaxMapSamples + 1}) {
+    data.csv_samples_per_axis = bad;
+    EXPECT_THROW(write_viewpoint_map(data, dir.path()), InvalidArgument) << bad;
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path())) << "nothing written on bad data";
+  // A CSV grid finer than the picture's is capped at the picture's: one row per picture cell
+  // inside the disc.
+  data.samples_per_axis = 64;
+  data.csv_samples_per_axis = 100;
+  const FigureFiles files = write_viewpoint_map(data, dir.path());
+  const ViewpointSamples picture = sample_viewpoints(data.vectors, 64);
+  EXPECT_EQ(testing::read_csv(files.csv).rows.size(),
+            static_cast<std::size_t>(picture.viewpoints.cols()));
+}
+
 TEST(Figures, FormatNamesRoundTrip) {
   for (Format f : {Format::kPng, Format::kSvg, Format::kPdf}) {
     EXPECT_EQ(parse_format(to_string(f)), f);

@@ -18,6 +18,9 @@ using testing::kSeed;
 // Both are CSDP optima at relative accuracy 1e-8: t agrees to about 1e-7.
 constexpr double kSdp = 1e-6;
 
+// t is reported as this very minimum over the vectors: the rounding of one dot product.
+constexpr double kRounding = 1e-15;
+
 // Eq. (28) on every signed vector, written out from the paper: max t s.t. s_i a.n_i >= |t| as a
 // 2x2 block per vector, ||a|| <= 1 as [[I, a], [a^T, 1]] >= 0.
 double whole_lmi_t(const Eigen::Matrix3Xd& n, const Eigen::VectorXd& signs) {
@@ -63,7 +66,7 @@ TEST(CellLmiGeneration, LargeCellsEqualTheWholeLmi) {
       EXPECT_NEAR(cell.t, whole, kSdp);
       // t is attained over all m vectors at the reported viewpoint.
       EXPECT_NEAR((signs.asDiagonal() * (n.transpose() * cell.viewpoint)).cwiseAbs().minCoeff(),
-                  cell.t, 1e-15);
+                  cell.t, kRounding);
       EXPECT_LT(cell.lmi_vectors, m) << "the answer came from a subset of the cell";
       EXPECT_GE(cell.lmi_solves, 1);
     }

@@ -19,6 +19,16 @@ constexpr double kExact = 1e-12;
 // The branch and bound certifies t to 1e-9 (WorstViewpointOptions::certificate_tolerance).
 constexpr double kCertified = 1e-9;
 
+// arccos of a p-bar certified to kCertified, in degrees: 57 x 1e-9 / sin(45 deg) = 8e-8.
+constexpr double kCertifiedDeg = 1e-6;
+// A viewpoint component at an optimum certified to 1e-9 in t: the optimum is a vertex, so the
+// viewpoint moves by the same order; this leaves room.
+constexpr double kCertifiedViewpoint = 1e-6;
+// The same p-bar up to kExact, in degrees.
+constexpr double kDegreesRounding = 1e-9;
+// A dot product of a unit viewpoint with an exact vector of norm sqrt(5).
+constexpr double kRounding = 1e-12;
+
 Layout vector_layout(const Eigen::Matrix3Xd& vectors) {
   Layout layout;
   layout.mode = LayoutMode::kVectors;
@@ -59,8 +69,9 @@ TEST(Dropout, TriadWithoutOneVectorIsTwoOrthogonalVectors) {
     EXPECT_EQ(e.index, k);
     EXPECT_EQ(e.n_vectors, 2);
     EXPECT_NEAR(e.pbar_min, std::sqrt(0.5), kCertified);
-    EXPECT_NEAR(e.max_worst_case_error_deg, 45.0, 1e-6);
-    EXPECT_NEAR(std::abs(e.worst_viewpoint(k)), 0.0, 1e-6) << "the lost axis is in a-perp";
+    EXPECT_NEAR(e.max_worst_case_error_deg, 45.0, kCertifiedDeg);
+    EXPECT_NEAR(std::abs(e.worst_viewpoint(k)), 0.0, kCertifiedViewpoint)
+        << "the lost axis is in a-perp";
     EXPECT_TRUE(e.certified);
   }
 }
@@ -84,7 +95,7 @@ TEST(Dropout, MatchesTheAnalysisOfTheReducedLayoutAndNeverRaisesPbar) {
       const LayoutAnalysis direct = analyze_vectors(reduced.vectors, reduced.weights, options);
       EXPECT_EQ(e.n_vectors, 10) << "5 markers left: 10 free vectors";
       EXPECT_NEAR(e.pbar_min, direct.pbar_min, kExact) << "trial " << trial << " marker " << k;
-      EXPECT_NEAR(e.max_worst_case_error_deg, direct.max_worst_case_error_deg, 1e-9);
+      EXPECT_NEAR(e.max_worst_case_error_deg, direct.max_worst_case_error_deg, kDegreesRounding);
       EXPECT_LE(e.pbar_min, intact.pbar_min + kExact);
     }
   }
@@ -135,7 +146,7 @@ TEST(Dropout, ThreeMarkersLeaveOneVectorSeenEndOn) {
   }
   // Without marker 0 the free vector is p2 - p1 = (-1, 2, 0): the worst viewpoint is along it.
   EXPECT_NEAR(std::abs(result.entries[0].worst_viewpoint.dot(Eigen::Vector3d(-1, 2, 0))),
-              std::sqrt(5.0), 1e-12);
+              std::sqrt(5.0), kRounding);
 }
 
 TEST(Dropout, RejectsBadOptionsAndLayouts) {

@@ -15,16 +15,23 @@ namespace {
 // CSDP's t is accurate to about 1e-7.
 constexpr double kSdp = 1e-6;
 
+// The global search certifies t, and so p-bar and the viewpoint, to 1e-9.
+constexpr double kCertified = 1e-9;
+// The largest error is the maximum of the per-vector errors: the same double.
+constexpr double kIdentical = 0.0;
+// The analysis rescales the data first: other units change t by rounding only.
+constexpr double kScaleRounding = 1e-12;
+
 TEST(AnalyzeVectors, OrthogonalTriadReport) {
   const LayoutAnalysis r = analyze_vectors(Eigen::Matrix3d::Identity());
-  EXPECT_NEAR(r.pbar_min, std::sqrt(2.0 / 3.0), 1e-9);
+  EXPECT_NEAR(r.pbar_min, std::sqrt(2.0 / 3.0), kCertified);
   EXPECT_EQ(r.worst_viewpoints.size(), 4u);
   EXPECT_TRUE(r.certificate.certified);
-  EXPECT_LE(r.certificate.t_upper - r.certificate.t_lower, 1e-9);
+  EXPECT_LE(r.certificate.t_upper - r.certificate.t_lower, kCertified);
   ASSERT_EQ(r.worst_case_errors_deg.size(), 3);
   // Every p_i equals p-bar at (1,1,1)/sqrt(3): the error is acos(p-bar) = 35.26 degrees.
   EXPECT_NEAR(r.max_worst_case_error_deg, std::acos(std::sqrt(2.0 / 3.0)) * kDegreesPerRadian,
-              1e-9);
+              kCertified);
   EXPECT_NEAR(r.paper_lmi.t, r.t, kSdp);
   EXPECT_EQ(r.paper_lmi.status, CellViewpoint::Status::kOk);
   EXPECT_TRUE(r.crosscheck.ran);
@@ -62,7 +69,7 @@ TEST(AnalyzeVectors, ParallelVectorsAreDegenerateNotPerfect) {
   options.run_crosscheck = false;
   const LayoutAnalysis r = analyze_vectors(z, {}, options);
   EXPECT_TRUE(r.degenerate);
-  EXPECT_NEAR(r.pbar_min, 0.0, 1e-9);
+  EXPECT_NEAR(r.pbar_min, 0.0, kCertified);
   EXPECT_EQ(r.max_worst_case_error_deg, 90.0);
   EXPECT_EQ(r.worst_case_errors_deg, Eigen::VectorXd::Constant(4, 90.0));
   EXPECT_NE(r.message.find("degenerate"), std::string::npos) << r.message;
@@ -81,9 +88,9 @@ TEST(AnalyzeVectors, ScaleInvariant) {
   const LayoutAnalysis reference = analyze_vectors(z, {}, options);
   for (const double scale : {1e-300, 1e-200, 1e200, 1e300}) {
     const LayoutAnalysis r = analyze_vectors(z * scale, {}, options);
-    EXPECT_NEAR(r.t, reference.t, 1e-12) << scale;
-    EXPECT_EIGEN_NEAR(r.worst_viewpoint, reference.worst_viewpoint, 1e-9);
-    EXPECT_NEAR(r.swaps.front().error_deg, reference.swaps.front().error_deg, 1e-9) << scale;
+    EXPECT_NEAR(r.t, reference.t, kScaleRounding) << scale;
+    EXPECT_EIGEN_NEAR(r.worst_viewpoint, reference.worst_viewpoint, kCertified);
+    EXPECT_NEAR(r.swaps.front().error_deg, reference.swaps.front().error_deg, kCertified) << scale;
   }
 }
 
@@ -129,7 +136,7 @@ TEST(AnalyzeVectors, RandomLayoutIsConsistent) {
   EXPECT_TRUE(r.crosscheck.agrees) << r.crosscheck.message;
   EXPECT_EQ(r.swaps.size(), 5u);
   EXPECT_TRUE(r.worst_case_errors_deg.allFinite());
-  EXPECT_NEAR(r.max_worst_case_error_deg, r.worst_case_errors_deg.maxCoeff(), 0.0);
+  EXPECT_NEAR(r.max_worst_case_error_deg, r.worst_case_errors_deg.maxCoeff(), kIdentical);
   EXPECT_THROW(analyze_vectors(z, Eigen::VectorXd::Ones(3)), InvalidArgument);
   EXPECT_THROW(analyze_vectors(Eigen::Matrix3Xd(3, 1)), InvalidArgument);
 }

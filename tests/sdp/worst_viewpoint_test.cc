@@ -25,6 +25,23 @@ constexpr double kSdp = 1e-6;
 // The paper's Fig. 3 / docs/math.md §13 value is printed to three decimals.
 constexpr double kPrinted = 5e-4;
 
+// The same quantity reported twice, or the same deterministic call repeated: bit for bit.
+constexpr double kIdentical = 0.0;
+// t is recomputed from the reported viewpoint, or from a layout with repeats removed: the rounding
+// of one dot product.
+constexpr double kRounding = 1e-15;
+// The viewpoint is normalised: its norm is 1 to rounding.
+constexpr double kUnitRounding = 1e-12;
+// t or an angle evaluated at a polished point, or by another formula: rounding of a few dot
+// products, asin or sqrt of unit vectors.
+constexpr double kEvaluationRounding = 1e-12;
+// WorstViewpointOptions::certificate_tolerance's default: certified means t_upper - t_lower <= it.
+constexpr double kCertificateTolerance = 1e-9;
+// docs/math.md prints p-bar = 0.8165 to four decimals.
+constexpr double kFourDecimals = 1e-4;
+// p-bar = sqrt(1 - t^2) at t = 1: a t certified to 1e-9 gives p-bar up to sqrt(2e-9) = 4.5e-5.
+constexpr double kSqrtOfCertified = 1e-4;
+
 const double kInvSqrt3 = 1.0 / std::sqrt(3.0);
 
 Eigen::Matrix3Xd columns(std::initializer_list<Eigen::Vector3d> list) {
@@ -70,16 +87,16 @@ Eigen::Matrix3Xd random_unit_columns(std::mt19937& rng, int m) {
 void expect_consistent(const WorstViewpoint& w, const Eigen::Matrix3Xd& vectors) {
   const Eigen::Matrix3Xd n = vectors.colwise().normalized();
   EXPECT_EQ(w.status, WorstViewpoint::Status::kCertified) << w.message;
-  EXPECT_LE(w.t_upper - w.t_lower, 1e-9);
-  EXPECT_NEAR(w.t, w.t_lower, 0.0);
-  EXPECT_NEAR(min_abs_projection(n, w.viewpoint), w.t, 1e-15) << "the viewpoint attains t";
-  EXPECT_NEAR(w.viewpoint.norm(), 1.0, 1e-12);
+  EXPECT_LE(w.t_upper - w.t_lower, kCertificateTolerance);
+  EXPECT_NEAR(w.t, w.t_lower, kIdentical);
+  EXPECT_NEAR(min_abs_projection(n, w.viewpoint), w.t, kRounding) << "the viewpoint attains t";
+  EXPECT_NEAR(w.viewpoint.norm(), 1.0, kUnitRounding);
   // sqrt(1 - t^2) loses digits near t = 1 (narrow cones): its rounding is ~1e-16 / p-bar.
-  EXPECT_NEAR(w.pbar_min, std::sqrt(1.0 - w.t * w.t), 1e-15 * (1.0 + 1.0 / w.pbar_min));
+  EXPECT_NEAR(w.pbar_min, std::sqrt(1.0 - w.t * w.t), kRounding * (1.0 + 1.0 / w.pbar_min));
   ASSERT_FALSE(w.viewpoints.empty());
-  EXPECT_EIGEN_NEAR(w.viewpoints.front(), w.viewpoint, 0.0);
+  EXPECT_EIGEN_NEAR(w.viewpoints.front(), w.viewpoint, kIdentical);
   for (const Eigen::Vector3d& a : w.viewpoints) {
-    EXPECT_NEAR(min_abs_projection(n, a), w.t, 1e-9) << "every reported optimum attains t";
+    EXPECT_NEAR(min_abs_projection(n, a), w.t, kExact) << "every reported optimum attains t";
     EXPECT_EQ(upper_hemisphere(a), a);
   }
   EXPECT_TRUE(std::isfinite(w.t) && std::isfinite(w.pbar_min));
@@ -90,14 +107,14 @@ TEST(PaperSigns, UpperHemisphereWithTieBreaks) {
       {{0, 0, 1}, {0, 0, -1}, {1, 1, 0}, {1, -1, 0}, {1, 0, 0}, {-1, 0, 0}, {0.3, 0.2, -0.1}});
   Eigen::VectorXd expected(7);
   expected << 1, -1, 1, -1, 1, -1, -1;
-  EXPECT_EIGEN_NEAR(upper_hemisphere_signs(z), expected, 0.0);
+  EXPECT_EIGEN_NEAR(upper_hemisphere_signs(z), expected, kIdentical);
 }
 
 TEST(PaperSigns, KeepsVectorsThatShareAHemisphereAndNegatesOtherwise) {
   const Eigen::Matrix3Xd shared = columns({{1, 0, 0}, {0, 1, 0}, {0.5, 0.5, -2}});
-  EXPECT_EIGEN_NEAR(paper_signs(shared), Eigen::Vector3d::Ones(), 0.0);
+  EXPECT_EIGEN_NEAR(paper_signs(shared), Eigen::Vector3d::Ones(), kIdentical);
   const Eigen::Matrix3Xd opposite = columns({{0, 0, 1}, {0, 0, -1}, {1, 0, 0}});
-  EXPECT_EIGEN_NEAR(paper_signs(opposite), upper_hemisphere_signs(opposite), 0.0);
+  EXPECT_EIGEN_NEAR(paper_signs(opposite), upper_hemisphere_signs(opposite), kIdentical);
 }
 
 TEST(CellLmi, OrthogonalTriadMatchesPaper) {
@@ -116,7 +133,7 @@ TEST(CellLmi, EmptyCellIsReported) {
   const Eigen::Matrix3Xd z = columns({{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}});
   const CellViewpoint cell = solve_cell_lmi(z, Eigen::Vector3d(1, 1, 1));
   EXPECT_NE(cell.status, CellViewpoint::Status::kOk);
-  EXPECT_LE(cell.t, 1e-6);
+  EXPECT_LE(cell.t, kSdp);
 }
 
 TEST(CellLmi, RejectsBadSigns) {
@@ -131,7 +148,7 @@ TEST(GlobalWorstViewpoint, OrthogonalTriadHasFourOptima) {
   const WorstViewpoint w = global_worst_viewpoint(Eigen::Matrix3d::Identity(), options);
   expect_consistent(w, Eigen::Matrix3d::Identity());
   EXPECT_NEAR(w.t, kInvSqrt3, kExact);
-  EXPECT_NEAR(w.pbar_min, 0.8165, 1e-4);
+  EXPECT_NEAR(w.pbar_min, 0.8165, kFourDecimals);
   ASSERT_EQ(w.viewpoints.size(), 4u);
   for (double sx : {-1.0, 1.0}) {
     for (double sy : {-1.0, 1.0}) {
@@ -168,7 +185,7 @@ TEST(GlobalWorstViewpoint, NoteThreeLayoutGlobalVersusPaper) {
   EXPECT_NEAR(all_positive.pbar_at, 0.953, kPrinted);
   // The four vectors as given lie in one open hemisphere, so the paper keeps their signs and
   // its single LMI is the all-positive cell: the paper's 0.95.
-  EXPECT_EIGEN_NEAR(paper_signs(z), Eigen::Vector4d::Ones(), 0.0);
+  EXPECT_EIGEN_NEAR(paper_signs(z), Eigen::Vector4d::Ones(), kIdentical);
   const CellViewpoint paper = paper_worst_viewpoint(z);
   ASSERT_EQ(paper.status, CellViewpoint::Status::kOk);
   EXPECT_NEAR(paper.t, all_positive.t, kSdp);
@@ -216,7 +233,7 @@ TEST(GlobalWorstViewpoint, LargeRandomLayoutAgreesWithCrossCheck) {
   check_options.samples = 100000;  // spacing ~0.01 rad, well inside cells of inradius ~0.03
   const CrossCheck check = crosscheck_worst_viewpoint(z, w.t, check_options);
   EXPECT_TRUE(check.agrees) << check.message;
-  EXPECT_LE(check.t, w.t_upper + 1e-12) << "nothing beats the certified upper bound";
+  EXPECT_LE(check.t, w.t_upper + kEvaluationRounding) << "nothing beats the certified upper bound";
 }
 
 TEST(GlobalWorstViewpoint, CoplanarFanReachesTheZoneCeiling) {
@@ -301,8 +318,8 @@ TEST(GlobalWorstViewpoint, DegenerateLayouts) {
   const WorstViewpoint wp = global_worst_viewpoint(parallel);
   expect_consistent(wp, parallel);
   EXPECT_NEAR(wp.t, 1.0, kExact);
-  EXPECT_NEAR(wp.pbar_min, 0.0, 1e-4);
-  EXPECT_EIGEN_NEAR(wp.viewpoint, d, 1e-9);
+  EXPECT_NEAR(wp.pbar_min, 0.0, kSqrtOfCertified);
+  EXPECT_EIGEN_NEAR(wp.viewpoint, d, kExact);
   EXPECT_EQ(wp.viewpoints.size(), 1u);
 
   // Two vectors at angle theta: t* = max(cos(theta/2), sin(theta/2)).
@@ -384,9 +401,9 @@ TEST(GlobalWorstViewpoint, ParallelAndAntiparallelRepeatsChangeNothing) {
   expect_consistent(w, repeated);
   expect_consistent(u, unique);
   EXPECT_NEAR(w.t, brute_force_t(repeated), kExact);
-  EXPECT_NEAR(w.t, u.t, 1e-15);
-  EXPECT_NEAR(w.t_upper, u.t_upper, 1e-15);
-  EXPECT_EIGEN_NEAR(w.viewpoint, u.viewpoint, 1e-15);
+  EXPECT_NEAR(w.t, u.t, kRounding);
+  EXPECT_NEAR(w.t_upper, u.t_upper, kRounding);
+  EXPECT_EIGEN_NEAR(w.viewpoint, u.viewpoint, kRounding);
   ASSERT_EQ(w.viewpoints.size(), u.viewpoints.size());
   EXPECT_EQ(w.patches, u.patches) << "the repeats cost no work";
   EXPECT_EQ(w.cells_solved, u.cells_solved);
@@ -402,7 +419,7 @@ TEST(GlobalWorstViewpoint, SameAnswerOnEveryCall) {
     const WorstViewpoint again = global_worst_viewpoint(z);
     EXPECT_EQ(again.t, first.t);
     EXPECT_EQ(again.t_upper, first.t_upper);
-    EXPECT_EIGEN_NEAR(again.viewpoint, first.viewpoint, 0.0);
+    EXPECT_EIGEN_NEAR(again.viewpoint, first.viewpoint, kIdentical);
     EXPECT_EQ(again.patches, first.patches);
   }
 }
@@ -437,7 +454,7 @@ TEST(CrossCheck, NarrowConeHasNoFalseDisagreement) {
     EXPECT_TRUE(alone.agrees) << alone.message;
     const CrossCheck seeded = crosscheck_worst_viewpoint(z, w.t, {}, w.viewpoints);
     EXPECT_TRUE(seeded.agrees) << seeded.message;
-    EXPECT_LE(seeded.t, w.t_upper + 1e-15) << "nothing beats the certified upper bound";
+    EXPECT_LE(seeded.t, w.t_upper + kRounding) << "nothing beats the certified upper bound";
   }
 }
 
@@ -454,7 +471,7 @@ TEST(CrossCheck, LargeLayoutIsBoundedAndConfirmsTheReference) {
   EXPECT_LE(static_cast<double>(check.samples) * z.cols(), options.max_sample_products);
   EXPECT_GT(check.sample_spacing, std::asin(w.t)) << "the samples alone cannot resolve the cells";
   EXPECT_GE(check.polished, 1 + static_cast<int>(w.viewpoints.size()));
-  EXPECT_LE(check.t, w.t_upper + 1e-15);
+  EXPECT_LE(check.t, w.t_upper + kRounding);
   // A wrong reference is caught: the polish of the true optimum's cell exceeds it.
   const CrossCheck low = crosscheck_worst_viewpoint(z, w.t - 1e-4, options, w.viewpoints);
   EXPECT_FALSE(low.agrees);
@@ -467,7 +484,7 @@ TEST(CrossCheck, AutomaticSamplesResolveTheOptimalCell) {
   const Eigen::Matrix3Xd z = random_unit_columns(rng, 60);
   const WorstViewpoint w = global_worst_viewpoint(z);
   const CrossCheck check = crosscheck_worst_viewpoint(z, w.t);
-  EXPECT_LE(check.sample_spacing, 0.5 * std::asin(w.t) + 1e-12);
+  EXPECT_LE(check.sample_spacing, 0.5 * std::asin(w.t) + kEvaluationRounding);
   EXPECT_TRUE(check.agrees) << check.message;
 }
 

@@ -22,6 +22,11 @@ constexpr double kAcosForm = 1e-7;
 // the certificate tolerance (1e-9) apart.
 constexpr double kAtWorstViewpoint = 1e-6;
 
+// p-bar_min = sqrt(1 - t^2) with t certified to the certificate tolerance (1e-9).
+constexpr double kCertifiedPbar = 1e-9;
+// The paper prints the triad's bound to four decimals (35.2644 degrees).
+constexpr double kPaperDigits = 1e-4;
+
 struct Case {
   std::string name;
   Eigen::Matrix3Xd entries;
@@ -91,8 +96,8 @@ TEST(BoundCheck, IsReachedAtTheWorstViewpoint) {
 
 TEST(BoundCheck, TriadMatchesThePaper) {
   const BoundLayout layout = prepare_bound_layout(Eigen::Matrix3d::Identity(), true);
-  EXPECT_NEAR(layout.data.pbar_min, std::sqrt(2.0 / 3.0), 1e-9);
-  EXPECT_NEAR(layout.data.bound_rad * kDegreesPerRadian, 35.2644, 1e-4);
+  EXPECT_NEAR(layout.data.pbar_min, std::sqrt(2.0 / 3.0), kCertifiedPbar);
+  EXPECT_NEAR(layout.data.bound_rad * kDegreesPerRadian, 35.2644, kPaperDigits);
   EXPECT_EQ(layout.affine.free_vectors, "vectors");
 }
 
@@ -118,7 +123,7 @@ TEST(BoundCheck, SpanningSubsetHasTheLargerBound) {
   for (const Case& p : cases()) {
     if (p.vectors) continue;
     const BoundLayout layout = prepare_bound_layout(p.entries, false);
-    EXPECT_LE(layout.spanning.pbar_min, layout.data.pbar_min + 1e-9) << p.name;
+    EXPECT_LE(layout.spanning.pbar_min, layout.data.pbar_min + kCertifiedPbar) << p.name;
     EXPECT_EQ(layout.spanning.vectors.cols(), p.entries.cols() - 1);
     ++checked;
   }

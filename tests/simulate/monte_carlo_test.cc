@@ -17,6 +17,16 @@ namespace {
 constexpr double kExactDeg = 1e-6;
 constexpr double kExactRelative = 1e-9;
 
+// An angle of a few tenths of a radian from a rotation's entries, in degrees: a few ulps of 17.
+constexpr double kAngleRounding = 1e-12;
+// One division of exact small numbers (|3 - 2| / 2, 2 / 2): correctly rounded.
+constexpr double kRatioRounding = 1e-15;
+// The RMS of 200 000 draws of sigma = 2 has a standard deviation of about sigma / sqrt(2 N) =
+// 0.0032 (Gaussian; less for uniform): this is 6 of them.
+constexpr double kRmsSampling = 0.02;
+// Haralick quotes sigma for 92 dB and 26 dB to one significant digit: exact to 1 %.
+constexpr double kPaperRelative = 0.01;
+
 const Eigen::Matrix3Xd kPoints = (Eigen::Matrix3Xd(3, 5) << 0.5, -0.5, 0.5, -0.5, 0.1,  //
                                   0.5, 0.5, -0.5, -0.5, 0.2,                            //
                                   0.7, -0.7, -0.7, 0.7, 0.0)
@@ -151,10 +161,10 @@ TEST(MonteCarlo, TrialErrorMeasuresTheRotationAngle) {
   estimate.p_camera_object = Eigen::Vector3d(0.0, 0.0, 3.0);
   estimate.alpha = 2.0;
   const TrialError e = trial_error(estimate, scene);
-  EXPECT_NEAR(e.rot_err_deg, 0.3 * kDegreesPerRadian, 1e-12);
-  EXPECT_NEAR(e.trans_err_rel, 0.5, 1e-15);
-  EXPECT_NEAR(e.trans_err_deg, 0.0, 1e-12);
-  EXPECT_NEAR(e.scale_err, 1.0, 1e-15);
+  EXPECT_NEAR(e.rot_err_deg, 0.3 * kDegreesPerRadian, kAngleRounding);
+  EXPECT_NEAR(e.trans_err_rel, 0.5, kRatioRounding);
+  EXPECT_NEAR(e.trans_err_deg, 0.0, kAngleRounding);
+  EXPECT_NEAR(e.scale_err, 1.0, kRatioRounding);
   EXPECT_EQ(e.status, "ok");
   EXPECT_TRUE(e.ok);
   // No translation (a NaN entry): no translation error; an ambiguous estimate is not ok.
@@ -198,11 +208,11 @@ TEST(Noise, StandardDeviationAndSnr) {
     double sum2 = 0.0;
     constexpr int kSamples = 200000;
     for (int i = 0; i < kSamples; ++i) sum2 += std::pow(noise_sample(kind, 2.0, random), 2);
-    EXPECT_NEAR(std::sqrt(sum2 / kSamples), 2.0, 0.02) << to_string(kind);  // 5 sigma of 0.003
+    EXPECT_NEAR(std::sqrt(sum2 / kSamples), 2.0, kRmsSampling) << to_string(kind);
   }
   // Haralick Sec. 4.4: 92 dB <-> 0.0001 and 26 dB <-> 0.2 for a peak-to-peak extent of 4.
-  EXPECT_NEAR(sigma_from_snr(92.0, 4.0), 1e-4, 0.01e-4);
-  EXPECT_NEAR(sigma_from_snr(26.0, 4.0), 0.2, 0.002);
+  EXPECT_NEAR(sigma_from_snr(92.0, 4.0), 1e-4, kPaperRelative * 1e-4);
+  EXPECT_NEAR(sigma_from_snr(26.0, 4.0), 0.2, kPaperRelative * 0.2);
 }
 
 TEST(Random, TrialEnginesAreIndependentOfOrder) {
