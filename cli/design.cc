@@ -1,5 +1,5 @@
 // `vantage design LAYOUT --add K [--candidates-only] [--margin M] [--direct|--no-direct]
-// [--write OUT.json] [--overwrite] [--json]`: the inductive augmenter of McInroy et al.
+// [--write OUT.json|OUT.csv] [--overwrite] [--json]`: the inductive augmenter of McInroy et al.
 // (Sec. III.E, text around Fig. 3) done on the global worst viewpoint (docs/math.md §13, §15).
 
 #include <sys/stat.h>
@@ -18,7 +18,7 @@
 #include "progress.h"
 #include "vantage/analysis/common.h"
 #include "vantage/design/augment.h"
-#include "vantage/io/layout_file.h"
+#include "vantage/io/layout_formats.h"
 #include "vantage/io/text_file.h"
 #include "vantage/plot/design_curve.h"
 
@@ -93,11 +93,26 @@ void check_write_target(const DesignArgs& args) {
         "--overwrite");
   }
   try {
+    io::layout_write_format(args.write);
     io::check_write_target(args.write, args.overwrite);
   } catch (const InvalidArgument& e) {
     bad(std::string("--write: ") + e.what() +
         (std::string(e.what()).find("exists already") != std::string::npos ? " (--overwrite)"
                                                                            : ""));
+  }
+}
+
+// The format of --write can hold the augmented layout (CSV: markers only, no candidates left,
+// names it can write): checked on the input before the search. The additions are markers with
+// writable names, and candidates are left over unless --candidates-only uses them all.
+void check_write_format(const DesignArgs& args, const Layout& layout) {
+  if (!args.write_given) return;
+  Layout probe = layout;
+  if (args.candidates_only && args.add >= probe.candidates.cols()) probe.candidates.resize(3, 0);
+  try {
+    io::layout_to_text(probe, io::layout_write_format(args.write));
+  } catch (const InvalidArgument& e) {
+    bad("--write: " + args.write + ": " + e.what());
   }
 }
 
@@ -217,6 +232,7 @@ int run_design(const DesignArgs& args) {
         " candidates of " + args.file + " (--candidates-only uses each at most once)");
   }
   check_point_candidates(args.file, layout, args.margin);
+  check_write_format(args, layout);
   std::optional<io::WriteLock> lock;
   if (args.write_given) lock.emplace(args.write);
   if (!args.plot.empty()) check_figure_directory("--plot", args.plot);
@@ -235,7 +251,7 @@ int run_design(const DesignArgs& args) {
 
   const bool ok = r.status == design::AugmentResult::Status::kOk;
   if (ok && args.write_given)
-    io::write_layout(args.write, design_json::layout_to_write(r), args.overwrite);
+    io::save_layout(args.write, design_json::layout_to_write(r), args.overwrite);
   std::vector<plot::FigureFiles> figures;
   if (ok && !args.plot.empty()) {
     create_figure_directory("--plot", args.plot);
@@ -299,7 +315,8 @@ Command add_design_command(CLI::App& root) {
   CLI::Option* write =
       sub->add_option("--write", args->write,
                       "write the augmented layout (greedy additions, weight 1; used candidates "
-                      "removed) to OUT.json; nothing is written on any error");
+                      "removed) to OUT.json or OUT.csv (markers only), in the format the "
+                      "extension names; nothing is written on any error");
   sub->add_flag("--overwrite", args->overwrite,
                 "let --write replace an existing file (even the input layout)")
       ->needs(write);
