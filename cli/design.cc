@@ -210,7 +210,6 @@ void print_report(const DesignArgs& args, const Layout& layout, const design::Au
 
 int run_design(const DesignArgs& args) {
   if (args.add < 1) bad("--add: must be >= 1, got " + std::to_string(args.add));
-  check_limit("--add", args.add, kMaxDesignAdd, "design", args.allow_large);
   if (!(args.margin >= 0.0 && args.margin <= kMaxMargin)) {
     bad("--margin: must be in [0, " + format_number(kMaxMargin) + "], got " +
         format_number(args.margin));
@@ -221,8 +220,10 @@ int run_design(const DesignArgs& args) {
       layout.mode == LayoutMode::kPoints
           ? static_cast<long>(free_vector_count(layout.entries.cols() + args.add))
           : static_cast<long>(layout.entries.cols()) + args.add;
-  check_limit(args.file + ": data vectors after --add " + std::to_string(args.add), final_count,
-              kMaxDesignVectors, "design", args.allow_large);
+  check_time_limit(args.file + ": --add " + std::to_string(args.add) + " on " +
+                       std::to_string(final_count) + " data vectors",
+                   estimated_design_seconds(layout, args.add, args.candidates_only),
+                   kMaxDesignSeconds, "design", args.allow_large);
   const Eigen::Index n_candidates = layout.candidates.cols();
   if (args.candidates_only && n_candidates == 0) {
     bad("--candidates-only: " + args.file + " has no \"candidates\"");
