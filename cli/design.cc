@@ -41,6 +41,7 @@ struct DesignArgs {
   int add = 0;
   bool candidates_only = false;
   double margin = design::AugmentOptions{}.margin;
+  long search_budget = design::AugmentOptions{}.search_budget;
   bool direct = true;
   std::string write;
   bool write_given = false;  // --write appeared, possibly with an empty name
@@ -214,16 +215,20 @@ int run_design(const DesignArgs& args) {
     bad("--margin: must be in [0, " + format_number(kMaxMargin) + "], got " +
         format_number(args.margin));
   }
+  if (args.search_budget < 0) {
+    bad("--search-budget: must be >= 0, got " + std::to_string(args.search_budget));
+  }
   check_write_target(args);
   const Layout layout = args.input.read(args.file, args.allow_large);
   const long final_count =
       layout.mode == LayoutMode::kPoints
           ? static_cast<long>(free_vector_count(layout.entries.cols() + args.add))
           : static_cast<long>(layout.entries.cols()) + args.add;
-  check_time_limit(args.file + ": --add " + std::to_string(args.add) + " on " +
-                       std::to_string(final_count) + " data vectors",
-                   estimated_design_seconds(layout, args.add, args.candidates_only),
-                   kMaxDesignSeconds, "design", args.allow_large);
+  check_time_limit(
+      args.file + ": --add " + std::to_string(args.add) + " on " + std::to_string(final_count) +
+          " data vectors",
+      estimated_design_seconds(layout, args.add, args.candidates_only, args.search_budget),
+      kMaxDesignSeconds, "design", args.allow_large);
   const Eigen::Index n_candidates = layout.candidates.cols();
   if (args.candidates_only && n_candidates == 0) {
     bad("--candidates-only: " + args.file + " has no \"candidates\"");
@@ -242,6 +247,7 @@ int run_design(const DesignArgs& args) {
   options.add = args.add;
   options.candidates_only = args.candidates_only;
   options.margin = args.margin;
+  options.search_budget = args.search_budget;
   options.run_direct = args.direct;
   design::AugmentResult r;
   {
@@ -310,6 +316,11 @@ Command add_design_command(CLI::App& root) {
   sub->add_option("--margin", args->margin,
                   "point mode: search the markers' bounding box grown by M times its largest "
                   "side on every side, >= 0")
+      ->capture_default_str();
+  sub->add_option("--search-budget", args->search_budget,
+                  "point mode: the branch and bound's budget per step, in global solves times "
+                  "data vectors (about 1 us of CPU each); raise it until the step's search is "
+                  "closed; 0: grid and polish only")
       ->capture_default_str();
   sub->add_flag("--direct,!--no-direct", args->direct,
                 "also run (default) or skip the direct optimiser over all K additions at once");

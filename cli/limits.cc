@@ -1,6 +1,9 @@
 #include "limits.h"
 
+#include <algorithm>
 #include <cstdio>
+
+#include "vantage/design/augment.h"
 
 #include "vantage/io/layout_file.h"
 
@@ -20,11 +23,17 @@ void check_limit(const std::string& what, long count, long limit, const std::str
                         "` (--allow-large lifts it)");
 }
 
-double estimated_design_seconds(const Layout& layout, int add, bool candidates_only) {
+double estimated_design_seconds(const Layout& layout, int add, bool candidates_only,
+                                long search_budget) {
   const bool points = layout.mode == LayoutMode::kPoints;
   const double m = points ? static_cast<double>(free_vector_count(layout.entries.cols() + add))
                           : static_cast<double>(layout.entries.cols()) + add;
-  const double step = points && !candidates_only ? kDesignPointStepSeconds : 0.0;
+  const long extra_budget = search_budget - design::AugmentOptions{}.search_budget;
+  const double step =
+      points && !candidates_only
+          ? kDesignPointStepSeconds +
+                kDesignSecondsPerSolveVector * static_cast<double>(std::max(0L, extra_budget))
+          : 0.0;
   const double per_vector =
       points ? kDesignPointSecondsPerVector : kDesignDirectionSecondsPerVector;
   return add * (step + per_vector * m);

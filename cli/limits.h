@@ -34,13 +34,17 @@ constexpr long kMaxDropoutVectors = 1000;
 /// about half a minute, for a command that searches.
 constexpr double kMaxDesignSeconds = 30.0;
 /// The estimate, per greedy step: point mode's free search (the 11^3 grid, its polish, the
-/// branch and bound's budget) costs about kDesignPointStepSeconds whatever the layout, and every
-/// mode about kDesign*SecondsPerVector per data vector after the additions (the solves and the
-/// direct optimiser), constants fitted to these runs (default options, direct optimiser on): points: the 5-marker drone --add 20: 38.8 s (estimate 41 s); 30 markers --add 3: 4.6 s
-/// (7.5 s; refused before issue 17 at 528 > 200 data vectors); 50 markers --add 3: 10.4 s
-/// (13.6 s), --add 5: 21.0 s (21.6 s). Directions: 1000 --add 3: 1.1 s (1.5 s); 5000 --add 3:
-/// 7.5 s (7.5 s); the triad --add 50: 1.3 s (1.3 s).
+/// branch and bound at its default budget) costs about kDesignPointStepSeconds whatever the
+/// layout, plus kDesignSecondsPerSolveVector for each unit of --search-budget beyond the default
+/// (the drone's 24 607 solves of 20 vectors: 0.55 s); and every mode about
+/// kDesign*SecondsPerVector per data vector after the additions (the solves and the direct
+/// optimiser). Constants fitted to these runs (default options, direct optimiser on): points: the
+/// 5-marker drone --add 20: 38.8 s (estimate 41 s); 30 markers --add 3: 4.6 s (7.5 s; refused
+/// before issue 17 at 528 > 200 data vectors); 50 markers --add 3: 10.4 s (13.6 s), --add 5: 21.0 s
+/// (21.6 s). Directions: 1000 --add 3: 1.1 s (1.5 s); 5000 --add 3: 7.5 s (7.5 s); the triad --add
+/// 50: 1.3 s (1.3 s).
 constexpr double kDesignPointStepSeconds = 1.5;
+constexpr double kDesignSecondsPerSolveVector = 1.1e-6;
 constexpr double kDesignPointSecondsPerVector = 1.9e-3;
 constexpr double kDesignDirectionSecondsPerVector = 0.5e-3;
 /// `weights`: entries (vectors or points); the LP is O(n), the file size bound comes first.
@@ -59,8 +63,10 @@ long data_vector_count(const Layout& layout);
 
 /// The CPU seconds `vantage design` is expected to take for `add` additions to `layout` (the
 /// model and its measurements: kMaxDesignSeconds above): add * (step + per_vector * m) with m the
-/// data vectors after the additions; no fixed step cost with --candidates-only.
-double estimated_design_seconds(const Layout& layout, int add, bool candidates_only);
+/// data vectors after the additions; no fixed step cost with --candidates-only; a search budget
+/// above the default adds its solve-vectors' time.
+double estimated_design_seconds(const Layout& layout, int add, bool candidates_only,
+                                long search_budget);
 
 /// Throws InvalidArgument "<what>: about <seconds> s of CPU exceeds the budget of <limit> s for
 /// `vantage <command>` (README "Limits"; --allow-large lifts it)" when seconds > limit and not

@@ -188,6 +188,13 @@ TEST(DesignCli, LimitsComeFromTheEstimatedTimeNotFromCounts) {
   testing::expect_bad_input(run_vantage("design rand30.json --add 20", scratch),
                             "rand30.json: --add 20 on 1225 data vectors: about 77 s of CPU exceeds "
                             "the budget of 30 s");
+  // A larger search budget is part of the estimate: 3 x (1.5 s + 1.1e-6 s x 99 550 000 + 1.9e-3 s
+  // x 528).
+  testing::expect_bad_input(
+      run_vantage("design rand30.json --add 3 --search-budget 100000000", scratch),
+      "about 336 s of CPU exceeds the budget of 30 s");
+  testing::expect_bad_input(run_vantage("design rand30.json --add 1 --search-budget -1", scratch),
+                            "--search-budget: must be >= 0");
 }
 
 TEST(DesignCli, CandidatesOnlyPicksACandidateAndWritesItAsAMarker) {
