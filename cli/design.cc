@@ -1,5 +1,5 @@
 // `vantage design LAYOUT --add K [--candidates-only] [--margin M] [--direct|--no-direct]
-// [--write OUT.json] [--overwrite] [--json]`: the inductive augmenter of McInroy et al.
+// [--write OUT.json|OUT.csv] [--overwrite] [--json]`: the inductive augmenter of McInroy et al.
 // (Sec. III.E, text around Fig. 3) done on the global worst viewpoint (docs/math.md §13, §15).
 
 #include <sys/stat.h>
@@ -18,7 +18,7 @@
 #include "progress.h"
 #include "vantage/analysis/common.h"
 #include "vantage/design/augment.h"
-#include "vantage/io/layout_file.h"
+#include "vantage/io/layout_formats.h"
 #include "vantage/io/text_file.h"
 #include "vantage/plot/design_curve.h"
 
@@ -41,6 +41,7 @@ struct DesignArgs {
   int add = 0;
   bool candidates_only = false;
   double margin = design::AugmentOptions{}.margin;
+  long search_budget = design::AugmentOptions{}.search_budget;
   bool direct = true;
   std::string write;
   bool write_given = false;  // --write appeared, possibly with an empty name
@@ -93,11 +94,26 @@ void check_write_target(const DesignArgs& args) {
         "--overwrite");
   }
   try {
+    io::layout_write_format(args.write);
     io::check_write_target(args.write, args.overwrite);
   } catch (const InvalidArgument& e) {
     bad(std::string("--write: ") + e.what() +
         (std::string(e.what()).find("exists already") != std::string::npos ? " (--overwrite)"
                                                                            : ""));
+  }
+}
+
+// The format of --write can hold the augmented layout (CSV: markers only, no candidates left,
+// names it can write): checked on the input before the search. The additions are markers with
+// writable names, and candidates are left over unless --candidates-only uses them all.
+void check_write_format(const DesignArgs& args, const Layout& layout) {
+  if (!args.write_given) return;
+  Layout probe = layout;
+  if (args.candidates_only && args.add >= probe.candidates.cols()) probe.candidates.resize(3, 0);
+  try {
+    io::layout_to_text(probe, io::layout_write_format(args.write));
+  } catch (const InvalidArgument& e) {
+    bad("--write: " + args.write + ": " + e.what());
   }
 }
 
@@ -195,10 +211,12 @@ void print_report(const DesignArgs& args, const Layout& layout, const design::Au
 
 int run_design(const DesignArgs& args) {
   if (args.add < 1) bad("--add: must be >= 1, got " + std::to_string(args.add));
-  check_limit("--add", args.add, kMaxDesignAdd, "design", args.allow_large);
   if (!(args.margin >= 0.0 && args.margin <= kMaxMargin)) {
     bad("--margin: must be in [0, " + format_number(kMaxMargin) + "], got " +
         format_number(args.margin));
+  }
+  if (args.search_budget < 0) {
+    bad("--search-budget: must be >= 0, got " + std::to_string(args.search_budget));
   }
   check_write_target(args);
   const Layout layout = args.input.read(args.file, args.allow_large);
@@ -206,8 +224,11 @@ int run_design(const DesignArgs& args) {
       layout.mode == LayoutMode::kPoints
           ? static_cast<long>(free_vector_count(layout.entries.cols() + args.add))
           : static_cast<long>(layout.entries.cols()) + args.add;
-  check_limit(args.file + ": data vectors after --add " + std::to_string(args.add), final_count,
-              kMaxDesignVectors, "design", args.allow_large);
+  check_time_limit(
+      args.file + ": --add " + std::to_string(args.add) + " on " + std::to_string(final_count) +
+          " data vectors",
+      estimated_design_seconds(layout, args.add, args.candidates_only, args.search_budget),
+      kMaxDesignSeconds, "design", args.allow_large);
   const Eigen::Index n_candidates = layout.candidates.cols();
   if (args.candidates_only && n_candidates == 0) {
     bad("--candidates-only: " + args.file + " has no \"candidates\"");
@@ -217,6 +238,7 @@ int run_design(const DesignArgs& args) {
         " candidates of " + args.file + " (--candidates-only uses each at most once)");
   }
   check_point_candidates(args.file, layout, args.margin);
+  check_write_format(args, layout);
   std::optional<io::WriteLock> lock;
   if (args.write_given) lock.emplace(args.write);
   if (!args.plot.empty()) check_figure_directory("--plot", args.plot);
@@ -225,6 +247,7 @@ int run_design(const DesignArgs& args) {
   options.add = args.add;
   options.candidates_only = args.candidates_only;
   options.margin = args.margin;
+  options.search_budget = args.search_budget;
   options.run_direct = args.direct;
   design::AugmentResult r;
   {
@@ -235,7 +258,7 @@ int run_design(const DesignArgs& args) {
 
   const bool ok = r.status == design::AugmentResult::Status::kOk;
   if (ok && args.write_given)
-    io::write_layout(args.write, design_json::layout_to_write(r), args.overwrite);
+    io::save_layout(args.write, design_json::layout_to_write(r), args.overwrite);
   std::vector<plot::FigureFiles> figures;
   if (ok && !args.plot.empty()) {
     create_figure_directory("--plot", args.plot);
@@ -294,12 +317,18 @@ Command add_design_command(CLI::App& root) {
                   "point mode: search the markers' bounding box grown by M times its largest "
                   "side on every side, >= 0")
       ->capture_default_str();
+  sub->add_option("--search-budget", args->search_budget,
+                  "point mode: the branch and bound's budget per step, in global solves times "
+                  "data vectors (about 1 us of CPU each); raise it until the step's search is "
+                  "closed; 0: grid and polish only")
+      ->capture_default_str();
   sub->add_flag("--direct,!--no-direct", args->direct,
                 "also run (default) or skip the direct optimiser over all K additions at once");
   CLI::Option* write =
       sub->add_option("--write", args->write,
                       "write the augmented layout (greedy additions, weight 1; used candidates "
-                      "removed) to OUT.json; nothing is written on any error");
+                      "removed) to OUT.json or OUT.csv (markers only), in the format the "
+                      "extension names; nothing is written on any error");
   sub->add_flag("--overwrite", args->overwrite,
                 "let --write replace an existing file (even the input layout)")
       ->needs(write);

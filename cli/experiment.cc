@@ -8,8 +8,8 @@
 #include <memory>
 
 #include "command.h"
+#include "layout_input.h"
 #include "vantage/analysis/layout.h"
-#include "vantage/io/layout_file.h"
 #include "vantage/simulate/experiments.h"
 
 namespace vantage::cli {
@@ -43,7 +43,7 @@ std::vector<NamedLayout> bound_layouts(const ExperimentArgs& args) {
   }
   std::vector<NamedLayout> layouts;
   for (const std::string& file : files) {
-    const Layout layout = io::read_layout(file);
+    const Layout layout = LayoutInput().read(file);
     NamedLayout named;
     named.name = std::filesystem::path(file).stem().string();
     named.entries = layout.entries;

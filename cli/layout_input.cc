@@ -6,8 +6,9 @@
 
 namespace vantage::cli {
 
-void LayoutInput::add_options(CLI::App* sub) {
-  sub->add_option("--format", format,
+void LayoutInput::add_options(CLI::App* sub, const std::string& format_flag) {
+  format_option = format_flag;
+  sub->add_option(format_flag, format,
                   "layout file format; auto: by extension (.json, .csv name,x,y,z[,weight], "
                   ".yaml/.yml AprilTag tag_bundles)")
       ->check(CLI::IsMember({"auto", "json", "csv", "apriltag"}))
@@ -24,7 +25,7 @@ void LayoutInput::add_options(CLI::App* sub) {
 Layout LayoutInput::read(const std::string& path, bool allow_large) const {
   io::LayoutReadOptions options;
   options.max_bytes = allow_large ? kMaxFileBytesAllowLarge : kMaxFileBytes;
-  options.format = io::layout_format_from_string(format, "--format");
+  options.format = io::layout_format_from_string(format, format_option);
   options.apriltag.tag_points = io::tag_points_from_string(tag_points, "--tag-points");
   options.apriltag.bundle = bundle;
   try {

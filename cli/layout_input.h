@@ -1,8 +1,8 @@
 #pragma once
 
 // The layout-file options shared by every subcommand that reads a layout (analyze, design,
-// weights, plot): --format and the AprilTag options. One line registers them on a subcommand,
-// one line reads the layout with them.
+// weights, plot, simulate, experiment): --format and the AprilTag options. One line registers
+// them on a subcommand, one line reads the layout with them (io::load_layout: every format).
 
 #include <CLI/CLI.hpp>
 #include <string>
@@ -16,9 +16,12 @@ struct LayoutInput {
   std::string format = "auto";
   std::string tag_points = "corners";
   std::string bundle;
+  /// The option that sets `format`, as registered (named in its errors).
+  std::string format_option = "--format";
 
-  /// Adds --format, --tag-points and --bundle to `sub`.
-  void add_options(CLI::App* sub);
+  /// Adds --format (or `format_flag`, for a subcommand whose --format is something else),
+  /// --tag-points and --bundle to `sub`.
+  void add_options(CLI::App* sub, const std::string& format_flag = "--format");
 
   /// Reads the layout at `path` in the chosen (or detected) format, at most kMaxFileBytes (with
   /// allow_large kMaxFileBytesAllowLarge, limits.h); InvalidArgument names the file, field and

@@ -13,8 +13,9 @@
 
 #include "command.h"
 #include "figure_output.h"
+#include "layout_input.h"
 #include "vantage/analysis/common.h"
-#include "vantage/io/layout_file.h"
+#include "vantage/io/text_file.h"
 #include "vantage/plot/experiment_figures.h"
 #include "vantage/plot/layout_figures.h"
 
@@ -24,6 +25,7 @@ namespace {
 
 struct PlotArgs {
   std::string file;
+  LayoutInput input;
   std::string out;
   std::string format = "png";
   std::vector<std::string> only;
@@ -175,7 +177,7 @@ int run_plot(const PlotArgs& args) {
     throw e.renamed("--" + e.field(), e.index());
   }
   check_figure_directory("--out", args.out);
-  const Layout layout = io::read_layout(args.file);
+  const Layout layout = args.input.read(args.file);
   std::unique_ptr<plot::DesignCurve> design;
   if (!args.design.empty()) {
     design = std::make_unique<plot::DesignCurve>(read_design_curve(args.design));
@@ -236,7 +238,9 @@ Command add_plot_command(CLI::App& root) {
       "Figures of a layout (PNG, SVG or PDF, each with a CSV of its numbers): viewpoint_map, "
       "dropout, error_surface, vectors, and design (with --design); or, with --experiment NAME, "
       "the figures of a `vantage experiment NAME --out DIR` directory");
-  sub->add_option("LAYOUT", args->file, "layout JSON file (vectors or points)");
+  sub->add_option("LAYOUT", args->file,
+                  "layout file (.json vectors or points, .csv markers, .yaml AprilTag bundle)");
+  args->input.add_options(sub, "--layout-format");
   sub->add_option("--experiment", args->experiment,
                   "draw the figures of experiment NAME from the CSVs in --out DIR instead: " +
                       joined(plot::experiment_figure_names()));

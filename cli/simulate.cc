@@ -14,8 +14,9 @@
 #include <sstream>
 
 #include "command.h"
+#include "layout_input.h"
 #include "vantage/analysis/layout.h"
-#include "vantage/io/layout_file.h"
+#include "vantage/io/text_file.h"
 #include "vantage/simulate/layout_simulation.h"
 
 namespace vantage::cli {
@@ -25,6 +26,7 @@ using namespace vantage::simulate;
 
 struct SimulateArgs {
   std::string file;
+  LayoutInput input;
   long trials = 1000;
   std::string camera = "affine";
   double noise_px = 0.0;
@@ -170,7 +172,7 @@ void print_text(const Report& report) {
 }
 
 Report run_layout(const SimulateArgs& args) {
-  const Layout layout = io::read_layout(args.file);
+  const Layout layout = args.input.read(args.file);
   return simulate::simulate_layout(layout, simulation_options(args, layout));
 }
 
@@ -264,7 +266,9 @@ Command add_simulate_command(CLI::App& root) {
       "simulate",
       "Monte Carlo: every applicable estimator on random views of a layout, with the bound check "
       "of Eq. (26) / Eq. (30); --shard K/N and --merge spread a study over machines");
-  sub->add_option("LAYOUT", args->file, "layout JSON file (points or vectors)");
+  sub->add_option("LAYOUT", args->file,
+                  "layout file (.json points or vectors, .csv markers, .yaml AprilTag bundle)");
+  args->input.add_options(sub);
   sub->add_option("--trials", args->trials, "number of trials, >= 1")->capture_default_str();
   sub->add_option("--camera", args->camera,
                   "affine (scaled orthographic, Eq. 14) or pinhole (points only)")

@@ -50,7 +50,8 @@ int run_weights(const WeightsArgs& args) {
         char index[24];
         std::snprintf(index, sizeof(index), "%3ld", static_cast<long>(i));
         std::cout << index << "  " << format_vector(layout.entries.col(i), 4)
-                  << "  w = " << format_number(w.weights(i)) << "\n";
+                  << "  w = " << format_number(w.weights(i))
+                  << (layout.names.empty() ? "" : "  " + layout.names[i]) << "\n";
       }
     } else if (solved) {
       std::cout << "lp optimum  " << format_number(w.lp_optimum)

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -81,6 +83,22 @@ void check_coincidence(const Eigen::Matrix3Xd& points, const std::string& field)
     fail(field, best_j, "coincides with " + field + "[" + std::to_string(best_i) + "]");
 }
 
+// Names, when given: one per entry, non-empty, each used once (reported at its second use).
+void check_names(const std::vector<std::string>& names, Eigen::Index n, bool points) {
+  if (names.empty()) return;
+  if (static_cast<Eigen::Index>(names.size()) != n) {
+    throw InvalidArgument("names: expected " + std::to_string(n) + " entries (one per " +
+                          (points ? "point" : "vector") + "), got " + std::to_string(names.size()));
+  }
+  std::unordered_map<std::string, Eigen::Index> first;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const std::string& name = names[static_cast<std::size_t>(i)];
+    if (name.empty()) fail("names", i, "empty name");
+    const auto [previous, inserted] = first.emplace(name, i);
+    if (!inserted) fail("names", i, "repeats names[" + std::to_string(previous->second) + "]");
+  }
+}
+
 }  // namespace
 
 void Layout::validate() const {
@@ -117,6 +135,21 @@ void Layout::validate() const {
     } else {
       check_direction(candidates.col(i), "candidates", i);
     }
+  }
+  check_names(names, n, points);
+}
+
+std::string Layout::entry_name(Eigen::Index i) const {
+  if (!names.empty()) return names[static_cast<std::size_t>(i)];
+  return (mode == LayoutMode::kPoints ? "p" : "v") + std::to_string(i);
+}
+
+std::string unused_entry_name(const Layout& layout, const std::string& prefix) {
+  std::unordered_set<std::string> taken;
+  for (Eigen::Index i = 0; i < layout.entries.cols(); ++i) taken.insert(layout.entry_name(i));
+  for (long k = 1;; ++k) {
+    std::string name = prefix + std::to_string(k);
+    if (taken.count(name) == 0) return name;
   }
 }
 

@@ -1,5 +1,6 @@
 #include "design_json.h"
 
+#include <string>
 #include <vector>
 
 #include "pose_json.h"
@@ -28,9 +29,10 @@ Json worst(const design::WorstCase& worst, int n_vectors) {
   return out;
 }
 
-Json step(const design::AugmentStep& st, LayoutMode mode) {
+Json step(const design::AugmentStep& st, LayoutMode mode, const std::string& name) {
   Json out;
   out["added"] = list(st.added);
+  out["name"] = name;
   out["pbar_min"] = st.worst.pbar_min;
   out["worst_viewpoints"] = points(st.worst.worst_viewpoints);
   out["max_worst_case_error_deg"] = st.worst.max_worst_case_error_deg;
@@ -43,6 +45,11 @@ Json step(const design::AugmentStep& st, LayoutMode mode) {
   if (mode == LayoutMode::kVectors) {
     out["best_kill_level"] = st.best_kill_level;
     out["angle_from_worst_plane_deg"] = st.angle_from_worst_plane_deg;
+  } else if (st.search_solves > 0) {
+    out["search"] = {{"t_lower", st.search_t_lower},
+                     {"closed", st.search_closed},
+                     {"unresolved_cells", st.search_unresolved},
+                     {"solves", st.search_solves}};
   }
   out["t"] = st.worst.t;
   out["certified"] = st.worst.certified;
@@ -92,7 +99,13 @@ Json design(const Json& source, const Layout& layout, bool direct_asked,
   if (!r.message.empty()) out["message"] = r.message;
   out["initial"] = worst(r.initial, r.initial_vector_count);
   Json steps = Json::array();
-  for (const design::AugmentStep& st : r.steps) steps.push_back(step(st, layout.mode));
+  // The additions are the augmented layout's last entries, named there ("added1", or "p5" in
+  // an unnamed layout).
+  const Eigen::Index first_added = r.augmented.entries.cols() - r.steps.size();
+  for (std::size_t s = 0; s < r.steps.size(); ++s) {
+    steps.push_back(step(r.steps[s], layout.mode,
+                         r.augmented.entry_name(first_added + static_cast<Eigen::Index>(s))));
+  }
   out["steps"] = steps;
   out["final_pbar_min"] = r.final_pbar_min;
   if (r.direct.status == design::DirectResult::Status::kOk) {
@@ -115,6 +128,7 @@ Json weights(const Json& source, const Layout& layout, const design::Weights& w)
   out["layout"] = source;
   out["mode"] = to_string(layout.mode);
   out["n"] = layout.entries.cols();
+  if (!layout.names.empty()) out["names"] = layout.names;
   out["feasible"] = w.feasible;
   out["status"] = design::to_string(w.status);
   out["weights"] = list(w.weights);
@@ -132,19 +146,6 @@ Json weights(const Json& source, const Layout& layout, const design::Weights& w)
   return out;
 }
 
-Layout layout_to_write(const design::AugmentResult& result) {
-  Layout out = result.augmented;
-  std::vector<bool> used(out.candidates.cols(), false);
-  for (const design::AugmentStep& step : result.steps) {
-    if (step.candidate_index >= 0) used[step.candidate_index] = true;
-  }
-  Eigen::Matrix3Xd kept(3, out.candidates.cols());
-  Eigen::Index count = 0;
-  for (Eigen::Index c = 0; c < out.candidates.cols(); ++c) {
-    if (!used[c]) kept.col(count++) = out.candidates.col(c);
-  }
-  out.candidates = kept.leftCols(count);
-  return out;
-}
+Layout layout_to_write(const design::AugmentResult& result) { return result.augmented; }
 
 }  // namespace vantage::design_json

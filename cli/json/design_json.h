@@ -25,7 +25,7 @@ Json design(const Json& source, const Layout& layout, bool direct_asked,
 Json weights(const Json& source, const Layout& layout, const design::Weights& w);
 
 /// The augmented layout as written: the greedy additions appended, the candidates that were used
-/// dropped (they are markers or directions of the layout now).
+/// dropped (they are markers or directions of the layout now): AugmentResult::augmented.
 Layout layout_to_write(const design::AugmentResult& result);
 
 }  // namespace vantage::design_json

@@ -45,9 +45,6 @@ class AdditionSpace {
   virtual bool new_vectors(const Eigen::Vector3d& x, const Eigen::Matrix3Xd& markers,
                            Eigen::Matrix3Xd* out) const = 0;
 
-  /// The markers after adding x (point mode appends x; directions have no markers to grow).
-  virtual void commit(const Eigen::Vector3d& x, Eigen::Matrix3Xd* markers) const = 0;
-
   /// The free search's coarse samples given the current worst viewpoints and the kill-level
   /// minimisers (kill_level.h), appended to *samples in a fixed order.
   virtual void coarse_samples(const WorstCase& current,
@@ -72,6 +69,9 @@ class AdditionSpace {
   /// viewpoints (0 = exactly the paper's rule); 0 for a marker position, where it has no meaning.
   virtual double angle_from_worst_planes_deg(
       const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& viewpoints) const = 0;
+
+  /// Point mode: the search box [lo, hi] (true); direction mode has none (false).
+  virtual bool search_box(Eigen::Vector3d* lo, Eigen::Vector3d* hi) const = 0;
 
   /// Where the free search looks, for the step's note: "search" or "search box".
   virtual const char* search_name() const = 0;

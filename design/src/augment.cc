@@ -4,6 +4,7 @@
 #include "vantage/design/augment.h"
 
 #include <cmath>
+#include <numeric>
 #include <string>
 
 #include "designer.h"
@@ -38,6 +39,10 @@ bool AugmentOptions::is_valid(std::string* why) const {
   if (circle_samples < 4) return invalid_option(why, "circle_samples", "must be >= 4");
   if (grid_samples < 2) return invalid_option(why, "grid_samples", "must be >= 2");
   if (refine_starts < 1) return invalid_option(why, "refine_starts", "must be >= 1");
+  if (search_budget < 0) return invalid_option(why, "search_budget", "must be >= 0");
+  if (!(search_tolerance >= 1e-9 && search_tolerance <= 0.1)) {
+    return invalid_option(why, "search_tolerance", "must be in [1e-9, 0.1]");
+  }
   if (!(refine_tolerance > 0.0 && refine_tolerance <= 0.1)) {
     return invalid_option(why, "refine_tolerance", "must be in (0, 0.1]");
   }
@@ -60,46 +65,58 @@ AugmentResult augment_layout(const Layout& layout, const AugmentOptions& options
   if (options.candidates_only && layout.candidates.cols() == 0) {
     vantage::internal::fail("candidates", "candidates_only needs a layout with candidates");
   }
-  internal::Designer designer(layout, options);
   AugmentResult result;
-  result.initial = designer.evaluate(designer.vectors());
-  result.initial_vector_count = designer.vector_count();
+  const Eigen::Matrix3Xd initial_vectors = data_vectors(layout).vectors;
+  result.initial = evaluate_worst_case(initial_vectors);
+  result.global_solves = 1;
+  result.initial_vector_count = static_cast<int>(initial_vectors.cols());
   result.initial_ceiling = pbar_ceiling(result.initial_vector_count);
-  result.initial_coplanarity = coplanarity(designer.vectors(), options.coplanarity_threshold);
+  result.initial_coplanarity = coplanarity(initial_vectors, options.coplanarity_threshold);
   bool certified = result.initial.certified;
+  // Each step runs on the layout the previous one left (additions appended, used candidates
+  // removed), exactly as a fresh run on that layout would: candidate_ids maps its remaining
+  // candidates back to the input's.
+  Layout current_layout = layout;
+  std::vector<int> candidate_ids(static_cast<std::size_t>(layout.candidates.cols()));
+  std::iota(candidate_ids.begin(), candidate_ids.end(), 0);
   WorstCase current = result.initial;
   for (int s = 0; s < options.add; ++s) {
     if (options.progress) {
       options.progress("step " + std::to_string(s + 1) + "/" + std::to_string(options.add));
     }
+    internal::Designer designer(current_layout, options);
     bool out_of_candidates = false;
     AugmentStep st = designer.step(current, &out_of_candidates);
+    result.global_solves += designer.solves();
     if (out_of_candidates) {
       result.status = AugmentResult::Status::kNoCandidates;
       result.message = "the candidates ran out after " + std::to_string(s) + " step(s)";
       break;
     }
+    if (st.candidate_index >= 0) {
+      const auto used = candidate_ids.begin() + st.candidate_index;
+      st.candidate_index = *used;
+      candidate_ids.erase(used);
+    }
+    current_layout = designer.layout();
     certified = certified && st.worst.certified;
     current = st.worst;
     result.steps.push_back(st);
   }
   result.final_pbar_min = current.pbar_min;
-  result.final_coplanarity = coplanarity(designer.vectors(), options.coplanarity_threshold);
-  result.augmented = layout;
-  const Eigen::Index n0 = layout.entries.cols();
-  const Eigen::Index added = static_cast<Eigen::Index>(result.steps.size());
-  result.augmented.entries.conservativeResize(3, n0 + added);
-  result.augmented.weights.conservativeResize(n0 + added);
-  for (Eigen::Index j = 0; j < added; ++j) {
-    result.augmented.entries.col(n0 + j) = result.steps[j].added;
-    result.augmented.weights(n0 + j) = 1.0;
-  }
+  result.final_coplanarity =
+      coplanarity(data_vectors(current_layout).vectors, options.coplanarity_threshold);
+  result.augmented = current_layout;
   if (options.run_direct && options.add > 0 &&
       result.status != AugmentResult::Status::kNoCandidates) {
     if (options.progress) options.progress("direct optimiser");
+    // The final layout's search box holds the input's and every greedy addition (each lies in
+    // the box of the layout it was added to, which the final markers' box contains).
+    internal::Designer designer(current_layout, options);
     result.direct = options.candidates_only
                         ? internal::exhaustive_candidates(layout, options, current.t, &designer)
                         : internal::multistart_search(layout, options, result, &designer);
+    result.global_solves += designer.solves();
     if (result.direct.status == DirectResult::Status::kOk) {
       certified = certified && result.direct.worst.certified;
     }
@@ -110,7 +127,6 @@ AugmentResult augment_layout(const Layout& layout, const AugmentOptions& options
     result.status = AugmentResult::Status::kNotCertified;
     result.message = "a global worst-viewpoint certificate did not close";
   }
-  result.global_solves = designer.solves();
   return result;
 }
 

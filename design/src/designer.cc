@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "box_search.h"
 #include "kill_level.h"
 #include "text.h"
 #include "vantage/analysis/common.h"
@@ -17,6 +18,15 @@ constexpr int kMaxCompassIterations = 400;
 constexpr double kStepShrink = 0.5;
 
 }  // namespace
+
+void append_entry(const Eigen::Vector3d& x, Layout* layout) {
+  const Eigen::Index n = layout->entries.cols();
+  if (!layout->names.empty()) layout->names.push_back(unused_entry_name(*layout, "added"));
+  layout->entries.conservativeResize(3, n + 1);
+  layout->entries.col(n) = x;
+  layout->weights.conservativeResize(n + 1);
+  layout->weights(n) = 1.0;
+}
 
 bool better(const Score& a, const Score& b, double tie) {
   if (a.t < b.t - tie) return true;
@@ -83,7 +93,7 @@ WorstCase Designer::evaluate_added(const Eigen::Matrix3Xd& added, double stop_ab
 }
 
 Score Designer::score(const Eigen::Vector3d& x, const WorstCase& current, long* screened,
-                      double stop_above) {
+                      double stop_above, std::vector<Eigen::Vector3d>* viewpoints) {
   Score s;
   Eigen::Matrix3Xd added;
   if (!space_->new_vectors(x, markers_, &added)) return s;
@@ -98,6 +108,7 @@ Score Designer::score(const Eigen::Vector3d& x, const WorstCase& current, long* 
       margin = std::min(margin, current.t - proj);
     } else {
       ++survivors;
+      if (viewpoints != nullptr) viewpoints->push_back(a);
     }
   }
   s.kill_margin = std::isfinite(margin) ? margin : 0.0;
@@ -109,6 +120,7 @@ Score Designer::score(const Eigen::Vector3d& x, const WorstCase& current, long* 
   }
   bool stopped = false;
   const WorstCase w = evaluate_added(added, stop_above, &stopped);
+  if (viewpoints != nullptr) *viewpoints = w.worst_viewpoints;
   s.t = w.t;
   s.n_worst =
       stopped ? std::numeric_limits<int>::max() : static_cast<int>(w.worst_viewpoints.size());
@@ -187,23 +199,56 @@ Designer::Option Designer::choose(std::vector<Option>* options, const WorstCase&
     if (o.x != (*options)[r].x) o.candidate_index = -1;
     if (better(o.score, chosen.score, options_.tie_tolerance)) chosen = o;
   }
+  search_box(&chosen, current, st);
   return chosen;
 }
 
+void Designer::search_box(Option* chosen, const WorstCase& current, AugmentStep* st) {
+  Eigen::Vector3d lo, hi;
+  if (!space_->search_box(&lo, &hi) || options_.search_budget == 0) return;
+  const long max_solves =
+      std::max<long>(1, options_.search_budget / std::max<Eigen::Index>(1, vectors_.cols()));
+  Eigen::Matrix3Xd unit_vectors = vectors_;
+  for (Eigen::Index j = 0; j < unit_vectors.cols(); ++j) unit_vectors.col(j).normalize();
+  BoxSearchCalls calls;
+  calls.probe = [&](const Eigen::Vector3d& x, std::vector<Eigen::Vector3d>* viewpoints) {
+    return score(x, current, &st->screened, std::numeric_limits<double>::infinity(), viewpoints);
+  };
+  calls.polish = [&](const Eigen::Vector3d& x, Score* s, double step) {
+    return polish(x, s, step, current, &st->screened);
+  };
+  calls.solves = [this] { return solves_; };
+  const BoxSearchResult r = internal::search_box(
+      lo, hi, markers_, unit_vectors, current.worst_viewpoints, chosen->x, chosen->score,
+      options_.search_tolerance, options_.tie_tolerance, max_solves, calls);
+  st->search_t_lower = r.t_lower;
+  st->search_closed = r.closed;
+  st->search_unresolved = r.unresolved;
+  st->search_solves = r.solves;
+  if (r.x != chosen->x) *chosen = {r.x, -1, r.score};
+}
+
 void Designer::commit(const Option& chosen) {
-  if (chosen.candidate_index >= 0) used_[chosen.candidate_index] = true;
   Eigen::Matrix3Xd added;
   VANTAGE_CHECK(space_->new_vectors(chosen.x, markers_, &added), "chosen addition is degenerate");
-  Eigen::Matrix3Xd all(3, vectors_.cols() + added.cols());
-  all << vectors_, added;
-  vectors_ = all;
-  space_->commit(chosen.x, &markers_);
+  if (chosen.candidate_index >= 0) {
+    const Eigen::Index c = chosen.candidate_index;
+    const Eigen::Index n = layout_.candidates.cols();
+    Eigen::Matrix3Xd kept(3, n - 1);
+    kept << layout_.candidates.leftCols(c), layout_.candidates.rightCols(n - 1 - c);
+    layout_.candidates = kept;
+    used_.erase(used_.begin() + c);
+  }
+  append_entry(chosen.x, &layout_);
+  vectors_ = data_vectors(layout_).vectors;
+  markers_ = layout_.entries;
 }
 
 void Designer::describe(const WorstCase& current, const Option& chosen, AugmentStep* st) {
   st->added = chosen.x;
   st->candidate_index = chosen.candidate_index;
-  st->worst = evaluate(vectors_);
+  ++solves_;
+  st->worst = evaluate_worst_case(vectors_, sdp::WorstViewpointOptions{}, nullptr);
   st->vector_count = vector_count();
   st->ceiling = pbar_ceiling(st->vector_count);
   st->improved = st->worst.t < current.t - options_.tie_tolerance;

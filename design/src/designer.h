@@ -45,10 +45,22 @@ inline constexpr double kPreparedLevel = 0.7;
 /// ~level / 2, as costly as many whole solves.
 inline constexpr double kMinPreparedLevel = 1e-4;
 
+/// Appends `x` to the layout's entries with weight 1; in a named layout it gets the first free
+/// name "added<k>" (unused_entry_name), so the names stay one per entry.
+void append_entry(const Eigen::Vector3d& x, Layout* layout);
+
+/// One greedy step on one layout. Everything a step does is a function of that layout (its
+/// entries, the canonical data_vectors() order, its remaining candidates, the search box of its
+/// markers) and of the options: a step is the same whether it is the second of `--add 2` or
+/// the first of `--add 1` on the layout the first step wrote. augment_layout() makes one
+/// Designer per step (and one, on the final layout, for the direct optimiser).
 class Designer {
  public:
   Designer(const Layout& layout, const AugmentOptions& options);
 
+  /// The layout: as given, and after step() with the addition appended and the candidate it
+  /// used (if any) removed.
+  const Layout& layout() const { return layout_; }
   int vector_count() const { return static_cast<int>(vectors_.cols()); }
   const Eigen::Matrix3Xd& vectors() const { return vectors_; }
   const AdditionSpace& space() const { return *space_; }
@@ -73,8 +85,10 @@ class Designer {
                            double stop_above = std::numeric_limits<double>::infinity(),
                            bool* stopped = nullptr);
 
-  /// One greedy step from the current worst case; *out_of_candidates is set (and the step is
-  /// empty) when there is nothing left to add.
+  /// One greedy step from `current`, the worst case of layout() (evaluate_worst_case of its
+  /// data vectors, as the step reports its own); *out_of_candidates is set (and the step is
+  /// empty) when there is nothing left to add. The step's candidate_index is into layout()'s
+  /// candidates before the step. Call once.
   AugmentStep step(const WorstCase& current, bool* out_of_candidates);
 
  private:
@@ -89,9 +103,11 @@ class Designer {
   std::vector<Option> generate(const WorstCase& current, AugmentStep* st);
   // Choice: the best option after polishing the best few (unless candidates_only).
   Option choose(std::vector<Option>* options, const WorstCase& current, AugmentStep* st);
-  // Commit: mark the candidate used and append the new data vectors (and marker).
+  // Commit: append the addition to the layout (removing the candidate it used) and recompute
+  // the data vectors and markers from it.
   void commit(const Option& chosen);
-  // Description: the new worst case and the step's note in plain words.
+  // Description: the new worst case (a hint-free solve of the new layout's data vectors, so
+  // that it equals a fresh run's initial one) and the step's note in plain words.
   void describe(const WorstCase& current, const Option& chosen, AugmentStep* st);
 
   // The global solver's options of one solve: hints and stop_above when prune_solves.
@@ -101,14 +117,19 @@ class Designer {
 
   // Score of adding x; solves only when x kills every current worst viewpoint. A score whose t
   // would exceed stop_above need not be exact: the solve may stop with t a value above it (and
-  // n_worst = max), which ranks it behind every score with t <= stop_above - tie.
+  // n_worst = max), which ranks it behind every score with t <= stop_above - tie. With
+  // `viewpoints`, the viewpoints where x's t is attained are stored there (the surviving worst
+  // viewpoints when x does not kill them all).
   Score score(const Eigen::Vector3d& x, const WorstCase& current, long* screened,
-              double stop_above = std::numeric_limits<double>::infinity());
+              double stop_above = std::numeric_limits<double>::infinity(),
+              std::vector<Eigen::Vector3d>* viewpoints = nullptr);
+  // Point mode: the branch and bound over the search box (box_search.h) from `chosen`.
+  void search_box(Option* chosen, const WorstCase& current, AugmentStep* st);
   // Compass search from x, starting with `step`.
   Eigen::Vector3d polish(Eigen::Vector3d x, Score* s, double step, const WorstCase& current,
                          long* screened);
 
-  const Layout& layout_;
+  Layout layout_;
   const AugmentOptions& options_;
   std::unique_ptr<AdditionSpace> space_;
   Eigen::Matrix3Xd vectors_;

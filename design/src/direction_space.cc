@@ -31,8 +31,6 @@ class DirectionSpace final : public AdditionSpace {
     return true;
   }
 
-  void commit(const Eigen::Vector3d&, Eigen::Matrix3Xd*) const override {}
-
   // The paper's rule (samples of every great circle a_k^perp, half circles since c ~ -c), then
   // the points where one direction kills every worst viewpoint at once.
   void coarse_samples(const WorstCase& current, const std::vector<Eigen::Vector3d>& kill_points,
@@ -76,6 +74,8 @@ class DirectionSpace final : public AdditionSpace {
     for (const Eigen::Vector3d& a : viewpoints) nearest = std::min(nearest, std::abs(a.dot(x)));
     return std::asin(std::min(1.0, nearest)) * kDegreesPerRadian;
   }
+
+  bool search_box(Eigen::Vector3d*, Eigen::Vector3d*) const override { return false; }
 
   const char* search_name() const override { return "search"; }
 

@@ -38,12 +38,6 @@ class PointSpace final : public AdditionSpace {
     return true;
   }
 
-  void commit(const Eigen::Vector3d& x, Eigen::Matrix3Xd* markers) const override {
-    Eigen::Matrix3Xd grown(3, markers->cols() + 1);
-    grown << *markers, x;
-    *markers = grown;
-  }
-
   // A regular grid_samples^3 grid over the box.
   void coarse_samples(const WorstCase&, const std::vector<Eigen::Vector3d>&,
                       std::vector<Eigen::Vector3d>* samples) const override {
@@ -87,6 +81,12 @@ class PointSpace final : public AdditionSpace {
   double angle_from_worst_planes_deg(const Eigen::Vector3d&,
                                      const std::vector<Eigen::Vector3d>&) const override {
     return 0.0;
+  }
+
+  bool search_box(Eigen::Vector3d* lo, Eigen::Vector3d* hi) const override {
+    *lo = box_lo_;
+    *hi = box_hi_;
+    return true;
   }
 
   const char* search_name() const override { return "search box"; }

@@ -128,6 +128,8 @@ AprilTagMarkers read_markers(std::string_view text, const std::string& source,
       layout.entries.col(j) = corners ? Eigen::Vector3d(R_bundle_tag * corner_tag[c] + p) : p;
       out.tag_ids.push_back(static_cast<int>(id));
       out.corners.push_back(corners ? c : -1);
+      layout.names.push_back("tag" + std::to_string(id) +
+                             (corners ? "_c" + std::to_string(c) : std::string()));
       labels.push_back(where + " (tag " + std::to_string(id) +
                        (corners ? ", corner " + std::to_string(c) : std::string()) + ")");
     }

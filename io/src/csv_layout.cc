@@ -139,6 +139,7 @@ CsvMarkers parse_csv_markers(std::string_view text, const std::string& source) {
     out.names.push_back(name);
     labels.push_back(where(row, name));
   }
+  layout.names = out.names;
   internal::validate_labelled(layout, source, labels);
   return out;
 }

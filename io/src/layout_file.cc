@@ -1,5 +1,8 @@
 #include "vantage/io/layout_file.h"
 
+#include <string>
+#include <vector>
+
 #include "json_fields.h"
 #include "vantage/analysis/common.h"
 
@@ -7,10 +10,24 @@ namespace vantage::io {
 
 using internal::fail;
 
+namespace {
+
+std::vector<std::string> read_names(const nlohmann::json& value, const std::string& source) {
+  if (!value.is_array()) fail(source, "names: expected a list of strings");
+  std::vector<std::string> names;
+  names.reserve(value.size());
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    names.push_back(internal::read_string(value[i], source, "names[" + std::to_string(i) + "]"));
+  }
+  return names;
+}
+
+}  // namespace
+
 Layout parse_layout(std::string_view text, const std::string& source) {
   const nlohmann::json root = internal::parse_object(text, source);
   internal::reject_unknown_fields(
-      root, source, {"name", "description", "vectors", "points", "weights", "candidates"});
+      root, source, {"name", "description", "vectors", "points", "names", "weights", "candidates"});
   const bool has_vectors = root.contains("vectors");
   const bool has_points = root.contains("points");
   if (has_vectors == has_points) {
@@ -27,6 +44,7 @@ Layout parse_layout(std::string_view text, const std::string& source) {
                            ? internal::read_string(root["description"], source, "description")
                            : "";
   layout.entries = internal::read_vectors<3>(root[field], source, field);
+  if (root.contains("names")) layout.names = read_names(root["names"], source);
   layout.weights = root.contains("weights")
                        ? internal::read_numbers(root["weights"], source, "weights")
                        : Eigen::VectorXd::Ones(layout.entries.cols());
@@ -55,6 +73,7 @@ std::string layout_to_json(const Layout& layout) {
   out["name"] = layout.name;
   if (!layout.description.empty()) out["description"] = layout.description;
   out[layout.entries_field()] = rows(layout.entries);
+  if (!layout.names.empty()) out["names"] = layout.names;
   out["weights"] =
       std::vector<double>(layout.weights.data(), layout.weights.data() + layout.weights.size());
   if (layout.candidates.cols() > 0) out["candidates"] = rows(layout.candidates);

@@ -35,10 +35,19 @@ const char* to_string(LayoutFormat format) {
   return "unknown";
 }
 
-LayoutFormat layout_format_of(const std::string& path) {
+namespace {
+
+std::string lower_extension(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+}  // namespace
+
+LayoutFormat layout_format_of(const std::string& path) {
+  const std::string extension = lower_extension(path);
   if (extension == ".json") return LayoutFormat::kJson;
   if (extension == ".csv") return LayoutFormat::kCsv;
   if (extension == ".yaml" || extension == ".yml") return LayoutFormat::kAprilTag;
@@ -64,6 +73,39 @@ Layout parse_layout_as(std::string_view text, const std::string& source,
 
 Layout load_layout(const std::string& path, const LayoutReadOptions& options) {
   return parse_layout_as(read_text_file(path, options.max_bytes), path, options);
+}
+
+LayoutFormat layout_write_format(const std::string& path) {
+  const std::string extension = lower_extension(path);
+  if (extension == ".json") return LayoutFormat::kJson;
+  if (extension == ".csv") return LayoutFormat::kCsv;
+  if (extension == ".yaml" || extension == ".yml") {
+    internal::fail(path,
+                   "cannot write an AprilTag bundle (it describes printed tags, which a layout "
+                   "does not hold); name the file .json or .csv");
+  }
+  internal::fail(path, "cannot tell the layout format from the extension \"" + extension +
+                           "\"; name the file .json or .csv");
+}
+
+std::string layout_to_text(const Layout& layout, LayoutFormat format) {
+  if (format == LayoutFormat::kCsv) return layout_to_csv(layout);
+  if (format == LayoutFormat::kAprilTag) {
+    throw InvalidArgument("format: AprilTag bundles are read only; write json or csv");
+  }
+  layout.validate();
+  return layout_to_json(layout);
+}
+
+void save_layout(const std::string& path, const Layout& layout, bool overwrite) {
+  const LayoutFormat format = layout_write_format(path);
+  std::string text;
+  try {
+    text = layout_to_text(layout, format);
+  } catch (const InvalidArgument& e) {
+    internal::fail(path, e.what());
+  }
+  write_text_file(path, text, overwrite);
 }
 
 }  // namespace vantage::io

@@ -42,8 +42,25 @@ io::LayoutReadOptions read_options_from(const py::kwargs& kwargs) {
   return options;
 }
 
+std::vector<std::string> names_from(const py::object& names) {
+  if (names.is_none()) return {};
+  if (py::isinstance<py::str>(names)) {
+    throw InvalidArgument("names: expected a list of strings (one per entry), got a string");
+  }
+  std::vector<std::string> out;
+  std::size_t i = 0;
+  for (const py::handle item : py::iter(names)) {
+    if (!py::isinstance<py::str>(item)) {
+      throw InvalidArgument("names[" + std::to_string(i) + "]: expected a string");
+    }
+    out.push_back(item.cast<std::string>());
+    ++i;
+  }
+  return out;
+}
+
 Layout make_layout(const py::object& vectors, const py::object& points, const py::object& weights,
-                   const py::object& candidates, const std::string& name,
+                   const py::object& candidates, const py::object& names, const std::string& name,
                    const std::string& description) {
   if (vectors.is_none() == points.is_none()) {
     throw InvalidArgument(
@@ -60,6 +77,7 @@ Layout make_layout(const py::object& vectors, const py::object& points, const py
                                      : vector_from_array(weights, "weights");
   layout.candidates =
       candidates.is_none() ? Eigen::Matrix3Xd(3, 0) : rows_from_array<3>(candidates, "candidates");
+  layout.names = names_from(names);
   layout.validate();
   return layout;
 }
@@ -77,7 +95,7 @@ Layout layout_from_arguments(const py::object& layout, const py::object& vectors
   source->clear();
   if (layout.is_none()) {
     if (read_options.size() > 0) read_options_from(read_options);  // rejects unknown names
-    return make_layout(vectors, points, weights, candidates, "", "");
+    return make_layout(vectors, points, weights, candidates, py::none(), "", "");
   }
   if (!vectors.is_none() || !points.is_none() || !weights.is_none() || !candidates.is_none()) {
     throw InvalidArgument(
@@ -95,13 +113,23 @@ void bind_layouts(py::module_& module) {
                      "with weights and optional candidates. Arrays are n x 3.")
       .def(py::init([](const py::object& vectors, const py::object& points,
                        const py::object& weights, const py::object& candidates,
-                       const std::string& name, const std::string& description) {
-             return make_layout(vectors, points, weights, candidates, name, description);
+                       const py::object& names, const std::string& name,
+                       const std::string& description) {
+             return make_layout(vectors, points, weights, candidates, names, name, description);
            }),
            py::kw_only(), py::arg("vectors") = py::none(), py::arg("points") = py::none(),
            py::arg("weights") = py::none(), py::arg("candidates") = py::none(),
-           py::arg("name") = "", py::arg("description") = "")
+           py::arg("names") = py::none(), py::arg("name") = "", py::arg("description") = "")
       .def_readonly("name", &Layout::name)
+      .def_property_readonly(
+          "names",
+          [](const Layout& l) {
+            std::vector<std::string> names;
+            for (Eigen::Index i = 0; i < l.entries.cols(); ++i) names.push_back(l.entry_name(i));
+            return names;
+          },
+          "One name per entry: the file's (CSV name column, AprilTag tag3_c0, JSON names), or "
+          "p0, p1, ... (v0, ... for vectors) when it has none")
       .def_readonly("description", &Layout::description)
       .def_property_readonly("mode", [](const Layout& l) { return to_string(l.mode); })
       .def_property_readonly(
@@ -132,10 +160,12 @@ void bind_layouts(py::module_& module) {
   module.def(
       "save_layout",
       [](const Layout& layout, const py::object& path, bool overwrite) {
-        io::write_layout(path_from(path), layout, overwrite);
+        io::save_layout(path_from(path), layout, overwrite);
       },
       py::arg("layout"), py::arg("path"), py::kw_only(), py::arg("overwrite") = false,
-      "Writes the layout as JSON; refuses to replace an existing file unless overwrite=True.");
+      "Writes the layout in the format its extension names: .json (everything) or .csv "
+      "(markers: name,x,y,z,weight; refused for vectors or candidates); .yaml and other "
+      "extensions are refused. Refuses to replace an existing file unless overwrite=True.");
   module.def(
       "board",
       [](const std::string& type, int rows, int cols, double square, double marker,

@@ -156,3 +156,39 @@ def test_cli_reads_what_python_writes(vantage, tmp_path):
     vantage.save_layout(layout, tmp_path / "body.json")
     out, _ = run_cli("weights", tmp_path / "body.json", "--json")
     assert '"n": 5' in out
+
+
+def test_save_layout_writes_the_format_the_extension_names(vantage, tmp_path):
+    body = vantage.load_layout(LAYOUTS / "mocap_rigid_body.csv")
+    assert body.names == ["hub", "arm_long", "arm_short", "arm_side", "mast"]
+    vantage.save_layout(body, tmp_path / "body.csv")
+    text = (tmp_path / "body.csv").read_text()
+    assert text.splitlines()[-5].startswith("hub,")
+    assert "{" not in text
+    again = vantage.load_layout(tmp_path / "body.csv")
+    assert again.names == body.names
+    np.testing.assert_array_equal(again.entries, body.entries)
+    np.testing.assert_array_equal(again.weights, body.weights)
+    vantage.save_layout(body, tmp_path / "body.json")
+    assert vantage.load_layout(tmp_path / "body.json").names == body.names
+    for name, expected in [("tags.yaml", "cannot write an AprilTag bundle"),
+                           ("body.txt", "name the file .json or .csv")]:
+        with pytest.raises(ValueError, match=expected):
+            vantage.save_layout(body, tmp_path / name)
+        assert not (tmp_path / name).exists()
+    with pytest.raises(ValueError, match="holds marker positions"):
+        vantage.save_layout(vantage.Layout(vectors=TRIAD), tmp_path / "triad.csv")
+
+
+def test_layout_names_are_given_checked_and_defaulted(vantage):
+    named = vantage.Layout(points=[[0, 0, 0], [1, 0, 0], [0, 1, 0]], names=["a", "b", "c"])
+    assert named.names == ["a", "b", "c"]
+    assert named.to_dict()["names"] == ["a", "b", "c"]
+    assert vantage.Layout(vectors=TRIAD).names == ["v0", "v1", "v2"]
+    assert "names" not in vantage.Layout(vectors=TRIAD).to_dict()
+    with pytest.raises(ValueError, match=r"names\[2\]: repeats names\[0\]"):
+        vantage.Layout(points=[[0, 0, 0], [1, 0, 0], [0, 1, 0]], names=["a", "b", "a"])
+    with pytest.raises(ValueError, match="names: expected 3 entries"):
+        vantage.Layout(points=[[0, 0, 0], [1, 0, 0], [0, 1, 0]], names=["a"])
+    with pytest.raises(ValueError, match="got a string"):
+        vantage.Layout(vectors=TRIAD, names="xyz")

@@ -117,9 +117,7 @@ std::string LayoutReport::brief_report() const {
   return out.str();
 }
 
-std::string LayoutReport::entry_label(long k) const {
-  return (layout.mode == LayoutMode::kPoints ? "p" : "v") + std::to_string(k);
-}
+std::string LayoutReport::entry_label(long k) const { return layout.entry_name(k); }
 
 std::string LayoutReport::vector_label(long k) const {
   if (data.pairs.empty()) return "v" + std::to_string(k);

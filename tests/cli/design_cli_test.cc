@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <random>
 
 #include "support/cli_runner.h"
 
@@ -145,6 +146,60 @@ TEST(DesignCli, WrittenLayoutReanalysesToEveryReportedStep) {
               two["steps"][0]["pbar_min"].get<double>(), kSameLayout);
   EXPECT_NEAR(again_two["initial"]["max_worst_case_error_deg"].get<double>(),
               two["steps"][1]["max_worst_case_error_deg"].get<double>(), kSameLayoutDeg);
+}
+
+// Four arm tips and a top marker (issue 17's drone; tests/design/augment_search_test.cc).
+constexpr const char* kDrone = R"({"name": "drone", "points": [
+  [0.1263, 0.1632, -0.0053], [-0.1183, 0.1462, -0.0111], [-0.1448, -0.1299, 0.0016],
+  [0.1499, -0.1345, -0.0101], [0.0280, -0.0209, 0.0431]]})";
+
+TEST(DesignCli, PointStepsAreTheSameWhereverTheyRunFrom) {
+  // --add 2 in one run, and --add 1 on the layout --add 1 wrote: the same second marker.
+  ScratchDir scratch;
+  scratch.write("drone.json", kDrone);
+  const auto two = run_json("design drone.json --add 2 --no-direct", scratch);
+  run_json("design drone.json --add 1 --no-direct --write one.json", scratch);
+  const auto again = run_json("design one.json --add 1 --no-direct", scratch);
+  EXPECT_EQ(two["steps"][1]["added"], again["steps"][0]["added"]);
+  EXPECT_EQ(two["steps"][1]["pbar_min"], again["steps"][0]["pbar_min"]);
+  EXPECT_EQ(two["final_pbar_min"], again["final_pbar_min"]);
+}
+
+TEST(DesignCli, TheDefaultBoxFindsAtLeastWhatTheMarkersOwnBoxFinds) {
+  ScratchDir scratch;
+  scratch.write("drone.json", kDrone);
+  const auto inner = run_json("design drone.json --add 1 --no-direct --margin 0", scratch);
+  const auto grown = run_json("design drone.json --add 1 --no-direct", scratch);
+  EXPECT_GE(grown["final_pbar_min"].get<double>(),
+            inner["final_pbar_min"].get<double>() - kMonotone);
+  EXPECT_TRUE(grown["steps"][0]["search"]["closed"].get<bool>());
+  EXPECT_LE(grown["steps"][0]["search"]["t_lower"].get<double>(),
+            grown["steps"][0]["t"].get<double>());
+}
+
+TEST(DesignCli, LimitsComeFromTheEstimatedTimeNotFromCounts) {
+  // 30 markers --add 3 (528 data vectors) was refused at 200 data vectors although it takes a
+  // few seconds; its estimate is 7.5 s of the 30 s budget (cli/limits.h). --add 20 on the same
+  // layout is estimated at 76 s and refused, before any work, unless --allow-large.
+  ScratchDir scratch;
+  nlohmann::json layout;
+  std::mt19937 rng(30);
+  std::uniform_real_distribution<double> box(-1.0, 1.0);
+  for (int k = 0; k < 30; ++k) layout["points"].push_back({box(rng), box(rng), box(rng)});
+  scratch.write("rand30.json", layout.dump());
+  const auto json = run_json("design rand30.json --add 3 --no-direct", scratch);
+  EXPECT_EQ(json["steps"].size(), 3u);
+  EXPECT_EQ(json["steps"][2]["n_vectors"], 528);
+  testing::expect_bad_input(run_vantage("design rand30.json --add 20", scratch),
+                            "rand30.json: --add 20 on 1225 data vectors: about 77 s of CPU exceeds "
+                            "the budget of 30 s");
+  // A larger search budget is part of the estimate: 3 x (1.5 s + 1.1e-6 s x 99 550 000 + 1.9e-3 s
+  // x 528).
+  testing::expect_bad_input(
+      run_vantage("design rand30.json --add 3 --search-budget 100000000", scratch),
+      "about 336 s of CPU exceeds the budget of 30 s");
+  testing::expect_bad_input(run_vantage("design rand30.json --add 1 --search-budget -1", scratch),
+                            "--search-budget: must be >= 0");
 }
 
 TEST(DesignCli, CandidatesOnlyPicksACandidateAndWritesItAsAMarker) {

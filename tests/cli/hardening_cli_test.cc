@@ -145,7 +145,8 @@ TEST(HardeningCli, MarginOutOfRangeIsRejectedAsSuch) {
 TEST(HardeningCli, LimitsAreCheckedBeforeAnyWork) {
   ScratchDir scratch;
   expect_bad_input(run_vantage("design '" + kTriad + "' --add 1000000", scratch),
-                   "--add: 1000000 exceeds the limit of 20 for `vantage design` (--allow-large");
+                   "--add 1000000 on 1000003 data vectors: about 500001500 s of CPU exceeds the "
+                   "budget of 30 s for `vantage design`");
   // /dev/zero as a layout: the read stops at the file size bound.
   expect_bad_input(run_vantage("analyze /dev/zero", scratch), "/dev/zero: larger than 67108864");
   // 201 points give 20 100 free vectors, beyond analyze's 20 000.
@@ -167,7 +168,7 @@ TEST(HardeningCli, LimitsAreCheckedBeforeAnyWork) {
   huge << "]}";
   scratch.write("huge.json", huge.str());
   expect_bad_input(run_vantage("analyze huge.json", scratch), "1249975000 exceeds the limit");
-  expect_bad_input(run_vantage("design huge.json --add 1", scratch), "exceeds the limit");
+  expect_bad_input(run_vantage("design huge.json --add 1", scratch), "exceeds the budget");
 }
 
 TEST(HardeningCli, WeightsOnAHundredThousandVectors) {

@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "support/eigen_testing.h"
 #include "vantage/analysis/common.h"
 
@@ -93,6 +95,67 @@ TEST(CsvLayout, HeaderCommentsBlanksQuotesCrlfAndBomAreTolerated) {
   EXPECT_THAT(m.names, ElementsAre("m 1", "m2", "m3"));
   EXPECT_EIGEN_NEAR(m.layout.entries.col(0), Eigen::Vector3d(1.5, -2, 0.3), kExact);
   EXPECT_EIGEN_NEAR(m.layout.weights, Eigen::Vector3d(2, 0.5, 1), kExact);
+}
+
+TEST(CsvLayout, NamesBecomeTheLayoutsNames) {
+  const Layout layout =
+      parse_csv_layout("name,x,y,z\nLED1,0,0,0\nLED2,1,0,0\nhub,0,1,0\n", "b.csv");
+  EXPECT_THAT(layout.names, ElementsAre("LED1", "LED2", "hub"));
+}
+
+// Independent truth: the text parse_csv_markers() reads back, compared bit for bit with what was
+// written, for values with and without a short decimal form (0.1 prints as 0.1, 1/3 needs 17
+// digits); the test checks the reading back, not the digits.
+TEST(CsvLayout, WrittenCsvReadsBackExactly) {
+  Layout layout;
+  layout.name = "body";
+  layout.description = "two lines\nof text";
+  layout.mode = LayoutMode::kPoints;
+  layout.entries.resize(3, 4);
+  layout.entries << 0.1, -1.0 / 3.0, 1e-300, 12345.678901234567, 0.2, 2.0 / 7.0, -5e7, 0, 0.3,
+      std::nextafter(1.0, 2.0), 4, -0.0;
+  layout.weights = Eigen::Vector4d(1, 0.5, 1.0 / 3.0, 7);
+  layout.names = {"LED1", "m 2", "tip", "LED:4"};
+  const std::string text = layout_to_csv(layout);
+  EXPECT_THAT(text, HasSubstr("name,x,y,z,weight\nLED1,0.1,0.2,0.3,1\n"));
+  EXPECT_THAT(text, HasSubstr("# name: body\n# description: two lines of text\n"));
+  const CsvMarkers again = parse_csv_markers(text, "body.csv");
+  EXPECT_TRUE((again.layout.entries.array() == layout.entries.array()).all());
+  EXPECT_TRUE((again.layout.weights.array() == layout.weights.array()).all());
+  EXPECT_EQ(again.layout.names, layout.names);
+  // An unnamed layout's markers are written under the names the rest of vantage shows.
+  layout.names.clear();
+  EXPECT_THAT(parse_csv_markers(layout_to_csv(layout), "b.csv").layout.names,
+              ElementsAre("p0", "p1", "p2", "p3"));
+}
+
+TEST(CsvLayout, WriterRefusesWhatCsvCannotHold) {
+  Layout layout;
+  layout.mode = LayoutMode::kPoints;
+  layout.entries = Eigen::Matrix3d::Identity();
+  layout.weights = Eigen::Vector3d::Ones();
+  auto error = [&] {
+    try {
+      layout_to_csv(layout);
+    } catch (const InvalidArgument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  layout.names = {"a", "b,c", "d"};
+  EXPECT_THAT(error(), HasSubstr("names[1]: \"b,c\" contains a comma"));
+  layout.names = {"a", "b", " c"};
+  EXPECT_THAT(error(), HasSubstr("names[2]"));
+  layout.names = {"#a", "b", "c"};
+  EXPECT_THAT(error(), HasSubstr("names[0]"));
+  layout.names = {"a", "b", "c\"d"};
+  EXPECT_THAT(error(), HasSubstr("names[2]"));
+  layout.names.clear();
+  layout.candidates = Eigen::Vector3d(1, 1, 1);
+  EXPECT_THAT(error(), HasSubstr("candidates: a CSV layout cannot hold the 1 candidates"));
+  layout.candidates.resize(3, 0);
+  layout.mode = LayoutMode::kVectors;
+  EXPECT_THAT(error(), HasSubstr("vectors: a CSV layout holds marker positions"));
 }
 
 TEST(CsvLayout, ErrorLinesCountCommentsAndBlanks) {

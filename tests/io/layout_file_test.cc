@@ -106,6 +106,15 @@ const BadLayout kBadLayouts[] = {
     {"TinyVector", R"({"vectors": [[1,0,0],[1e-320,0,0]]})", "vectors[1]: length outside"},
     {"HugeWeight", R"({"vectors": [[1,0,0],[0,1,0]], "weights": [1e200, 1]})",
      "weights[0]: must be <= 1e100"},
+    {"NamesNotAList", R"({"vectors": [[1,0,0],[0,1,0]], "names": "xy"})",
+     "names: expected a list of strings"},
+    {"NameEntryNotString", R"({"vectors": [[1,0,0],[0,1,0]], "names": ["x", 2]})",
+     "names[1]: expected a string"},
+    {"NamesWrongLength", R"({"points": [[1,0,0],[0,1,0],[0,0,1]], "names": ["a", "b"]})",
+     "names: expected 3 entries (one per point), got 2"},
+    {"NameEmpty", R"({"vectors": [[1,0,0],[0,1,0]], "names": ["x", ""]})", "names[1]: empty name"},
+    {"NameRepeated", R"({"points": [[1,0,0],[0,1,0],[0,0,1]], "names": ["a", "b", "a"]})",
+     "names[2]: repeats names[0]"},
     // Found by the fuzzer: a key with an escaped newline, named in the error, kept it raw. Control
     // characters of the user's text are written \xNN.
     {"NewlineInKeyOfBadJson", R"({"po\ntsanem14": [1, )", "not valid JSON: po\\x0atsanem14"},
@@ -153,6 +162,23 @@ TEST(LayoutFile, RoundTripsThroughWrite) {
   EXPECT_EIGEN_NEAR(again.entries, layout.entries, kExact);
   EXPECT_EIGEN_NEAR(again.weights, layout.weights, kExact);
   EXPECT_EIGEN_NEAR(again.candidates, layout.candidates, kExact);
+}
+
+// Marker names are part of the file: read, written back in entry order, read again.
+TEST(LayoutFile, NamesRoundTripAndAreOptional) {
+  const Layout layout = parse_layout(
+      R"({"points": [[0,0,0],[1,0.5,0],[0,2,-1]], "names": ["hub", "arm 1", "LED3"]})", "t.json");
+  EXPECT_EQ(layout.names, (std::vector<std::string>{"hub", "arm 1", "LED3"}));
+  EXPECT_EQ(layout.entry_name(1), "arm 1");
+  const std::string text = layout_to_json(layout);
+  EXPECT_THAT(text, HasSubstr("\"names\""));
+  EXPECT_EQ(parse_layout(text, "again.json").names, layout.names);
+  // Unnamed layouts stay unnamed in the file; their entries are called by their index.
+  const Layout unnamed = parse_layout(R"({"vectors": [[1,0,0],[0,1,0]]})", "t.json");
+  EXPECT_TRUE(unnamed.names.empty());
+  EXPECT_THAT(layout_to_json(unnamed), Not(HasSubstr("names")));
+  EXPECT_EQ(unnamed.entry_name(1), "v1");
+  EXPECT_EQ(unused_entry_name(layout, "added"), "added1");
 }
 
 // Found by the fuzzer: a name read from a YAML or CSV file need not be UTF-8; writing it as JSON

@@ -2,6 +2,12 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "support/eigen_testing.h"
 #include "vantage/analysis/common.h"
@@ -11,6 +17,7 @@ namespace vantage::io {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 const std::string kExamples = std::string(VANTAGE_SOURCE_DIR) + "/examples/layouts/";
 
@@ -85,6 +92,71 @@ TEST(LayoutFormats, AprilTagCubeCornersLieOnTheCubeFaces) {
   Eigen::Matrix3Xd expected(3, 3);
   expected << 0, 0.05, 0, 0, 0, 0.05, 0.05, 0, 0;
   EXPECT_EIGEN_NEAR(centred.entries, expected, kExact);
+}
+
+TEST(LayoutFormats, EveryFormatNamesItsMarkers) {
+  EXPECT_EQ(load_layout(kExamples + "mocap_rigid_body.csv").names,
+            (std::vector<std::string>{"hub", "arm_long", "arm_short", "arm_side", "mast"}));
+  const Layout cube = load_layout(kExamples + "apriltag_cube.yaml");
+  ASSERT_EQ(cube.names.size(), 12u);
+  EXPECT_EQ(cube.names[0], "tag0_c0");
+  EXPECT_EQ(cube.names[7], "tag1_c3");
+  LayoutReadOptions centres;
+  centres.apriltag.tag_points = TagPoints::kCentres;
+  EXPECT_EQ(load_layout(kExamples + "apriltag_cube.yaml", centres).names,
+            (std::vector<std::string>{"tag0", "tag1", "tag2"}));
+}
+
+// A scratch directory removed with the object.
+struct Scratch {
+  Scratch() {
+    path = std::filesystem::temp_directory_path() /
+           ("vantage_formats_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(path);
+  }
+  ~Scratch() { std::filesystem::remove_all(path); }
+  std::string file(const std::string& name) const { return (path / name).string(); }
+  std::filesystem::path path;
+};
+
+TEST(LayoutFormats, SaveWritesTheFormatTheExtensionNames) {
+  Scratch scratch;
+  const Layout csv = load_layout(kExamples + "mocap_rigid_body.csv");
+  save_layout(scratch.file("body.csv"), csv);
+  save_layout(scratch.file("body.JSON"), csv);
+  // The .csv file is CSV (a JSON reader refuses it) and the .JSON file is JSON; both hold the
+  // same markers, weights and names.
+  EXPECT_THROW(parse_layout(read_text_file(scratch.file("body.csv")), "body.csv"), InvalidArgument);
+  const Layout from_csv = load_layout(scratch.file("body.csv"));
+  const Layout from_json = load_layout(scratch.file("body.JSON"), {LayoutFormat::kJson});
+  for (const Layout* again : {&from_csv, &from_json}) {
+    EXPECT_TRUE((again->entries.array() == csv.entries.array()).all());
+    EXPECT_TRUE((again->weights.array() == csv.weights.array()).all());
+    EXPECT_EQ(again->names, csv.names);
+  }
+}
+
+TEST(LayoutFormats, SaveRefusesFormatsItCannotWriteAndWritesNothing) {
+  Scratch scratch;
+  const Layout triad = load_layout(kExamples + "triad.json");
+  const Layout cube = load_layout(kExamples + "apriltag_cube.yaml");
+  const std::pair<std::string, const Layout*> refused[] = {
+      {"tags.yaml", &cube}, {"tags.yml", &cube},   {"layout.txt", &triad},
+      {"layout", &triad},   {"triad.csv", &triad},  // directions: CSV holds markers
+  };
+  for (const auto& [name, layout] : refused) {
+    try {
+      save_layout(scratch.file(name), *layout);
+      ADD_FAILURE() << name << " was written";
+    } catch (const InvalidArgument& e) {
+      EXPECT_THAT(std::string(e.what()), HasSubstr(scratch.file(name) + ": ")) << name;
+      EXPECT_THAT(std::string(e.what()), Not(HasSubstr("\n")));
+    }
+    EXPECT_FALSE(std::filesystem::exists(scratch.file(name))) << name;
+  }
+  EXPECT_EQ(layout_write_format("a.json"), LayoutFormat::kJson);
+  EXPECT_EQ(layout_write_format("a.Csv"), LayoutFormat::kCsv);
 }
 
 TEST(LayoutFormats, JsonStillReadsAsBefore) {

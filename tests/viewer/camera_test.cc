@@ -63,6 +63,48 @@ TEST(OrbitCamera, PickingInvertsProjectionOnTheVisibleSphere) {
   EXPECT_FALSE(camera.pick_sphere(Eigen::Vector2d(2.0, 2.0), kViewport));  // corner: misses
 }
 
+TEST(OrbitCamera, PickDirectionFollowsAVectorTipOffTheUnitSphere) {
+  // Vector tips are drawn at 1.45 times their direction, mostly outside the unit sphere's
+  // outline, where pick_sphere() finds nothing: a tip dragged by pick_sphere never moved.
+  constexpr double kTipRadius = 1.45;
+  OrbitCamera camera;
+  std::mt19937 rng(11);
+  std::normal_distribution<double> normal;
+  int off_the_sphere = 0;
+  int on_the_tip_sphere = 0;
+  for (int k = 0; k < 200; ++k) {
+    const Eigen::Vector3d n = Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
+    const Eigen::Vector3d tip = kTipRadius * n;
+    const std::optional<Eigen::Vector2d> pixel = camera.project(tip, kViewport);
+    ASSERT_TRUE(pixel);
+    if (!camera.pick_sphere(*pixel, kViewport)) ++off_the_sphere;
+    // The tip's own pixel gives its own direction back.
+    EXPECT_NEAR((camera.pick_direction(*pixel, kViewport, kTipRadius, tip) - n).norm(), 0.0,
+                kUnitTolerance);
+    // A pixel nearby whose ray meets the tip sphere gives a direction whose tip is drawn exactly
+    // there.
+    const Eigen::Vector2d target = *pixel + Eigen::Vector2d(6.0, -4.0);
+    const Eigen::Vector3d ray = camera.ray_direction(target, kViewport);
+    if ((camera.eye() - camera.eye().dot(ray) * ray).norm() >= kTipRadius) continue;
+    ++on_the_tip_sphere;
+    const Eigen::Vector3d moved = camera.pick_direction(target, kViewport, kTipRadius, tip);
+    EXPECT_NEAR(moved.norm(), 1.0, kUnitTolerance);
+    const std::optional<Eigen::Vector2d> drawn = camera.project(kTipRadius * moved, kViewport);
+    ASSERT_TRUE(drawn);
+    EXPECT_NEAR((*drawn - target).norm(), 0.0, kPixelTolerance) << n.transpose();
+  }
+  EXPECT_GT(on_the_tip_sphere, 150);
+  EXPECT_GT(off_the_sphere, 100) << "most tips lie outside the unit sphere's outline";
+  // A pixel whose ray misses the tip sphere gives the direction of the ray's closest point.
+  const Eigen::Vector2d corner(1.0, 1.0);
+  const Eigen::Vector3d ray = camera.ray_direction(corner, kViewport);
+  const Eigen::Vector3d closest = camera.eye() - camera.eye().dot(ray) * ray;
+  EXPECT_NEAR((camera.pick_direction(corner, kViewport, kTipRadius, Eigen::Vector3d::UnitX()) -
+               closest.normalized())
+                  .norm(),
+              0.0, kUnitTolerance);
+}
+
 TEST(OrbitCamera, ZoomIsClampedAndResetRestores) {
   OrbitCamera camera;
   camera.zoom(100.0);

@@ -5,9 +5,11 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "vantage/analysis/common.h"
 #include "vantage/io/layout_file.h"
+#include "vantage/io/layout_formats.h"
 
 namespace vantage::viewer {
 namespace {
@@ -25,6 +27,7 @@ void expect_same_layout(const Layout& a, const Layout& b) {
   EXPECT_TRUE((a.weights.array() == b.weights.array()).all());
   ASSERT_EQ(a.candidates.cols(), b.candidates.cols());
   EXPECT_TRUE((a.candidates.array() == b.candidates.array()).all());
+  EXPECT_EQ(a.names, b.names);
 }
 
 std::filesystem::path scratch_file(const std::string& name) {
@@ -46,6 +49,10 @@ TEST(LayoutDocument, EveryEditIsUndoneExactly) {
   grown.entries.col(grown.entries.cols() - 1) = Eigen::Vector3d(0.0, 0.0, 1.5);
   grown.weights.conservativeResize(grown.weights.size() + 1);
   grown.weights(grown.weights.size() - 1) = 1.0;
+  // The removal named the entries (p1, p2, ...: the names they were shown under), so an added
+  // entry needs a name too.
+  ASSERT_EQ(grown.names.size(), 11u);
+  grown.names.push_back("new");
   doc.replace(grown);
   EXPECT_EQ(doc.undo_depth(), 3u);
   EXPECT_TRUE(doc.modified());
@@ -109,6 +116,58 @@ TEST(LayoutDocument, BadFileKeepsTheLayoutAndSaysWhy) {
   EXPECT_EQ(doc.path(), kSatellite);
   EXPECT_EQ(doc.undo_depth(), 1u);
   std::filesystem::remove(bad);
+}
+
+TEST(LayoutDocument, ALoadIsUndoneBackToTheEditsItReplaced) {
+  LayoutDocument doc(io::read_layout(kSatellite), kSatellite);
+  doc.set_entry(0, Eigen::Vector3d(0.5, 0.5, 0.5));
+  const Layout edited = doc.layout();
+  const std::string csv =
+      std::string(VANTAGE_SOURCE_DIR) + "/examples/layouts/mocap_rigid_body.csv";
+  doc.load(csv);
+  EXPECT_EQ(doc.layout().entries.cols(), 5);
+  EXPECT_EQ(doc.path(), csv);
+  EXPECT_FALSE(doc.modified());
+  EXPECT_EQ(doc.undo_depth(), 2u) << "the edit and the load";
+  ASSERT_TRUE(doc.undo());
+  expect_same_layout(doc.layout(), edited);
+  EXPECT_EQ(doc.path(), kSatellite);
+  EXPECT_TRUE(doc.modified()) << "the edits are unsaved again";
+}
+
+TEST(LayoutDocument, EveryFormatLoadsAndMarkersKeepTheirNames) {
+  LayoutDocument doc(LayoutDocument::default_layout());
+  const std::string dir = std::string(VANTAGE_SOURCE_DIR) + "/examples/layouts/";
+  doc.load(dir + "apriltag_cube.yaml");
+  EXPECT_EQ(doc.layout().entries.cols(), 12);
+  doc.load(dir + "mocap_rigid_body.csv");
+  ASSERT_EQ(doc.layout().entry_name(2), "arm_short");
+  doc.remove_entry(1);
+  EXPECT_EQ(doc.layout().names, (std::vector<std::string>{"hub", "arm_short", "arm_side", "mast"}));
+  // An unnamed layout: the entries keep the names they were shown under (p0, p1, ...).
+  LayoutDocument satellite(io::read_layout(kSatellite), kSatellite);
+  ASSERT_TRUE(satellite.layout().names.empty());
+  satellite.remove_entry(0);
+  EXPECT_EQ(satellite.layout().entry_name(0), "p1");
+  EXPECT_EQ(satellite.layout().entry_name(10), "p11");
+  ASSERT_TRUE(satellite.undo());
+  EXPECT_TRUE(satellite.layout().names.empty()) << "undo restores the layout exactly";
+}
+
+TEST(LayoutDocument, SaveWritesTheFormatOfTheExtension) {
+  LayoutDocument doc(LayoutDocument::default_layout());
+  doc.load(std::string(VANTAGE_SOURCE_DIR) + "/examples/layouts/mocap_rigid_body.csv");
+  doc.remove_entry(0);
+  const std::filesystem::path file = scratch_file("saved.csv");
+  std::filesystem::remove(file);
+  doc.save(file.string(), false);
+  const Layout again = io::load_layout(file.string());
+  EXPECT_EQ(again.names, doc.layout().names);
+  EXPECT_TRUE((again.entries.array() == doc.layout().entries.array()).all());
+  EXPECT_THROW(io::read_layout(file.string()), InvalidArgument) << "CSV, not JSON";
+  EXPECT_THROW(doc.save(scratch_file("saved.yaml").string(), false), InvalidArgument);
+  EXPECT_FALSE(std::filesystem::exists(scratch_file("saved.yaml")));
+  std::filesystem::remove(file);
 }
 
 TEST(LayoutDocument, SaveNeverOverwritesUnlessAsked) {

@@ -134,13 +134,65 @@ TEST(ViewerSession, BadFileInTheLoadDialogKeepsEverything) {
   testing::ViewerScratch scratch;
   const std::string bad =
       scratch.write("bad.json", R"({"points": [[0, 0, 0], [0, 0, 0], [1, 2]]})");
-  EXPECT_FALSE(session.load(bad));
+  EXPECT_EQ(session.load(bad), LoadOutcome::kFailed);
   EXPECT_TRUE(session.message_is_error());
   EXPECT_NE(session.message().find(bad), std::string::npos) << session.message();
   EXPECT_EQ(session.document().revision(), revision);
   EXPECT_EQ(session.document().path(), kLayouts + "satellite.json");
   EXPECT_TRUE(session.analysis_current());
   EXPECT_EQ(session.layout().entries.cols(), 12);
+}
+
+TEST(ViewerSession, LoadAsksBeforeDroppingUnsavedEditsAndUndoBringsThemBack) {
+  ViewerSession session = open("triad.json");
+  const std::string csv = kLayouts + "mocap_rigid_body.csv";
+  ASSERT_TRUE(session.set_entry(2, Eigen::Vector3d(0.0, 0.3, 1.0)));
+  const Layout edited = session.layout();
+  const std::uint64_t revision = session.document().revision();
+  EXPECT_EQ(session.load(csv), LoadOutcome::kNeedsDiscardOk);
+  EXPECT_EQ(session.document().revision(), revision) << "nothing read";
+  EXPECT_TRUE((session.layout().entries.array() == edited.entries.array()).all());
+  EXPECT_EQ(session.load(csv, true), LoadOutcome::kLoaded);
+  EXPECT_EQ(session.layout().entries.cols(), 5);
+  EXPECT_GT(session.document().undo_depth(), 0u) << "Undo is available after a load";
+  ASSERT_TRUE(session.undo());
+  EXPECT_TRUE((session.layout().entries.array() == edited.entries.array()).all());
+  EXPECT_TRUE(session.document().modified());
+  EXPECT_EQ(session.document().path(), kLayouts + "triad.json");
+  // Without edits a load needs no confirmation.
+  ViewerSession fresh = open("triad.json");
+  EXPECT_EQ(fresh.load(csv), LoadOutcome::kLoaded);
+}
+
+TEST(ViewerSession, DraggingAVectorTipMovesItUnderTheMouse) {
+  // The scene draws vector i's tip at 1.45 |v_i|-normalised (viewer/app/scene_view.cc).
+  constexpr double kTipRadius = 1.45;
+  constexpr double kPixel = 1e-6;  // closed-form projections
+  ViewerSession session = open("triad.json");
+  const Viewport viewport = scene_viewport(1400, 900);
+  const Eigen::Vector3d start = session.layout().entries.col(0);
+  const std::optional<Eigen::Vector2d> grabbed =
+      session.camera.project(kTipRadius * start.normalized(), viewport);
+  ASSERT_TRUE(grabbed);
+  // What the drag used before: the unit sphere under the tip, which is not there.
+  EXPECT_FALSE(session.camera.pick_sphere(*grabbed, viewport));
+  Eigen::Vector2d mouse = *grabbed;
+  for (int k = 1; k <= 5; ++k) {
+    mouse += Eigen::Vector2d(9.0, -5.0);
+    ASSERT_TRUE(session.drag_vector_tip(0, mouse, viewport, kTipRadius, k > 1));
+  }
+  const Eigen::Vector3d moved = session.layout().entries.col(0);
+  EXPECT_NEAR(moved.norm(), start.norm(), 1e-12) << "the length is kept";
+  const std::optional<Eigen::Vector2d> drawn =
+      session.camera.project(kTipRadius * moved.normalized(), viewport);
+  ASSERT_TRUE(drawn);
+  EXPECT_NEAR((*drawn - mouse).norm(), 0.0, kPixel) << "the tip is under the mouse";
+  EXPECT_GT((moved - start).norm(), 0.05);
+  EXPECT_EQ(session.document().undo_depth(), 1u) << "one drag, one undo step";
+  ASSERT_TRUE(session.undo());
+  EXPECT_TRUE((session.layout().entries.col(0).array() == start.array()).all());
+  ViewerSession points = open("satellite.json");
+  EXPECT_FALSE(points.drag_vector_tip(0, mouse, viewport, kTipRadius, false));
 }
 
 TEST(ViewerSession, SaveAsksBeforeOverwriting) {

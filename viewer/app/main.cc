@@ -13,7 +13,7 @@
 #include <string>
 
 #include "vantage/analysis/common.h"
-#include "vantage/io/layout_file.h"
+#include "vantage/io/layout_formats.h"
 #include "vantage/viewer/viewer_session.h"
 #include "viewer_window.h"
 
@@ -46,7 +46,9 @@ int main(int argc, char** argv) {
   std::string size = "1400x900";
   std::string view = "iso";
   WindowOptions options;
-  cli.add_option("LAYOUT", layout_path, "layout file (JSON); default: the orthogonal triad");
+  cli.add_option("LAYOUT", layout_path,
+                 "layout file (.json, .csv markers, .yaml AprilTag bundle); default: the "
+                 "orthogonal triad");
   cli.add_option("--screenshot", options.screenshot_path,
                  "render, save the window to this PNG and exit (headless use, e.g. xvfb-run -a)");
   cli.add_option("--frames", options.frames,
@@ -82,7 +84,7 @@ int main(int argc, char** argv) {
   std::optional<vantage::viewer::LayoutDocument> document;
   try {
     document.emplace(layout_path.empty() ? vantage::viewer::LayoutDocument::default_layout()
-                                         : vantage::io::read_layout(layout_path),
+                                         : vantage::io::load_layout(layout_path),
                      layout_path);
   } catch (const std::exception& e) {
     std::cerr << "vantage-viewer: " << e.what() << "\n";

@@ -127,11 +127,14 @@ void Panels::entry_editor(ViewerSession& session) {
       110.0f, ImGui::GetContentRegionAvail().y - 1.3f * ImGui::GetFrameHeightWithSpacing());
   if (ImGui::BeginChild("entries", ImVec2(0, list_height), true)) {
     for (Eigen::Index i = 0; i < layout.entries.cols(); ++i) {
-      char row[96];
-      std::snprintf(row, sizeof row, "%s%d  (%.3f, %.3f, %.3f)",
-                    layout.mode == LayoutMode::kPoints ? "p" : "v", static_cast<int>(i),
-                    layout.entries(0, i), layout.entries(1, i), layout.entries(2, i));
-      if (ImGui::Selectable(row, session.selected == i)) session.selected = static_cast<int>(i);
+      char coordinates[96];
+      std::snprintf(coordinates, sizeof coordinates, "  (%.3f, %.3f, %.3f)##%d",
+                    layout.entries(0, i), layout.entries(1, i), layout.entries(2, i),
+                    static_cast<int>(i));
+      const std::string row = layout.entry_name(i) + coordinates;
+      if (ImGui::Selectable(row.c_str(), session.selected == i)) {
+        session.selected = static_cast<int>(i);
+      }
     }
   }
   ImGui::EndChild();
@@ -158,6 +161,7 @@ void Panels::file_dialogs(ViewerSession& session) {
     ImGui::OpenPopup("Load layout");
     load_path_ = session.document().path();
     dialog_error_.clear();
+    confirm_discard_ = false;
     open_load_ = false;
   }
   if (open_save_) {
@@ -175,10 +179,15 @@ void Panels::file_dialogs(ViewerSession& session) {
       ImGui::TextWrapped("%s", dialog_error_.c_str());
       ImGui::PopStyleColor();
     }
-    if (ImGui::Button("Load") || enter) {
-      if (session.load(load_path_)) {
-        ImGui::CloseCurrentPopup();
-      } else {
+    if (confirm_discard_) {
+      ImGui::TextColored(ImVec4(1, 0.75f, 0.25f, 1),
+                         "The layout has unsaved edits. Load anyway? (Undo brings them back.)");
+    }
+    if (ImGui::Button(confirm_discard_ ? "Load anyway" : "Load") || enter) {
+      const LoadOutcome outcome = session.load(load_path_, confirm_discard_);
+      if (outcome == LoadOutcome::kLoaded) ImGui::CloseCurrentPopup();
+      if (outcome == LoadOutcome::kNeedsDiscardOk) confirm_discard_ = true;
+      if (outcome == LoadOutcome::kFailed) {
         dialog_error_ = session.message() + " (the current layout is kept)";
       }
     }

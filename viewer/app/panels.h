@@ -44,6 +44,7 @@ class Panels {
   bool open_load_ = false;
   bool open_save_ = false;
   bool confirm_overwrite_ = false;
+  bool confirm_discard_ = false;  // the Load dialog asked whether to drop unsaved edits
   int edited_entry_ = -1;
   float edit_value_[3] = {0, 0, 0};
 };

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <string>
 
 #include "draw_style.h"
 #include "panels.h"
@@ -74,19 +75,19 @@ void Panels::readout_panel(const ViewerSession& session,
                                 ImGuiTableFlags_BordersOuter | ImGuiTableFlags_SizingStretchSame;
   if (ImGui::BeginTable("readout", 3, flags, ImVec2(0, 0))) {
     ImGui::TableSetupScrollFreeze(0, 1);
-    ImGui::TableSetupColumn("data vector");
+    ImGui::TableSetupColumn("data vector", ImGuiTableColumnFlags_WidthStretch, 2.0f);
     ImGui::TableSetupColumn("p_i");
     ImGui::TableSetupColumn("Eq. 26 error");
     ImGui::TableHeadersRow();
     for (const int i : order) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      if (data.pairs.empty()) {
-        ImGui::Text("v%d%s", i, i == r.limiting ? "  (sets p\u0304)" : "");
-      } else {
-        ImGui::Text("p%d\u2192p%d%s", data.pairs[i].first, data.pairs[i].second,
-                    i == r.limiting ? "  (sets p\u0304)" : "");
-      }
+      const Layout& layout = session.layout();
+      const std::string name = data.pairs.empty()
+                                   ? layout.entry_name(i)
+                                   : layout.entry_name(data.pairs[i].first) + "\u2192" +
+                                         layout.entry_name(data.pairs[i].second);
+      ImGui::Text("%s%s", name.c_str(), i == r.limiting ? "  (sets p\u0304)" : "");
       ImGui::TableNextColumn();
       ImGui::Text("%.4f", r.p(i));
       ImGui::TableNextColumn();

@@ -155,7 +155,7 @@ void draw_data_vectors(const Painter& paint, const ViewerSession& session) {
       paint.list->AddCircleFilled(*q, 5.0f, kHalo);
       paint.list->AddCircleFilled(*q, 4.0f, colour);
     }
-    if (!points) paint.label(kVectorLength * n, ("v" + std::to_string(i)).c_str(), kHalo);
+    if (!points) paint.label(kVectorLength * n, session.layout().entry_name(i).c_str(), kHalo);
   }
 }
 
@@ -238,8 +238,10 @@ void draw_camera_inset(const ViewerSession& session, const OrbitCamera& camera,
     const ImVec2 q = image(layout.entries.col(i));
     if (!points) list->AddLine(mid, q, colour, 2.0f);
     list->AddCircleFilled(q, 3.5f, colour);
-    const std::string name = (points ? "p" : "v") + std::to_string(i);
-    list->AddText(ImVec2(q.x + 4, q.y - 2), colour, name.c_str());
+    // Names can be long: the inset clips them at its border.
+    list->PushClipRect(lo, hi, true);
+    list->AddText(ImVec2(q.x + 4, q.y - 2), colour, layout.entry_name(i).c_str());
+    list->PopClipRect();
   }
 }
 
@@ -304,9 +306,10 @@ std::optional<Eigen::Vector3d> SceneView::handle_mouse(ViewerSession& session,
     if (std::hypot(io.MousePos.x - press_.x, io.MousePos.y - press_.y) > kClickSlop) moved_ = true;
     if (drag_ == Drag::kOrbit && moved_) session.camera.orbit(delta.x, delta.y);
     if (drag_ == Drag::kProbe && hovered) session.pinned_viewpoint = *hovered;
-    if (drag_ == Drag::kVector && hovered && moved_ && (delta.x != 0.0f || delta.y != 0.0f)) {
-      const double length = session.layout().entries.col(drag_index_).norm();
-      session.set_entry(drag_index_, length * *hovered, moved_continue_);
+    if (drag_ == Drag::kVector && moved_ && (delta.x != 0.0f || delta.y != 0.0f)) {
+      // The tip follows the mouse on its own sphere (radius kVectorLength), which the unit
+      // sphere's silhouette does not contain: picking the unit sphere would miss it.
+      session.drag_vector_tip(drag_index_, mouse, viewport, kVectorLength, moved_continue_);
       moved_continue_ = true;
     }
   }

@@ -120,6 +120,19 @@ std::optional<Eigen::Vector3d> OrbitCamera::pick_sphere(const Eigen::Vector2d& p
   return (o + t * d).normalized();
 }
 
+Eigen::Vector3d OrbitCamera::pick_direction(const Eigen::Vector2d& pixel, const Viewport& viewport,
+                                            double radius, const Eigen::Vector3d& near) const {
+  const Eigen::Vector3d o = eye();
+  const Eigen::Vector3d d = ray_direction(pixel, viewport);
+  const double b = o.dot(d);
+  const double disc = b * b - (o.squaredNorm() - radius * radius);
+  if (disc < 0.0) return (o - b * d).normalized();
+  const double root = std::sqrt(disc);
+  const Eigen::Vector3d front = o + (-b - root) * d;
+  const Eigen::Vector3d back = o + (-b + root) * d;
+  return ((front - near).squaredNorm() <= (back - near).squaredNorm() ? front : back).normalized();
+}
+
 bool OrbitCamera::hidden_by_sphere(const Eigen::Vector3d& point) const {
   const Eigen::Vector3d o = eye();
   const Eigen::Vector3d rel = point - o;

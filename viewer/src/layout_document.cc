@@ -3,7 +3,7 @@
 #include <utility>
 
 #include "vantage/analysis/common.h"
-#include "vantage/io/layout_file.h"
+#include "vantage/io/layout_formats.h"
 
 namespace vantage::viewer {
 namespace {
@@ -33,12 +33,14 @@ Layout LayoutDocument::default_layout() {
   return layout;
 }
 
-void LayoutDocument::commit(Layout next, bool push_undo) {
+void LayoutDocument::push_undo(bool load) {
+  undo_.push_back({std::move(layout_), load, path_, modified_});
+  if (undo_.size() > kMaxUndo) undo_.erase(undo_.begin());
+}
+
+void LayoutDocument::commit(Layout next, bool push) {
   next.validate();
-  if (push_undo) {
-    undo_.push_back(std::move(layout_));
-    if (undo_.size() > kMaxUndo) undo_.erase(undo_.begin());
-  }
+  if (push) push_undo(false);
   layout_ = std::move(next);
   modified_ = true;
   ++revision_;
@@ -57,10 +59,12 @@ void LayoutDocument::remove_entry(int index) {
   Layout next = layout_;
   next.entries.resize(3, n - 1);
   next.weights.resize(n - 1);
+  next.names.clear();
   for (Eigen::Index i = 0, k = 0; i < n; ++i) {
     if (i == index) continue;
     next.entries.col(k) = layout_.entries.col(i);
     next.weights(k) = layout_.weights(i);
+    next.names.push_back(layout_.entry_name(i));
     ++k;
   }
   commit(std::move(next), true);
@@ -70,25 +74,30 @@ void LayoutDocument::replace(Layout layout) { commit(std::move(layout), true); }
 
 bool LayoutDocument::undo() {
   if (undo_.empty()) return false;
-  layout_ = std::move(undo_.back());
-  undo_.pop_back();
+  Snapshot& last = undo_.back();
+  layout_ = std::move(last.layout);
   modified_ = true;
+  if (last.load) {
+    path_ = std::move(last.path);
+    modified_ = last.modified;
+  }
+  undo_.pop_back();
   ++revision_;
   return true;
 }
 
 void LayoutDocument::load(const std::string& path) {
-  Layout next = io::read_layout(path);
+  Layout next = io::load_layout(path);
+  push_undo(true);
   layout_ = std::move(next);
   path_ = path;
-  undo_.clear();
   modified_ = false;
   ++revision_;
 }
 
 void LayoutDocument::save(const std::string& path, bool overwrite) {
   if (path.empty()) throw InvalidArgument("save: no file name given");
-  io::write_layout(path, layout_, overwrite);
+  io::save_layout(path, layout_, overwrite);
   path_ = path;
   modified_ = false;
 }

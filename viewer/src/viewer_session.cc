@@ -45,6 +45,8 @@ bool ViewerSession::set_entry(int index, const Eigen::Vector3d& value, bool cont
 }
 
 bool ViewerSession::remove_entry(int index) {
+  const std::string removed_name =
+      index >= 0 && index < layout().entries.cols() ? layout().entry_name(index) : "";
   try {
     document_.remove_entry(index);
   } catch (const std::exception& e) {
@@ -52,7 +54,7 @@ bool ViewerSession::remove_entry(int index) {
     return false;
   }
   inform("removed " + std::string(layout().mode == LayoutMode::kPoints ? "marker " : "vector ") +
-         std::to_string(index));
+         removed_name);
   selected = -1;
   changed();
   return true;
@@ -68,18 +70,32 @@ bool ViewerSession::undo() {
   return true;
 }
 
-bool ViewerSession::load(const std::string& path) {
+LoadOutcome ViewerSession::load(const std::string& path, bool discard_edits) {
+  if (document_.modified() && !discard_edits) return LoadOutcome::kNeedsDiscardOk;
   try {
     document_.load(path);
   } catch (const std::exception& e) {
     fail(e.what());
-    return false;
+    return LoadOutcome::kFailed;
   }
-  inform("loaded " + path);
+  inform("loaded " + path + " (Undo returns to the previous layout)");
   selected = -1;
   pinned_viewpoint.reset();
   changed();
-  return true;
+  return LoadOutcome::kLoaded;
+}
+
+bool ViewerSession::drag_vector_tip(int index, const Eigen::Vector2d& pixel,
+                                    const Viewport& viewport, double tip_radius,
+                                    bool continue_edit) {
+  if (layout().mode != LayoutMode::kVectors || index < 0 || index >= layout().entries.cols()) {
+    fail("only the vectors of a direction layout can be dragged");
+    return false;
+  }
+  const Eigen::Vector3d v = layout().entries.col(index);
+  const Eigen::Vector3d direction =
+      camera.pick_direction(pixel, viewport, tip_radius, tip_radius * v.normalized());
+  return set_entry(index, v.norm() * direction, continue_edit);
 }
 
 SaveOutcome ViewerSession::save(const std::string& path, bool overwrite) {

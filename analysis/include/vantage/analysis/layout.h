@@ -38,6 +38,10 @@ struct Layout {
   Eigen::Matrix3Xd entries;     ///< one vector (direction mode) or point (point mode) per column
   Eigen::VectorXd weights;      ///< one positive weight per entry
   Eigen::Matrix3Xd candidates;  ///< allowed additions for design (may have zero columns)
+  /// The entries' names (a CSV marker's name, an AprilTag corner's "tag3_c0"), one per entry
+  /// in the order of `entries`, or empty when the entries are unnamed. Every edit that removes
+  /// or adds an entry removes or adds its name, so a marker keeps its name through every command.
+  std::vector<std::string> names;
 
   /// Throws InvalidArgument naming the field and index of the first violation: fewer than 2
   /// vectors or 3 points (point mode needs at least 2 free vectors), non-finite values, a vector
@@ -45,13 +49,23 @@ struct Layout {
   /// coordinates beyond kMaxLength, coincident points (closer than 1e-12 times the largest
   /// coordinate magnitude, or than kMinLength: scale-invariant; checked in O(n log n) for
   /// spread-out points),
-  /// weights of the wrong length, non-finite, <= 0 or above kMaxWeight, bad candidates.
-  /// Field names are those of the file format: "vectors", "points", "weights", "candidates".
+  /// weights of the wrong length, non-finite, <= 0 or above kMaxWeight, bad candidates, names
+  /// that are given but not one per entry, empty, or repeated.
+  /// Field names are those of the file format: "vectors", "points", "weights", "candidates",
+  /// "names".
   void validate() const;
 
   /// "vectors" or "points": the file-format name of the entries field.
   const char* entries_field() const;
+
+  /// The name of entry i (0 <= i < entries.cols()): names[i], or "p<i>" (point mode) / "v<i>"
+  /// (direction mode) for an unnamed layout.
+  std::string entry_name(Eigen::Index i) const;
 };
+
+/// A name for one more entry of `layout` that none of its entries has: "<prefix><k>" with the
+/// smallest k >= 1 (entry_name() of every entry counts as taken).
+std::string unused_entry_name(const Layout& layout, const std::string& prefix);
 
 /// The data vectors an analysis works on, with their weights.
 struct DataVectors {

@@ -70,9 +70,19 @@ struct AugmentOptions {
   /// Direction mode: coarse samples per great circle a^perp (half circle, c ~ -c), >= 4.
   int circle_samples = 72;
   /// Point mode: coarse grid points per box axis, >= 2.
-  int grid_samples = 7;
+  int grid_samples = 11;
   /// Best coarse candidates polished by a local compass search, >= 1.
   int refine_starts = 3;
+  /// Point mode: after the grid and its polish, a branch and bound over the search box
+  /// (docs/math.md §18) looks for better positions and proves how good the best is. Its budget
+  /// per step, in global solves times the layout's data vectors (a solve costs about 1 us of CPU
+  /// per data vector on the 2-core machine of docs/benchmarks.md, so 450 000 is about half a
+  /// second; a 5-marker layout, 20 data vectors, gets 22 500 solves, enough to finish); >= 0 (0:
+  /// grid and polish only).
+  long search_budget = 450'000;
+  /// Point mode: the branch and bound drops a part of the box once it proves no position
+  /// there has t below the best found minus this. In [1e-9, 0.1].
+  double search_tolerance = 1e-4;
   /// Compass search stops when its step (radians on the sphere; fraction of the box's largest
   /// side in point mode) falls below this. In (0, 0.1].
   double refine_tolerance = 1e-7;
@@ -126,6 +136,15 @@ struct AugmentStep {
   long global_solves = 0;  ///< global worst-viewpoint solves spent on this step
   long screened = 0;       ///< candidates scored without a solve (they kill no worst viewpoint
                            ///< set completely)
+  /// Point mode, free search: what the branch and bound over the search box proved. No
+  /// position of the box outside `search_unresolved` cells (each narrower than a thousandth of
+  /// the box, next to a marker or a ridge of t) adds a marker with t below search_t_lower;
+  /// search_closed: it ended by exhausting the box, not its budget (then
+  /// search_t_lower >= worst.t - search_tolerance unless unresolved cells are lower).
+  double search_t_lower = 0.0;
+  bool search_closed = false;
+  long search_unresolved = 0;
+  long search_solves = 0;  ///< global solves the branch and bound spent
   std::string note;        ///< plain words: what happened, and why when nothing improved
 };
 
@@ -163,7 +182,10 @@ struct AugmentResult {
   std::vector<AugmentStep> steps;
   double final_pbar_min = 0.0;
   Coplanarity final_coplanarity;
-  Layout augmented;  ///< the input layout with the additions appended (weights 1)
+  /// The input layout with the additions appended (weights 1; in a named layout named
+  /// "added1", "added2", ..., the first names not yet taken) and the candidates they used
+  /// removed (they are entries now): the layout a further step starts from.
+  Layout augmented;
   DirectResult direct;
   long global_solves = 0;  ///< total, greedy and direct
 };

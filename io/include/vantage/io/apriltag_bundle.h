@@ -38,8 +38,9 @@ struct AprilTagOptions {
   std::string bundle;
 };
 
-/// The markers of one tag bundle: the point-mode layout (named after the bundle, weights 1) and
-/// for each marker the tag id it belongs to and its corner (0-3; -1 for a centre).
+/// The markers of one tag bundle: the point-mode layout (named after the bundle, weights 1, each
+/// marker named "tag<id>_c<corner>", or "tag<id>" for a centre) and for each marker the tag id
+/// it belongs to and its corner (0-3; -1 for a centre).
 struct AprilTagMarkers {
   Layout layout;
   std::vector<int> tag_ids;

@@ -1,9 +1,11 @@
 #pragma once
 
-/// One entry point for every layout file format vantage reads: layout JSON (layout_file.h),
-/// CSV marker sets (csv_layout.h) and AprilTag bundles (apriltag_bundle.h). The format comes
-/// from the file's extension unless given: .json -> JSON, .csv -> CSV, .yaml/.yml -> AprilTag.
-/// Layouts are always written as JSON (layout_file.h).
+/// One entry point for every layout file format vantage reads and writes: layout JSON
+/// (layout_file.h), CSV marker sets (csv_layout.h) and AprilTag bundles (apriltag_bundle.h).
+/// The format comes from the file's extension unless given: .json -> JSON, .csv -> CSV,
+/// .yaml/.yml -> AprilTag. Every command, the viewer and the Python module read with
+/// load_layout() and write with save_layout(), so each reads every format and writes the one
+/// its target's extension names (AprilTag bundles are read only).
 
 #include <cstddef>
 #include <string>
@@ -46,5 +48,19 @@ Layout parse_layout_as(std::string_view text, const std::string& source,
 
 /// Reads the layout file at `path` in any supported format (errors name the path).
 Layout load_layout(const std::string& path, const LayoutReadOptions& options = {});
+
+/// The format save_layout() writes to `path`: kJson for .json, kCsv for .csv (case-insensitive).
+/// Throws InvalidArgument "<path>: ..." for .yaml/.yml (AprilTag bundles describe printed tags,
+/// which a layout does not hold) and for any other extension.
+LayoutFormat layout_write_format(const std::string& path);
+
+/// The layout as the text of `format` (kJson: layout_to_json, kCsv: layout_to_csv). Throws
+/// InvalidArgument for what the format cannot hold (csv_layout.h) and for an invalid layout.
+std::string layout_to_text(const Layout& layout, LayoutFormat format);
+
+/// Writes the layout to `path` in the format of its extension (layout_write_format), all or
+/// nothing (write_text_file): an existing file is replaced only with `overwrite`. Everything is
+/// checked before the file is touched; errors name the path.
+void save_layout(const std::string& path, const Layout& layout, bool overwrite = false);
 
 }  // namespace vantage::io

@@ -91,6 +91,13 @@ class OrbitCamera {
   /// The first point of the unit sphere on the ray through `pixel`, or nullopt if it misses.
   std::optional<Eigen::Vector3d> pick_sphere(const Eigen::Vector2d& pixel,
                                              const Viewport& viewport) const;
+  /// The unit direction of the point where the ray through `pixel` meets the sphere of
+  /// `radius` (> 0) about the origin: of its two intersections the one nearer `near`, and the
+  /// point of the ray closest to the origin when the ray misses the sphere. A point at radius
+  /// times the result projects to `pixel` whenever the ray meets the sphere: what a dragged
+  /// vector tip (drawn at that radius) follows.
+  Eigen::Vector3d pick_direction(const Eigen::Vector2d& pixel, const Viewport& viewport,
+                                 double radius, const Eigen::Vector3d& near) const;
   /// True when the opaque unit sphere hides `point` from the eye (points inside it are hidden;
   /// points on its surface facing the eye are not).
   bool hidden_by_sphere(const Eigen::Vector3d& point) const;

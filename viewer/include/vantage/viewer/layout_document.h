@@ -5,7 +5,9 @@
 /// Every edit builds the new layout, validates it (Layout::validate) and only then replaces the
 /// current one, pushing the old layout on the undo stack: an edit that would give an invalid
 /// layout throws InvalidArgument (naming the file field and index) and changes nothing. undo()
-/// restores the previous layout exactly (same entries, weights, candidates, name).
+/// restores the previous layout exactly (same entries, weights, candidates, names, name); a load
+/// is undone too, back to the layout, file and unsaved edits it replaced. Entries keep their
+/// names (Layout::entry_name) through every edit: removing one never renumbers the others.
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -41,28 +43,41 @@ class LayoutDocument {
   /// its weight. continue_edit = true (a drag in progress) replaces the layout without pushing
   /// another undo step, so one drag is undone at once.
   void set_entry(int index, const Eigen::Vector3d& value, bool continue_edit = false);
-  /// Removes entry `index` and its weight (a marker dropout in point mode).
+  /// Removes entry `index`, its weight and its name (a marker dropout in point mode). The other
+  /// entries keep their names: an unnamed layout is named p0, p1, ... (v0, ...) first.
   void remove_entry(int index);
   /// Replaces the whole layout (e.g. by the augmenter's result) as one undoable step.
   void replace(Layout layout);
   /// Restores the layout before the last edit; false when there is nothing to undo.
   bool undo();
 
-  /// Reads `path` (io::read_layout). On error throws InvalidArgument with the reader's message
-  /// and keeps everything as it was. On success the undo stack is cleared.
+  /// Reads `path` in any layout format (io::load_layout: .json, .csv, .yaml/.yml). On error
+  /// throws InvalidArgument with the reader's message and keeps everything as it was. On
+  /// success the replaced layout, its file and its modified() state are one undo step.
   void load(const std::string& path);
-  /// Writes the layout to `path` (io::write_layout): an existing file is replaced only when
-  /// `overwrite` is set, otherwise InvalidArgument. On success path() becomes `path`.
+  /// Writes the layout to `path` in the format its extension names (io::save_layout: .json or
+  /// .csv): an existing file is replaced only when `overwrite` is set, otherwise
+  /// InvalidArgument. On success path() becomes `path`.
   void save(const std::string& path, bool overwrite);
 
  private:
+  /// What undo() restores: the layout; after a load also the file and the modified() state
+  /// the load replaced (an edit keeps the file it is saved to).
+  struct Snapshot {
+    Layout layout;
+    bool load = false;
+    std::string path;
+    bool modified = true;
+  };
+
+  void push_undo(bool load);
   void commit(Layout next, bool push_undo);
 
   Layout layout_;
   std::string path_;
   bool modified_ = false;
   std::uint64_t revision_ = 1;
-  std::vector<Layout> undo_;
+  std::vector<Snapshot> undo_;
 };
 
 }  // namespace vantage::viewer

@@ -25,6 +25,13 @@ enum class SaveOutcome {
   kFailed,            ///< not written; message() says why
 };
 
+/// Outcome of ViewerSession::load.
+enum class LoadOutcome {
+  kLoaded,          ///< read; the replaced layout is one undo step
+  kNeedsDiscardOk,  ///< the layout has unsaved edits and discarding was not allowed: nothing read
+  kFailed,          ///< not read; message() says why
+};
+
 class ViewerSession {
  public:
   /// Starts on `document` and asks for its analysis.
@@ -54,8 +61,17 @@ class ViewerSession {
   bool set_entry(int index, const Eigen::Vector3d& value, bool continue_edit = false);
   bool remove_entry(int index);
   bool undo();
-  bool load(const std::string& path);
+  /// Reads `path` (any layout format). With unsaved edits (document().modified()) it reads only
+  /// when `discard_edits` is set (the user confirmed); undo() brings the edits back either way.
+  LoadOutcome load(const std::string& path, bool discard_edits = false);
   SaveOutcome save(const std::string& path, bool overwrite);
+  /// Drags the tip of vector `index` (direction mode), drawn at `tip_radius` times its unit
+  /// direction, so that it lies under `pixel` of `viewport`: the new direction is where the
+  /// pixel's ray meets the sphere of that radius (the intersection nearer the tip's current
+  /// place; the point of the ray nearest the sphere when it misses). The vector keeps its
+  /// length; continue_edit as in set_entry (one undo step per drag).
+  bool drag_vector_tip(int index, const Eigen::Vector2d& pixel, const Viewport& viewport,
+                       double tip_radius, bool continue_edit);
   /// Asks the worker for one augmenter step; its result is applied by poll() if the layout has not
   /// changed meanwhile (else discarded with a message).
   void step_augmenter();

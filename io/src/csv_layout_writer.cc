@@ -1,0 +1,79 @@
+// layout_to_csv(): the CSV marker format of csv_layout.h, written so that it reads back exactly.
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "vantage/analysis/common.h"
+#include "vantage/io/csv_layout.h"
+
+namespace vantage::io {
+
+namespace {
+
+// Why the reader would not give `name` back, or nullptr: it splits on commas, strips blanks and
+// double quotes around a field, reads line by line and skips lines starting with '#'.
+const char* unwritable_reason(const std::string& name) {
+  if (name.find(',') != std::string::npos) return "contains a comma";
+  if (name.find('"') != std::string::npos) return "contains a double quote";
+  if (name.find_first_of("\r\n") != std::string::npos) return "contains a line break";
+  if (name.front() == ' ' || name.front() == '\t' || name.back() == ' ' || name.back() == '\t') {
+    return "starts or ends with a blank";
+  }
+  if (name.front() == '#') return "starts with '#' (a comment line in CSV)";
+  return nullptr;
+}
+
+// The shortest of 15, 16 or 17 significant digits that reads back to x exactly (17 always does).
+std::string number(double x) {
+  char buffer[32];
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
+    if (std::strtod(buffer, nullptr) == x) break;
+  }
+  return buffer;
+}
+
+// One comment line: line breaks inside the text become blanks.
+std::string comment(const std::string& label, std::string text) {
+  for (char& c : text) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  return "# " + label + ": " + text + "\n";
+}
+
+}  // namespace
+
+std::string layout_to_csv(const Layout& layout) {
+  layout.validate();
+  if (layout.mode != LayoutMode::kPoints) {
+    throw InvalidArgument(
+        "vectors: a CSV layout holds marker positions (name,x,y,z,weight), not direction "
+        "vectors; write .json");
+  }
+  if (layout.candidates.cols() > 0) {
+    throw InvalidArgument("candidates: a CSV layout cannot hold the " +
+                          std::to_string(layout.candidates.cols()) +
+                          " candidates; write .json to keep them");
+  }
+  const Eigen::Index n = layout.entries.cols();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const std::string name = layout.entry_name(i);
+    if (const char* reason = unwritable_reason(name)) {
+      throw InvalidArgument("names[" + std::to_string(i) + "]: \"" + name + "\" " + reason +
+                            ", which CSV cannot hold; write .json");
+    }
+  }
+  std::string out;
+  if (!layout.name.empty()) out += comment("name", layout.name);
+  if (!layout.description.empty()) out += comment("description", layout.description);
+  out += "name,x,y,z,weight\n";
+  for (Eigen::Index i = 0; i < n; ++i) {
+    out += layout.entry_name(i);
+    for (int r = 0; r < 3; ++r) out += "," + number(layout.entries(r, i));
+    out += "," + number(layout.weights(i)) + "\n";
+  }
+  return out;
+}
+
+}  // namespace vantage::io
