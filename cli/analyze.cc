@@ -137,11 +137,18 @@ void print_report(const AnalyzeArgs& args, const Layout& layout, const DataVecto
   if (r.degenerate) {
     std::cout << "DEGENERATE             every data vector is parallel to one line: the rotation "
                  "about it is not determined\n";
+  } else if (r.near_degenerate) {
+    std::cout << "NEAR-DEGENERATE        every data vector is within "
+              << format_number(std::asin(r.pbar_min), 3)
+              << " rad of one line: the rotation about it is barely determined\n";
   }
   std::cout << "pbar_min = sqrt(1-t^2) " << format_number(r.pbar_min, 9) << "   (ceiling for " << m
             << " vectors: " << format_number(ceiling, 6) << ")\n"
             << "max worst-case error   " << format_number(r.max_worst_case_error_deg, 6)
-            << " deg (Eq. 30)" << (r.degenerate ? ", and the rotation about the line is free" : "")
+            << " deg (Eq. 30)"
+            << (r.degenerate        ? ", and the rotation about the line is free"
+                : r.near_degenerate ? ", and the rotation about the line is barely determined"
+                                    : "")
             << "\n"
             << "worst viewpoint a      " << format_vector(r.worst_viewpoint) << "\n";
   for (std::size_t k = 1; k < r.worst_viewpoints.size(); ++k) {
@@ -240,7 +247,7 @@ int run_analyze(const AnalyzeArgs& args) {
     print_report(args, layout, data, report, ceiling);
     if (args.dropout) print_dropout(layout, dropout);
   }
-  if (!report.trusted() || report.degenerate || !dropout_certified) {
+  if (!report.trusted() || report.degenerate || report.near_degenerate || !dropout_certified) {
     std::string message = report.message.empty() ? "result not certified" : report.message;
     if (!dropout_certified && !dropout.message.empty()) message += "; dropout: " + dropout.message;
     std::cerr << "vantage: warning: " << message << std::endl;

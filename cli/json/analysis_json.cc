@@ -27,6 +27,7 @@ Json analysis(const Layout& layout, const DataVectors& data, const sdp::LayoutAn
   out["pbar_min"] = r.pbar_min;
   out["ceiling"] = ceiling;
   out["degenerate"] = r.degenerate;
+  out["near_degenerate"] = r.near_degenerate;
   out["worst_case_errors_deg"] = pose_json::finite_list(r.worst_case_errors_deg);
   out["max_worst_case_error_deg"] = r.max_worst_case_error_deg;
   out["certificate"] = {{"t_upper", r.certificate.t_upper},

@@ -43,12 +43,14 @@ py::object analyze(const py::object& layout_arg, const py::object& vectors,
   const sdp::LayoutAnalysis report =
       without_gil([&] { return sdp::analyze_vectors(data.vectors, data.weights, options); });
   const bool certified = report.solver.status == sdp::WorstViewpoint::Status::kCertified;
-  const std::string status = report.degenerate ? "degenerate"
-                             : !certified      ? sdp::to_string(report.solver.status)
-                                               : "crosscheck_disagrees";
+  const std::string status = report.degenerate        ? "degenerate"
+                             : report.near_degenerate ? "near_degenerate"
+                             : !certified             ? sdp::to_string(report.solver.status)
+                                                      : "crosscheck_disagrees";
   const Json out = analysis_json::analysis(
       layout, data, report, design::pbar_ceiling(static_cast<int>(data.vectors.cols())));
-  return result_or_raise(!report.trusted() || report.degenerate, status, report.message, out);
+  return result_or_raise(!report.trusted() || report.degenerate || report.near_degenerate, status,
+                         report.message, out);
 }
 
 py::object design_layout(const py::object& layout_arg, const py::object& vectors,
