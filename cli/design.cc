@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -97,9 +98,10 @@ void check_write_target(const DesignArgs& args) {
     io::layout_write_format(args.write);
     io::check_write_target(args.write, args.overwrite);
   } catch (const InvalidArgument& e) {
-    bad(std::string("--write: ") + e.what() +
-        (std::string(e.what()).find("exists already") != std::string::npos ? " (--overwrite)"
-                                                                           : ""));
+    // The way out for an existing regular file: the option, not a parse of the message.
+    std::error_code ec;
+    const bool existing_file = std::filesystem::is_regular_file(args.write, ec) && !args.overwrite;
+    bad(std::string("--write: ") + e.what() + (existing_file ? " (--overwrite)" : ""));
   }
 }
 

@@ -9,6 +9,7 @@
 
 #include "command.h"
 #include "layout_input.h"
+#include "limits.h"
 #include "vantage/analysis/layout.h"
 #include "vantage/simulate/experiments.h"
 
@@ -27,6 +28,7 @@ struct ExperimentArgs {
   std::vector<std::string> layouts;
   bool json = false;
   bool quiet = false;
+  bool allow_large = false;
 };
 
 /// The layouts of the bound experiment: those given, else the bundled examples/layouts.
@@ -54,7 +56,9 @@ std::vector<NamedLayout> bound_layouts(const ExperimentArgs& args) {
 }
 
 int run_experiment_command(const ExperimentArgs& args) {
+  if (args.out.empty()) throw InvalidArgument("--out: must not be empty");
   if (args.trials < 0) throw InvalidArgument("--trials: must be >= 1 (or 0 for the default)");
+  check_limit("--trials", args.trials, kMaxTrials, "experiment", args.allow_large);
   if (args.threads < 0) throw InvalidArgument("--threads: must be >= 0");
   if (!args.layouts.empty() && args.name != "bound") {
     throw InvalidArgument("--layouts: only the bound experiment takes layouts");
@@ -84,6 +88,12 @@ int run_experiment_command(const ExperimentArgs& args) {
     std::cout << "\n(" << format_number(result.seconds, 3) << " s)\n";
   }
   const bool failed = result.summary.contains("passed") && !result.summary["passed"].get<bool>();
+  if (failed) {
+    std::cerr << "vantage: experiment " << args.name << ": FAILED: "
+              << (result.summary.contains("message") ? result.summary["message"].get<std::string>()
+                                                     : std::string("see the summary"))
+              << std::endl;
+  }
   return failed ? kExitFailure : kExitOk;
 }
 
@@ -106,6 +116,7 @@ Command add_experiment_command(CLI::App& root) {
                   "bound: layout files to check (default: the bundled examples/layouts)");
   sub->add_flag("--json", args->json, "print the summary as one JSON object");
   sub->add_flag("--quiet", args->quiet, "no progress bar");
+  add_allow_large_flag(sub, args->allow_large);
   return {sub, [args] { return run_experiment_command(*args); }};
 }
 

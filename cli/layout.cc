@@ -13,6 +13,7 @@
 #include "vantage/analysis/common.h"
 #include "vantage/io/calibration_board.h"
 #include "vantage/io/layout_file.h"
+#include "vantage/io/text_file.h"
 
 namespace vantage::cli {
 
@@ -39,6 +40,11 @@ int run_board(BoardArgs args) {
   if (!args.board.is_valid(&why)) throw InvalidArgument("--" + why);
   if (lowercase_extension(args.out) != ".json") {
     throw InvalidArgument("--out: " + args.out + ": layouts are written as JSON; use a .json name");
+  }
+  try {
+    io::check_write_target(args.out, args.overwrite);
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(std::string("--out: ") + e.what());
   }
   const Layout layout = io::calibration_board(args.board);
   io::write_layout(args.out, layout, args.overwrite);

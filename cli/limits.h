@@ -50,6 +50,18 @@ constexpr double kDesignDirectionSecondsPerVector = 0.5e-3;
 /// `weights`: entries (vectors or points); the LP is O(n), the file size bound comes first.
 constexpr long kMaxWeightsEntries = 2'000'000;
 
+/// `simulate` and `experiment` (per cell): --trials. Trials are streamed (13-25 MB whatever their
+/// number), so the bound is one of time: measured on this machine (one thread, user time, issue
+/// 22), a trial costs 12 us on the triad and 220 us on the 12-marker satellite (every estimator
+/// plus the bound check), so 10^7 trials are 2 and 37 CPU minutes. A mistyped 10^15 would run
+/// for years.
+constexpr long kMaxTrials = 10'000'000;
+/// `simulate --per-trial` and `--shard K/N`: the per-trial values of the trials held (one
+/// shard's) are kept for the JSON, about 2.1 KB of memory per trial, and the JSON takes up to
+/// 1.44 KB per trial (7 estimators on a pinhole camera): 40 000 trials keep a shard file under
+/// the 64 MiB that --merge reads (and the memory under 100 MB).
+constexpr long kMaxPerTrialTrials = 40'000;
+
 /// Adds --allow-large to `sub`, storing into `flag`.
 void add_allow_large_flag(CLI::App* sub, bool& flag);
 

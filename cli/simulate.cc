@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -15,6 +14,7 @@
 
 #include "command.h"
 #include "layout_input.h"
+#include "limits.h"
 #include "vantage/analysis/layout.h"
 #include "vantage/io/text_file.h"
 #include "vantage/simulate/layout_simulation.h"
@@ -46,6 +46,7 @@ struct SimulateArgs {
   bool json = false;
   bool quiet = false;
   std::vector<std::string> merge;
+  bool allow_large = false;
   CLI::Option* noise_option = nullptr;
   CLI::Option* snr_option = nullptr;
 };
@@ -57,6 +58,25 @@ void check_args(const SimulateArgs& args) {
   }
   if (args.file.empty()) throw InvalidArgument("LAYOUT: required (or --merge FILES)");
   if (args.trials < 1) throw InvalidArgument("--trials: must be >= 1");
+  check_limit("--trials", args.trials, kMaxTrials, "simulate", args.allow_large);
+  if (args.per_trial || !args.shard.empty()) {
+    // The per-trial values of the trials this run holds (one shard's) are kept for the JSON.
+    long held = args.trials;
+    std::string what = "--trials with --per-trial";
+    if (!args.shard.empty()) {
+      const Shard shard = parse_shard(args.shard, "--shard");
+      if (shard.count <= args.trials) {
+        long largest = 0;
+        for (int k = 1; k <= shard.count; ++k) {
+          const auto [first, last] = shard_range(args.trials, {k, shard.count});
+          largest = std::max(largest, last - first);
+        }
+        held = largest;
+      }
+      what = "--trials per shard (--trials / N of --shard K/N)";
+    }
+    check_limit(what, held, kMaxPerTrialTrials, "simulate", args.allow_large);
+  }
   if (args.threads < 0) throw InvalidArgument("--threads: must be >= 0");
   if (args.noise_option->count() && args.snr_option->count()) {
     throw InvalidArgument("--snr-db: give either --noise-px or --snr-db, not both");
@@ -99,6 +119,7 @@ simulate::LayoutSimulationOptions simulation_options(const SimulateArgs& args,
     throw InvalidArgument("--shard: N must not exceed --trials");
   }
   options.monte_carlo.progress = !args.json && !args.quiet;
+  options.monte_carlo.keep_trials = args.per_trial || !args.shard.empty();
   options.methods = args.methods;
   options.methods_argument = "--methods";
   return options;
@@ -106,26 +127,39 @@ simulate::LayoutSimulationOptions simulation_options(const SimulateArgs& args,
 
 using Report = simulate::LayoutSimulation;
 
-void write_csv(const std::string& path, const MonteCarloRun& run) {
-  std::ofstream out(path);
-  if (!out) throw InvalidArgument("--csv: cannot write " + path);
-  out.precision(17);
-  out << "trial,estimator,rot_err_deg,trans_err,trans_err_rel,trans_err_deg,scale_err,time_us,"
-         "status,ok\n";
+constexpr const char* kCsvHeader =
+    "trial,estimator,rot_err_deg,trans_err,trans_err_rel,trans_err_deg,scale_err,time_us,status,"
+    "ok\n";
+
+/// The --csv rows of one trial, one per estimator.
+std::string csv_rows(const std::vector<std::string>& names, long trial,
+                     const std::vector<TrialError>& errors) {
   const auto number = [](double x) {
     std::ostringstream s;
     s.precision(17);
     if (std::isfinite(x)) s << x;
     return s.str();
   };
-  for (std::size_t k = 0; k < run.trial_index.size(); ++k) {
-    for (std::size_t e = 0; e < run.names.size(); ++e) {
-      const TrialError& t = run.errors[e][k];
-      out << run.trial_index[k] << ',' << run.names[e] << ',' << number(t.rot_err_deg) << ','
-          << number(t.trans_err) << ',' << number(t.trans_err_rel) << ',' << number(t.trans_err_deg)
-          << ',' << number(t.scale_err) << ',' << number(t.time_us) << ',' << t.status << ','
-          << (t.ok ? 1 : 0) << '\n';
-    }
+  std::string rows;
+  for (std::size_t e = 0; e < names.size(); ++e) {
+    const TrialError& t = errors[e];
+    rows += std::to_string(trial) + ',' + names[e] + ',' + number(t.rot_err_deg) + ',' +
+            number(t.trans_err) + ',' + number(t.trans_err_rel) + ',' + number(t.trans_err_deg) +
+            ',' + number(t.scale_err) + ',' + number(t.time_us) + ',' + t.status + ',' +
+            (t.ok ? "1" : "0") + '\n';
+  }
+  return rows;
+}
+
+/// The --csv file, checked before the run and written all or nothing as the trials stream by.
+std::unique_ptr<io::AtomicTextFile> open_csv(const std::string& path) {
+  if (path.empty()) return nullptr;
+  try {
+    auto file = std::make_unique<io::AtomicTextFile>(path, true);
+    file->write(kCsvHeader);
+    return file;
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(std::string("--csv: ") + e.what());
   }
 }
 
@@ -136,10 +170,10 @@ std::string summary_row(const std::string& what, const Summary& s) {
 
 void print_text(const Report& report) {
   std::cout << "vantage simulate: " << report.config["layout"]["name"].get<std::string>() << " ("
-            << report.config["layout"]["mode"].get<std::string>() << "), "
-            << report.run.trial_index.size() << " of " << report.run.total_trials
-            << " trials (shard " << report.shard << "), seed " << report.run.seed << ", camera "
-            << report.config["camera"].get<std::string>() << "\n\n";
+            << report.config["layout"]["mode"].get<std::string>() << "), " << report.run.trials
+            << " of " << report.run.total_trials << " trials (shard " << report.shard << "), seed "
+            << report.run.seed << ", camera " << report.config["camera"].get<std::string>()
+            << "\n\n";
   for (const EstimatorSummary& s : summarize(report.run)) {
     std::cout << s.name << ": " << s.trials << " trials, " << s.failures << " failures, "
               << s.wrong_but_ok << " wrong but ok (rotation error > 90 deg with an ok status)\n"
@@ -171,13 +205,21 @@ void print_text(const Report& report) {
   }
 }
 
-Report run_layout(const SimulateArgs& args) {
+Report run_layout(const SimulateArgs& args, io::AtomicTextFile* csv) {
   const Layout layout = args.input.read(args.file);
-  return simulate::simulate_layout(layout, simulation_options(args, layout));
+  simulate::LayoutSimulationOptions options = simulation_options(args, layout);
+  if (csv != nullptr) {
+    options.monte_carlo.on_trial = [csv](const MonteCarloRun& run, long trial,
+                                         const std::vector<TrialError>& errors) {
+      csv->write(csv_rows(run.names, trial, errors));
+    };
+  }
+  return simulate::simulate_layout(layout, options);
 }
 
-Json read_json_file(const std::string& path) {
-  const std::string text = io::read_text_file(path);
+Json read_json_file(const std::string& path, bool allow_large) {
+  const std::string text =
+      io::read_text_file(path, allow_large ? kMaxFileBytesAllowLarge : kMaxFileBytes);
   try {
     return Json::parse(text);
   } catch (const Json::parse_error&) {
@@ -185,12 +227,12 @@ Json read_json_file(const std::string& path) {
   }
 }
 
-Report merge_files(const std::vector<std::string>& files) {
+Report merge_files(const std::vector<std::string>& files, bool allow_large) {
   std::vector<MonteCarloRun> runs;
   std::vector<std::vector<BoundTrial>> bounds;
   Json config;
   for (const std::string& file : files) {
-    const Json shard = read_json_file(file);
+    const Json shard = read_json_file(file, allow_large);
     if (!shard.is_object() || !shard.contains("config") || !shard.contains("per_trial")) {
       throw InvalidArgument(file + ": per_trial: missing (run the shard with --shard K/N --json)");
     }
@@ -243,19 +285,33 @@ Report merge_files(const std::vector<std::string>& files) {
 int run_simulate(const SimulateArgs& args) {
   check_args(args);
   const bool merging = !args.merge.empty();
+  const std::unique_ptr<io::AtomicTextFile> csv = open_csv(args.csv);
   Report report;
   try {
-    report = merging ? merge_files(args.merge) : run_layout(args);
+    report = merging ? merge_files(args.merge, args.allow_large) : run_layout(args, csv.get());
   } catch (const Json::exception& e) {  // a shard file whose fields have the wrong types
     throw InvalidArgument("--merge: malformed shard file: " + std::string(e.what()));
   }
-  if (!args.csv.empty()) write_csv(args.csv, report.run);
+  if (csv) {
+    if (merging) {
+      std::vector<TrialError> errors(report.run.names.size());
+      for (std::size_t k = 0; k < report.run.trial_index.size(); ++k) {
+        for (std::size_t e = 0; e < errors.size(); ++e) errors[e] = report.run.errors[e][k];
+        csv->write(csv_rows(report.run.names, report.run.trial_index[k], errors));
+      }
+    }
+    csv->commit();
+  }
   if (args.json) {
     print_json(report_json(report, args.per_trial || !args.shard.empty()));
   } else {
     print_text(report);
   }
-  return report.has_bound && !report.bound.passed ? kExitFailure : kExitOk;
+  if (report.has_bound && !report.bound.passed) {
+    std::cerr << "vantage: simulate: bound check FAILED: " << report.bound.message << std::endl;
+    return kExitFailure;
+  }
+  return kExitOk;
 }
 
 }  // namespace
@@ -312,6 +368,7 @@ Command add_simulate_command(CLI::App& root) {
       ->expected(1, -1);
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
   sub->add_flag("--quiet", args->quiet, "no progress bar");
+  add_allow_large_flag(sub, args->allow_large);
   return {sub, [args] { return run_simulate(*args); }};
 }
 

@@ -20,6 +20,7 @@ packages=(
   xvfb xauth libgl1-mesa-dri libglx-mesa0 fonts-dejavu-core
   libyaml-cpp-dev
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest
+  python3-mpmath
 )
 
 missing=()

@@ -79,8 +79,10 @@ void check_coincidence(const Eigen::Matrix3Xd& points, const std::string& field)
       }
     }
   }
-  if (best_j >= 0)
-    fail(field, best_j, "coincides with " + field + "[" + std::to_string(best_i) + "]");
+  if (best_j >= 0) {
+    throw InvalidArgument(field, static_cast<long>(best_j), "coincides with", field,
+                          static_cast<long>(best_i));
+  }
 }
 
 // Names, when given: one per entry, non-empty, each used once (reported at its second use).

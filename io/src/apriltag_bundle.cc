@@ -3,8 +3,11 @@
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
+#include <vector>
 
 #include "entry_labels.h"
 #include "json_fields.h"
@@ -28,6 +31,56 @@ YAML::Node parse_yaml(std::string_view text, const std::string& source) {
     // the message printable.
     fail(source, "not valid YAML: line " + std::to_string(e.mark.line + 1) + ", column " +
                      std::to_string(e.mark.column + 1) + ": " + e.msg);
+  }
+}
+
+// The fields each map of tags.yaml may hold (apriltag_ros): anything else is an error, as an
+// unknown field of a JSON layout is.
+const std::vector<std::string> kRootFields = {"standalone_tags", "tag_bundles"};
+const std::vector<std::string> kBundleFields = {"name", "layout"};
+const std::vector<std::string> kTagFields = {"id", "size", "x", "y", "z", "qw", "qx", "qy", "qz"};
+
+std::string key_text(const YAML::Node& key) { return key.IsScalar() ? key.Scalar() : ""; }
+
+// Every map of the document, anywhere (standalone_tags too), has each key once: yaml-cpp keeps
+// duplicates and operator[] returns the first, so {x: 0.05, x: 9} would be read as x = 0.05.
+// Nodes reached again through an alias (the same start position) are checked once, so the walk
+// stays linear in the text.
+void reject_duplicate_keys(const YAML::Node& node, const std::string& path,
+                           const std::string& source, std::set<int>* visited) {
+  if (!node.IsMap() && !node.IsSequence()) return;
+  if (node.Mark().pos >= 0 && !visited->insert(node.Mark().pos).second) return;
+  if (node.IsSequence()) {
+    for (std::size_t k = 0; k < node.size(); ++k) {
+      reject_duplicate_keys(node[k], path + "[" + std::to_string(k) + "]", source, visited);
+    }
+    return;
+  }
+  std::set<std::string> keys;
+  for (const auto& entry : node) {
+    const std::string name = key_text(entry.first);
+    const std::string field = (path.empty() ? "" : path + ".") + name;
+    if (!entry.first.IsScalar()) {
+      fail(source, (path.empty() ? std::string("top level") : path) +
+                       ": a key is not a field name (a scalar)");
+    }
+    if (!keys.insert(name).second) {
+      fail(source, field + ": duplicate key (each field may appear once)");
+    }
+    reject_duplicate_keys(entry.second, field, source, visited);
+  }
+}
+
+void reject_unknown_fields(const YAML::Node& map, const std::string& where,
+                           const std::string& source, const std::vector<std::string>& allowed) {
+  for (const auto& entry : map) {
+    const std::string name = key_text(entry.first);
+    if (std::find(allowed.begin(), allowed.end(), name) == allowed.end()) {
+      std::string list;
+      for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
+      fail(source, (where.empty() ? "" : where + ": ") + "unknown field \"" + name +
+                       "\" (expected " + list + ")");
+    }
   }
 }
 
@@ -74,6 +127,9 @@ AprilTagMarkers read_markers(std::string_view text, const std::string& source,
                              const AprilTagOptions& options) {
   const YAML::Node root = parse_yaml(text, source);
   if (!root.IsMap()) fail(source, "the top level must be a YAML map with \"tag_bundles\"");
+  std::set<int> visited;
+  reject_duplicate_keys(root, "", source, &visited);
+  reject_unknown_fields(root, "", source, kRootFields);
   const YAML::Node bundles = root["tag_bundles"];
   if (!bundles) fail(source, "tag_bundles: missing (the tags.yaml of apriltag_ros)");
   if (!bundles.IsSequence() || bundles.size() == 0) {
@@ -83,6 +139,7 @@ AprilTagMarkers read_markers(std::string_view text, const std::string& source,
   const std::string prefix = "tag_bundles[" + std::to_string(b) + "]";
   const YAML::Node bundle = bundles[b];
   if (!bundle.IsMap()) fail(source, prefix + ": expected a map with name and layout");
+  reject_unknown_fields(bundle, prefix, source, kBundleFields);
   const YAML::Node tags = bundle["layout"];
   if (!tags || !tags.IsSequence()) fail(source, prefix + ".layout: expected a list of tags");
 
@@ -101,6 +158,7 @@ AprilTagMarkers read_markers(std::string_view text, const std::string& source,
     const std::string where = prefix + ".layout[" + std::to_string(k) + "]";
     const YAML::Node tag = tags[k];
     if (!tag.IsMap()) fail(source, where + ": expected a map {id, size, x, y, z, qw, qx, qy, qz}");
+    reject_unknown_fields(tag, where, source, kTagFields);
     const double id_value = read_number(tag, source, where, "id");
     if (id_value < 0 || id_value != std::floor(id_value) || id_value > 1e9) {
       fail(source, where + ".id: expected a non-negative integer");

@@ -1,5 +1,6 @@
 #include "vantage/io/csv_layout.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -75,12 +76,29 @@ std::vector<Row> read_rows(std::string_view text) {
   return rows;
 }
 
-/// A header names the columns: none of x, y, z is a number. (A data row with a typo in one
-/// coordinate is not a header and is reported.)
+/// Whether a cell holds a value, however bad: anything that starts as a number does (finite or
+/// not: "nan", "inf", "1e999", "2.5mm"), so does an empty cell or one of the usual markers of a
+/// missing value ("n/a", "NA", "null", "-", ...). A header cell is none of these.
+bool holds_value(const std::string& cell) {
+  if (cell.empty()) return true;
+  char* end = nullptr;
+  std::strtod(cell.c_str(), &end);
+  if (end != cell.c_str()) return true;
+  std::string lower;
+  for (const char c : cell) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* missing : {"n/a", "#n/a", "na", "n.a.", "nan", "null", "none", "nil", "-", "--",
+                              "?", "inf", "+inf", "-inf", "infinity"}) {
+    if (lower == missing) return true;
+  }
+  return false;
+}
+
+/// A header names the columns: no cell after the name holds a value (holds_value()). A row with
+/// a number, a NaN, an empty cell or "n/a" in any coordinate or weight is a data row, and its bad
+/// cells are reported.
 bool is_header(const Row& row) {
-  double unused = 0;
-  for (std::size_t c = 1; c < 4 && c < row.fields.size(); ++c) {
-    if (parse_number(row.fields[c], &unused)) return false;
+  for (std::size_t c = 1; c < row.fields.size(); ++c) {
+    if (holds_value(row.fields[c])) return false;
   }
   return true;
 }

@@ -11,11 +11,9 @@
 
 namespace vantage::io::internal {
 
-/// `message` with every "points[k]" replaced by labels[k] and "weights[k]" by
-/// "<labels[k]>, weight" (k in range; others stay).
-std::string relabel_entries(const std::string& message, const std::vector<std::string>& labels);
-
-/// Runs layout.validate(); its error becomes "<source>: <message with relabelled entries>".
+/// Runs layout.validate(); its error, against `source`, names entry k of "points" as labels[k]
+/// and of "weights" as "<labels[k]>, weight" (InvalidArgument::labelled(): the error's data,
+/// not its text).
 void validate_labelled(const Layout& layout, const std::string& source,
                        const std::vector<std::string>& labels);
 

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "json_fields.h"
+#include "vantage/io/printable.h"
 #include "vantage/analysis/common.h"
 
 namespace vantage::io {
@@ -54,7 +55,7 @@ Layout parse_layout(std::string_view text, const std::string& source) {
   try {
     layout.validate();
   } catch (const InvalidArgument& e) {
-    fail(source, e.what());
+    throw e.against(printable(source));
   }
   return layout;
 }

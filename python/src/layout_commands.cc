@@ -42,9 +42,10 @@ py::object analyze(const py::object& layout_arg, const py::object& vectors,
       without_gil([&] { return sdp::analyze_layout(layout, options); });
   const sdp::LayoutAnalysis& r = report.analysis;
   const bool certified = r.solver.status == sdp::WorstViewpoint::Status::kCertified;
-  const std::string status = r.degenerate ? "degenerate"
-                             : !certified ? sdp::to_string(r.solver.status)
-                                          : "crosscheck_disagrees";
+  const std::string status = r.degenerate        ? "degenerate"
+                             : r.near_degenerate ? "near_degenerate"
+                             : !certified        ? sdp::to_string(r.solver.status)
+                                                 : "crosscheck_disagrees";
   return result_or_raise(!report.is_usable(), status, report.message(),
                          Json::parse(sdp::to_json(report)));
 }

@@ -48,6 +48,7 @@ py::object simulate_layout(const py::object& layout_arg, const py::object& vecto
   options.monte_carlo.trials = trials;
   options.monte_carlo.seed = seed;
   options.monte_carlo.threads = threads;
+  options.monte_carlo.keep_trials = per_trial;
   options.methods = methods;
   std::string why;
   if (!options.is_valid(&why)) {
@@ -57,8 +58,7 @@ py::object simulate_layout(const py::object& layout_arg, const py::object& vecto
   const simulate::LayoutSimulation run =
       without_gil([&] { return simulate::simulate_layout(layout, options); });
   const bool failed = run.has_bound && !run.bound.passed;
-  return result_or_raise(failed, "bound_check_failed",
-                         failed ? "a data vector's error exceeded the bound of Eq. (30)" : "",
+  return result_or_raise(failed, "bound_check_failed", failed ? run.bound.message : "",
                          simulate::report_json(run, per_trial));
 }
 

@@ -2,8 +2,11 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <string>
 
+#include "narrowest_cone.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/error_bounds.h"
 #include "vantage/analysis/scaling.h"
@@ -20,6 +23,12 @@ void append(std::string* message, const std::string& part) {
   *message += part;
 }
 
+std::string three_digits(double x) {
+  std::ostringstream out;
+  out << std::setprecision(3) << x;
+  return out.str();
+}
+
 // Unit columns all within kParallelTolerance of one line.
 bool all_parallel(const Eigen::Matrix3Xd& unit) {
   for (Eigen::Index i = 1; i < unit.cols(); ++i) {
@@ -28,7 +37,25 @@ bool all_parallel(const Eigen::Matrix3Xd& unit) {
   return true;
 }
 
+// A near-degenerate layout's t has rounded to 1 near the optimum, so the search's viewpoint is
+// any of the near-optimal ones; the sines (p-bar) still tell them apart (narrowest_cone.h).
+void sharpen_near_degenerate(const Eigen::Matrix3Xd& n, LayoutAnalysis* report) {
+  const Eigen::Vector3d a =
+      upper_hemisphere(internal::narrowest_cone_axis(n, report->worst_viewpoint));
+  const double pbar = pbar_at(n, a);
+  if (pbar >= report->pbar_min) return;
+  report->worst_viewpoint = a;
+  report->worst_viewpoints = {a};
+  report->t = min_abs_projection(n, a);
+  report->pbar_min = pbar;
+}
+
 }  // namespace
+
+bool is_near_degenerate(double pbar_min, double t, double certificate_tolerance) {
+  // 1 - t from p-bar, which keeps its digits where t has rounded to 1.
+  return pbar_min * pbar_min / (1.0 + t) <= certificate_tolerance;
+}
 
 bool LayoutAnalysisOptions::is_valid(std::string* why) const {
   std::string inner;
@@ -55,16 +82,17 @@ LayoutAnalysis analyze_vectors(const Eigen::Matrix3Xd& vectors, const Eigen::Vec
     while (vectors.col(bad).allFinite()) ++bad;
     throw InvalidArgument("vectors[" + std::to_string(bad) + "]: not a finite number");
   }
-  // Every part of the analysis depends on directions and relative lengths only: scale by a power
-  // of two (exactly) so that no norm over- or underflows, whatever the data's units.
-  const Eigen::Matrix3Xd scaled = scaled_by_power_of_two(vectors, binary_exponent(vectors));
-  for (Eigen::Index i = 0; i < scaled.cols(); ++i) {
-    if (!(scaled.col(i).norm() > 0.0)) {
-      throw InvalidArgument("vectors[" + std::to_string(i) +
-                            "]: zero (or negligible beside the longest vector)");
+  // The worst viewpoint and Eq. (30) depend on the directions only: each is normalised on its
+  // own scale, so no length in [smallest, largest double] is lost beside another. The swap
+  // analysis also needs the relative lengths: it gets the data scaled by one power of two
+  // (exact), so that no norm over- or underflows whatever the units.
+  const Eigen::Matrix3Xd n = unit_directions(vectors);
+  for (Eigen::Index i = 0; i < n.cols(); ++i) {
+    if (n.col(i).isZero(0.0)) {
+      throw InvalidArgument("vectors[" + std::to_string(i) + "]: zero length");
     }
   }
-  const Eigen::Matrix3Xd n = normalized_columns(scaled, "vectors");
+  const Eigen::Matrix3Xd scaled = scaled_by_power_of_two(vectors, binary_exponent(vectors));
 
   LayoutAnalysis report;
   WorstViewpointOptions wv = options.worst_viewpoint;
@@ -73,17 +101,20 @@ LayoutAnalysis analyze_vectors(const Eigen::Matrix3Xd& vectors, const Eigen::Vec
     if (options.progress) options.progress(name);
   };
   stage("global worst viewpoint");
-  const WorstViewpoint global = global_worst_viewpoint(scaled, wv);
+  const WorstViewpoint global = global_worst_viewpoint(n, wv);
   report.worst_viewpoint = global.viewpoint;
   report.worst_viewpoints = global.viewpoints;
   report.t = global.t;
   report.pbar_min = global.pbar_min;
-  report.worst_case_errors_deg = worst_case_errors_deg(scaled, global.viewpoint);
+  if (is_near_degenerate(global.pbar_min, global.t, wv.certificate_tolerance)) {
+    sharpen_near_degenerate(n, &report);
+  }
+  report.worst_case_errors_deg = worst_case_errors_deg(n, report.worst_viewpoint);
   // With tied worst viewpoints the bound is the largest over all of them (design reports the same).
   report.max_worst_case_error_deg = report.worst_case_errors_deg.maxCoeff();
-  for (const Eigen::Vector3d& a : global.viewpoints) {
+  for (const Eigen::Vector3d& a : report.worst_viewpoints) {
     report.max_worst_case_error_deg =
-        std::max(report.max_worst_case_error_deg, worst_case_errors_deg(scaled, a).maxCoeff());
+        std::max(report.max_worst_case_error_deg, worst_case_errors_deg(n, a).maxCoeff());
   }
   report.certificate = {global.t_upper, global.t_lower, global.certified()};
   report.solver.backend = wv.sdp.backend;
@@ -94,13 +125,13 @@ LayoutAnalysis analyze_vectors(const Eigen::Matrix3Xd& vectors, const Eigen::Vec
   report.message = global.message;
 
   stage("paper's single LMI");
-  const CellViewpoint paper = paper_worst_viewpoint(scaled, wv.sdp);
+  const CellViewpoint paper = paper_worst_viewpoint(n, wv.sdp);
   report.paper_lmi = {paper.viewpoint, paper.t, paper.pbar_at, paper.status};
 
   if (options.run_crosscheck) {
     stage("cross-check");
     const CrossCheck check =
-        crosscheck_worst_viewpoint(scaled, global.t, options.crosscheck, global.viewpoints);
+        crosscheck_worst_viewpoint(n, global.t, options.crosscheck, global.viewpoints);
     report.crosscheck = {true,
                          check.method,
                          check.t,
@@ -123,6 +154,15 @@ LayoutAnalysis analyze_vectors(const Eigen::Matrix3Xd& vectors, const Eigen::Vec
            "degenerate layout: every data vector is parallel to one line (collinear points, or "
            "duplicated or opposite vectors), so p-bar_min = 0, the LUB scale is undefined and "
            "the rotation about that line cannot be determined");
+  } else if (is_near_degenerate(report.pbar_min, report.t, wv.certificate_tolerance)) {
+    // The errors stay those of Eq. (30) at the accurate p_i (close to 90 degrees, not 0).
+    report.near_degenerate = true;
+    append(&report.message,
+           "near-degenerate layout: every data vector is within " +
+               three_digits(std::asin(report.pbar_min)) +
+               " rad of one line (p-bar_min = " + three_digits(report.pbar_min) +
+               "), too close for the certificate on t to tell it from a degenerate layout; the "
+               "rotation about that line is barely determined");
   }
   return report;
 }

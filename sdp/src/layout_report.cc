@@ -81,7 +81,7 @@ LayoutReport analyze_layout(const Layout& layout, const LayoutReportOptions& opt
 }
 
 bool LayoutReport::is_usable() const {
-  return analysis.trusted() && !analysis.degenerate &&
+  return analysis.trusted() && !analysis.degenerate && !analysis.near_degenerate &&
          (!dropout || dropout->status == DropoutAnalysis::Status::kCertified);
 }
 
@@ -101,11 +101,17 @@ std::string LayoutReport::brief_report() const {
   if (r.degenerate) {
     out << "DEGENERATE             every data vector is parallel to one line: the rotation "
            "about it is not determined\n";
+  } else if (r.near_degenerate) {
+    out << "NEAR-DEGENERATE        every data vector is within " << number(std::asin(r.pbar_min), 3)
+        << " rad of one line: the rotation about it is barely determined\n";
   }
   out << "pbar_min = sqrt(1-t^2) " << number(r.pbar_min, 9) << "   (ceiling for "
       << data.vectors.cols() << " vectors: " << number(ceiling, 6) << ")\n"
       << "max worst-case error   " << number(r.max_worst_case_error_deg, 6) << " deg (Eq. 30)"
-      << (r.degenerate ? ", and the rotation about the line is free" : "") << "\n"
+      << (r.degenerate        ? ", and the rotation about the line is free"
+          : r.near_degenerate ? ", and the rotation about the line is barely determined"
+                              : "")
+      << "\n"
       << "worst viewpoint a      " << vector_text(r.worst_viewpoint) << "\n";
   for (std::size_t k = 1; k < r.worst_viewpoints.size(); ++k) {
     out << "  also (tie)           " << vector_text(r.worst_viewpoints[k]) << "\n";

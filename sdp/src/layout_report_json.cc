@@ -76,6 +76,7 @@ std::string to_json(const LayoutReport& report) {
   out["pbar_min"] = r.pbar_min;
   out["ceiling"] = report.ceiling;
   out["degenerate"] = r.degenerate;
+  out["near_degenerate"] = r.near_degenerate;
   out["worst_case_errors_deg"] = list(r.worst_case_errors_deg);
   out["max_worst_case_error_deg"] = r.max_worst_case_error_deg;
   out["certificate"] = {{"t_upper", r.certificate.t_upper},

@@ -8,6 +8,7 @@
 #include "global_search.h"
 #include "min_norm_point.h"
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/scaling.h"
 
 namespace vantage::sdp {
 namespace {
@@ -33,20 +34,27 @@ bool lexicographically_before(const Eigen::Vector3d& a, const Eigen::Vector3d& b
 Eigen::Matrix3Xd normalized_columns(const Eigen::Matrix3Xd& vectors, const char* argument) {
   Eigen::Matrix3Xd n(3, vectors.cols());
   for (Eigen::Index i = 0; i < vectors.cols(); ++i) {
-    const Eigen::Vector3d z = vectors.col(i);
-    const double norm = z.norm();
-    if (!z.allFinite() || !(norm > 0.0) || !std::isfinite(norm)) {
+    // Each column on its own scale: a direction is never lost beside a longer vector.
+    n.col(i) = unit_direction(vectors.col(i));
+    if (n.col(i).isZero(0.0)) {
       std::ostringstream out;
       out << argument << ": column " << i << " is zero or not finite";
       throw InvalidArgument(out.str());
     }
-    n.col(i) = z / norm;
   }
   return n;
 }
 
 double min_abs_projection(const Eigen::Matrix3Xd& unit_vectors, const Eigen::Vector3d& a) {
   return (unit_vectors.transpose() * a).cwiseAbs().minCoeff();
+}
+
+double pbar_at(const Eigen::Matrix3Xd& unit_vectors, const Eigen::Vector3d& a) {
+  double largest = 0.0;
+  for (Eigen::Index i = 0; i < unit_vectors.cols(); ++i) {
+    largest = std::max(largest, a.cross(unit_vectors.col(i)).norm());
+  }
+  return std::min(1.0, largest);
 }
 
 double pbar_from_t(double t) {
@@ -165,7 +173,7 @@ WorstViewpoint worst_viewpoint_result(const Eigen::Matrix3Xd& n, const SearchOut
     result.t = min_abs_projection(n, result.viewpoint);
     result.t_lower = result.t;
     result.t_upper = 1.0;
-    result.pbar_min = pbar_from_t(result.t);
+    result.pbar_min = pbar_at(n, result.viewpoint);
     result.cells_solved = search.cells_solved;
     result.patches = search.patches;
     result.message = "stopped: an attained value exceeds stop_above";
@@ -197,7 +205,7 @@ WorstViewpoint worst_viewpoint_result(const Eigen::Matrix3Xd& n, const SearchOut
   result.t = min_abs_projection(n, result.viewpoint);
   result.t_lower = result.t;
   result.t_upper = std::max(search.upper, result.t);
-  result.pbar_min = pbar_from_t(result.t);
+  result.pbar_min = pbar_at(n, result.viewpoint);
   result.cells_solved = search.cells_solved;
   result.patches = search.patches;
   const bool certified =

@@ -70,23 +70,22 @@ ExperimentResult run_mcinroy_orientation(const ExperimentOptions& options, long 
       return make_layout_scene(z, true, LayoutSceneOptions{}, random);
     };
     std::vector<Estimator> estimators = {*find_estimator("standard"), *find_estimator("affine")};
-    const MonteCarloRun run = run_monte_carlo(generator, estimators, mc_options(options, trials));
-    for (std::size_t k = 0; k < run.trial_index.size(); ++k) {
-      TrialRandom random = TrialRandom::for_trial(options.seed, run.trial_index[k]);
-      const double pbar = scene_pbar(generator(run.trial_index[k], random));
+    MonteCarloOptions mc = mc_options(options, trials);
+    long affine_better = 0;
+    mc.on_trial = [&](const MonteCarloRun& run, long trial, const std::vector<TrialError>& errors) {
+      TrialRandom random = TrialRandom::for_trial(options.seed, trial);
+      const double pbar = scene_pbar(generator(trial, random));
       for (std::size_t e = 0; e < run.names.size(); ++e) {
-        csv << paper.n << run.trial_index[k] << pbar << run.names[e] << run.errors[e][k].rot_err_deg
-            << run.errors[e][k].status;
+        csv << paper.n << trial << pbar << run.names[e] << errors[e].rot_err_deg
+            << errors[e].status;
         csv.end_row();
       }
-    }
+      affine_better += errors[1].rot_err_deg < errors[0].rot_err_deg;
+    };
+    const MonteCarloRun run = run_monte_carlo(generator, estimators, mc);
     const std::vector<EstimatorSummary> summaries = summarize(run);
     const Summary& standard = summaries[0].rot_err_deg;
     const Summary& affine = summaries[1].rot_err_deg;
-    long affine_better = 0;
-    for (std::size_t k = 0; k < run.trial_index.size(); ++k) {
-      affine_better += run.errors[1][k].rot_err_deg < run.errors[0][k].rot_err_deg;
-    }
     for (const EstimatorSummary& s : summaries) {
       const bool is_new = s.name == "affine";
       table += "| " + std::to_string(paper.n) + " | " +
@@ -135,16 +134,19 @@ ExperimentResult run_mcinroy_pose(const ExperimentOptions& options, long trials)
   };
   std::vector<Estimator> estimators;
   for (const PaperPoseRow& row : kPaperPose) estimators.push_back(*find_estimator(row.estimator));
-  const MonteCarloRun run = run_monte_carlo(generator, estimators, mc_options(options, trials));
   CsvWriter csv(output_path(options, "mcinroy_pose_trials.csv"),
                 {"trial", "estimator", "rot_err_deg", "trans_err_rel", "status"});
-  for (std::size_t k = 0; k < run.trial_index.size(); ++k) {
+  MonteCarloOptions mc = mc_options(options, trials);
+  long new_better = 0;
+  mc.on_trial = [&](const MonteCarloRun& run, long trial, const std::vector<TrialError>& errors) {
     for (std::size_t e = 0; e < run.names.size(); ++e) {
-      csv << run.trial_index[k] << run.names[e] << run.errors[e][k].rot_err_deg
-          << run.errors[e][k].trans_err_rel << run.errors[e][k].status;
+      csv << trial << run.names[e] << errors[e].rot_err_deg << errors[e].trans_err_rel
+          << errors[e].status;
       csv.end_row();
     }
-  }
+    new_better += errors[2].rot_err_deg < errors[1].rot_err_deg;
+  };
+  const MonteCarloRun run = run_monte_carlo(generator, estimators, mc);
   const std::vector<EstimatorSummary> summaries = summarize(run);
   std::string table =
       "# mcinroy-pose: 4 random points in [-1, 1]^3, p = [0.369, 0.179, 1e5], rotation at the "
@@ -160,10 +162,6 @@ ExperimentResult run_mcinroy_pose(const ExperimentOptions& options, long trials)
              cell(s.rot_err_deg.p95) + " | " + cell(s.rot_err_deg.max) + " | " +
              std::to_string(s.failures) + " | " + std::to_string(s.wrong_but_ok) + " | " +
              cell(kPaperPose[e].trans_rel) + " | " + cell(kPaperPose[e].rot_deg) + " |\n";
-  }
-  long new_better = 0;
-  for (std::size_t k = 0; k < run.trial_index.size(); ++k) {
-    new_better += run.errors[2][k].rot_err_deg < run.errors[1][k].rot_err_deg;
   }
   const double ratio = summaries[1].rot_err_deg.median / summaries[2].rot_err_deg.median;
   table += "\nNew 2-D vs standard 2-D: median rotation error " + cell(ratio) +

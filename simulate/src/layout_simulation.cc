@@ -1,5 +1,7 @@
 #include "vantage/simulate/layout_simulation.h"
 
+#include <algorithm>
+
 #include "vantage/analysis/common.h"
 #include "vantage/sdp/worst_viewpoint.h"
 
@@ -81,15 +83,24 @@ LayoutSimulation simulate_layout(const Layout& layout, const LayoutSimulationOpt
   out.shard = std::to_string(mc.shard.index) + "/" + std::to_string(mc.shard.count);
   out.run = run_monte_carlo(generator, estimators, mc);
   if (scene.camera == CameraModel::kAffine) {
+    // The same trials again, streamed: one block of results at a time unless they are kept.
     const BoundLayout bound_layout = prepare_bound_layout(layout.entries, vectors);
-    out.bound_trials.resize(out.run.trial_index.size());
-    parallel_for(static_cast<long>(out.run.trial_index.size()), mc.threads, mc.progress,
-                 [&](long k) {
-                   TrialRandom random = TrialRandom::for_trial(mc.seed, out.run.trial_index[k]);
-                   out.bound_trials[k] = check_bound_trial(bound_layout, generator(0, random));
-                 });
+    BoundCheckAccumulator check(bound_layout);
+    const std::pair<long, long> range = shard_range(mc.trials, mc.shard);
+    const long first = range.first;  // captured below: not a structured binding
+    const long last = range.second;
+    parallel_for_in_order<BoundTrial>(
+        last - first, mc.threads, mc.progress,
+        [&](long k) {
+          TrialRandom random = TrialRandom::for_trial(mc.seed, first + k);
+          return check_bound_trial(bound_layout, generator(0, random));
+        },
+        [&](long k, const BoundTrial& trial) {
+          check.add(first + k, trial);
+          if (mc.keep_trials) out.bound_trials.push_back(trial);
+        });
     out.has_bound = true;
-    out.bound = summarize_bound_check(bound_layout, out.bound_trials);
+    out.bound = check.result();
   }
   return out;
 }
@@ -98,7 +109,7 @@ Json report_json(const LayoutSimulation& simulation, bool per_trial) {
   Json out;
   out["layout"] = simulation.config["layout"]["name"];
   out["mode"] = simulation.config["layout"]["mode"];
-  out["trials"] = static_cast<long>(simulation.run.trial_index.size());
+  out["trials"] = simulation.run.trials;
   out["total_trials"] = simulation.run.total_trials;
   out["seed"] = simulation.run.seed;
   out["shard"] = simulation.shard;

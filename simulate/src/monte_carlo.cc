@@ -83,10 +83,14 @@ TrialError trial_error(const PoseEstimate& estimate, const Scene& scene) {
   return error;
 }
 
+int worker_count(int threads) {
+  return threads > 0 ? threads
+                     : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 void parallel_for(long count, int threads, bool progress, const std::function<void(long k)>& body) {
-  const int workers = static_cast<int>(std::max<long>(
-      1, std::min<long>(
-             count, threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency()))));
+  const int workers =
+      static_cast<int>(std::max<long>(1, std::min<long>(count, worker_count(threads))));
   std::atomic<long> next{0};
   std::atomic<long> done{0};
   std::atomic<bool> stop{false};
@@ -122,6 +126,50 @@ void parallel_for(long count, int threads, bool progress, const std::function<vo
   if (first_error) std::rethrow_exception(first_error);
 }
 
+void EstimatorAccumulator::add(const TrialError& error) {
+  ++trials_;
+  rot_err_deg_.add(error.rot_err_deg);
+  trans_err_.add(error.trans_err);
+  trans_err_rel_.add(error.trans_err_rel);
+  trans_err_deg_.add(error.trans_err_deg);
+  scale_err_.add(error.scale_err);
+  time_us_.add(error.time_us);
+  ++by_status_[error.status];
+  if (!error.ok) ++failures_;
+  if (error.ok && error.rot_err_deg > kWrongButOkDeg) ++wrong_but_ok_;
+}
+
+EstimatorSummary EstimatorAccumulator::summary() const {
+  EstimatorSummary s;
+  s.name = name_;
+  s.trials = trials_;
+  s.rot_err_deg = rot_err_deg_.summary();
+  s.trans_err = trans_err_.summary();
+  s.trans_err_rel = trans_err_rel_.summary();
+  s.trans_err_deg = trans_err_deg_.summary();
+  s.scale_err = scale_err_.summary();
+  s.time_us = time_us_.summary();
+  s.failures = failures_;
+  s.by_status = by_status_;
+  s.wrong_but_ok = wrong_but_ok_;
+  return s;
+}
+
+void MonteCarloRun::add_trial(long trial, const std::vector<TrialError>& per_estimator, bool keep) {
+  VANTAGE_CHECK(per_estimator.size() == names.size(), "one error per estimator");
+  if (accumulators.size() != names.size()) {
+    accumulators.clear();
+    for (const std::string& name : names) accumulators.emplace_back(name);
+    errors.assign(names.size(), {});
+  }
+  ++trials;
+  for (std::size_t e = 0; e < names.size(); ++e) {
+    accumulators[e].add(per_estimator[e]);
+    if (keep) errors[e].push_back(per_estimator[e]);
+  }
+  if (keep) trial_index.push_back(trial);
+}
+
 MonteCarloRun run_monte_carlo(const SceneGenerator& generator,
                               const std::vector<Estimator>& estimators,
                               const MonteCarloOptions& options) {
@@ -130,54 +178,42 @@ MonteCarloRun run_monte_carlo(const SceneGenerator& generator,
   MonteCarloRun run;
   run.total_trials = options.trials;
   run.seed = options.seed;
-  const auto [first, last] = shard_range(options.trials, options.shard);
-  for (long t = first; t < last; ++t) run.trial_index.push_back(t);
-  for (const Estimator& e : estimators) run.names.push_back(e.name);
-  run.errors.assign(estimators.size(), std::vector<TrialError>(run.trial_index.size()));
-
-  parallel_for(static_cast<long>(run.trial_index.size()), options.threads, options.progress,
-               [&](long k) {
-                 const long trial = run.trial_index[k];
-                 TrialRandom random = TrialRandom::for_trial(options.seed, trial);
-                 const Scene scene = generator(trial, random);
-                 for (std::size_t e = 0; e < estimators.size(); ++e) {
-                   const auto start = std::chrono::steady_clock::now();
-                   const PoseEstimate estimate = estimators[e].solve(scene);
-                   const auto stop = std::chrono::steady_clock::now();
-                   TrialError error = trial_error(estimate, scene);
-                   error.time_us = std::chrono::duration<double, std::micro>(stop - start).count();
-                   run.errors[e][k] = std::move(error);
-                 }
-               });
+  for (const Estimator& e : estimators) {
+    run.names.push_back(e.name);
+    run.accumulators.emplace_back(e.name);
+  }
+  run.errors.assign(estimators.size(), {});
+  // Plain variables, not a structured binding: the lambdas below capture them.
+  const std::pair<long, long> range = shard_range(options.trials, options.shard);
+  const long first = range.first;
+  const long last = range.second;
+  // One block of results at a time: memory does not grow with the trials (unless kept).
+  parallel_for_in_order<std::vector<TrialError>>(
+      last - first, options.threads, options.progress,
+      [&](long k) {
+        const long trial = first + k;
+        TrialRandom random = TrialRandom::for_trial(options.seed, trial);
+        const Scene scene = generator(trial, random);
+        std::vector<TrialError> errors(estimators.size());
+        for (std::size_t e = 0; e < estimators.size(); ++e) {
+          const auto start = std::chrono::steady_clock::now();
+          const PoseEstimate estimate = estimators[e].solve(scene);
+          const auto stop = std::chrono::steady_clock::now();
+          errors[e] = trial_error(estimate, scene);
+          errors[e].time_us = std::chrono::duration<double, std::micro>(stop - start).count();
+        }
+        return errors;
+      },
+      [&](long k, const std::vector<TrialError>& errors) {
+        run.add_trial(first + k, errors, options.keep_trials);
+        if (options.on_trial) options.on_trial(run, first + k, errors);
+      });
   return run;
 }
 
 std::vector<EstimatorSummary> summarize(const MonteCarloRun& run) {
   std::vector<EstimatorSummary> summaries;
-  for (std::size_t e = 0; e < run.names.size(); ++e) {
-    const std::vector<TrialError>& errors = run.errors[e];
-    EstimatorSummary s;
-    s.name = run.names[e];
-    s.trials = static_cast<long>(errors.size());
-    const auto column = [&](double TrialError::*field) {
-      std::vector<double> values;
-      values.reserve(errors.size());
-      for (const TrialError& error : errors) values.push_back(error.*field);
-      return summarize(values);
-    };
-    s.rot_err_deg = column(&TrialError::rot_err_deg);
-    s.trans_err = column(&TrialError::trans_err);
-    s.trans_err_rel = column(&TrialError::trans_err_rel);
-    s.trans_err_deg = column(&TrialError::trans_err_deg);
-    s.scale_err = column(&TrialError::scale_err);
-    s.time_us = column(&TrialError::time_us);
-    for (const TrialError& error : errors) {
-      ++s.by_status[error.status];
-      if (!error.ok) ++s.failures;
-      if (error.ok && error.rot_err_deg > kWrongButOkDeg) ++s.wrong_but_ok;
-    }
-    summaries.push_back(std::move(s));
-  }
+  for (const EstimatorAccumulator& a : run.accumulators) summaries.push_back(a.summary());
   return summaries;
 }
 
@@ -203,18 +239,16 @@ MonteCarloRun merge_runs(const std::vector<MonteCarloRun>& shards,
   merged.total_trials = head.total_trials;
   merged.seed = head.seed;
   merged.names = head.names;
-  merged.errors.assign(head.names.size(), {});
+  std::vector<TrialError> per_estimator(head.names.size());
   for (std::size_t i = 0; i < order.size(); ++i) {
     if (i > 0 && order[i].first == order[i - 1].first) {
       throw InvalidArgument(sources[order[i].second.first] + ": trial " +
                             std::to_string(order[i].first) + " is also in " +
                             sources[order[i - 1].second.first] + " (overlapping shards)");
     }
-    merged.trial_index.push_back(order[i].first);
     const auto [s, k] = order[i].second;
-    for (std::size_t e = 0; e < head.names.size(); ++e) {
-      merged.errors[e].push_back(shards[s].errors[e][k]);
-    }
+    for (std::size_t e = 0; e < head.names.size(); ++e) per_estimator[e] = shards[s].errors[e][k];
+    merged.add_trial(order[i].first, per_estimator, true);
   }
   return merged;
 }

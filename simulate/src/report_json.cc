@@ -26,6 +26,7 @@ const std::vector<std::pair<const char*, BoundField>>& bound_fields() {
       {"pbar", &BoundTrial::pbar},
       {"max_error_rad", &BoundTrial::max_error_rad},
       {"max_mismatch_rad", &BoundTrial::max_mismatch_rad},
+      {"max_mismatch_ratio", &BoundTrial::max_mismatch_ratio},
       {"affine_rot_err_rad", &BoundTrial::affine_rot_err_rad},
       {"spanning_rot_err_rad", &BoundTrial::spanning_rot_err_rad},
   };
@@ -111,11 +112,15 @@ Json to_json(const BoundCheck& check) {
           {"bound_deg", json_number(check.bound_deg)},
           {"pbar_min", json_number(check.pbar_min)},
           {"max_ratio", json_number(check.max_ratio)},
+          {"max_eq26_mismatch_over_tolerance", json_number(check.max_eq26_mismatch_over_tolerance)},
           {"passed", check.passed},
+          {"message", check.message},
           {"affine_relation", relations}};
 }
 
 Json per_trial_json(const MonteCarloRun& run) {
+  VANTAGE_CHECK(static_cast<long>(run.trial_index.size()) == run.trials,
+                "per-trial values were not kept (MonteCarloOptions::keep_trials)");
   Json estimators = Json::object();
   for (std::size_t e = 0; e < run.names.size(); ++e) {
     Json columns = Json::object();
@@ -175,6 +180,11 @@ MonteCarloRun run_from_json(const Json& per_trial, long total_trials, std::uint6
     }
     run.names.push_back(name);
     run.errors.push_back(std::move(errors));
+  }
+  run.trials = static_cast<long>(n);
+  for (const std::string& name : run.names) run.accumulators.emplace_back(name);
+  for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t e = 0; e < run.names.size(); ++e) run.accumulators[e].add(run.errors[e][k]);
   }
   return run;
 }

@@ -103,6 +103,30 @@ const BadBundle kBadBundles[] = {
      "layout[2] (tag 2, corner 0): coincides with tag_bundles[0].layout[1] (tag 1, corner 0)"},
     {"TwoBundlesNoChoice", bundle(kTwoTags, "one") + "  - name: two\n    layout:\n" + kTwoTags,
      "2 bundles; choose one with --bundle (one, two)"},
+    // Issue 22: a repeated key was accepted with its first value; unknown keys were ignored.
+    {"DuplicateX",
+     bundle("      - {id: 0, size: 0.05, x: 0.05, y: 0, z: 0, x: 9, qw: 1, qx: 0, qy: 0, qz: 0}\n" +
+            kTwoTags.substr(kTwoTags.find('\n') + 1)),
+     "tag_bundles[0].layout[0].x: duplicate key (each field may appear once)"},
+    {"DuplicateBlockKey", "tag_bundles:\n  - name: b\n    name: c\n    layout:\n" + kTwoTags,
+     "tag_bundles[0].name: duplicate key"},
+    {"DuplicateTopLevel", bundle(kTwoTags) + "tag_bundles: []\n", "tag_bundles: duplicate key"},
+    {"DuplicateInStandaloneTags",
+     "standalone_tags: [{id: 1, size: 0.1, id: 2}]\n" + bundle(kTwoTags),
+     "standalone_tags[0].id: duplicate key"},
+    {"UnknownTagField",
+     bundle(kTwoTags + "      - {id: 2, size: 0.1, x: 2, y: 0, z: 0, qw: 1, qx: 0, qy: 0, qz: 0, "
+                       "colour: red}\n"),
+     "tag_bundles[0].layout[2]: unknown field \"colour\" (expected id, size, x, y, z, qw, qx, "
+     "qy, qz)"},
+    {"MisspelledTagField",
+     bundle("      - {id: 0, size: 0.1, X: 0, y: 0, z: 0, qw: 1, qx: 0, "
+            "qy: 0, qz: 0}\n"),
+     "tag_bundles[0].layout[0]: unknown field \"X\""},
+    {"UnknownBundleField", "tag_bundles:\n  - name: b\n    frame: cube\n    layout:\n" + kTwoTags,
+     "tag_bundles[0]: unknown field \"frame\" (expected name, layout)"},
+    {"UnknownTopLevelField", "tag_bundle: []\n" + bundle(kTwoTags),
+     "unknown field \"tag_bundle\" (expected standalone_tags, tag_bundles)"},
 };
 
 INSTANTIATE_TEST_SUITE_P(AprilTagBundle, BadAprilTagFile, ::testing::ValuesIn(kBadBundles),
@@ -178,6 +202,26 @@ TEST(AprilTagBundle, BundleIsChosenByName) {
   EXPECT_EQ(layout.entries.cols(), 12);
   options.bundle = "three";
   EXPECT_THAT(error_of(text, options), HasSubstr("no bundle named \"three\" (one, two)"));
+}
+
+TEST(AprilTagBundle, AliasesAreCheckedOnceNotOncePerUse) {
+  // Each level refers to the one before ten times: 10^8 uses of the first list, but every node
+  // is checked once (the walk would take hours otherwise). The unknown key is still found.
+  std::string text = "l0: &l0 [1, 1, 1, 1, 1, 1, 1, 1, 1, 1]\n";
+  for (int level = 1; level <= 8; ++level) {
+    const std::string previous = "*l" + std::to_string(level - 1);
+    text += "l" + std::to_string(level) + ": &l" + std::to_string(level) + " [";
+    for (int k = 0; k < 10; ++k) text += (k ? ", " : "") + previous;
+    text += "]\n";
+  }
+  text += bundle(kTwoTags);
+  EXPECT_THAT(error_of(text), HasSubstr("unknown field \"l0\""));
+}
+
+TEST(AprilTagBundle, StandaloneTagsAreAllowedAndNotRead) {
+  const Layout layout = parse_apriltag_layout(
+      "standalone_tags: [{id: 20, size: 0.05, name: loose}]\n" + bundle(kTwoTags), "t.yaml");
+  EXPECT_EQ(layout.entries.cols(), 8);
 }
 
 TEST(AprilTagBundle, TagPointsNamesParse) {

@@ -65,6 +65,18 @@ const BadCsv kBadCsvs[] = {
     {"NegativeWeight", "a,0,0,0,-2\nb,1,0,0,1\nc,0,1,0,1\n", "line 1 (a), weight: must be > 0"},
     {"CoincidentMarkers", "a,0,0,0\nb,1,0,0\nc,1,0,0\n", "line 3 (c): coincides with line 2 (b)"},
     {"TwoMarkers", "a,0,0,0\nb,1,0,0\n", "points: need at least 3 points"},
+    // Issue 22: a first row of missing values was taken for a header and silently dropped.
+    {"NanFirstRow", "m1,nan,nan,nan\nm2,0,0,0\nm3,1,0,0\nm4,0,1,0\nm5,0,0,1\n",
+     "line 1 (m1), x: expected a finite number, got \"nan\""},
+    {"NotAvailableFirstRow", "m1,n/a,n/a,n/a\nm2,0,0,0\nm3,1,0,0\nm4,0,1,0\nm5,0,0,1\n",
+     "line 1 (m1), x: expected a finite number, got \"n/a\""},
+    {"EmptyFirstRow", "m1,,,\nm2,0,0,0\nm3,1,0,0\nm4,0,1,0\n",
+     "line 1 (m1), x: expected a finite number, got \"\""},
+    {"InfinityFirstRow", "m1,inf,-inf,0\nm2,0,0,0\nm3,1,0,0\nm4,0,1,0\n",
+     "line 1 (m1), x: expected a finite number, got \"inf\""},
+    {"NullWeightFirstRow", "m1,0,0,0,NULL\nm2,1,0,0,1\nm3,0,1,0,1\n",
+     "line 1 (m1), weight: expected a finite number, got \"NULL\""},
+    {"InfinityInData", "a,0,0,0\nb,Infinity,0,0\nc,0,1,0\n", "line 2 (b), x: expected a finite"},
 };
 
 INSTANTIATE_TEST_SUITE_P(CsvLayout, BadCsvFile, ::testing::ValuesIn(kBadCsvs),
@@ -80,6 +92,18 @@ TEST(CsvLayout, ReadsMarkersWithoutHeaderOrWeights) {
   EXPECT_EIGEN_NEAR(m.layout.entries, expected, kExact);
   EXPECT_EIGEN_NEAR(m.layout.weights, Eigen::VectorXd::Ones(3), kExact);
   EXPECT_EQ(m.layout.candidates.cols(), 0);
+}
+
+TEST(CsvLayout, HeaderIsDecidedByItsCells) {
+  // No cell after the name holds a value: a header, whatever its words.
+  const CsvMarkers m =
+      parse_csv_markers("Marker,X (m),Y (m),Z (m)\na,0,0,0\nb,1,0,0\nc,0,1,0\n", "h.csv");
+  EXPECT_THAT(m.names, ElementsAre("a", "b", "c"));
+  // One coordinate that holds a value (a number, NaN, empty, n/a) makes the row data.
+  EXPECT_THAT(csv_error_of("name,x,0,z\na,0,0,0\nb,1,0,0\nc,0,1,0\n"),
+              HasSubstr("line 1 (name), x: expected a finite number"));
+  EXPECT_THAT(csv_error_of("name,NA,y,z\na,0,0,0\nb,1,0,0\nc,0,1,0\n"),
+              HasSubstr("line 1 (name), x: expected a finite number, got \"NA\""));
 }
 
 TEST(CsvLayout, HeaderCommentsBlanksQuotesCrlfAndBomAreTolerated) {

@@ -3,10 +3,15 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -90,6 +95,60 @@ TEST_F(TextFile, BadTargetsAreRejectedBeforeAnyWrite) {
   EXPECT_THROW(write_text_file(long_name, "x", false), InvalidArgument);
   EXPECT_THROW(read_text_file(long_name), InvalidArgument);
   EXPECT_EQ(entries(), std::vector<std::string>{"link.json"});
+}
+
+// What is at `p`, without following a symbolic link: type bits and device number.
+struct Node {
+  mode_t type = 0;
+  dev_t rdev = 0;
+  bool operator==(const Node& other) const { return type == other.type && rdev == other.rdev; }
+};
+Node node_at(const std::string& p) {
+  struct stat info {};
+  if (::lstat(p.c_str(), &info) != 0) return {};
+  return {static_cast<mode_t>(info.st_mode & S_IFMT), info.st_rdev};
+}
+
+// Issue 22: `--write /dev/full --overwrite` replaced the device node with a JSON file. Only a
+// regular file may ever be replaced, with or without `overwrite`.
+TEST_F(TextFile, FifoIsRefusedAndStaysAFifo) {
+  ASSERT_EQ(::mkfifo(path("pipe").c_str(), 0644), 0) << std::strerror(errno);
+  const Node before = node_at(path("pipe"));
+  ASSERT_EQ(before.type, S_IFIFO);
+  for (const bool overwrite : {true, false}) {
+    EXPECT_THAT(message_of([&] { check_write_target(path("pipe"), overwrite); }),
+                HasSubstr("pipe: is a FIFO (named pipe), not a regular file; refusing to replace"));
+    EXPECT_THAT(message_of([&] { write_text_file(path("pipe"), "{}\n", overwrite); }),
+                HasSubstr("not a regular file"));
+    EXPECT_TRUE(node_at(path("pipe")) == before);
+  }
+  EXPECT_EQ(entries(), std::vector<std::string>{"pipe"});
+}
+
+TEST_F(TextFile, CharacterDeviceIsRefusedAndStaysADevice) {
+  if (::geteuid() != 0) {
+    std::printf("skipped: creating a character device (mknod) needs root\n");
+    GTEST_SKIP() << "mknod of a character device needs root";
+  }
+  // A private copy of /dev/full (major 1, minor 7) in the test's own directory.
+  ASSERT_EQ(::mknod(path("full").c_str(), S_IFCHR | 0666, makedev(1, 7)), 0)
+      << std::strerror(errno);
+  const Node before = node_at(path("full"));
+  ASSERT_EQ(before.type, S_IFCHR);
+  for (const bool overwrite : {true, false}) {
+    EXPECT_THAT(message_of([&] { write_text_file(path("full"), "{}\n", overwrite); }),
+                HasSubstr("full: is a character device, not a regular file; refusing to replace"));
+    EXPECT_TRUE(node_at(path("full")) == before);
+  }
+  EXPECT_EQ(entries(), std::vector<std::string>{"full"});
+}
+
+TEST_F(TextFile, RegularFileStillReplacedWithOverwrite) {
+  // The control of the two tests above: the same calls on a regular file do replace it.
+  write_text_file(path("plain"), "old\n", false);
+  write_text_file(path("plain"), "new\n", true);
+  EXPECT_EQ(content(path("plain")), "new\n");
+  EXPECT_EQ(node_at(path("plain")).type, S_IFREG);
 }
 
 TEST_F(TextFile, FailedWriteLeavesTargetAndDirectoryUntouched) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "support/eigen_testing.h"
@@ -16,8 +17,6 @@ namespace vantage::simulate {
 namespace {
 
 constexpr long kTrials = 60;
-// The acos form of Eq. (26) in analysis/error_bounds.h loses up to ~sqrt(eps) near p = p_bar.
-constexpr double kAcosForm = 1e-7;
 // At the worst viewpoint the limiting vector's error is asin(t_lower), the bound asin(t_upper):
 // the certificate tolerance (1e-9) apart.
 constexpr double kAtWorstViewpoint = 1e-6;
@@ -77,7 +76,8 @@ TEST(BoundCheck, HoldsOnEveryExampleAndRandomLayout) {
     const BoundCheck check = run_check(c, scene, layout);
     EXPECT_TRUE(check.passed) << c.name;
     EXPECT_LE(check.max_ratio, 1.0 + kBoundRatioTolerance) << c.name;
-    EXPECT_LE(check.max_abs_eq26_mismatch_deg, kEq26Tolerance * kDegreesPerRadian) << c.name;
+    EXPECT_LE(check.max_eq26_mismatch_over_tolerance, 1.0) << c.name;
+    EXPECT_EQ(check.message, "") << c.name;
     EXPECT_GT(check.max_error_deg, 0.0) << c.name;
     EXPECT_EQ(check.trials, kTrials);
   }
@@ -101,21 +101,83 @@ TEST(BoundCheck, TriadMatchesThePaper) {
   EXPECT_EQ(layout.affine.free_vectors, "vectors");
 }
 
-TEST(BoundCheck, StableEq26AgreesWithTheAcosForm) {
-  const Case c = cases().front();
-  const BoundLayout layout = prepare_bound_layout(c.entries, c.vectors);
-  int compared = 0;
-  for (long t = 0; t < 20; ++t) {
-    TrialRandom random = TrialRandom::for_trial(3, t);
-    const VectorErrors v =
-        vector_errors(layout, make_layout_scene(c.entries, c.vectors, {}, random));
-    for (Eigen::Index k = 0; k < v.p.size(); ++k) {
-      EXPECT_NEAR(v.eq26_rad(k), lub_scale_error_angle(std::min(v.p(k), v.pbar), v.pbar),
-                  kAcosForm);
-      ++compared;
+TEST(BoundCheck, RandomEightMarkerLayoutsPassAtTheRoundingOfTheirInputs) {
+  // Issue 17: 4 of 30 random 8-marker layouts "FAILED" at 20000 trials with max_ratio <= 1: a
+  // vector in (or a limiting vector tied within an ulp at) the image plane, where Eq. (26)'s
+  // asin has an infinite slope, differed from the measured angle by up to ~1e-8 rad, over the
+  // fixed 1e-9. Each vector's tolerance now comes from that conditioning.
+  constexpr int kLayouts = 30;
+  constexpr long kViews = 20000;
+  // Where both p and r are this far below 1 the problem is benign: there the tolerance must be
+  // stricter than the old fixed 1e-9 rad, and for most vectors at the level of rounding.
+  constexpr double kBenign = 1e-6;
+  constexpr double kOldTolerance = 1e-9;
+  constexpr double kRoundingLevel = 1e-12;
+  TrialRandom layouts(testing::kSeed + 17);
+  long beyond_old_tolerance = 0;
+  long at_rounding_level = 0;
+  long vectors = 0;
+  for (int l = 0; l < kLayouts; ++l) {
+    Eigen::Matrix3Xd points(3, 8);
+    for (int j = 0; j < 8; ++j) {
+      for (int r = 0; r < 3; ++r) points(r, j) = layouts.uniform(-1.0, 1.0);
     }
+    const BoundLayout layout = prepare_bound_layout(points, false);
+    double worst = 0.0;
+    for (long t = 0; t < kViews; ++t) {
+      TrialRandom random = TrialRandom::for_trial(testing::kSeed + l, t);
+      const VectorErrors v = vector_errors(layout, make_layout_scene(points, false, {}, random));
+      for (Eigen::Index k = 0; k < v.p.size(); ++k) {
+        const double mismatch = std::abs(v.angle_rad(k) - v.eq26_rad(k));
+        worst = std::max(worst, mismatch / v.tolerance_rad(k));
+        beyond_old_tolerance += mismatch > kOldTolerance;
+        at_rounding_level += v.tolerance_rad(k) < kRoundingLevel;
+        const double r = v.p(k) / v.pbar;
+        if (std::max(v.p(k), r) < 1.0 - kBenign) {
+          EXPECT_LT(v.tolerance_rad(k), kOldTolerance) << "layout " << l << " trial " << t;
+        }
+        ++vectors;
+      }
+    }
+    EXPECT_LE(worst, 1.0) << "layout " << l;
   }
-  EXPECT_GT(compared, 0);
+  EXPECT_EQ(vectors, kLayouts * kViews * 28);
+  EXPECT_GT(at_rounding_level, vectors / 2);
+  // The control: the ill-conditioned vectors occur, and the old fixed tolerance failed them.
+  EXPECT_GT(beyond_old_tolerance, 0);
+  std::printf(
+      "%ld of %ld vector errors differ from Eq. (26) by more than 1e-9 rad; %ld have a "
+      "tolerance below 1e-12 rad\n",
+      beyond_old_tolerance, vectors, at_rounding_level);
+}
+
+TEST(BoundCheck, AFailureSaysWhichPromiseFailedAndWhere) {
+  // Issue 17: the failure was reported with an empty stderr, and Python's message blamed the
+  // bound when Eq. (26) was the part that failed.
+  const BoundLayout layout = prepare_bound_layout(Eigen::Matrix3d::Identity(), true);
+  BoundTrial fine;
+  fine.max_error_rad = 0.5 * layout.data.bound_rad;
+  BoundTrial mismatch = fine;
+  mismatch.max_mismatch_rad = 1e-6;
+  mismatch.max_mismatch_ratio = 3.0;
+  BoundTrial beyond = fine;
+  beyond.max_error_rad = 1.01 * layout.data.bound_rad;
+
+  const BoundCheck ok = summarize_bound_check(layout, {fine, fine});
+  EXPECT_TRUE(ok.passed);
+  EXPECT_EQ(ok.message, "");
+
+  const BoundCheck eq26 = summarize_bound_check(layout, {fine, mismatch, fine});
+  EXPECT_FALSE(eq26.passed);
+  EXPECT_LE(eq26.max_ratio, 1.0);
+  EXPECT_THAT(eq26.message, ::testing::HasSubstr("differs from Eq. (26) by 3 times its rounding "
+                                                 "tolerance (trial 1"));
+  EXPECT_THAT(eq26.message, ::testing::Not(::testing::HasSubstr("exceeds the bound")));
+
+  const BoundCheck bound = summarize_bound_check(layout, {fine, fine, beyond});
+  EXPECT_FALSE(bound.passed);
+  EXPECT_THAT(bound.message, ::testing::HasSubstr("(trial 2) exceeds the bound"));
+  EXPECT_THAT(bound.message, ::testing::Not(::testing::HasSubstr("Eq. (26) by")));
 }
 
 TEST(BoundCheck, SpanningSubsetHasTheLargerBound) {

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <random>
 
 #include "support/eigen_testing.h"
 #include "vantage/analysis/common.h"
@@ -70,6 +71,7 @@ TEST(MonteCarlo, BitIdenticalAtOneAndFourThreads) {
   options.trials = 60;
   options.seed = 7;
   options.threads = 1;
+  options.keep_trials = true;
   const MonteCarloRun one = run_monte_carlo(generator, all_for(generator), options);
   options.threads = 4;
   const MonteCarloRun four = run_monte_carlo(generator, all_for(generator), options);
@@ -87,6 +89,7 @@ TEST(MonteCarlo, ShardsMergedEqualOneRunThroughJson) {
   const SceneGenerator generator = layout_generator(scene);
   MonteCarloOptions options;
   options.trials = 31;
+  options.keep_trials = true;
   const MonteCarloRun whole = run_monte_carlo(generator, all_for(generator), options);
   std::vector<MonteCarloRun> shards;
   std::vector<std::string> sources;
@@ -186,6 +189,73 @@ TEST(Statistics, OrderStatisticsAndNaN) {
   EXPECT_EQ(s.max, 5);
   EXPECT_EQ(summarize(std::vector<double>{1, 2, 3, 4}).median, 2.5);
   EXPECT_TRUE(std::isnan(summarize(std::vector<double>{nan}).median));
+}
+
+TEST(Statistics, StreamedSummaryIsExactUpToItsBufferThenWithinTheHistogramResolution) {
+  // Relative half-width of a histogram bucket (statistics.h): the bound the streamed median and
+  // p95 keep against the exact order statistics.
+  const double resolution = std::ldexp(1.0, -(SummaryAccumulator::kHistogramBits + 1));
+  std::mt19937_64 rng(testing::kSeed);
+  std::lognormal_distribution<double> spread(0.0, 3.0);  // values over many binades
+  for (const long n :
+       {1000L, SummaryAccumulator::kExactSamples, 3 * SummaryAccumulator::kExactSamples + 1}) {
+    std::vector<double> values;
+    SummaryAccumulator accumulator;
+    for (long k = 0; k < n; ++k) {
+      const double x = k % 97 == 0 ? std::nan("") : spread(rng);
+      values.push_back(x);
+      accumulator.add(x);
+    }
+    const Summary exact = summarize(values);
+    const Summary streamed = accumulator.summary();
+    EXPECT_EQ(streamed.count, exact.count);
+    EXPECT_EQ(streamed.mean, exact.mean);  // the same sum in the same order
+    EXPECT_EQ(streamed.max, exact.max);
+    EXPECT_EQ(accumulator.approximate(), exact.count > SummaryAccumulator::kExactSamples);
+    if (!accumulator.approximate()) {
+      EXPECT_EQ(streamed.median, exact.median);
+      EXPECT_EQ(streamed.p95, exact.p95);
+    } else {
+      EXPECT_NEAR(streamed.median, exact.median, resolution * exact.median);
+      EXPECT_NEAR(streamed.p95, exact.p95, resolution * exact.p95);
+      EXPECT_NE(streamed.median, exact.median);  // the control: it is the histogram's value
+    }
+  }
+}
+
+TEST(MonteCarlo, StreamedRunKeepsNoTrialsAndGivesTheSameStatistics) {
+  const SceneGenerator generator = layout_generator(LayoutSceneOptions{});
+  MonteCarloOptions options;
+  options.threads = 2;
+  options.trials = 2 * 2 * kTrialsPerWorker + 17;  // several blocks, the last one partial
+  options.keep_trials = true;
+  const MonteCarloRun kept = run_monte_carlo(generator, all_for(generator), options);
+  options.keep_trials = false;
+  long seen = 0;
+  long previous = -1;
+  options.on_trial = [&](const MonteCarloRun& run, long trial,
+                         const std::vector<TrialError>& errors) {
+    EXPECT_EQ(trial, previous + 1);  // in trial order
+    EXPECT_EQ(errors.size(), run.names.size());
+    EXPECT_EQ(
+        std::memcmp(&errors[0].rot_err_deg, &kept.errors[0][trial].rot_err_deg, sizeof(double)), 0);
+    previous = trial;
+    ++seen;
+  };
+  const MonteCarloRun streamed = run_monte_carlo(generator, all_for(generator), options);
+  EXPECT_EQ(seen, options.trials);
+  EXPECT_EQ(streamed.trials, options.trials);
+  EXPECT_TRUE(streamed.trial_index.empty());
+  for (const auto& errors : streamed.errors) EXPECT_TRUE(errors.empty());
+  const auto a = summarize(kept);
+  const auto b = summarize(streamed);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t e = 0; e < a.size(); ++e) {
+    EXPECT_EQ(a[e].rot_err_deg.median, b[e].rot_err_deg.median);
+    EXPECT_EQ(a[e].rot_err_deg.mean, b[e].rot_err_deg.mean);
+    EXPECT_EQ(a[e].trans_err_rel.p95, b[e].trans_err_rel.p95);
+    EXPECT_EQ(a[e].by_status, b[e].by_status);
+  }
 }
 
 TEST(Shards, ParseAndPartition) {

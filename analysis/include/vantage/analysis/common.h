@@ -34,6 +34,10 @@ class InvalidArgument : public std::invalid_argument {
   InvalidArgument(std::string field, long index, std::string problem);
   /// A problem that names no field of its own (e.g. a whole-file error).
   explicit InvalidArgument(std::string problem);
+  /// "<field>[<index>]: <problem> <related>[<related_index>]", e.g. "points[5]: coincides
+  /// with points[2]": the problem relates two entries.
+  InvalidArgument(std::string field, long index, std::string problem, std::string related,
+                  long related_index);
 
   const std::string& source() const { return source_; }
   const std::string& field() const { return field_; }
@@ -46,17 +50,42 @@ class InvalidArgument : public std::invalid_argument {
   /// The same problem named as another field and index (e.g. the file's "points[3]" for the
   /// library's "vectors[7]").
   InvalidArgument renamed(std::string field, std::optional<long> index) const;
+  /// The same error with entries named as a file names them: `label(field, index)` returns the
+  /// file's name of an entry ("line 4 (m3)") or nullopt to keep "<field>[<index>]"; applied to
+  /// the field and to the related entry.
+  template <typename Label>
+  InvalidArgument labelled(Label&& label) const {
+    InvalidArgument out = *this;
+    if (index_) {
+      if (std::optional<std::string> name = label(field_, *index_)) {
+        out.field_ = *name;
+        out.index_.reset();
+      }
+    }
+    if (related_index_) {
+      if (std::optional<std::string> name = label(related_, *related_index_)) {
+        out.related_ = *name;
+        out.related_index_.reset();
+      }
+    }
+    return InvalidArgument(out.source_, out.field_, out.index_, out.problem_, out.related_,
+                           out.related_index_);
+  }
 
  private:
   InvalidArgument(std::string source, std::string field, std::optional<long> index,
-                  std::string problem);
+                  std::string problem, std::string related = {},
+                  std::optional<long> related_index = std::nullopt);
   static std::string compose(const std::string& source, const std::string& field,
-                             std::optional<long> index, const std::string& problem);
+                             std::optional<long> index, const std::string& problem,
+                             const std::string& related, std::optional<long> related_index);
 
   std::string source_;
   std::string field_;
   std::optional<long> index_;
   std::string problem_;
+  std::string related_;  ///< the other entry of a problem that relates two, or empty
+  std::optional<long> related_index_;
 };
 
 /// Thrown when an internal invariant does not hold (a bug in vantage, not in the input).

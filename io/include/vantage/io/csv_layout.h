@@ -3,7 +3,8 @@
 /// Reading marker sets from CSV, the format every motion-capture tool exports:
 ///
 ///   # optional comment lines start with '#'
-///   name,x,y,z,weight            <- optional header (a first row where x, y, z are not numbers)
+///   name,x,y,z,weight            <- optional header: a first row none of whose cells after the
+///                                   name holds a value (a number, NaN, Inf, empty, n/a, ...)
 ///   LED1,0.10,0.00,0.25,1
 ///   LED2,-0.10,0.05,0.25         <- weight column optional; all rows have the same columns
 ///

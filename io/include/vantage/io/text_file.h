@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "vantage/analysis/common.h"
 
@@ -20,8 +21,11 @@ class FileTooLarge : public InvalidArgument {
   using InvalidArgument::InvalidArgument;
 };
 
-/// Thrown when writing fails after the target was accepted (no space, I/O error, file size
-/// limit): an environment failure, not bad input. The target is untouched.
+/// Thrown when a write fails because of the environment, not of the target the user chose: no
+/// space (ENOSPC), quota (EDQUOT), file size limit (EFBIG), I/O error (EIO), no memory, or any
+/// failure of write(2), fsync(2) or close(2) on the temporary. The rule holds wherever the
+/// failure happens (the lock file, the temporary, the write, the rename), so every command
+/// exits 1 on a full disk. The target is untouched.
 class WriteError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -36,15 +40,45 @@ std::string read_text_file(const std::string& path, std::size_t max_bytes = kMax
 /// Writes `text` to `path` all or nothing: into a temporary file in the target's directory,
 /// flushed and fsync'ed, then renamed into place; without `overwrite` the rename atomically
 /// refuses an existing target (renameat2 RENAME_NOREPLACE, or link + unlink where the file
-/// system lacks it). On any error the temporary is removed and the
-/// target is untouched. Throws InvalidArgument for a bad target (empty name, a directory, a
-/// symbolic link, an existing file without `overwrite`, a missing or unwritable directory, a
-/// name too long) and WriteError when the write itself fails (ENOSPC, EIO, EFBIG).
+/// system lacks it). Only a regular file is ever replaced: the target is checked before the
+/// write and again just before the rename, and a device node, FIFO, socket, directory or
+/// symbolic link there is refused, untouched. On any error the temporary is removed and the
+/// target is untouched. Throws InvalidArgument for a bad target (empty name, not a regular file,
+/// an existing file without `overwrite`, a missing or unwritable directory, a name too long) and
+/// WriteError when the environment fails (see WriteError).
 void write_text_file(const std::string& path, const std::string& text, bool overwrite);
 
-/// Checks everything write_text_file() can check before any work: the name is non-empty, not a
-/// directory or symbolic link (dangling or not), not an existing file unless `overwrite`, and
-/// its directory exists. Throws InvalidArgument "<path>: <problem>".
+/// A text file written in pieces, all or nothing, as write_text_file() writes it whole: the
+/// constructor checks the target (check_write_target()) and creates the temporary beside it,
+/// write() appends (buffered), commit() flushes, fsyncs and renames it into place with the same
+/// rule for replacing. Destroyed without commit(), the temporary is removed and the target is
+/// untouched, so a run that fails half-way leaves nothing. Errors as write_text_file().
+class AtomicTextFile {
+ public:
+  AtomicTextFile(const std::string& path, bool overwrite);
+  ~AtomicTextFile();
+  AtomicTextFile(const AtomicTextFile&) = delete;
+  AtomicTextFile& operator=(const AtomicTextFile&) = delete;
+
+  void write(std::string_view text);
+  void commit();
+
+ private:
+  static constexpr std::size_t kBufferBytes = std::size_t{1} << 16;
+  void flush();
+  void write_bytes(std::string_view bytes);
+
+  std::string path_;
+  bool overwrite_;
+  std::string temp_;
+  int fd_ = -1;
+  std::string buffer_;
+};
+
+/// Checks everything write_text_file() can check before any work: the name is non-empty; when
+/// something exists there it is a regular file (not a directory, symbolic link, dangling or
+/// not, character or block device, FIFO or socket) and `overwrite` is set; its directory exists
+/// and is writable. Throws InvalidArgument "<path>: <problem>".
 void check_write_target(const std::string& path, bool overwrite);
 
 /// An exclusive advisory lock (flock) on `path`'s lock file (".<name>.lock" beside it), held

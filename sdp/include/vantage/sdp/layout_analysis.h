@@ -33,11 +33,25 @@ struct LayoutAnalysisOptions {
 /// undefined and the rotation about the common line is not determined.
 constexpr double kParallelTolerance = 1e-12;
 
+/// True when a layout with this p-bar_min and t = sqrt(1 - p-bar_min^2) is near-degenerate
+/// (docs/math.md, "Near-degenerate layouts"): 1 - t <= certificate_tolerance, evaluated as
+/// p-bar_min^2 / (1 + t) so that it keeps its digits where t has rounded to 1. t is a
+/// second-order function of the angle asin(p-bar_min) by which the vectors leave a common line
+/// (1 - t ~ p-bar_min^2 / 2), so a certificate of that width then includes t = 1, the value of
+/// an exactly degenerate layout: p-bar_min <= sqrt(2 certificate_tolerance), 4.5e-5 at the
+/// default 1e-9.
+bool is_near_degenerate(double pbar_min, double t, double certificate_tolerance);
+
 /// Everything `vantage analyze` reports for one set of vectors.
 struct LayoutAnalysis {
   /// All data vectors are parallel (kParallelTolerance): the pose is not determined. The
   /// worst-case errors are then arccos(p-bar_min) = 90 degrees (not 0), and `message` says why.
   bool degenerate = false;
+  /// Not degenerate, but is_near_degenerate(pbar_min, t, certificate_tolerance): every vector
+  /// is so close to one line that the certificate cannot tell the layout from a degenerate one.
+  /// The worst-case errors are Eq. (30) at the accurate p_i (close to 90 degrees), and `message`
+  /// says why.
+  bool near_degenerate = false;
   Eigen::Vector3d worst_viewpoint = Eigen::Vector3d::UnitZ();  ///< upper hemisphere
   std::vector<Eigen::Vector3d> worst_viewpoints;               ///< every global optimum up to sign
   double t = 0.0;                                              ///< max_a min_i |a.n_i| (Eq. 31)
@@ -83,7 +97,7 @@ struct LayoutAnalysis {
   /// Certified, confirmed and (when run) the cross-check agrees: the numbers can be trusted.
   bool trusted() const;
 
-  std::string message;  ///< empty when trusted and not degenerate
+  std::string message;  ///< empty when trusted and neither degenerate nor near-degenerate
 };
 
 /// Runs the analysis on data vectors (3 x m, m >= 2, non-zero finite columns; their lengths only

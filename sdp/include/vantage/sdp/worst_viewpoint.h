@@ -26,12 +26,18 @@
 
 namespace vantage::sdp {
 
-/// The columns of `vectors` scaled to unit length. Throws InvalidArgument (naming `argument`)
-/// when a column is zero or not finite.
+/// The columns of `vectors` scaled to unit length, each on its own scale (unit_direction() of
+/// vantage/analysis/scaling.h), so any non-zero finite length works, beside any other. Throws
+/// InvalidArgument (naming `argument`) when a column is zero or not finite.
 Eigen::Matrix3Xd normalized_columns(const Eigen::Matrix3Xd& vectors, const char* argument);
 
 /// min_i |a.n_i| for unit columns n_i and a unit a: the objective of Eq. (31).
 double min_abs_projection(const Eigen::Matrix3Xd& unit_vectors, const Eigen::Vector3d& a);
+
+/// p-bar(a) = max_i |a x n_i| (= sqrt(1 - min_i (a.n_i)^2), Eq. 27) for unit columns n_i and a
+/// unit a, from the cross products: it keeps its digits where t = min_i |a.n_i| rounds to 1
+/// (every n_i within 1e-8 rad of a), which sqrt(1 - t^2) cannot.
+double pbar_at(const Eigen::Matrix3Xd& unit_vectors, const Eigen::Vector3d& a);
 
 /// p-bar = sqrt(1 - t^2) for t in [0, 1] (clamped), Eq. (29) corrected (docs/math.md §12).
 double pbar_from_t(double t);
@@ -158,7 +164,7 @@ struct WorstViewpoint {
   /// by decreasing value.
   std::vector<Eigen::Vector3d> viewpoints;
   double t = 0.0;              ///< min_i |a.n_i| at `viewpoint` (= t_lower)
-  double pbar_min = 1.0;       ///< p-bar_min = sqrt(1 - t^2)
+  double pbar_min = 1.0;       ///< p-bar_min = sqrt(1 - t^2), as pbar_at(n, viewpoint)
   double t_upper = 1.0;        ///< proven upper bound on min_i |a.n_i| over the whole sphere
   double t_lower = 0.0;        ///< attained value (t)
   long cells_solved = 0;       ///< exact cell problems (minimum-norm points) solved

@@ -11,14 +11,17 @@
 /// over all viewpoints (Eq. 30's maximum; p_bar_min from the certified global worst viewpoint,
 /// Theorem 6).
 ///
-/// Numerics. Eq. (26) is the angle between the unit vectors (p, sqrt(1 - p^2)) and
-/// (p / p_bar, sqrt(1 - p^2 / p_bar^2)) (in-plane and depth parts of v_i / |v_i| and
-/// v_e_i / |v_e_i|, which share the direction of d_i), i.e. the difference of their elevation
-/// angles, evaluated here as atan2(r, sqrt((1 - r)(1 + r))) - atan2(p, sqrt((1 - p)(1 + p))) with
-/// r = p / p_bar. The acos form of analysis/error_bounds.h loses about 1e-8 rad near p = p_bar
-/// (acos near 1); this form keeps the comparison at rounding level. The depth of v_e_i is
-/// computed from the same ratio, |d_i| sqrt((1 - r)(1 + r)) / r, which is exactly 0 for the
-/// limiting vector (Eq. 23 puts it in the image plane).
+/// Numerics. Eq. (26) is evaluated by lub_scale_error_angle() (analysis/error_bounds.h), in a
+/// form that does not cancel (docs/math.md, "Eq. (26) without cancellation"); the measured angle
+/// is atan2(|v x v_e|, v.v_e). The depth of v_e_i is computed from the ratio r = p / p_bar as
+/// |d_i| sqrt((1 - r)(1 + r)) / r, which is exactly 0 for the limiting vector (Eq. 23 puts it in
+/// the image plane). Both angles are correct to rounding, but their inputs are not exact: p_i
+/// and r_i are ratios of norms of rounded image and object vectors (relative rounding u, larger
+/// in point mode where d_i = q_b - q_a and z_i = x_b - x_a cancel), and an elevation asin(x)
+/// moves by u x / sqrt(1 - x^2) under such a change, up to sqrt(2 u) at x = 1. Each vector's
+/// tolerance is that conditioning (input_rounding in bound_check.cc), not one fixed number: a
+/// vector in or near the image plane (p or r within 1e-14 of 1) legitimately differs by ~1e-8
+/// rad, while elsewhere the two agree to ~1e-15.
 ///
 /// The affine estimator's rotation error is a different quantity (the paper bounds per-vector
 /// errors, not the pose): it is measured against the same bound and against the bound of the
@@ -35,8 +38,16 @@ namespace vantage::simulate {
 
 /// Ratio max_error / bound tolerated by the check (rounding of the angles).
 inline constexpr double kBoundRatioTolerance = 1e-9;
-/// |measured - Eq. 26| tolerated by the check, radians.
-inline constexpr double kEq26Tolerance = 1e-9;
+/// Relative rounding of p_i = alpha |d_i| / |z_i| in units of the double epsilon, before the
+/// cancellation of point-mode differences: the image point (a rotation, a scale, a shift) and two
+/// norms and a division, a rounding or two each.
+inline constexpr double kEq26InputUlps = 8.0;
+/// Rounding of the two angle evaluations themselves, in epsilons per radian (plus one).
+inline constexpr double kEq26AngleUlps = 64.0;
+/// Safety factor on the first-order sensitivities of the tolerance. Measured (issue 17, 30
+/// random 8-marker layouts x 20000 views): the largest |measured - Eq. 26| is 0.03 of its
+/// tolerance, so the factor does not hide a real mismatch of the size the old fixed bound saw.
+inline constexpr double kEq26ConditioningMargin = 2.0;
 
 /// The worst case of a set of data vectors: certified p_bar_min and the bound arccos p_bar_min.
 struct VectorSetBound {
@@ -75,6 +86,8 @@ struct BoundTrial {
   double pbar = 0.0;              ///< p_bar(a) at this trial's viewpoint (Eq. 24)
   double max_error_rad = 0.0;     ///< largest measured angle(v_i, v_e_i) over the data vectors
   double max_mismatch_rad = 0.0;  ///< largest |angle(v_i, v_e_i) - Eq. 26|
+  /// largest |angle(v_i, v_e_i) - Eq. 26| / tolerance_rad_i over the data vectors (<= 1: agree)
+  double max_mismatch_ratio = 0.0;
   /// "affine" estimator on the noise-free image (NaN when it does not apply, e.g. more than
   /// kMaxAffineVectors + 1 markers)
   double affine_rot_err_rad = 0.0;
@@ -90,6 +103,8 @@ struct VectorErrors {
   Eigen::VectorXd p;          ///< p_i (Eq. 19)
   Eigen::VectorXd angle_rad;  ///< measured angle(v_i, v_e_i)
   Eigen::VectorXd eq26_rad;   ///< Eq. (26) at (p_i, p_bar)
+  /// |measured - Eq. 26| the rounding of the inputs allows for each vector (file comment)
+  Eigen::VectorXd tolerance_rad;
   double pbar = 0.0;
 };
 VectorErrors vector_errors(const BoundLayout& layout, const Scene& scene);
@@ -114,10 +129,49 @@ struct BoundCheck {
   double bound_deg = 0.0;  ///< asin(t_upper) of all data vectors
   double pbar_min = 1.0;
   double max_ratio = 0.0;  ///< max_error_deg / bound_deg
-  bool passed = false;     ///< max_ratio <= 1 + kBoundRatioTolerance and mismatch <= kEq26Tolerance
+  /// Largest BoundTrial::max_mismatch_ratio: <= 1 when every measured angle is Eq. (26) to the
+  /// rounding of its inputs.
+  double max_eq26_mismatch_over_tolerance = 0.0;
+  /// max_ratio <= 1 + kBoundRatioTolerance and max_eq26_mismatch_over_tolerance <= 1.
+  bool passed = false;
+  /// Empty when passed; otherwise which promise failed, with the numbers and the trial.
+  std::string message;
   std::vector<PoseRelation> relations;  ///< "affine" (and "affine-spanning" in point mode)
 };
 
+/// The bound check folded one trial at a time (in trial order), in memory that does not grow
+/// with the trials.
+class BoundCheckAccumulator {
+ public:
+  explicit BoundCheckAccumulator(const BoundLayout& layout);
+  /// Adds trial number `trial` (named in BoundCheck::message when it is the worst).
+  void add(long trial, const BoundTrial& result);
+  BoundCheck result() const;
+
+ private:
+  struct Relation {
+    std::string estimator;
+    std::string free_vectors;
+    double own_bound_rad = 0.0;
+    double own_pbar_min = 1.0;
+    SummaryAccumulator rot_err_deg;
+    long exceeds_bound = 0;
+    long exceeds_own_bound = 0;
+  };
+  double bound_rad_;
+  long vectors_;
+  double pbar_min_;
+  bool point_mode_;
+  long trials_ = 0;
+  double max_error_rad_ = 0.0;
+  double max_mismatch_rad_ = 0.0;
+  double max_mismatch_ratio_ = 0.0;
+  long worst_error_trial_ = 0;
+  long worst_mismatch_trial_ = 0;
+  std::vector<Relation> relations_;
+};
+
+/// The accumulator over `trials` (trial k = trials[k]).
 BoundCheck summarize_bound_check(const BoundLayout& layout, const std::vector<BoundTrial>& trials);
 
 }  // namespace vantage::simulate

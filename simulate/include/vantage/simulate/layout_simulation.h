@@ -38,8 +38,10 @@ struct LayoutSimulation {
   MonteCarloRun run;
   bool has_bound = false;  ///< affine camera: the bound check ran
   BoundCheck bound;
-  std::vector<BoundTrial> bound_trials;  ///< one per trial of `run`, in its order
-  std::string shard = "1/1";             ///< "K/N", or "merged"
+  /// One per trial of `run`, in its order, when its per-trial values are kept
+  /// (MonteCarloOptions::keep_trials); empty otherwise.
+  std::vector<BoundTrial> bound_trials;
+  std::string shard = "1/1";  ///< "K/N", or "merged"
 };
 
 /// Runs the estimators on options.monte_carlo.trials seeded views of `layout` (a point or a
@@ -48,7 +50,8 @@ struct LayoutSimulation {
 LayoutSimulation simulate_layout(const Layout& layout, const LayoutSimulationOptions& options);
 
 /// {"layout", "mode", "trials", "total_trials", "seed", "shard", "estimators", "bound_check"
-/// (affine camera), "config", and "per_trial" when `per_trial`: what --merge needs}.
+/// (affine camera), "config", and "per_trial" when `per_trial`: what --merge needs; the run
+/// must then have kept its trials}.
 Json report_json(const LayoutSimulation& simulation, bool per_trial);
 
 }  // namespace vantage::simulate

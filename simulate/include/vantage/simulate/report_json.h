@@ -24,7 +24,8 @@ Json to_json(const Summary& summary);
 Json estimators_json(const std::vector<EstimatorSummary>& summaries);
 
 /// {"trials", "vectors", "max_abs_eq26_mismatch_deg", "max_error_deg", "bound_deg", "pbar_min",
-/// "max_ratio", "passed", "affine_relation": [{"estimator", "free_vectors", "own_bound_deg",
+/// "max_ratio", "max_eq26_mismatch_over_tolerance", "passed", "message" (empty when passed),
+/// "affine_relation": [{"estimator", "free_vectors", "own_bound_deg",
 /// "own_pbar_min", "rot_err_deg", "exceeds_bound", "exceeds_own_bound"}]}.
 Json to_json(const BoundCheck& check);
 
@@ -38,7 +39,7 @@ MonteCarloRun run_from_json(const Json& per_trial, long total_trials, std::uint6
                             const std::string& source);
 
 /// Per-trial bound-check values: {"pbar": [...], "max_error_rad", "max_mismatch_rad",
-/// "affine_rot_err_rad", "spanning_rot_err_rad"}.
+/// "max_mismatch_ratio", "affine_rot_err_rad", "spanning_rot_err_rad"}.
 Json bound_trials_json(const std::vector<BoundTrial>& trials);
 
 /// The inverse of bound_trials_json(); throws InvalidArgument naming `source` on a bad shape.

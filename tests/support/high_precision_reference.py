@@ -1,0 +1,197 @@
+#!/usr/bin/env python3
+"""Generates tests/support/high_precision_reference.h: reference values computed with mpmath
+(Debian python3-mpmath) at 150 significant digits, from the exact binary values of the double
+inputs the tests pass (mpmath.mpf(float) is exact). Test-only; the output is committed.
+
+    python3 tests/support/high_precision_reference.py \
+      | clang-format --assume-filename=x.h > tests/support/high_precision_reference.h
+
+Eq. (26) and Eq. (18) are evaluated in the paper's own acos form: the reference is independent
+of the cancellation-free form under test. acos(x) near x = 1 keeps only the digits of 1 - x =
+theta^2 / 2, so the precision must exceed twice the digits of the smallest angle (2e-25 here)
+plus the 17 wanted: 150 digits.
+"""
+
+import math
+
+import mpmath
+
+mpmath.mp.dps = 150
+mpf = mpmath.mpf
+
+
+def acos_form(beta, p):
+    """Eq. (18): acos(beta p^2 + sqrt((1 - p^2)(1 - beta^2 p^2)))."""
+    beta, p = mpf(beta), mpf(p)
+    return mpmath.acos(beta * p * p + mpmath.sqrt((1 - p * p) * (1 - beta * beta * p * p)))
+
+
+def lub_form(p, pbar):
+    """Eq. (26): Eq. (18) at beta = 1 / p_bar, with 1 / p_bar exact."""
+    p, pbar = mpf(p), mpf(pbar)
+    return mpmath.acos(p * p / pbar + mpmath.sqrt((1 - p * p) * (1 - p * p / (pbar * pbar))))
+
+
+def c(x):
+    return mpmath.nstr(x, 25, strip_zeros=False, min_fixed=-1, max_fixed=-1)
+
+
+def d(x):
+    return repr(float(x))
+
+
+def eq26_cases():
+    pbars = [1e-9, 1e-6, math.sin(1e-3), 1e-3, 0.1, 0.5, math.sqrt(2.0 / 3.0), 0.99, 1 - 1e-8,
+             1 - 2.0**-52]
+    ratios = [1.0, 1 - 2.0**-52, 1 - 2.0**-40, 1 - 7.8e-12, 1 - 1e-9, 1 - 1e-6, 0.999, 0.5, 0.1,
+              1e-3, 1e-9]
+    rows = []
+    for pbar in pbars:
+        for r in ratios:
+            p = r * pbar  # rounded in double, as the code would see it
+            if p > pbar:
+                continue
+            rows.append((p, pbar, lub_form(p, pbar)))
+    return rows
+
+
+def eq18_cases():
+    betas = [1 + 2.0**-40, 1 + 1e-9, 1.5, 2.0, 1e3, 0.5, 1 - 1e-9]
+    ps = [1.0, 1 - 1e-12, 0.999, 0.5, 1e-3, 1e-8]
+    rows = []
+    for beta in betas:
+        for p in ps:
+            if mpf(beta) * mpf(p) > 1:
+                p = math.nextafter(1.0 / beta, 0.0)  # the largest p with beta p <= 1 (exactly)
+                while mpf(beta) * mpf(p) > 1:
+                    p = math.nextafter(p, 0.0)
+            rows.append((beta, p, acos_form(beta, p)))
+    return rows
+
+
+def two_vector_cases():
+    """n1 = (1, 0, 0), n2 = (cos delta, sin delta, 0) in doubles: the worst viewpoint bisects
+    them, t* = cos(h), p-bar_min = sin(h), max error pi/2 - h, h half their exact angle."""
+    rows = []
+    for delta in [1e-8, 1e-6, 1e-4, 1e-2]:
+        x, y = math.cos(delta), math.sin(delta)
+        h = mpmath.atan2(mpf(y), mpf(x)) / 2
+        rows.append((delta, x, y, mpmath.sin(h), (mpmath.pi / 2 - h) * 180 / mpmath.pi))
+    return rows
+
+
+# Six points on the x axis, pushed off it in the z = 0 plane by offsets * scale.
+COLLINEAR_OFFSETS = [0.0, 0.7, -0.3, 1.0, -1.0, 0.2]
+
+
+def collinear_cases():
+    """Points (k, scale * offset_k, 0): every free vector lies in the z = 0 plane within a small
+    angle of the x axis. For lines in a plane the worst viewpoint is in the plane, bisecting the
+    two extreme directions: with h half their angle, p-bar_min = sin(h), max error pi/2 - h."""
+    rows = []
+    for scale in [1e-9, 1e-7, 1e-5]:
+        ys = [float(o * scale) for o in COLLINEAR_OFFSETS]
+        angles = []
+        for i in range(6):
+            for j in range(i + 1, 6):
+                # the free vector z_j - z_i exactly, from the double coordinates
+                angles.append(mpmath.atan2(mpf(ys[j]) - mpf(ys[i]), mpf(j) - mpf(i)))
+        h = (max(angles) - min(angles)) / 2
+        rows.append((scale, mpmath.sin(h), (mpmath.pi / 2 - h) * 180 / mpmath.pi))
+    return rows
+
+
+# A 1e-3 rad cone around the viewpoint a = (0, 0, 1): the first vector sets p-bar, the second
+# has p / p-bar = 1 - 7.8e-12 (issue 22), the others lie inside.
+CONE_ANGLES = [1e-3, 1e-3 * (1 - 7.8e-12), 9.999e-4, 7e-4, 3e-4, 1e-5]
+CONE_AZIMUTHS = [0.0, 2.0, 4.0, 1.0, 3.0, 5.0]
+
+
+def cone_cases():
+    """The vectors in doubles and Eq. (26) of each from their exact values: p_i = |a x z_i| /
+    |z_i| at a = (0, 0, 1), p-bar = max p_i."""
+    vectors = []
+    for phi, psi in zip(CONE_ANGLES, CONE_AZIMUTHS):
+        vectors.append((math.sin(phi) * math.cos(psi), math.sin(phi) * math.sin(psi),
+                        math.cos(phi)))
+    ps = []
+    for x, y, z in vectors:
+        X, Y, Z = mpf(x), mpf(y), mpf(z)
+        ps.append(mpmath.sqrt(X * X + Y * Y) / mpmath.sqrt(X * X + Y * Y + Z * Z))
+    pbar = max(ps)
+    rows = []
+    for (x, y, z), p in zip(vectors, ps):
+        theta = mpmath.acos(p * p / pbar + mpmath.sqrt((1 - p * p) * (1 - p * p / (pbar * pbar))))
+        rows.append((x, y, z, p / pbar, theta * 180 / mpmath.pi))
+    return rows
+
+
+def main():
+    out = []
+    out.append("#pragma once")
+    out.append("")
+    out.append("// GENERATED by tests/support/high_precision_reference.py (mpmath, 150 digits);")
+    out.append("// do not edit. Inputs are the doubles the tests pass; references are rounded to")
+    out.append("// double from 150-digit values.")
+    out.append("")
+    out.append("namespace vantage::testing::reference {")
+    out.append("")
+    out.append("struct Eq26Case {")
+    out.append("  double p, pbar, theta_rad;")
+    out.append("};")
+    out.append("/// Eq. (26) at (p, p_bar), radians.")
+    out.append("inline constexpr Eq26Case kEq26[] = {")
+    for p, pbar, theta in eq26_cases():
+        out.append(f"    {{{d(p)}, {d(pbar)}, {c(theta)}}},")
+    out.append("};")
+    out.append("")
+    out.append("struct Eq18Case {")
+    out.append("  double beta, p, theta_rad;")
+    out.append("};")
+    out.append("/// Eq. (18) at (beta, p), radians.")
+    out.append("inline constexpr Eq18Case kEq18[] = {")
+    for beta, p, theta in eq18_cases():
+        out.append(f"    {{{d(beta)}, {d(p)}, {c(theta)}}},")
+    out.append("};")
+    out.append("")
+    out.append("struct TwoVectorCase {")
+    out.append("  double delta, x, y;     // n2 = (x, y, 0) = (cos delta, sin delta, 0) in doubles")
+    out.append("  double pbar_min;        // sin of half the exact angle between (1, 0, 0) and n2")
+    out.append("  double max_error_deg;   // 90 deg - half that angle")
+    out.append("};")
+    out.append("inline constexpr TwoVectorCase kTwoVectors[] = {")
+    for delta, x, y, pbar, err in two_vector_cases():
+        out.append(f"    {{{d(delta)}, {d(x)}, {d(y)}, {c(pbar)}, {c(err)}}},")
+    out.append("};")
+    out.append("")
+    out.append("/// Points (k, scale * offset_k, 0), k = 0..5.")
+    offsets = ", ".join(d(o) for o in COLLINEAR_OFFSETS)
+    out.append(f"inline constexpr double kCollinearOffsets[6] = {{{offsets}}};")
+    out.append("struct CollinearCase {")
+    out.append("  double scale, pbar_min, max_error_deg;")
+    out.append("};")
+    out.append("inline constexpr CollinearCase kCollinear[] = {")
+    for scale, pbar, err in collinear_cases():
+        out.append(f"    {{{d(scale)}, {c(pbar)}, {c(err)}}},")
+    out.append("};")
+    out.append("")
+    out.append("struct ConeCase {")
+    out.append("  double x, y, z;        // a data vector, in doubles")
+    out.append("  double ratio;          // p_i / p-bar from its exact value")
+    out.append("  double error_deg;      // Eq. (26) at the exact p_i, p-bar")
+    out.append("};")
+    out.append("/// Vectors in a 1e-3 rad cone around the viewpoint (0, 0, 1).")
+    out.append("inline constexpr ConeCase kCone[] = {")
+    for x, y, z, ratio, err in cone_cases():
+        out.append(f"    {{{d(x)}, {d(y)}, {d(z)}, {c(ratio)}, {c(err)}}},")
+    out.append("};")
+    out.append("")
+    out.append(f"/// 1 / sqrt(3): t* of any orthogonal triad, whatever its lengths.")
+    out.append(f"inline constexpr double kTriadT = {c(1 / mpmath.sqrt(3))};")
+    out.append("")
+    out.append("}  // namespace vantage::testing::reference")
+    print("\n".join(out))
+
+
+if __name__ == "__main__":
+    main()
