@@ -1,10 +1,12 @@
 # vantage — one-command set-up. `make demo` and `make test` work on a fresh Debian 12 machine:
 # they install the Debian packages, configure CMake in build/ (RelWithDebInfo), build, then run.
+# `make demo` installs and builds only what it runs (the `vantage` command, without figures);
+# `make test` installs and builds everything.
 
 BUILD_DIR ?= build
 SANITIZE_DIR ?= build-sanitize
 FUZZ_DIR ?= build-fuzz
-INSTALL_DIR ?= $(CURDIR)/build-install
+NO_NLOPT_DIR ?= build-without-nlopt
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 BUILD_TYPE ?= RelWithDebInfo
 FUZZ_SECONDS ?= 60
@@ -14,22 +16,40 @@ FORMATS_FUZZ_SECONDS ?= 20
 # reports still name file and line.
 INSTRUMENTED_FLAGS ?= -O1 -g1 -DNDEBUG
 
-.PHONY: all deps configure build demo test bench test-sanitize test-consumer fuzz format clean
+# Everything: what `make test` builds (optional parts off only when their dependency is missing).
+FULL_OPTIONS = -DVANTAGE_WITH_NLOPT=ON -DVANTAGE_WITH_PLOT=ON -DVANTAGE_BUILD_TESTS=ON \
+  -DVANTAGE_BUILD_BENCH=ON -DVANTAGE_BUILD_EXAMPLES=ON -DVANTAGE_BUILD_VIEWER=ON \
+  -DVANTAGE_BUILD_PYTHON=ON
+# What `make demo` runs: the `vantage` command without figures (vantage::plot needs PLplot, which
+# brings about 220 Debian packages), and no tests, benchmarks, examples, viewer or Python.
+LEAN_OPTIONS = -DVANTAGE_WITH_PLOT=OFF -DVANTAGE_BUILD_TESTS=OFF -DVANTAGE_BUILD_BENCH=OFF \
+  -DVANTAGE_BUILD_EXAMPLES=OFF -DVANTAGE_BUILD_VIEWER=OFF -DVANTAGE_BUILD_PYTHON=OFF
+
+.PHONY: all deps deps-demo configure build demo test bench test-sanitize test-consumer \
+  test-without-nlopt fuzz format clean
 
 all: build
 
 deps:
-	@bash scripts/install-deps.sh
+	@bash scripts/install-deps.sh all
 
-$(BUILD_DIR)/CMakeCache.txt:
-	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE)
+deps-demo:
+	@bash scripts/install-deps.sh demo
 
-configure: deps $(BUILD_DIR)/CMakeCache.txt
+# Re-runs CMake with everything on (cheap when nothing changed), so that a build directory that
+# `make demo` configured gets the rest.
+configure: deps
+	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) $(FULL_OPTIONS)
 
 build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
-demo: build
+# Configures $(BUILD_DIR) lean only when it is not configured yet (after `make test` the demo
+# uses the full build as it is), builds the `vantage` command alone and runs it.
+demo: deps-demo
+	@test -f $(BUILD_DIR)/CMakeCache.txt || \
+	  cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) $(LEAN_OPTIONS)
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target vantage
 	$(BUILD_DIR)/cli/vantage analyze examples/layouts/satellite.json
 
 test: build
@@ -56,13 +76,23 @@ test-sanitize: deps
 	  LSAN_OPTIONS=suppressions=$(CURDIR)/scripts/lsan.supp:print_suppressions=0 \
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j $(JOBS)
 
-# Installs the library and builds tests/consumer against it with find_package(vantage).
+# The consumer test of `make test` alone (tests/consumer/run_consumer.cmake): installs the build
+# into a scratch prefix, builds and runs a find_package(vantage) consumer of the core (with
+# pkg-config disabled, so it cannot reach PLplot) and one of COMPONENTS plot.
 test-consumer: build
-	rm -rf $(INSTALL_DIR) $(BUILD_DIR)/consumer
-	cmake --install $(BUILD_DIR) --prefix $(INSTALL_DIR)
-	cmake -S tests/consumer -B $(BUILD_DIR)/consumer -DCMAKE_PREFIX_PATH=$(INSTALL_DIR)
-	cmake --build $(BUILD_DIR)/consumer -j $(JOBS)
-	$(BUILD_DIR)/consumer/vantage_consumer
+	cd $(BUILD_DIR) && ctest --output-on-failure -L consumer
+
+# CI's check of the configuration without NLopt (and without figures, as `make demo` builds it):
+# the libraries with parts that need NLopt (analysis, sdp, design) and their suites, whose
+# nlopt_build tests check that those parts say "built without NLopt". Compiled at -O1 without
+# debug information, for time.
+test-without-nlopt: deps
+	cmake -S . -B $(NO_NLOPT_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVANTAGE_WITH_NLOPT=OFF \
+	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" \
+	  $(LEAN_OPTIONS) -DVANTAGE_BUILD_TESTS=ON
+	cmake --build $(NO_NLOPT_DIR) -j $(JOBS) \
+	  --target vantage_analysis_tests vantage_sdp_tests vantage_design_tests
+	cd $(NO_NLOPT_DIR) && ctest --output-on-failure -j $(JOBS) -L '^(analysis|sdp|design)$$'
 
 # A short libFuzzer run of the layout parser on the seed corpus in examples/layouts.
 fuzz: deps
@@ -85,7 +115,7 @@ format:
 	  \( -name '*.h' -o -name '*.cc' \) 2>/dev/null | xargs clang-format -i
 
 clean:
-	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(FUZZ_DIR) $(INSTALL_DIR)
+	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(FUZZ_DIR) $(NO_NLOPT_DIR)
 
 # Optional: vantage's pose estimators against OpenCV's solvePnP (bench/peers). Installs
 # libopencv-dev first (not part of `make deps`: `make test` and `make demo` never need OpenCV),

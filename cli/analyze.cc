@@ -126,7 +126,9 @@ void print_report(const AnalyzeArgs& args, const sdp::LayoutReport& report) {
                 << " rad apart, wider than the optimal cell: other cells only spot-checked)\n";
     }
   } else {
-    std::cout << "skipped (--no-crosscheck)\n";
+    std::cout << "skipped ("
+              << (args.crosscheck ? r.crosscheck.skipped : std::string("--no-crosscheck"))
+              << ")\n";
   }
 }
 

@@ -13,7 +13,6 @@
 
 #include "command.h"
 #include "design_json.h"
-#include "figure_output.h"
 #include "layout_input.h"
 #include "limits.h"
 #include "progress.h"
@@ -21,7 +20,13 @@
 #include "vantage/design/augment.h"
 #include "vantage/io/layout_formats.h"
 #include "vantage/io/text_file.h"
+
+#if VANTAGE_WITH_PLOT
+#include "figure_output.h"
 #include "vantage/plot/design_curve.h"
+#else
+#include "without_plot.h"
+#endif
 
 namespace vantage::cli {
 
@@ -243,7 +248,11 @@ int run_design(const DesignArgs& args) {
   check_write_format(args, layout);
   std::optional<io::WriteLock> lock;
   if (args.write_given) lock.emplace(args.write);
+#if VANTAGE_WITH_PLOT
   if (!args.plot.empty()) check_figure_directory("--plot", args.plot);
+#else
+  if (!args.plot.empty()) throw InvalidArgument(std::string("--plot: ") + kWithoutPlot);
+#endif
 
   design::AugmentOptions options;
   options.add = args.add;
@@ -261,6 +270,7 @@ int run_design(const DesignArgs& args) {
   const bool ok = r.status == design::AugmentResult::Status::kOk;
   if (ok && args.write_given)
     io::save_layout(args.write, design_json::layout_to_write(r), args.overwrite);
+#if VANTAGE_WITH_PLOT
   std::vector<plot::FigureFiles> figures;
   if (ok && !args.plot.empty()) {
     create_figure_directory("--plot", args.plot);
@@ -271,18 +281,23 @@ int run_design(const DesignArgs& args) {
       return kExitFailure;
     }
   }
+#endif
 
   if (args.json) {
     Json out = design_json::design(args.file, layout, args.direct, r);
     if (ok && args.write_given) out["written"] = args.write;
+#if VANTAGE_WITH_PLOT
     if (!figures.empty()) out["figures"] = figure_files_json(figures);
+#endif
     print_json(out);
   } else {
     print_report(args, layout, r);
     if (ok && args.write_given) std::cout << "written: " << args.write << "\n";
+#if VANTAGE_WITH_PLOT
     for (const plot::FigureFiles& f : figures) {
       std::cout << "figure: " << f.image.string() << " (numbers: " << f.csv.string() << ")\n";
     }
+#endif
   }
   if (!ok) {
     std::cerr << "vantage: design: " << design::to_string(r.status) << ": " << r.message;

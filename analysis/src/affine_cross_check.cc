@@ -1,16 +1,21 @@
-// A direct NLopt minimisation of J_2d over SO(3): the independent cross-check of Prop. 4.
+// A direct NLopt minimisation of J_2d over SO(3): the independent cross-check of Prop. 4. Built
+// without NLopt (VANTAGE_WITH_NLOPT=0) it checks its input and reports that it did not run.
 
 #include <Eigen/Geometry>
 #include <cmath>
 #include <limits>
-#include <nlopt.hpp>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "affine_sign_enumeration.h"
 #include "vantage/analysis/affine_pose.h"
+#include "vantage/analysis/build_options.h"
 #include "vantage/analysis/common.h"
+
+#if VANTAGE_WITH_NLOPT
+#include <nlopt.hpp>
+#endif
 
 namespace vantage {
 
@@ -24,6 +29,7 @@ bool AffineCrossCheckOptions::is_valid(std::string* why) const {
   return true;
 }
 
+#if VANTAGE_WITH_NLOPT
 namespace {
 
 struct CrossCheckData {
@@ -48,6 +54,7 @@ double cross_check_objective(unsigned, const double* x, double*, void* data) {
 }
 
 }  // namespace
+#endif
 
 AffineCrossCheckResult minimize_affine_residual(const Eigen::Matrix3Xd& z_object,
                                                 const Eigen::Matrix2Xd& d_image, double alpha,
@@ -56,12 +63,16 @@ AffineCrossCheckResult minimize_affine_residual(const Eigen::Matrix3Xd& z_object
   internal::check_options("options", options);
   internal::validate_vectors<2>(z_object, d_image, weights, 2, "d_image");
   internal::check_positive_finite("alpha", alpha);
+  AffineCrossCheckResult result;
+#if !VANTAGE_WITH_NLOPT
+  result.residual = std::numeric_limits<double>::quiet_NaN();
+  result.skipped = kWithoutNlopt;
+  return result;
+#else
   const Eigen::Matrix2Xd d_object = alpha * d_image;
   const Eigen::VectorXd w = weights.size() == 0 ? Eigen::VectorXd::Ones(z_object.cols()) : weights;
-
   std::mt19937 rng(options.seed);
   std::normal_distribution<double> normal;
-  AffineCrossCheckResult result;
   result.residual = std::numeric_limits<double>::infinity();
   for (int s = 0; s < options.starts; ++s) {
     Eigen::Quaterniond q(normal(rng), normal(rng), normal(rng), normal(rng));
@@ -91,6 +102,7 @@ AffineCrossCheckResult minimize_affine_residual(const Eigen::Matrix3Xd& z_object
     }
   }
   return result;
+#endif
 }
 
 }  // namespace vantage

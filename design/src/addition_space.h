@@ -8,7 +8,6 @@
 
 #include <Eigen/Core>
 #include <memory>
-#include <nlopt.hpp>
 #include <random>
 #include <vector>
 
@@ -83,9 +82,16 @@ class AdditionSpace {
                                const Eigen::Matrix3Xd& base_markers, double min_separation,
                                const std::vector<double>& x, Eigen::Matrix3Xd* out) const = 0;
 
-  /// Direct optimiser: a random start for one addition, its bounds (if any) and first step.
+  /// Direct optimiser: a random start for one addition.
   virtual Eigen::Vector3d random_addition(RandomStarts* random) const = 0;
-  virtual void configure(nlopt::opt* optimiser, int additions) const = 0;
+
+  /// Direct optimiser: where the 3K numbers of K additions may go and its first step on each.
+  struct DirectBox {
+    std::vector<double> lower;  ///< 3K bounds, or empty: unbounded (directions)
+    std::vector<double> upper;
+    double initial_step = 0.0;  ///< in the units of the numbers
+  };
+  virtual DirectBox direct_box(int additions) const = 0;
 };
 
 /// Direction mode.

@@ -2,15 +2,20 @@
 
 #include <algorithm>
 #include <limits>
-#include <nlopt.hpp>
 #include <vector>
 
 #include "text.h"
+#include "vantage/analysis/build_options.h"
 #include "vantage/analysis/common.h"
+
+#if VANTAGE_WITH_NLOPT
+#include <nlopt.hpp>
+#endif
 
 namespace vantage::design::internal {
 namespace {
 
+#if VANTAGE_WITH_NLOPT
 // The objective value of a degenerate set of additions: t = 1 is the worst any layout can have
 // (p-bar_min = 0), so the optimiser moves away from it.
 constexpr double kDegenerateObjective = 1.0;
@@ -39,6 +44,7 @@ double direct_objective(const std::vector<double>& x, std::vector<double>&, void
   }
   return t;
 }
+#endif
 
 // The result for the additions packed in x: their worst case and the solve count.
 void finish(const Layout& layout, const std::vector<double>& x, long solves_before,
@@ -109,6 +115,14 @@ DirectResult exhaustive_candidates(const Layout& layout, const AugmentOptions& o
   return out;
 }
 
+#if !VANTAGE_WITH_NLOPT
+DirectResult multistart_search(const Layout&, const AugmentOptions&, const AugmentResult&,
+                               Designer*) {
+  DirectResult out;
+  out.message = std::string("not run: ") + kWithoutNlopt;
+  return out;
+}
+#else
 DirectResult multistart_search(const Layout& layout, const AugmentOptions& options,
                                const AugmentResult& greedy, Designer* designer) {
   DirectResult out;
@@ -139,7 +153,12 @@ DirectResult multistart_search(const Layout& layout, const AugmentOptions& optio
     opt.set_min_objective(direct_objective, &obj);
     opt.set_maxeval(options.direct_evaluations_per_start);
     opt.set_xtol_abs(options.refine_tolerance);
-    space.configure(&opt, k);
+    const AdditionSpace::DirectBox box = space.direct_box(k);
+    if (!box.lower.empty()) {
+      opt.set_lower_bounds(box.lower);
+      opt.set_upper_bounds(box.upper);
+    }
+    opt.set_initial_step(box.initial_step);
     double value = 0.0;
     try {
       opt.optimize(x, value);
@@ -156,5 +175,6 @@ DirectResult multistart_search(const Layout& layout, const AugmentOptions& optio
   finish(layout, obj.best_x, solves_before, designer, &out);
   return out;
 }
+#endif
 
 }  // namespace vantage::design::internal

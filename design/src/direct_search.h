@@ -17,7 +17,8 @@ DirectResult exhaustive_candidates(const Layout& layout, const AugmentOptions& o
 
 /// Otherwise: NLopt Subplex over the 3K numbers of the K additions, multi-start from the greedy
 /// answer (`greedy`, first options.add steps) and options.direct_starts - 1 seeded random
-/// starts; the best point any start evaluated wins.
+/// starts; the best point any start evaluated wins. Built without NLopt: not run (kSkipped, the
+/// message says "not run: built without NLopt").
 DirectResult multistart_search(const Layout& layout, const AugmentOptions& options,
                                const AugmentResult& greedy, Designer* designer);
 

@@ -12,7 +12,7 @@ namespace {
 
 // Direct optimiser: Subplex's first step on each raw coordinate of a direction (radians, about
 // 17 degrees: a tenth of the half circle the directions live on).
-constexpr double kDirectInitialStep = 0.3;
+constexpr double kDirectionInitialStep = 0.3;
 // Compass moves per point: the 8 directions at multiples of 45 degrees in the tangent plane.
 constexpr int kTangentMoves = 8;
 
@@ -98,8 +98,10 @@ class DirectionSpace final : public AdditionSpace {
     return Eigen::Vector3d(gauss(rng), gauss(rng), gauss(rng)).normalized();
   }
 
-  void configure(nlopt::opt* optimiser, int) const override {
-    optimiser->set_initial_step(kDirectInitialStep);
+  DirectBox direct_box(int) const override {
+    DirectBox box;
+    box.initial_step = kDirectionInitialStep;
+    return box;
   }
 
  private:

@@ -11,7 +11,7 @@ namespace {
 
 // Direct optimiser: Subplex's first step on each coordinate, as a fraction of the box's largest
 // side.
-constexpr double kDirectInitialStep = 0.1;
+constexpr double kPointInitialStep = 0.1;
 
 class PointSpace final : public AdditionSpace {
  public:
@@ -121,17 +121,18 @@ class PointSpace final : public AdditionSpace {
            Eigen::Vector3d(unit(rng), unit(rng), unit(rng)).cwiseProduct(box_hi_ - box_lo_);
   }
 
-  void configure(nlopt::opt* optimiser, int additions) const override {
-    std::vector<double> lb(3 * additions), ub(3 * additions);
+  DirectBox direct_box(int additions) const override {
+    DirectBox box;
+    box.lower.resize(3 * additions);
+    box.upper.resize(3 * additions);
     for (int j = 0; j < additions; ++j) {
       for (int r = 0; r < 3; ++r) {
-        lb[3 * j + r] = box_lo_(r);
-        ub[3 * j + r] = box_hi_(r);
+        box.lower[3 * j + r] = box_lo_(r);
+        box.upper[3 * j + r] = box_hi_(r);
       }
     }
-    optimiser->set_lower_bounds(lb);
-    optimiser->set_upper_bounds(ub);
-    optimiser->set_initial_step(kDirectInitialStep * scale_);
+    box.initial_step = kPointInitialStep * scale_;
+    return box;
   }
 
  private:

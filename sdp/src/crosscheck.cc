@@ -2,15 +2,21 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <nlopt.hpp>
 #include <numeric>
 #include <sstream>
 #include <vector>
 
+#include "vantage/analysis/build_options.h"
 #include "vantage/analysis/common.h"
 #include "vantage/sdp/worst_viewpoint.h"
 
+#if VANTAGE_WITH_NLOPT
+#include <nlopt.hpp>
+#endif
+
 namespace vantage::sdp {
+
+#if VANTAGE_WITH_NLOPT
 namespace {
 
 // Automatic sample count (see automatic_samples()): bounds, samples per optimal inradius, and
@@ -28,8 +34,8 @@ constexpr int kRankMore = 4;
 // has at most three active constraints; the rest are added when the result violates them.
 constexpr int kWorkingSet = 16;
 // Most violated constraints added per round, and rounds per polish.
-constexpr int kAddPerRound = 8;
-constexpr int kMaxRounds = 12;
+constexpr int kPolishAddPerRound = 8;
+constexpr int kPolishMaxRounds = 12;
 // A constraint outside the working set counts as violated when it is this far below the
 // working set's minimum (rounding of unit dot products).
 constexpr double kViolation = 1e-15;
@@ -115,7 +121,7 @@ Eigen::Vector3d polish(const Eigen::Matrix3Xd& n, const Eigen::Vector3d& start) 
   for (int i : working) in_working[i] = 1;
 
   Eigen::Vector3d a = start;
-  for (int round = 0; round < kMaxRounds; ++round) {
+  for (int round = 0; round < kPolishMaxRounds; ++round) {
     a = polish_working_set(p, working, start);
     const Eigen::VectorXd values = p.transpose() * a;
     double working_min = 1.0;
@@ -125,7 +131,7 @@ Eigen::Vector3d polish(const Eigen::Matrix3Xd& n, const Eigen::Vector3d& start) 
       if (!in_working[i] && values(i) < working_min - kViolation) violated.push_back(i);
     }
     if (violated.empty()) break;
-    const int add = std::min<int>(kAddPerRound, static_cast<int>(violated.size()));
+    const int add = std::min<int>(kPolishAddPerRound, static_cast<int>(violated.size()));
     std::partial_sort(violated.begin(), violated.begin() + add, violated.end(),
                       [&](int x, int y) { return values(x) < values(y); });
     for (int j = 0; j < add; ++j) {
@@ -207,6 +213,7 @@ std::vector<RankedSample> best_samples(const Eigen::Matrix3Xd& n,
 }
 
 }  // namespace
+#endif
 
 bool CrossCheckOptions::is_valid(std::string* why) const {
   auto fail = [why](const char* text) {
@@ -222,7 +229,8 @@ bool CrossCheckOptions::is_valid(std::string* why) const {
   return true;
 }
 
-CrossCheck crosscheck_worst_viewpoint(const Eigen::Matrix3Xd& vectors, double t_reference,
+CrossCheck crosscheck_worst_viewpoint(const Eigen::Matrix3Xd& vectors,
+                                      [[maybe_unused]] double t_reference,
                                       const CrossCheckOptions& options,
                                       const std::vector<Eigen::Vector3d>& reference_viewpoints) {
   std::string why;
@@ -233,7 +241,6 @@ CrossCheck crosscheck_worst_viewpoint(const Eigen::Matrix3Xd& vectors, double t_
     throw InvalidArgument("crosscheck_worst_viewpoint: vectors must have at least 2 columns");
   }
   const Eigen::Matrix3Xd n = normalized_columns(vectors, "crosscheck_worst_viewpoint: vectors");
-  const long m = n.cols();
   for (std::size_t k = 0; k < reference_viewpoints.size(); ++k) {
     const Eigen::Vector3d& a = reference_viewpoints[k];
     if (!a.allFinite() || !(a.norm() > 0.0)) {
@@ -241,6 +248,14 @@ CrossCheck crosscheck_worst_viewpoint(const Eigen::Matrix3Xd& vectors, double t_
                             std::to_string(k) + "] is zero or not finite");
     }
   }
+#if !VANTAGE_WITH_NLOPT
+  CrossCheck skipped;
+  skipped.skipped = kWithoutNlopt;
+  skipped.method = "skipped";
+  skipped.message = std::string("cross-check skipped: ") + kWithoutNlopt;
+  return skipped;
+#else
+  const long m = n.cols();
   const int samples =
       options.samples > 0 ? options.samples : automatic_samples(m, t_reference, options);
 
@@ -293,6 +308,7 @@ CrossCheck crosscheck_worst_viewpoint(const Eigen::Matrix3Xd& vectors, double t_
     result.message = out.str();
   }
   return result;
+#endif
 }
 
 }  // namespace vantage::sdp

@@ -132,15 +132,22 @@ LayoutAnalysis analyze_vectors(const Eigen::Matrix3Xd& vectors, const Eigen::Vec
     stage("cross-check");
     const CrossCheck check =
         crosscheck_worst_viewpoint(n, global.t, options.crosscheck, global.viewpoints);
-    report.crosscheck = {true,
-                         check.method,
+    if (!check.skipped.empty()) {
+      report.crosscheck.skipped = check.skipped;
+    } else {
+      report.crosscheck = {true,
+                           "",
+                           check.method,
                          check.t,
                          check.agrees,
                          check.message,
                          check.samples,
                          check.sample_spacing,
-                         check.samples_cover_cells};
-    if (!check.agrees) append(&report.message, check.message);
+                           check.samples_cover_cells};
+      if (!check.agrees) append(&report.message, check.message);
+    }
+  } else {
+    report.crosscheck.skipped = "not requested";
   }
   stage("swap sensitivity");
   report.swaps = swap_sensitivity(scaled, weights, options.swap_count);

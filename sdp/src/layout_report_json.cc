@@ -27,7 +27,7 @@ Json viewpoints(const std::vector<Eigen::Vector3d>& viewpoints) {
 }
 
 Json crosscheck(const LayoutAnalysis::CrossCheckSummary& c) {
-  if (!c.ran) return {{"method", "skipped"}};
+  if (!c.ran) return {{"method", "skipped"}, {"skipped", c.skipped}};
   return {{"method", c.method},
           {"t", c.t},
           {"agrees", c.agrees},

@@ -12,6 +12,7 @@
 
 #include "affine_testing.h"
 #include "support/eigen_testing.h"
+#include "support/nlopt_build.h"
 #include "vantage/analysis/affine_pose.h"
 #include "vantage/analysis/common.h"
 
@@ -348,6 +349,7 @@ TEST(Lemma7, NoiseFreeDataWithAnInPlaneVectorReturnTruth) {
 }
 
 TEST(AffineCrossCheck, AgreesWithProp4OnNoiseFreeData) {
+  VANTAGE_SKIP_WITHOUT_NLOPT();
   std::mt19937 rng(kSeed + 9);
   for (int trial = 0; trial < 6; ++trial) {
     const int n = 4 + trial;
@@ -366,6 +368,7 @@ TEST(AffineCrossCheck, AgreesWithProp4OnNoiseFreeData) {
 }
 
 TEST(AffineCrossCheck, UnderNoiseProp4IsOptimalOnlyForItsSubproblem) {
+  VANTAGE_SKIP_WITHOUT_NLOPT();
   // Prop. 4 returns the best of 2^n Theorem-1 rotations, each optimal for a 3-D problem with
   // the missing components fixed by Eq. (21); with noisy d that set does not contain the
   // minimiser of J_2d. The direct minimisation never does worse, and usually does better, but

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "support/eigen_testing.h"
+#include "support/nlopt_build.h"
 #include "vantage/analysis/common.h"
 #include "vantage/sdp/worst_viewpoint.h"
 
@@ -152,6 +153,7 @@ TEST(Augment, GreedyNeverLowersAndMatchesFreshAnalysisOnRandomLayouts) {
 }
 
 TEST(Augment, DirectStartsFromGreedyAndNeverReportsLess) {
+  VANTAGE_SKIP_WITHOUT_NLOPT();
   const Layout triad = direction_layout(Eigen::Matrix3d::Identity());
   AugmentOptions o;
   o.add = 2;

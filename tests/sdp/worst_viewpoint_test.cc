@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "support/eigen_testing.h"
+#include "support/nlopt_build.h"
 #include "vantage/analysis/common.h"
 
 namespace vantage::sdp {
@@ -216,6 +217,7 @@ TEST(GlobalWorstViewpoint, RandomLayoutsMatchBruteForce) {
     ASSERT_EQ(paper.status, CellViewpoint::Status::kOk);
     EXPECT_LE(paper.t, w.t + kSdp) << "the paper's single cell cannot beat the global optimum";
     EXPECT_GE(paper.pbar_at, w.pbar_min - kSdp);
+    if (!built_with_nlopt()) continue;
     const CrossCheck check = crosscheck_worst_viewpoint(z, w.t);
     EXPECT_TRUE(check.agrees) << check.message;
     EXPECT_NEAR(check.t, w.t, kBruteForce);
@@ -229,6 +231,7 @@ TEST(GlobalWorstViewpoint, LargeRandomLayoutAgreesWithCrossCheck) {
   options.confirm_with_sdp = true;
   const WorstViewpoint w = global_worst_viewpoint(z, options);
   expect_consistent(w, z);
+  VANTAGE_SKIP_WITHOUT_NLOPT();
   CrossCheckOptions check_options;
   check_options.samples = 100000;  // spacing ~0.01 rad, well inside cells of inradius ~0.03
   const CrossCheck check = crosscheck_worst_viewpoint(z, w.t, check_options);
@@ -440,6 +443,7 @@ Eigen::Matrix3Xd narrow_cone(std::mt19937& rng, int m, double radius) {
 }
 
 TEST(CrossCheck, NarrowConeHasNoFalseDisagreement) {
+  VANTAGE_SKIP_WITHOUT_NLOPT();
   // 20 vectors in a 1e-3 rad cone: t* is within ~1e-6 of 1 and the cell constraints differ by
   // ~1e-6. The polish once stopped ~1e-6 short here and reported a false disagreement.
   std::mt19937 rng(kSeed + 5);
@@ -459,6 +463,7 @@ TEST(CrossCheck, NarrowConeHasNoFalseDisagreement) {
 }
 
 TEST(CrossCheck, LargeLayoutIsBoundedAndConfirmsTheReference) {
+  VANTAGE_SKIP_WITHOUT_NLOPT();
   // m = 3000: the cells are far smaller than any affordable sample spacing, so the samples are
   // capped by max_sample_products, and the reference's cell is re-solved by the polish.
   std::mt19937 rng(kSeed + 6);
@@ -479,6 +484,7 @@ TEST(CrossCheck, LargeLayoutIsBoundedAndConfirmsTheReference) {
 }
 
 TEST(CrossCheck, AutomaticSamplesResolveTheOptimalCell) {
+  VANTAGE_SKIP_WITHOUT_NLOPT();
   // m = 60: half the optimal inradius is affordable, so the samples alone find the optimum.
   std::mt19937 rng(kSeed + 7);
   const Eigen::Matrix3Xd z = random_unit_columns(rng, 60);

@@ -268,11 +268,15 @@ struct AffineCrossCheckResult {
   double residual = 0.0;  ///< J_2d of Eq. (15) at R (with the scale alpha)
   int evaluations = 0;    ///< objective evaluations over all starts
   int failed_starts = 0;  ///< starts whose local optimiser reported an error
+  /// Empty when the minimisation ran. kWithoutNlopt (vantage/analysis/build_options.h) when
+  /// vantage was built without NLopt: nothing ran, residual is NaN and R the identity.
+  std::string skipped;
 };
 
 /// Direct minimisation of J_2d = sum w_i |P R z_i - alpha d_i|^2 over SO(3) by a local
 /// optimiser (NLopt BOBYQA on the rotation vector around each start) from options.starts seeded
-/// random rotations. An independent check of Prop. 4: on noise-free data both reach J_2d = 0 at
+/// random rotations (built without NLopt: validates its input, runs nothing and says so in
+/// `skipped`). An independent check of Prop. 4: on noise-free data both reach J_2d = 0 at
 /// the truth; under noise Prop. 4's answer (the best of 2^m Theorem-1 rotations, each optimal
 /// for its own 3-D subproblem) is in general not the minimiser of J_2d, so this residual is
 /// lower. Same preconditions as affine_orientation() (no limit on n).

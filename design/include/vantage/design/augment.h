@@ -152,7 +152,8 @@ struct AugmentStep {
 struct DirectResult {
   enum class Status {
     kOk,       ///< ran; pbar_min is the best found (multi-start local, not a proof)
-    kSkipped,  ///< not run: options.run_direct false, K = 0, or too many candidate subsets
+    kSkipped,  ///< not run: options.run_direct false, K = 0, too many candidate subsets, or
+               ///< the continuous search of a build without NLopt (message says which)
   };
   Status status = Status::kSkipped;
   std::vector<Eigen::Vector3d> added;  ///< the K directions or positions
@@ -203,7 +204,8 @@ const char* to_string(AugmentResult::Status status);
 /// compass search on the sphere (or in the box). Adding never lowers p-bar_min.
 /// Then, when asked, the direct optimiser: NLopt Subplex over all K additions at once (unit
 /// directions, or positions in the box), multi-start from the greedy answer and seeded random
-/// starts; with candidates_only, an exhaustive search over K-subsets of the candidates.
+/// starts (not run when vantage is built without NLopt: direct.message says so); with
+/// candidates_only, an exhaustive search over K-subsets of the candidates (no NLopt needed).
 /// Throws InvalidArgument on an invalid layout or options.
 AugmentResult augment_layout(const Layout& layout, const AugmentOptions& options = {});
 

@@ -217,7 +217,12 @@ struct CrossCheckOptions {
 
 /// Independent NLopt cross-check of t*.
 struct CrossCheck {
-  std::string method;  ///< "nlopt_multistart_cobyla"
+  /// Empty when the cross-check ran. kWithoutNlopt ("built without NLopt",
+  /// vantage/analysis/build_options.h) when vantage was built without NLopt: nothing ran, method
+  /// is "skipped", agrees is false (nothing was compared) and message says why; a report shows
+  /// it as "skipped: built without NLopt".
+  std::string skipped;
+  std::string method;  ///< "nlopt_multistart_cobyla" ("skipped" when skipped)
   double t = 0.0;      ///< best min_i |a.n_i| found (attained at `viewpoint`)
   Eigen::Vector3d viewpoint = Eigen::Vector3d::UnitZ();
   double difference = 0.0;  ///< t - t_reference
@@ -248,7 +253,8 @@ struct CrossCheck {
 /// different method (NLopt, all constraints checked), which confirms t_reference is attained as
 /// a cell optimum; whether another cell is better is checked only by the samples, which resolve
 /// every cell at least as large as the optimal one when sample_spacing < asin(t). Reports
-/// whether it agrees with t_reference; it never replaces the answer it checks.
+/// whether it agrees with t_reference; it never replaces the answer it checks. Built without
+/// NLopt it checks its input, runs nothing and says so (CrossCheck::skipped).
 CrossCheck crosscheck_worst_viewpoint(
     const Eigen::Matrix3Xd& vectors, double t_reference, const CrossCheckOptions& options = {},
     const std::vector<Eigen::Vector3d>& reference_viewpoints = {});

@@ -1,12 +1,14 @@
-// The installed library used the way a user would: Theorem 1 recovers a known rotation and scale
-// (vantage::analysis), and the global worst viewpoint of the orthogonal triad is p-bar_min =
-// sqrt(2/3) (vantage::sdp, so CSDP and NLopt resolve through the package config). Exit status 0
-// only when both hold.
+// The installed core used the way a user would: Theorem 1 recovers a known rotation and scale
+// (vantage::analysis), the global worst viewpoint of the orthogonal triad is p-bar_min =
+// sqrt(2/3) (vantage::sdp, so CSDP resolves through the package config), and its cross-check
+// agrees when vantage has NLopt (NLopt resolves too) or says "built without NLopt" when the
+// package config says vantage_WITH_NLOPT is OFF. Exit status 0 only when all of it holds.
 
 #include <cmath>
 #include <cstdio>
 
 #include "vantage/analysis/absolute_orientation.h"
+#include "vantage/analysis/build_options.h"
 #include "vantage/analysis/quaternion.h"
 #include "vantage/design/weights.h"
 #include "vantage/io/layout_file.h"
@@ -42,5 +44,14 @@ int main() {
               worst.pbar_min, worst.viewpoints.size(), weights.feasible ? "yes" : "no");
   const bool worst_ok = std::abs(worst.pbar_min - std::sqrt(2.0 / 3.0)) < kToleranceRadians &&
                         worst.viewpoints.size() == 4 && !weights.feasible;
-  return orientation_ok && worst_ok ? 0 : 1;
+
+  const vantage::sdp::CrossCheck check = vantage::sdp::crosscheck_worst_viewpoint(
+      vantage::data_vectors(triad).vectors, worst.t, {}, worst.viewpoints);
+  std::printf(
+      "cross-check: %s%s\n", check.skipped.empty() ? check.method.c_str() : "skipped: ",
+      check.skipped.empty() ? (check.agrees ? " agrees" : " DISAGREES") : check.skipped.c_str());
+  const bool nlopt_ok = vantage::built_with_nlopt() == (CONSUMER_WITH_NLOPT != 0) &&
+                        (vantage::built_with_nlopt() ? check.skipped.empty() && check.agrees
+                                                     : check.skipped == vantage::kWithoutNlopt);
+  return orientation_ok && worst_ok && nlopt_ok ? 0 : 1;
 }
