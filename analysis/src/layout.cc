@@ -21,7 +21,7 @@ const char* Layout::entries_field() const { return to_string(mode); }
 namespace {
 
 [[noreturn]] void fail(const std::string& field, Eigen::Index index, const std::string& problem) {
-  throw InvalidArgument(field + "[" + std::to_string(index) + "]: " + problem);
+  throw InvalidArgument(field, static_cast<long>(index), problem);
 }
 
 }  // namespace
