@@ -1,8 +1,8 @@
 """The real install, as a user does it (README "Python"): a fresh venv with Debian's numpy
 (--system-site-packages), `pip install --no-build-isolation --no-index .` of the repository,
 then, outside the source tree, the typed session of examples/python/typed_session.py, mypy
---strict over it (the installed stubs and py.typed), and the installed extension free of debug
-info. Prints the seconds each step took and the installed size.
+--strict over it (the installed stubs and py.typed), mypy's stubtest of the extension's stub
+against the installed extension, and the installed extension free of debug info. Prints the seconds each step took and the installed size.
 
     python3 install_check.py SOURCE_DIR CMAKE_BUILD_DIR
 
@@ -59,6 +59,11 @@ def main():
 
         _, t_mypy = run([python, "-m", "mypy", "--strict", "--no-incremental",
                          "--cache-dir", temp / "mypy", session], env=env, cwd=work)
+        # The stub of the extension names exactly what the installed extension has.
+        _, t_stubtest = run([python, "-m", "mypy.stubtest", "vantage._vantage",
+                             "--mypy-config-file", os.devnull, "--allowlist",
+                             source / "python" / "tests" / "stubtest_allowlist.txt"],
+                            env=dict(env, MYPY_CACHE_DIR=str(temp / "stubtest")), cwd=work)
 
         (extension,) = package.glob("_vantage*.so")
         sections, _ = run(["readelf", "-S", "-W", extension])
@@ -70,7 +75,7 @@ def main():
             if not (package / name).is_file():
                 sys.exit(f"install_check: the install lacks vantage/{name}")
         print(f"venv {t_venv:.1f} s, pip install {t_pip:.1f} s, typed session {t_session:.1f} s, "
-              f"mypy {t_mypy:.1f} s; extension {extension.stat().st_size / 1e6:.2f} MB, "
+              f"mypy {t_mypy:.1f} s, stubtest {t_stubtest:.1f} s; extension {extension.stat().st_size / 1e6:.2f} MB, "
               f"package {tree_bytes(package) / 1e6:.2f} MB")
 
 
