@@ -20,6 +20,17 @@ namespace vantage::python {
 
 namespace {
 
+/// Runs a size check (vantage/design/limits.h); its error names the file it read, if any, as
+/// the error's source (ValueError.source), the bound as its field.
+template <typename Check>
+void check_size(const std::string& source, Check&& check) {
+  try {
+    check();
+  } catch (const InvalidArgument& e) {
+    throw source.empty() ? e : e.against(source);
+  }
+}
+
 Json source_json(const std::string& source) {
   return source.empty() ? Json(nullptr) : Json(source);
 }
@@ -37,14 +48,14 @@ py::tuple analyze(const py::object& layout_arg, const py::object& vectors, const
   std::string source;
   const Layout layout = layout_from_arguments(layout_arg, vectors, points, weights, py::none(),
                                               {format, tag_points, bundle, allow_large}, &source);
-  const std::string prefix = source.empty() ? "" : source + ": ";
-  design::check_limit(prefix + "data vectors", design::data_vector_count(layout),
-                      design::kMaxAnalyzeVectors, "analyze", allow_large, kPythonWords);
-  if (dropout) {
-    design::check_limit(prefix + "data vectors with dropout=True",
-                        design::data_vector_count(layout), design::kMaxDropoutVectors, "analyze",
-                        allow_large, kPythonWords);
-  }
+  check_size(source, [&] {
+    design::check_limit("data vectors", design::data_vector_count(layout),
+                        design::kMaxAnalyzeVectors, "analyze", allow_large, kPythonWords);
+    if (dropout) {
+      design::check_limit("data vectors with dropout=True", design::data_vector_count(layout),
+                          design::kMaxDropoutVectors, "analyze", allow_large, kPythonWords);
+    }
+  });
   sdp::LayoutReportOptions options;
   options.dropout = dropout;
   options.pair_weighting = pair_weighting == "arithmetic" ? PairWeighting::kArithmeticMean
@@ -74,10 +85,13 @@ py::object design_layout(const py::object& layout_arg, const py::object& vectors
   const Layout layout = layout_from_arguments(layout_arg, vectors, points, weights, candidates,
                                               {format, tag_points, bundle, allow_large}, &source);
   if (add < 1) throw InvalidArgument("add: must be >= 1, got " + std::to_string(add));
-  design::check_time_limit((source.empty() ? "" : source + ": ") + "add=" + std::to_string(add),
-                           design::estimated_design_seconds(layout, add, candidates_only,
-                                                            design::AugmentOptions{}.search_budget),
-                           design::kMaxDesignSeconds, "design", allow_large, kPythonWords);
+  check_size(source, [&] {
+    design::check_time_limit(
+        "add=" + std::to_string(add),
+        design::estimated_design_seconds(layout, add, candidates_only,
+                                         design::AugmentOptions{}.search_budget),
+        design::kMaxDesignSeconds, "design", allow_large, kPythonWords);
+  });
   design::AugmentOptions options;
   options.add = add;
   options.candidates_only = candidates_only;
@@ -100,9 +114,10 @@ py::object layout_weights(const py::object& layout_arg, const py::object& vector
   std::string source;
   const Layout layout = layout_from_arguments(layout_arg, vectors, points, py::none(), py::none(),
                                               {format, tag_points, bundle, allow_large}, &source);
-  design::check_limit((source.empty() ? "" : source + ": ") + layout.entries_field(),
-                      layout.entries.cols(), design::kMaxWeightsEntries, "weights", allow_large,
-                      kPythonWords);
+  check_size(source, [&] {
+    design::check_limit(layout.entries_field(), layout.entries.cols(), design::kMaxWeightsEntries,
+                        "weights", allow_large, kPythonWords);
+  });
   const design::Weights w = without_gil([&] { return design::layout_weights(layout); });
   const Json out = design_json::weights(source_json(source), layout, w);
   return result_or_raise(w.status == design::Weights::Status::kSolverFailed,

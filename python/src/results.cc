@@ -44,7 +44,8 @@ void register_errors(py::module_& module) {
   error.doc() =
       "A computation that finished but failed numerically (the CLI's exit status 1): not "
       "certified, solver failure, degenerate data. Attributes: status (the result's status "
-      "string), message, result (the full result, as returned on success).";
+      "string), message, result (the full typed result, as returned on success), text (the "
+      "result's brief report when it has one, else empty).";
   py::register_exception_translator([](std::exception_ptr pointer) {
     try {
       if (pointer) std::rethrow_exception(pointer);

@@ -47,9 +47,14 @@ def main():
 
         work = temp / "work"  # outside the source tree: nothing there shadows the install
         work.mkdir()
-        out, _ = run([python, "-c", "import vantage; print(vantage.__file__)"], env=env,
-                     cwd=work)
-        package = pathlib.Path(out.strip()).parent
+        out, _ = run([python, "-c", "import importlib.metadata as m, vantage; "
+                      "print(vantage.__file__, vantage.__version__, m.version('vantage'))"],
+                     env=env, cwd=work)
+        path, version, distribution = out.split()
+        if version != distribution:
+            sys.exit(f"install_check: vantage.__version__ {version} (CMake's project version) "
+                     f"!= {distribution} (pyproject.toml)")
+        package = pathlib.Path(path).parent
         if venv not in package.parents:
             sys.exit(f"install_check: imported vantage from {package}, not from the venv")
         session = source / "examples" / "python" / "typed_session.py"

@@ -46,7 +46,7 @@ TEST(NloptBuild, DirectOptimiserRunsOrSaysItDidNot) {
   // The greedy step is the same in both builds: a fresh certified solve of the layout it reports.
   Eigen::Matrix3Xd grown(3, 4);
   grown << Eigen::Matrix3d::Identity(), r.steps[0].added.normalized();
-  EXPECT_NEAR(r.final_pbar_min, sdp::global_worst_viewpoint(grown).pbar, kCertified);
+  EXPECT_NEAR(r.final_pbar_min, sdp::global_worst_viewpoint(grown).pbar_min, kCertified);
 }
 
 TEST(NloptBuild, ExhaustiveCandidatesNeedNoNlopt) {
