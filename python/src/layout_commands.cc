@@ -86,8 +86,11 @@ py::object design_layout(const py::object& layout_arg, const py::object& vectors
                                               {format, tag_points, bundle, allow_large}, &source);
   if (add < 1) throw InvalidArgument("add: must be >= 1, got " + std::to_string(add));
   check_size(source, [&] {
+    const long final_count = layout.mode == LayoutMode::kPoints
+                                 ? static_cast<long>(free_vector_count(layout.entries.cols() + add))
+                                 : static_cast<long>(layout.entries.cols()) + add;
     design::check_time_limit(
-        "add=" + std::to_string(add),
+        "add=" + std::to_string(add) + " on " + std::to_string(final_count) + " data vectors",
         design::estimated_design_seconds(layout, add, candidates_only,
                                          design::AugmentOptions{}.search_budget),
         design::kMaxDesignSeconds, "design", allow_large, kPythonWords);
