@@ -2,8 +2,8 @@
 
 // How the Python module hands results back: every result is built as the same JSON object the
 // CLI prints with --json (field names are the public contract), then converted to Python
-// objects (dict, list, float, int, bool, str, None). vantage/__init__.py wraps the dict in a
-// Result whose attributes are its fields, numeric lists as numpy arrays.
+// objects (dict, list, float, int, bool, str, None). vantage/_results.py makes the typed result
+// (vantage.LayoutReport, vantage.PoseEstimate, ...) from that dict, which its to_dict() returns.
 //
 // A numerical failure (the CLI's exit status 1) raises vantage.NumericalError carrying
 // `status`, `message` and the full `result`.
