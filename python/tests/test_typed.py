@@ -143,3 +143,17 @@ def test_value_errors_carry_field_index_and_problem(vantage):
     assert (bad.value.field, bad.value.index, bad.value.problem) == ("weights", 1, "must be > 0")
     assert bad.value.source is None
     assert str(bad.value) == "weights[1]: must be > 0"
+
+
+def test_the_file_size_limit_is_the_clis_and_allow_large_lifts_it(vantage, tmp_path):
+    # One byte over the 64 MiB of io::kMaxFileBytes: refused before parsing, as the CLI refuses.
+    path = tmp_path / "big.json"
+    with open(path, "wb") as out:
+        out.truncate((64 << 20) + 1)
+    with pytest.raises(ValueError, match=r"allow_large=True raises it to 1 GiB"):
+        vantage.load_layout(path)
+    assert "--allow-large raises it to 1 GiB" in cli_error("analyze", path)
+    # Lifted, the file is read whole and refused for what it holds (NUL bytes), not its size.
+    with pytest.raises(ValueError) as parsed:
+        vantage.load_layout(path, allow_large=True)
+    assert "1 GiB" not in str(parsed.value)
