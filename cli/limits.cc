@@ -1,13 +1,12 @@
 #include "limits.h"
 
-#include <algorithm>
-#include <cstdio>
-
-#include "vantage/design/augment.h"
-
-#include "vantage/io/layout_file.h"
-
 namespace vantage::cli {
+
+namespace {
+
+const design::LimitWords kCommandLine{"`vantage ", "`", "--allow-large"};
+
+}  // namespace
 
 void add_allow_large_flag(CLI::App* sub, bool& flag) {
   sub->add_flag("--allow-large", flag,
@@ -17,41 +16,12 @@ void add_allow_large_flag(CLI::App* sub, bool& flag) {
 
 void check_limit(const std::string& what, long count, long limit, const std::string& command,
                  bool allow_large) {
-  if (allow_large || count <= limit) return;
-  throw InvalidArgument(what + ": " + std::to_string(count) + " exceeds the limit of " +
-                        std::to_string(limit) + " for `vantage " + command +
-                        "` (--allow-large lifts it)");
-}
-
-double estimated_design_seconds(const Layout& layout, int add, bool candidates_only,
-                                long search_budget) {
-  const bool points = layout.mode == LayoutMode::kPoints;
-  const double m = points ? static_cast<double>(free_vector_count(layout.entries.cols() + add))
-                          : static_cast<double>(layout.entries.cols()) + add;
-  const long extra_budget = search_budget - design::AugmentOptions{}.search_budget;
-  const double step =
-      points && !candidates_only
-          ? kDesignPointStepSeconds +
-                kDesignSecondsPerSolveVector * static_cast<double>(std::max(0L, extra_budget))
-          : 0.0;
-  const double per_vector =
-      points ? kDesignPointSecondsPerVector : kDesignDirectionSecondsPerVector;
-  return add * (step + per_vector * m);
+  design::check_limit(what, count, limit, command, allow_large, kCommandLine);
 }
 
 void check_time_limit(const std::string& what, double seconds, double limit,
                       const std::string& command, bool allow_large) {
-  if (allow_large || seconds <= limit) return;
-  char text[64];
-  std::snprintf(text, sizeof text, "about %.0f s of CPU exceeds the budget of %.0f s", seconds,
-                limit);
-  throw InvalidArgument(what + ": " + text + " for `vantage " + command +
-                        "` (README \"Limits\"; --allow-large lifts it)");
-}
-
-long data_vector_count(const Layout& layout) {
-  const Eigen::Index n = layout.entries.cols();
-  return static_cast<long>(layout.mode == LayoutMode::kPoints ? free_vector_count(n) : n);
+  design::check_time_limit(what, seconds, limit, command, allow_large, kCommandLine);
 }
 
 }  // namespace vantage::cli

@@ -31,6 +31,7 @@ all_packages=(
   xvfb xauth libgl1-mesa-dri libglx-mesa0 fonts-dejavu-core
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest
   python3-mpmath
+  python3-setuptools python3-wheel python3-venv python3-pip python3-build mypy binutils
 )
 
 set_name=${1:-all}

@@ -12,6 +12,7 @@
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/free_vectors.h"
 #include "vantage/design/augment.h"
+#include "vantage/design/limits.h"
 #include "vantage/design/weights.h"
 #include "vantage/sdp/layout_report.h"
 
@@ -19,21 +20,44 @@ namespace vantage::python {
 
 namespace {
 
+/// Runs a size check (vantage/design/limits.h); its error names the file it read, if any, as
+/// the error's source (ValueError.source), the bound as its field.
+template <typename Check>
+void check_size(const std::string& source, Check&& check) {
+  try {
+    check();
+  } catch (const InvalidArgument& e) {
+    throw source.empty() ? e : e.against(source);
+  }
+}
+
 Json source_json(const std::string& source) {
   return source.empty() ? Json(nullptr) : Json(source);
 }
 
-py::object analyze(const py::object& layout_arg, const py::object& vectors,
-                   const py::object& points, const py::object& weights, int swaps, bool crosscheck,
-                   const std::string& pair_weighting, const py::kwargs& kwargs) {
+/// (the report as the dict of `vantage analyze --json`, its brief_report()).
+py::tuple analyze(const py::object& layout_arg, const py::object& vectors, const py::object& points,
+                  const py::object& weights, int swaps, bool crosscheck,
+                  const std::string& pair_weighting, bool dropout, bool allow_large,
+                  const py::object& format, const py::object& tag_points,
+                  const py::object& bundle) {
   if (swaps < 1) throw InvalidArgument("swaps", "must be >= 1");
   if (pair_weighting != "geometric" && pair_weighting != "arithmetic") {
     throw InvalidArgument("pair_weighting", "expected geometric or arithmetic");
   }
   std::string source;
-  const Layout layout =
-      layout_from_arguments(layout_arg, vectors, points, weights, py::none(), kwargs, &source);
+  const Layout layout = layout_from_arguments(layout_arg, vectors, points, weights, py::none(),
+                                              {format, tag_points, bundle, allow_large}, &source);
+  check_size(source, [&] {
+    design::check_limit("data vectors", design::data_vector_count(layout),
+                        design::kMaxAnalyzeVectors, "analyze", allow_large, kPythonWords);
+    if (dropout) {
+      design::check_limit("data vectors with dropout=True", design::data_vector_count(layout),
+                          design::kMaxDropoutVectors, "analyze", allow_large, kPythonWords);
+    }
+  });
   sdp::LayoutReportOptions options;
+  options.dropout = dropout;
   options.pair_weighting = pair_weighting == "arithmetic" ? PairWeighting::kArithmeticMean
                                                           : PairWeighting::kGeometricMean;
   options.analysis.swap_count = swaps;
@@ -46,18 +70,31 @@ py::object analyze(const py::object& layout_arg, const py::object& vectors,
                              : r.near_degenerate ? "near_degenerate"
                              : !certified        ? sdp::to_string(r.solver.status)
                                                  : "crosscheck_disagrees";
-  return result_or_raise(!report.is_usable(), status, report.message(),
-                         Json::parse(sdp::to_json(report)));
+  const std::string brief = report.brief_report();
+  return py::make_tuple(result_or_raise(!report.is_usable(), status, report.message(),
+                                        Json::parse(sdp::to_json(report)), brief),
+                        brief);
 }
 
 py::object design_layout(const py::object& layout_arg, const py::object& vectors,
                          const py::object& points, const py::object& weights,
                          const py::object& candidates, int add, bool candidates_only, double margin,
-                         bool direct, const py::kwargs& kwargs) {
+                         bool direct, bool allow_large, const py::object& format,
+                         const py::object& tag_points, const py::object& bundle) {
   std::string source;
-  const Layout layout =
-      layout_from_arguments(layout_arg, vectors, points, weights, candidates, kwargs, &source);
+  const Layout layout = layout_from_arguments(layout_arg, vectors, points, weights, candidates,
+                                              {format, tag_points, bundle, allow_large}, &source);
   if (add < 1) throw InvalidArgument("add: must be >= 1, got " + std::to_string(add));
+  check_size(source, [&] {
+    const long final_count = layout.mode == LayoutMode::kPoints
+                                 ? static_cast<long>(free_vector_count(layout.entries.cols() + add))
+                                 : static_cast<long>(layout.entries.cols()) + add;
+    design::check_time_limit(
+        "add=" + std::to_string(add) + " on " + std::to_string(final_count) + " data vectors",
+        design::estimated_design_seconds(layout, add, candidates_only,
+                                         design::AugmentOptions{}.search_budget),
+        design::kMaxDesignSeconds, "design", allow_large, kPythonWords);
+  });
   design::AugmentOptions options;
   options.add = add;
   options.candidates_only = candidates_only;
@@ -75,10 +112,15 @@ py::object design_layout(const py::object& layout_arg, const py::object& vectors
 }
 
 py::object layout_weights(const py::object& layout_arg, const py::object& vectors,
-                          const py::object& points, const py::kwargs& kwargs) {
+                          const py::object& points, bool allow_large, const py::object& format,
+                          const py::object& tag_points, const py::object& bundle) {
   std::string source;
-  const Layout layout =
-      layout_from_arguments(layout_arg, vectors, points, py::none(), py::none(), kwargs, &source);
+  const Layout layout = layout_from_arguments(layout_arg, vectors, points, py::none(), py::none(),
+                                              {format, tag_points, bundle, allow_large}, &source);
+  check_size(source, [&] {
+    design::check_limit(layout.entries_field(), layout.entries.cols(), design::kMaxWeightsEntries,
+                        "weights", allow_large, kPythonWords);
+  });
   const design::Weights w = without_gil([&] { return design::layout_weights(layout); });
   const Json out = design_json::weights(source_json(source), layout, w);
   return result_or_raise(w.status == design::Weights::Status::kSolverFailed,
@@ -91,7 +133,9 @@ void bind_layout_commands(py::module_& module) {
   module.def("analyze", &analyze, py::arg("layout") = py::none(), py::kw_only(),
              py::arg("vectors") = py::none(), py::arg("points") = py::none(),
              py::arg("weights") = py::none(), py::arg("swaps") = 5, py::arg("crosscheck") = true,
-             py::arg("pair_weighting") = "geometric",
+             py::arg("pair_weighting") = "geometric", py::arg("dropout") = false,
+             py::arg("allow_large") = false, py::arg("format") = py::none(),
+             py::arg("tag_points") = py::none(), py::arg("bundle") = py::none(),
              "Worst viewpoint of a layout (as `vantage analyze --json`): a vantage.Layout, a "
              "layout file (format=, tag_points=, bundle=) or vectors=/points= (n x 3) with "
              "weights=. Raises NumericalError when the result is not certified.");
@@ -100,10 +144,14 @@ void bind_layout_commands(py::module_& module) {
              py::arg("weights") = py::none(), py::arg("candidates") = py::none(),
              py::arg("add") = 1, py::arg("candidates_only") = false,
              py::arg("margin") = design::AugmentOptions{}.margin, py::arg("direct") = true,
+             py::arg("allow_large") = false, py::arg("format") = py::none(),
+             py::arg("tag_points") = py::none(), py::arg("bundle") = py::none(),
              "Add `add` markers or directions where the worst viewpoint is weakest (as `vantage "
              "design --json`); the result's `augmented` is the new vantage.Layout.");
   module.def("weights", &layout_weights, py::arg("layout") = py::none(), py::kw_only(),
              py::arg("vectors") = py::none(), py::arg("points") = py::none(),
+             py::arg("allow_large") = false, py::arg("format") = py::none(),
+             py::arg("tag_points") = py::none(), py::arg("bundle") = py::none(),
              "Non-negative weights with sum_i w_i z_i = 0 (Prop. 3, Eq. 11), as `vantage weights "
              "--json`.");
 }

@@ -10,6 +10,7 @@
 #include "vantage/io/calibration_board.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/io/layout_formats.h"
+#include "vantage/io/text_file.h"
 
 namespace vantage::python {
 
@@ -22,23 +23,19 @@ std::string text_of(const py::handle& value, const char* name) {
   return value.cast<std::string>();
 }
 
-/// format=, tag_points=, bundle= (the CLI's --format, --tag-points, --bundle).
-io::LayoutReadOptions read_options_from(const py::kwargs& kwargs) {
+/// format=, tag_points=, bundle=, allow_large= (the CLI's --format, --tag-points, --bundle,
+/// --allow-large).
+io::LayoutReadOptions read_options_from(const ReadArguments& read) {
   io::LayoutReadOptions options;
-  for (const auto& item : kwargs) {
-    const std::string key = py::str(item.first);
-    if (item.second.is_none()) continue;
-    if (key == "format") {
-      options.format = io::layout_format_from_string(text_of(item.second, "format"), "format");
-    } else if (key == "tag_points") {
-      options.apriltag.tag_points =
-          io::tag_points_from_string(text_of(item.second, "tag_points"), "tag_points");
-    } else if (key == "bundle") {
-      options.apriltag.bundle = text_of(item.second, "bundle");
-    } else {
-      throw InvalidArgument(key + ": unknown argument (format, tag_points, bundle read files)");
-    }
+  options.max_bytes = read.allow_large ? io::kMaxFileBytesAllowLarge : io::kMaxFileBytes;
+  if (!read.format.is_none()) {
+    options.format = io::layout_format_from_string(text_of(read.format, "format"), "format");
   }
+  if (!read.tag_points.is_none()) {
+    options.apriltag.tag_points =
+        io::tag_points_from_string(text_of(read.tag_points, "tag_points"), "tag_points");
+  }
+  if (!read.bundle.is_none()) options.apriltag.bundle = text_of(read.bundle, "bundle");
   return options;
 }
 
@@ -90,11 +87,14 @@ py::object layout_dict(const Layout& layout) {
 
 Layout layout_from_arguments(const py::object& layout, const py::object& vectors,
                              const py::object& points, const py::object& weights,
-                             const py::object& candidates, const py::kwargs& read_options,
+                             const py::object& candidates, const ReadArguments& read,
                              std::string* source) {
   source->clear();
   if (layout.is_none()) {
-    if (read_options.size() > 0) read_options_from(read_options);  // rejects unknown names
+    if (!read.format.is_none() || !read.tag_points.is_none() || !read.bundle.is_none()) {
+      throw InvalidArgument(
+          "format/tag_points/bundle: read a layout file; give its path as layout");
+    }
     return make_layout(vectors, points, weights, candidates, py::none(), "", "");
   }
   if (!vectors.is_none() || !points.is_none() || !weights.is_none() || !candidates.is_none()) {
@@ -103,8 +103,13 @@ Layout layout_from_arguments(const py::object& layout, const py::object& vectors
   }
   if (py::isinstance<Layout>(layout)) return layout.cast<Layout>();
   *source = path_from(layout);
-  const io::LayoutReadOptions options = read_options_from(read_options);
-  return without_gil([&] { return io::load_layout(*source, options); });
+  const io::LayoutReadOptions options = read_options_from(read);
+  try {
+    return without_gil([&] { return io::load_layout(*source, options); });
+  } catch (const io::FileTooLarge& e) {
+    throw io::FileTooLarge(std::string(e.what()) +
+                           (read.allow_large ? "" : " (allow_large=True raises it to 1 GiB)"));
+  }
 }
 
 void bind_layouts(py::module_& module) {
@@ -148,15 +153,18 @@ void bind_layouts(py::module_& module) {
 
   module.def(
       "load_layout",
-      [](const py::object& path, const py::kwargs& kwargs) {
+      [](const py::object& path, const py::object& format, const py::object& tag_points,
+         const py::object& bundle, bool allow_large) {
         std::string source;
-        return layout_from_arguments(path, py::none(), py::none(), py::none(), py::none(), kwargs,
-                                     &source);
+        return layout_from_arguments(path, py::none(), py::none(), py::none(), py::none(),
+                                     {format, tag_points, bundle, allow_large}, &source);
       },
-      py::arg("path"),
+      py::arg("path"), py::kw_only(), py::arg("format") = py::none(),
+      py::arg("tag_points") = py::none(), py::arg("bundle") = py::none(),
+      py::arg("allow_large") = false,
       "Reads a layout file: .json (vantage layout), .csv (name,x,y,z[,weight]) or .yaml/.yml "
-      "(AprilTag tag_bundles). Keywords: format='auto'|'json'|'csv'|'apriltag', "
-      "tag_points='corners'|'centres', bundle=NAME.");
+      "(AprilTag tag_bundles). format='auto'|'json'|'csv'|'apriltag', "
+      "tag_points='corners'|'centres', bundle=NAME; allow_large=True reads files up to 1 GiB.");
   module.def(
       "save_layout",
       [](const Layout& layout, const py::object& path, bool overwrite) {

@@ -14,13 +14,23 @@ namespace vantage::python {
 
 namespace py = pybind11;
 
+/// How a layout file is read: the keyword arguments format=, tag_points=, bundle= (the CLI's
+/// --format, --tag-points, --bundle; None for the default) and allow_large= (files up to 1 GiB
+/// instead of 64 MiB, as --allow-large).
+struct ReadArguments {
+  py::object format = py::none();
+  py::object tag_points = py::none();
+  py::object bundle = py::none();
+  bool allow_large = false;
+};
+
 /// The layout the caller means: `layout` (a vantage.Layout, or a path read in any supported
-/// format with `format`, `tag_points`, `bundle`) or exactly one of `vectors` / `points` (n x 3)
-/// with optional `weights` and `candidates`. Sets *source to the path (or "" for arrays).
-/// Throws InvalidArgument (ValueError) with the reader's message on bad input.
+/// format as `read` says) or exactly one of `vectors` / `points` (n x 3) with optional `weights`
+/// and `candidates`. Sets *source to the path (or "" for arrays). Throws InvalidArgument
+/// (ValueError) with the reader's message on bad input.
 Layout layout_from_arguments(const py::object& layout, const py::object& vectors,
                              const py::object& points, const py::object& weights,
-                             const py::object& candidates, const py::kwargs& read_options,
+                             const py::object& candidates, const ReadArguments& read,
                              std::string* source);
 
 /// Registers vantage.Layout and the layout functions.

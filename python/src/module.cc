@@ -1,5 +1,6 @@
 // The compiled part of the Python package `vantage` (vantage/_vantage): thin bindings over the
-// C++ libraries. vantage/__init__.py re-exports them and wraps results in vantage.Result.
+// C++ libraries. vantage/__init__.py wraps them in typed Python functions and results
+// (vantage/_results.py).
 
 #include <pybind11/pybind11.h>
 

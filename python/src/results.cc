@@ -1,5 +1,7 @@
 #include "results.h"
 
+#include "vantage/analysis/common.h"
+
 namespace vantage::python {
 
 py::object to_python(const Json& value) {
@@ -29,9 +31,11 @@ py::object to_python(const Json& value) {
   }
 }
 
+const design::LimitWords kPythonWords{"vantage.", "()", "allow_large=True"};
+
 py::object result_or_raise(bool failed, const std::string& status, const std::string& message,
-                           const Json& result) {
-  if (failed) throw NumericalFailure(status, message.empty() ? status : message, result);
+                           const Json& result, const std::string& text) {
+  if (failed) throw NumericalFailure(status, message.empty() ? status : message, result, text);
   return to_python(result);
 }
 
@@ -40,7 +44,8 @@ void register_errors(py::module_& module) {
   error.doc() =
       "A computation that finished but failed numerically (the CLI's exit status 1): not "
       "certified, solver failure, degenerate data. Attributes: status (the result's status "
-      "string), message, result (the full result, as returned on success).";
+      "string), message, result (the full typed result, as returned on success), text (the "
+      "result's brief report when it has one, else empty).";
   py::register_exception_translator([](std::exception_ptr pointer) {
     try {
       if (pointer) std::rethrow_exception(pointer);
@@ -49,7 +54,19 @@ void register_errors(py::module_& module) {
       instance.attr("status") = failure.status;
       instance.attr("message") = std::string(failure.what());
       instance.attr("result") = to_python(failure.result);
+      instance.attr("text") = failure.text;
       PyErr_SetObject(error.ptr(), instance.ptr());
+    } catch (const InvalidArgument& bad) {
+      const auto or_none = [](const std::string& text) -> py::object {
+        return text.empty() ? py::object(py::none()) : py::object(py::str(text));
+      };
+      py::object instance = py::handle(PyExc_ValueError)(bad.what());
+      instance.attr("field") = or_none(bad.field());
+      instance.attr("index") =
+          bad.index() ? py::object(py::int_(*bad.index())) : py::object(py::none());
+      instance.attr("problem") = or_none(bad.problem());
+      instance.attr("source") = or_none(bad.source());
+      PyErr_SetObject(PyExc_ValueError, instance.ptr());
     }
   });
 }

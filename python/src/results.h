@@ -2,8 +2,8 @@
 
 // How the Python module hands results back: every result is built as the same JSON object the
 // CLI prints with --json (field names are the public contract), then converted to Python
-// objects (dict, list, float, int, bool, str, None). vantage/__init__.py wraps the dict in a
-// Result whose attributes are its fields, numeric lists as numpy arrays.
+// objects (dict, list, float, int, bool, str, None). vantage/_results.py makes the typed result
+// (vantage.LayoutReport, vantage.PoseEstimate, ...) from that dict, which its to_dict() returns.
 //
 // A numerical failure (the CLI's exit status 1) raises vantage.NumericalError carrying
 // `status`, `message` and the full `result`.
@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
+
+#include "vantage/design/limits.h"
 
 namespace vantage::python {
 
@@ -26,19 +28,30 @@ py::object to_python(const Json& value);
 /// vantage.NumericalError.
 class NumericalFailure : public std::runtime_error {
  public:
-  NumericalFailure(std::string status, const std::string& message, Json result)
-      : std::runtime_error(message), status(std::move(status)), result(std::move(result)) {}
+  NumericalFailure(std::string status, const std::string& message, Json result,
+                   std::string text = "")
+      : std::runtime_error(message),
+        status(std::move(status)),
+        result(std::move(result)),
+        text(std::move(text)) {}
 
   std::string status;
   Json result;
+  std::string text;  ///< the result's own brief text (LayoutReport::brief_report()), or ""
 };
 
-/// Returns `result` as Python objects, or throws NumericalFailure(status, message, result) when
-/// `failed`.
+/// Returns `result` as Python objects, or throws NumericalFailure(status, message, result, text)
+/// when `failed`.
 py::object result_or_raise(bool failed, const std::string& status, const std::string& message,
-                           const Json& result);
+                           const Json& result, const std::string& text = "");
 
-/// Defines vantage.NumericalError (a RuntimeError) in `module` and translates NumericalFailure.
+/// How the size limits (vantage/design/limits.h) word Python's calls: "vantage.analyze()",
+/// "allow_large=True lifts it".
+extern const design::LimitWords kPythonWords;
+
+/// Defines vantage.NumericalError (a RuntimeError) in `module` and translates NumericalFailure;
+/// translates InvalidArgument into ValueError with the attributes field, index, problem and
+/// source (None when absent).
 void register_errors(py::module_& module);
 
 /// Runs `call` with the GIL released (for the long computations; `call` touches no Python

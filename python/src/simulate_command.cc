@@ -11,6 +11,7 @@
 #include "layouts.h"
 #include "results.h"
 #include "vantage/analysis/common.h"
+#include "vantage/design/limits.h"
 #include "vantage/simulate/layout_simulation.h"
 
 namespace vantage::python {
@@ -23,10 +24,17 @@ py::object simulate_layout(const py::object& layout_arg, const py::object& vecto
                            double range, double focal_px, const py::object& principal_point,
                            const py::object& lateral_offset, const std::string& viewpoint,
                            const std::vector<std::string>& methods, std::uint64_t seed, int threads,
-                           bool per_trial, const py::kwargs& kwargs) {
+                           bool per_trial, bool allow_large, const py::object& format,
+                           const py::object& tag_points, const py::object& bundle) {
   std::string source;
-  const Layout layout =
-      layout_from_arguments(layout_arg, vectors, points, py::none(), py::none(), kwargs, &source);
+  const Layout layout = layout_from_arguments(layout_arg, vectors, points, py::none(), py::none(),
+                                              {format, tag_points, bundle, allow_large}, &source);
+  if (trials < 1) throw InvalidArgument("trials", "must be >= 1");
+  design::check_limit("trials", trials, design::kMaxTrials, "simulate", allow_large, kPythonWords);
+  if (per_trial) {
+    design::check_limit("trials with per_trial=True", trials, design::kMaxPerTrialTrials,
+                        "simulate", allow_large, kPythonWords);
+  }
   simulate::LayoutSimulationOptions options;
   simulate::LayoutSceneOptions& scene = options.scene;
   if (camera != "affine" && camera != "pinhole") {
@@ -76,7 +84,9 @@ void bind_simulate_command(py::module_& module) {
              py::arg("lateral_offset") = std::vector<double>{0.0, 0.0},
              py::arg("viewpoint") = "random", py::arg("methods") = std::vector<std::string>{},
              py::arg("seed") = simulate::MonteCarloOptions{}.seed, py::arg("threads") = 0,
-             py::arg("per_trial") = false,
+             py::arg("per_trial") = false, py::arg("allow_large") = false,
+             py::arg("format") = py::none(), py::arg("tag_points") = py::none(),
+             py::arg("bundle") = py::none(),
              "Monte Carlo of every applicable estimator on seeded views of the layout, with the "
              "bound check of Eq. (26) / Eq. (30) on the affine camera (as `vantage simulate "
              "--json`). Raises NumericalError when the bound check fails.");

@@ -1,5 +1,5 @@
 """Shared helpers of the pytest suite: the built CLI (VANTAGE_CLI, set by ctest), the example
-files, and a comparison of a Result with the CLI's --json output."""
+files, and a comparison of a result's to_dict() with the CLI's --json output."""
 
 import json
 import math

@@ -1,155 +1,215 @@
 """vantage: evaluate and design fiducial layouts for pose from a single affine image.
 
-Thin bindings over the C++ libraries; every function returns what the matching ``vantage``
-subcommand prints with ``--json``, as a :class:`Result` whose attributes are the JSON fields.
+Bindings over the C++ libraries: vantage.analyze calls the library's one layout report
+(sdp::analyze_layout), vantage.pose its one pose front door (estimate_pose). Every function
+returns a typed result (vantage.LayoutReport, vantage.PoseEstimate, ...) whose attributes are
+the fields of the matching ``vantage`` subcommand's ``--json`` output, vectors and matrices as
+numpy arrays; ``to_dict()`` is that JSON object.
 
 Arrays are numpy, one point or vector per row: layouts and models are ``n x 3``, image points
 ``n x 2``. Any numeric dtype (float32, int) is converted to float64; a ``3 x n`` array is
 rejected with a message telling you to pass its transpose.
 
-Errors: bad input raises ``ValueError`` with the CLI's message (file, field, index);
-a computation that finished but failed numerically (the CLI's exit status 1) raises
-:class:`NumericalError` with ``status``, ``message`` and the full ``result``.
+The CLI's size limits hold here too (README "Limits"); ``allow_large=True`` lifts them as
+``--allow-large`` does. The long computations release the GIL.
+
+Errors: bad input raises ``ValueError`` with the CLI's message and the attributes ``field``,
+``index``, ``problem`` and ``source`` (None when absent); a computation that finished but failed
+numerically (the CLI's exit status 1) raises :class:`NumericalError` with ``status``,
+``message`` and the full typed ``result``.
 """
 
-import numpy as _np
+from __future__ import annotations
 
-from ._vantage import (  # noqa: F401
+import functools
+import os
+from typing import Any, Callable, Optional, Sequence, TypeVar, Union
+
+import numpy.typing as npt
+
+from . import _vantage
+from ._results import (
+    BoundCheck, Certificate, Crosscheck, DesignCoplanarity, DesignDirect, DesignResult,
+    DesignState, DesignStep, DropoutEntry, EstimatorStats, LayoutCoplanarity, LayoutReport,
+    Orientation, PaperLmi, PerTrial, PoseAlternative, PoseCamera, PoseEstimate, SimulationReport, Solver,
+    Statistic, Swap, WeightsResult, WeightsSuggestion,
+)
+from ._vantage import (
     Layout,
     NumericalError,
     __version__,
     board,
     data_vectors,
     load_correspondences,
-    load_layout,
     pbar_at_viewpoints,
     pose_methods,
     save_layout,
 )
-from . import _vantage
 
 __all__ = [
-    "Layout", "NumericalError", "Result", "analyze", "board", "data_vectors", "design",
-    "load_correspondences", "load_layout", "orient", "pbar_at_viewpoints", "pose",
-    "pose_methods", "save_layout", "simulate", "weights", "__version__",
+    "BoundCheck", "Certificate", "Crosscheck", "DesignCoplanarity", "DesignDirect",
+    "DesignResult", "DesignState", "DesignStep", "DropoutEntry", "EstimatorStats", "Layout",
+    "LayoutCoplanarity", "LayoutReport", "NumericalError", "Orientation", "PaperLmi", "PerTrial",
+    "PoseAlternative", "PoseCamera", "PoseEstimate", "SimulationReport", "Solver", "Statistic",
+    "Swap", "WeightsResult", "WeightsSuggestion", "__version__", "analyze", "board",
+    "data_vectors", "design", "load_correspondences", "load_layout", "orient",
+    "pbar_at_viewpoints", "pose", "pose_methods", "save_layout", "simulate", "weights",
 ]
 
+#: A layout argument: a vantage.Layout or the path of a layout file (.json, .csv, .yaml/.yml).
+LayoutArg = Union[Layout, str, "os.PathLike[str]", None]
 
-def _numeric_list(value):
-    """True for a (nested) list of numbers of rectangular shape."""
-    if not isinstance(value, list) or not value:
-        return False
-    try:
-        array = _np.asarray(value)
-    except ValueError:
-        return False
-    return array.dtype.kind in "fiu"
+_R = TypeVar("_R")
 
 
-class Result:
-    """A result: attributes are the JSON fields of the matching CLI subcommand.
+def _typed_errors(wrap: Callable[[Any], Any]) -> Callable[[Callable[..., _R]], Callable[..., _R]]:
+    """Makes a NumericalError's ``result`` the typed result (``wrap`` of its dict)."""
 
-    Numeric lists come back as numpy arrays (lists of points as ``n x 3``), nested objects as
-    Result, lists of objects as lists of Result. ``to_dict()`` gives the plain JSON-style dict.
+    def decorate(function: Callable[..., _R]) -> Callable[..., _R]:
+        @functools.wraps(function)
+        def call(*args: Any, **kwargs: Any) -> _R:
+            try:
+                return function(*args, **kwargs)
+            except NumericalError as error:
+                if isinstance(error.result, dict):
+                    error.result = wrap(error)
+                raise
+
+        return call
+
+    return decorate
+
+
+def load_layout(path: Union[str, "os.PathLike[str]"], *, format: Optional[str] = None,
+                tag_points: Optional[str] = None, bundle: Optional[str] = None,
+                allow_large: bool = False) -> Layout:
+    """Reads a layout file: .json (vantage layout), .csv (name,x,y,z[,weight]) or .yaml/.yml
+    (AprilTag tag_bundles). format 'auto' (by extension), 'json', 'csv' or 'apriltag';
+    tag_points 'corners' or 'centres'; bundle: the AprilTag bundle's name (needed when the file
+    has several); allow_large=True reads files up to 1 GiB instead of 64 MiB."""
+    return _vantage.load_layout(path, format=format, tag_points=tag_points, bundle=bundle,
+                                allow_large=allow_large)
+
+
+@_typed_errors(lambda error: LayoutReport(error.result, error.text))
+def analyze(layout: LayoutArg = None, *, vectors: Optional[npt.ArrayLike] = None,
+            points: Optional[npt.ArrayLike] = None, weights: Optional[npt.ArrayLike] = None,
+            swaps: int = 5, crosscheck: bool = True, pair_weighting: str = "geometric",
+            dropout: bool = False, allow_large: bool = False, format: Optional[str] = None,
+            tag_points: Optional[str] = None, bundle: Optional[str] = None) -> LayoutReport:
+    """The report of a layout (as ``vantage analyze --json``): its certified worst viewpoint.
+
+    layout: a vantage.Layout or a layout file, read with format ('auto', 'json', 'csv',
+    'apriltag'), tag_points ('corners', 'centres') and bundle (the AprilTag bundle's name);
+    or instead vectors= / points= (n x 3) with weights= (n, > 0).
+    swaps: how many of the most harmful swaps of two data vectors to report (>= 1).
+    crosscheck: run the independent cross-check of the worst viewpoint.
+    pair_weighting: point mode's weight of the free vector z_j - z_i: 'geometric' or
+    'arithmetic' mean of the markers' weights.
+    dropout: also analyse the layout without each of its entries (``--dropout``).
+    allow_large: lift the size limits (README "Limits"), as ``--allow-large``.
+
+    Raises ValueError on bad input and NumericalError (its ``result`` the LayoutReport) when the
+    report is not usable: not certified, degenerate, the cross-check disagrees.
     """
-
-    def __init__(self, fields):
-        self._fields = fields
-
-    def __getattr__(self, name):
-        fields = self.__dict__.get("_fields", {})
-        if name not in fields:
-            raise AttributeError(f"result has no field {name!r}; fields: {', '.join(fields)}")
-        return _wrap(fields[name])
-
-    def __getitem__(self, name):
-        return _wrap(self._fields[name])
-
-    def __contains__(self, name):
-        return name in self._fields
-
-    def __dir__(self):
-        return list(self._fields)
-
-    def keys(self):
-        return self._fields.keys()
-
-    def to_dict(self):
-        """The fields as plain Python (dicts, lists, numbers, strings, None)."""
-        return {k: _plain(v) for k, v in self._fields.items()}
-
-    def __repr__(self):
-        shown = ", ".join(f"{k}={_short(v)}" for k, v in self._fields.items())
-        return f"Result({shown})"
+    fields, brief = _vantage.analyze(
+        layout, vectors=vectors, points=points, weights=weights, swaps=swaps,
+        crosscheck=crosscheck, pair_weighting=pair_weighting, dropout=dropout,
+        allow_large=allow_large, format=format, tag_points=tag_points, bundle=bundle)
+    return LayoutReport(fields, brief)
 
 
-def _wrap(value):
-    if isinstance(value, dict):
-        return Result(value)
-    if _numeric_list(value):
-        return _np.asarray(value)
-    if isinstance(value, list) and value and all(isinstance(v, dict) for v in value):
-        return [Result(v) for v in value]
-    return value
+def _design_result(fields: Any) -> DesignResult:
+    fields = dict(fields)
+    augmented = fields.pop("augmented", None)
+    return DesignResult(fields, augmented)
 
 
-def _plain(value):
-    if isinstance(value, dict):
-        return {k: _plain(v) for k, v in value.items()}
-    if isinstance(value, list):
-        return [_plain(v) for v in value]
-    return value
+@_typed_errors(lambda error: _design_result(error.result))
+def design(layout: LayoutArg = None, *, vectors: Optional[npt.ArrayLike] = None,
+           points: Optional[npt.ArrayLike] = None, weights: Optional[npt.ArrayLike] = None,
+           candidates: Optional[npt.ArrayLike] = None, add: int = 1,
+           candidates_only: bool = False, margin: float = 0.25, direct: bool = True,
+           allow_large: bool = False, format: Optional[str] = None,
+           tag_points: Optional[str] = None, bundle: Optional[str] = None) -> DesignResult:
+    """Add ``add`` markers or directions where the worst viewpoint is weakest (as ``vantage
+    design --json``); the result's ``augmented`` is the new vantage.Layout.
+
+    layout, vectors, points, weights, format, tag_points, bundle: as vantage.analyze;
+    candidates (k x 3): where additions may go. candidates_only: only from the candidates.
+    margin: the free search's box around the layout (relative to its size). direct: also run
+    the direct optimiser. allow_large: lift the time budget (README "Limits").
+    """
+    return _design_result(_vantage.design(
+        layout, vectors=vectors, points=points, weights=weights, candidates=candidates, add=add,
+        candidates_only=candidates_only, margin=margin, direct=direct, allow_large=allow_large,
+        format=format, tag_points=tag_points, bundle=bundle))
 
 
-def _short(value):
-    text = repr(value)
-    return text if len(text) <= 40 else text[:37] + "..."
+@_typed_errors(lambda error: WeightsResult(error.result))
+def weights(layout: LayoutArg = None, *, vectors: Optional[npt.ArrayLike] = None,
+            points: Optional[npt.ArrayLike] = None, allow_large: bool = False,
+            format: Optional[str] = None, tag_points: Optional[str] = None,
+            bundle: Optional[str] = None) -> WeightsResult:
+    """Non-negative weights with sum_i w_i z_i = 0 (Prop. 3, Eq. 11), as ``vantage weights
+    --json``; arguments as vantage.analyze."""
+    return WeightsResult(_vantage.weights(
+        layout, vectors=vectors, points=points, allow_large=allow_large, format=format,
+        tag_points=tag_points, bundle=bundle))
 
 
-def _raising(function):
-    def call(*args, **kwargs):
-        try:
-            return function(*args, **kwargs)
-        except NumericalError as error:
-            error.result = Result(error.result)
-            raise
-    call.__name__ = function.__name__
-    call.__doc__ = function.__doc__
-    return call
+@_typed_errors(lambda error: PoseEstimate(error.result))
+def pose(model: Optional[npt.ArrayLike] = None, image: Optional[npt.ArrayLike] = None, *,
+         method: str = "affine", measured: Optional[npt.ArrayLike] = None,
+         image1: Optional[npt.ArrayLike] = None, image2: Optional[npt.ArrayLike] = None,
+         weights: Optional[npt.ArrayLike] = None, focal: Optional[float] = None,
+         principal_point: Optional[npt.ArrayLike] = None,
+         free_vectors: Optional[str] = None) -> PoseEstimate:
+    """One pose estimator (as ``vantage pose --method M --json``), through the library's one
+    front door (estimate_pose).
+
+    model n x 3 with image n x 2 in pixels (affine, affine-refined, perspective, standard,
+    oi-foam, oi-svd) or measured n x 3 (full3d); image1 and image2 n x 2 (two-view); weights
+    (n). focal (pixels, > 0) and principal_point [cx, cy] (pixels) as --focal and
+    --principal-point; free_vectors 'auto' (default), 'all' or 'spanning'. vantage.pose_methods()
+    lists the methods. Raises NumericalError when the estimate is degenerate or did not converge.
+    """
+    return PoseEstimate(_vantage.pose(
+        model, image, method=method, measured=measured, image1=image1, image2=image2,
+        weights=weights, focal=focal, principal_point=principal_point,
+        free_vectors=free_vectors))
 
 
-@_raising
-def analyze(layout=None, **kwargs):
-    return Result(_vantage.analyze(layout, **kwargs))
+@_typed_errors(lambda error: Orientation(error.result))
+def orient(model: npt.ArrayLike, measured: npt.ArrayLike, *,
+           weights: Optional[npt.ArrayLike] = None, method: str = "qmethod") -> Orientation:
+    """Rotation, translation and scale from 3-D correspondences, alpha * measured = R * model + p
+    (as ``vantage orient --json``); method 'qmethod', 'svd' or 'foam'."""
+    return Orientation(_vantage.orient(model, measured, weights=weights, method=method))
 
 
-@_raising
-def design(layout=None, **kwargs):
-    fields = _vantage.design(layout, **kwargs)
-    out = Result({k: v for k, v in fields.items() if k != "augmented"})
-    out.__dict__["augmented"] = fields["augmented"]
-    return out
+@_typed_errors(lambda error: SimulationReport(error.result))
+def simulate(layout: LayoutArg = None, *, vectors: Optional[npt.ArrayLike] = None,
+             points: Optional[npt.ArrayLike] = None, trials: int = 1000,
+             camera: str = "affine", noise_px: float = 0.0, snr_db: Optional[float] = None,
+             noise: str = "gaussian", range: float = 10.0, focal_px: float = 1000.0,
+             principal_point: Sequence[float] = (0.0, 0.0),
+             lateral_offset: Sequence[float] = (0.0, 0.0), viewpoint: str = "random",
+             methods: Sequence[str] = (), seed: int = 1, threads: int = 0,
+             per_trial: bool = False, allow_large: bool = False, format: Optional[str] = None,
+             tag_points: Optional[str] = None, bundle: Optional[str] = None) -> SimulationReport:
+    """Monte Carlo of every applicable estimator on seeded views of the layout, with the bound
+    check of Eq. (26) / Eq. (30) on the affine camera (as ``vantage simulate --json``).
 
-
-@_raising
-def weights(layout=None, **kwargs):
-    return Result(_vantage.weights(layout, **kwargs))
-
-
-@_raising
-def pose(model=None, image=None, **kwargs):
-    return Result(_vantage.pose(model, image, **kwargs))
-
-
-@_raising
-def orient(model, measured, **kwargs):
-    return Result(_vantage.orient(model, measured, **kwargs))
-
-
-@_raising
-def simulate(layout=None, **kwargs):
-    return Result(_vantage.simulate(layout, **kwargs))
-
-
-for _name in ("analyze", "design", "weights", "pose", "orient", "simulate"):
-    globals()[_name].__doc__ = getattr(_vantage, _name).__doc__
+    camera 'affine' or 'pinhole'; noise_px (pixels) or snr_db; noise 'gaussian' or 'uniform'...
+    as the CLI's options of the same names; methods: the estimators (empty: every applicable
+    one); threads 0: all cores; per_trial: keep every trial's values. allow_large lifts the
+    limits on trials (README "Limits"). Raises NumericalError when the bound check fails.
+    """
+    return SimulationReport(_vantage.simulate(
+        layout, vectors=vectors, points=points, trials=trials, camera=camera, noise_px=noise_px,
+        snr_db=snr_db, noise=noise, range=range, focal_px=focal_px,
+        principal_point=list(principal_point), lateral_offset=list(lateral_offset),
+        viewpoint=viewpoint, methods=list(methods), seed=seed, threads=threads,
+        per_trial=per_trial, allow_large=allow_large, format=format, tag_points=tag_points,
+        bundle=bundle))

@@ -184,7 +184,7 @@ TEST(DesignCli, TheDefaultBoxFindsAtLeastWhatTheMarkersOwnBoxFinds) {
 
 TEST(DesignCli, LimitsComeFromTheEstimatedTimeNotFromCounts) {
   // 30 markers --add 3 (528 data vectors) was refused at 200 data vectors although it takes a
-  // few seconds; its estimate is 7.5 s of the 30 s budget (cli/limits.h). --add 20 on the same
+  // few seconds; its estimate is 7.5 s of the 30 s budget (design/limits.h). --add 20 on the same
   // layout is estimated at 76 s and refused, before any work, unless --allow-large.
   ScratchDir scratch;
   nlohmann::json layout;

@@ -13,6 +13,9 @@ namespace vantage::io {
 
 /// Default bound of read_text_file(): 64 MiB (a layout of about a million vectors).
 constexpr std::size_t kMaxFileBytes = std::size_t{64} << 20;
+/// The bound when the user lifts the size limits (the CLI's --allow-large, Python's
+/// allow_large=True): 1 GiB.
+constexpr std::size_t kMaxFileBytesAllowLarge = std::size_t{1} << 30;
 
 /// Thrown by read_text_file() when the input exceeds its bound (bad input, like any
 /// InvalidArgument; a separate type so that a command can say how to lift the bound).
