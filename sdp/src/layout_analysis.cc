@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "message_parts.h"
 #include "narrowest_cone.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/error_bounds.h"
@@ -17,11 +18,6 @@ namespace {
 
 // arccos(0) in degrees: the worst-case error of Eq. (30) when p-bar_min = 0.
 constexpr double kRightAngleDeg = 90.0;
-
-void append(std::string* message, const std::string& part) {
-  if (!message->empty()) *message += "; ";
-  *message += part;
-}
 
 std::string three_digits(double x) {
   std::ostringstream out;
@@ -138,13 +134,13 @@ LayoutAnalysis analyze_vectors(const Eigen::Matrix3Xd& vectors, const Eigen::Vec
       report.crosscheck = {true,
                            "",
                            check.method,
-                         check.t,
-                         check.agrees,
-                         check.message,
-                         check.samples,
-                         check.sample_spacing,
+                           check.t,
+                           check.agrees,
+                           check.message,
+                           check.samples,
+                           check.sample_spacing,
                            check.samples_cover_cells};
-      if (!check.agrees) append(&report.message, check.message);
+      if (!check.agrees) internal::append_message(&report.message, check.message);
     }
   } else {
     report.crosscheck.skipped = "not requested";
@@ -157,19 +153,21 @@ LayoutAnalysis analyze_vectors(const Eigen::Matrix3Xd& vectors, const Eigen::Vec
     report.degenerate = true;
     report.worst_case_errors_deg.setConstant(kRightAngleDeg);
     report.max_worst_case_error_deg = kRightAngleDeg;
-    append(&report.message,
-           "degenerate layout: every data vector is parallel to one line (collinear points, or "
-           "duplicated or opposite vectors), so p-bar_min = 0, the LUB scale is undefined and "
-           "the rotation about that line cannot be determined");
+    internal::append_message(
+        &report.message,
+        "degenerate layout: every data vector is parallel to one line (collinear points, or "
+        "duplicated or opposite vectors), so p-bar_min = 0, the LUB scale is undefined and "
+        "the rotation about that line cannot be determined");
   } else if (is_near_degenerate(report.pbar_min, report.t, wv.certificate_tolerance)) {
     // The errors stay those of Eq. (30) at the accurate p_i (close to 90 degrees, not 0).
     report.near_degenerate = true;
-    append(&report.message,
-           "near-degenerate layout: every data vector is within " +
-               three_digits(std::asin(report.pbar_min)) +
-               " rad of one line (p-bar_min = " + three_digits(report.pbar_min) +
-               "), too close for the certificate on t to tell it from a degenerate layout; the "
-               "rotation about that line is barely determined");
+    internal::append_message(
+        &report.message,
+        "near-degenerate layout: every data vector is within " +
+            three_digits(std::asin(report.pbar_min)) +
+            " rad of one line (p-bar_min = " + three_digits(report.pbar_min) +
+            "), too close for the certificate on t to tell it from a degenerate layout; the "
+            "rotation about that line is barely determined");
   }
   return report;
 }

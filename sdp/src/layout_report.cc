@@ -7,17 +7,12 @@
 #include <cstdio>
 #include <sstream>
 
+#include "message_parts.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/internal/checks.h"
 
 namespace vantage::sdp {
 namespace {
-
-void append(std::string* message, const std::string& part) {
-  if (part.empty()) return;
-  if (!message->empty()) *message += "; ";
-  *message += part;
-}
 
 std::string number(double x, int digits) {
   std::ostringstream out;
@@ -55,18 +50,18 @@ LayoutAnalysis analyze_data(const Layout& layout, const DataVectors& data,
 
 bool LayoutReportOptions::is_valid(std::string* why) const {
   std::string inner;
-  if (!analysis.is_valid(&inner)) return internal::invalid_option(why, "analysis", inner);
+  if (!analysis.is_valid(&inner)) return vantage::internal::invalid_option(why, "analysis", inner);
   if (!dropout_options.is_valid(&inner)) {
-    return internal::invalid_option(why, "dropout_options", inner);
+    return vantage::internal::invalid_option(why, "dropout_options", inner);
   }
   if (!(coplanarity_threshold >= 0.0)) {
-    return internal::invalid_option(why, "coplanarity_threshold", "must be >= 0");
+    return vantage::internal::invalid_option(why, "coplanarity_threshold", "must be >= 0");
   }
   return true;
 }
 
 LayoutReport analyze_layout(const Layout& layout, const LayoutReportOptions& options) {
-  internal::check_options("options", options);
+  vantage::internal::check_options("options", options);
   LayoutReport report;
   report.layout = layout;
   report.data = data_vectors(layout, options.pair_weighting);
@@ -89,8 +84,9 @@ std::string LayoutReport::message() const {
   std::string out = analysis.message;
   if (out.empty() && !analysis.trusted()) out = "result not certified";
   if (dropout && dropout->status != DropoutAnalysis::Status::kCertified) {
-    append(&out, "dropout: " +
-                     (dropout->message.empty() ? std::string("not certified") : dropout->message));
+    internal::append_message(
+        &out,
+        "dropout: " + (dropout->message.empty() ? std::string("not certified") : dropout->message));
   }
   return out;
 }
