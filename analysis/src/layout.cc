@@ -139,6 +139,11 @@ void Layout::validate() const {
     }
   }
   check_names(names, n, points);
+  if (visibility) {
+    if (!points) throw InvalidArgument("normals", "only point layouts have marker normals");
+    validate_visibility(*visibility, n);
+  }
+  if (workspace) validate_workspace(*workspace);
 }
 
 std::string Layout::entry_name(Eigen::Index i) const {

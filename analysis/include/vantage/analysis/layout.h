@@ -7,11 +7,13 @@
 /// pair weight (sqrt(w_i w_j) by default).
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "vantage/analysis/free_vectors.h"
+#include "vantage/analysis/marker_visibility.h"
 
 namespace vantage {
 
@@ -42,6 +44,11 @@ struct Layout {
   /// in the order of `entries`, or empty when the entries are unnamed. Every edit that removes
   /// or adds an entry removes or adds its name, so a marker keeps its name through every command.
   std::vector<std::string> names;
+  /// Point mode: how the markers are seen on their body (normals, cones, mesh; docs/math.md
+  /// §20), or none: every camera sees every marker (the paper's model).
+  std::optional<MarkerVisibility> visibility;
+  /// The directions the analysis covers; none: the whole sphere.
+  std::optional<LayoutWorkspace> workspace;
 
   /// Throws InvalidArgument naming the field and index of the first violation: fewer than 2
   /// vectors or 3 points (point mode needs at least 2 free vectors), non-finite values, a vector
