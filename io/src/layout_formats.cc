@@ -1,4 +1,5 @@
 #include "vantage/io/layout_formats.h"
+#include "vantage/io/mesh_file.h"
 
 #include <algorithm>
 #include <cctype>
@@ -72,7 +73,21 @@ Layout parse_layout_as(std::string_view text, const std::string& source,
 }
 
 Layout load_layout(const std::string& path, const LayoutReadOptions& options) {
-  return parse_layout_as(read_text_file(path, options.max_bytes), path, options);
+  Layout layout = parse_layout_as(read_text_file(path, options.max_bytes), path, options);
+  load_body(path, &layout);
+  return layout;
+}
+
+void load_body(const std::string& layout_path, Layout* layout) {
+  if (!layout->visibility || layout->visibility->body_path.empty()) return;
+  const std::filesystem::path body(layout->visibility->body_path);
+  const std::filesystem::path resolved =
+      body.is_absolute() ? body : std::filesystem::path(layout_path).parent_path() / body;
+  try {
+    layout->visibility->body = read_mesh(resolved.string());
+  } catch (const InvalidArgument& e) {
+    internal::fail(layout_path, "visibility.body: " + std::string(e.what()));
+  }
 }
 
 LayoutFormat layout_write_format(const std::string& path) {
