@@ -1,5 +1,4 @@
 #include "vantage/io/layout_formats.h"
-#include "vantage/io/mesh_file.h"
 
 #include <algorithm>
 #include <cctype>
@@ -9,6 +8,7 @@
 #include "vantage/analysis/common.h"
 #include "vantage/io/csv_layout.h"
 #include "vantage/io/layout_file.h"
+#include "vantage/io/mesh_file.h"
 #include "vantage/io/printable.h"
 
 namespace vantage::io {
