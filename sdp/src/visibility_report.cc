@@ -85,14 +85,14 @@ void add_dropout(const VisibilityProblem& problem, const VisibilityReportOptions
 
 bool VisibilityReportOptions::is_valid(std::string* why) const {
   std::string inner;
-  if (!search.is_valid(&inner)) return internal::invalid_option(why, "search", inner);
+  if (!search.is_valid(&inner)) return vantage::internal::invalid_option(why, "search", inner);
   if (!(occlusion_resolution_deg >= 0.45 && occlusion_resolution_deg <= 30.0)) {
-    return internal::invalid_option(why, "occlusion_resolution_deg", "must be in [0.45, 30]");
+    return vantage::internal::invalid_option(why, "occlusion_resolution_deg", "must be in [0.45, 30]");
   }
   if (coverage_samples < 100) {
-    return internal::invalid_option(why, "coverage_samples", "must be >= 100");
+    return vantage::internal::invalid_option(why, "coverage_samples", "must be >= 100");
   }
-  if (threads < 0) return internal::invalid_option(why, "threads", "must be >= 0");
+  if (threads < 0) return vantage::internal::invalid_option(why, "threads", "must be >= 0");
   return true;
 }
 
@@ -121,7 +121,7 @@ VisibilityProblem visibility_problem(const Layout& layout, const OcclusionGrid* 
 }
 
 VisibilityReport analyze_visibility(const Layout& layout, const VisibilityReportOptions& options) {
-  internal::check_options("options", options);
+  vantage::internal::check_options("options", options);
   VisibilityReport report;
   OcclusionGrid grid;
   const bool body = layout.visibility && layout.visibility->body.has_value();

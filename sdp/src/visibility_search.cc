@@ -382,12 +382,12 @@ class VisibilitySearch {
 
 bool VisibilitySearchOptions::is_valid(std::string* why) const {
   if (!(certificate_tolerance >= 1e-15 && certificate_tolerance <= 1e-3)) {
-    return internal::invalid_option(why, "certificate_tolerance", "must be in [1e-15, 1e-3]");
+    return vantage::internal::invalid_option(why, "certificate_tolerance", "must be in [1e-15, 1e-3]");
   }
   if (!(tie_tolerance >= 0.0 && tie_tolerance <= 1e-3)) {
-    return internal::invalid_option(why, "tie_tolerance", "must be in [0, 1e-3]");
+    return vantage::internal::invalid_option(why, "tie_tolerance", "must be in [0, 1e-3]");
   }
-  if (max_patches < 1) return internal::invalid_option(why, "max_patches", "must be >= 1");
+  if (max_patches < 1) return vantage::internal::invalid_option(why, "max_patches", "must be >= 1");
   return true;
 }
 
@@ -405,7 +405,7 @@ const char* to_string(VisibilityWorstViewpoint::Status status) {
 
 VisibilityWorstViewpoint visibility_worst_viewpoint(const VisibilityProblem& problem,
                                                     const VisibilitySearchOptions& options) {
-  internal::check_options("options", options);
+  vantage::internal::check_options("options", options);
   problem.validate();
   VisibilitySearch search(problem, options);
   return search.run();
