@@ -1,5 +1,6 @@
 #include "vantage/analysis/mesh.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>

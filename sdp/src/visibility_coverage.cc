@@ -1,6 +1,7 @@
 // How much of the workspace is trackable, and where the largest lost region is
 // (docs/math.md §20, "Coverage"): Fibonacci directions, their untrackable neighbours joined.
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <map>

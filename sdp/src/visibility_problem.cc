@@ -1,5 +1,6 @@
 // The visibility problem's checks and the exact visibility of one direction (docs/math.md §20).
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <string>
