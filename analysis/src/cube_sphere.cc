@@ -1,5 +1,6 @@
 #include "vantage/analysis/cube_sphere.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -28,17 +29,17 @@ CubeFacePoint cube_face_point(const Eigen::Vector3d& a) {
   return p;
 }
 
-double cube_patch_cos_radius(double u, double v, double h) {
-  // On every face the point is a signed permutation of (1, u, v), which leaves dot products
-  // alone, and 1 + u cu + v cv >= 1 inside a face, so cos^2 decides.
-  double worst = std::numeric_limits<double>::infinity();  // min over corners of dot^2 / |q|^2
+double cube_patch_radius(double u, double v, double h) {
+  // On every face the points are signed permutations of (1, u, v), which leave angles alone.
+  // atan2(|p x q|, p.q) keeps full precision for small patches, where acos of a dot would not.
+  const Eigen::Vector3d p(1.0, u, v);
+  double widest = 0.0;
   for (int corner = 0; corner < 4; ++corner) {
-    const double cu = u + ((corner & 1) ? h : -h);
-    const double cv = v + ((corner & 2) ? h : -h);
-    const double dot = 1.0 + u * cu + v * cv;
-    worst = std::min(worst, dot * dot / (1.0 + cu * cu + cv * cv));
+    const Eigen::Vector3d q(1.0, u + ((corner & 1) ? h : -h), v + ((corner & 2) ? h : -h));
+    widest = std::max(widest, std::atan2(p.cross(q).norm(), p.dot(q)));
   }
-  return std::clamp(std::sqrt(worst / (1.0 + u * u + v * v)), 0.0, 1.0);
+  // A few ulps up: the radius bounds the patch from outside.
+  return widest * (1.0 + 8.0 * std::numeric_limits<double>::epsilon());
 }
 
 }  // namespace vantage

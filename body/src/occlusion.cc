@@ -34,7 +34,7 @@ void cast_marker(const RayCaster& caster, const Eigen::Vector3d& origin,
         const double u = -1.0 + (2.0 * i + 1.0) / n;
         const double v = -1.0 + (2.0 * j + 1.0) / n;
         const Eigen::Vector3d d = cube_face_direction(face, u, v);
-        const double radius = std::acos(cube_patch_cos_radius(u, v, 1.0 / n));
+        const double radius = cube_patch_radius(u, v, 1.0 / n);
         const double angle = std::atan2(d.cross(normal).norm(), d.dot(normal));
         if (angle > cone + radius) continue;
         directions.col(count++) = d;

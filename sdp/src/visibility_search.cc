@@ -4,6 +4,9 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <memory>
+#include <queue>
 #include <limits>
 #include <sstream>
 
@@ -24,8 +27,9 @@ using internal::MinNormPoint;
 // Initial grid per cube face (kGrid x kGrid patches, six faces: the whole sphere).
 constexpr int kGrid = 4;
 // Patches whose angular radius is below this are leaves (t is 1-Lipschitz: their bound exceeds
-// their values by at most this).
-constexpr double kMinPatchRadius = 1e-11;
+// their values by at most this). Far above the rounding of a patch's radius, so that the
+// subdivision always ends.
+constexpr double kMinPatchRadius = 1e-10;
 // Viewpoints closer than this (1 - a.b) are one optimum.
 constexpr double kSameViewpoint = 1e-9;
 // Values equal to rounding (min over unit dot products) are ordered lexicographically.
@@ -78,26 +82,35 @@ class VisibilitySearch {
 
   VisibilityWorstViewpoint run() {
     seed();
-    struct Root {
-      int face;
-      double u, v, value;
-    };
-    std::vector<Root> roots;
+    const auto all = std::make_shared<const std::vector<Seen>>(static_cast<std::size_t>(n_),
+                                                                Seen::kMixed);
+    auto every = std::make_shared<std::vector<int>>(pairs_.size());
+    for (std::size_t k = 0; k < pairs_.size(); ++k) (*every)[k] = static_cast<int>(k);
     const double h = 1.0 / kGrid;
     for (int face = 0; face < 6; ++face) {
       for (int i = 0; i < kGrid; ++i) {
         for (int j = 0; j < kGrid; ++j) {
-          const double u = -1.0 + (2 * i + 1) * h, v = -1.0 + (2 * j + 1) * h;
-          roots.push_back({face, u, v, exact(cube_face_direction(face, u, v))});
+          open_.push({face, -1.0 + (2 * i + 1) * h, -1.0 + (2 * j + 1) * h, h, 1.0, all, every});
         }
       }
     }
-    std::sort(roots.begin(), roots.end(),
-              [](const Root& a, const Root& b) { return a.value > b.value; });
-    std::vector<Seen> all(static_cast<std::size_t>(n_), Seen::kMixed);
-    std::vector<int> every(pairs_.size());
-    for (std::size_t k = 0; k < pairs_.size(); ++k) every[k] = static_cast<int>(k);
-    for (const Root& root : roots) process(root.face, root.u, root.v, h, all, every);
+    // Best first: the patch of largest bound is refined next, so the attained level rises as
+    // fast as the bounds allow and no region is refined below what the certificate needs.
+    while (!open_.empty()) {
+      const Patch patch = open_.top();
+      if (patch.bound < level_ - options_.tie_tolerance) break;  // every open patch is pruned
+      if (patch.bound <= level_ + 0.5 * options_.certificate_tolerance) {
+        upper_ = std::max(upper_, patch.bound);  // the largest bound left open
+        break;
+      }
+      if (patches_ >= options_.max_patches) {
+        exhausted_ = true;
+        upper_ = std::max(upper_, patch.bound);
+        break;
+      }
+      open_.pop();
+      process(patch);
+    }
     return result();
   }
 
@@ -189,18 +202,25 @@ class VisibilitySearch {
     return t_cell;
   }
 
-  void process(int face, double u, double v, double h, const std::vector<Seen>& parent,
-               const std::vector<int>& parent_pairs) {
-    if (patches_ >= options_.max_patches) {
-      exhausted_ = true;
-      upper_ = 1.0;
-      return;
-    }
+  // A patch of the cube: face, centre (u, v), half-width h, its parent's bound, and the markers'
+  // decisions and the pairs that its parent left (shared by the four siblings).
+  struct Patch {
+    int face;
+    double u, v, h, bound;
+    std::shared_ptr<const std::vector<Seen>> seen;
+    std::shared_ptr<const std::vector<int>> pairs;
+    bool operator<(const Patch& other) const { return bound < other.bound; }
+  };
+
+  void process(const Patch& patch) {
     ++patches_;
+    const int face = patch.face;
+    const double u = patch.u, v = patch.v, h = patch.h;
+    const std::vector<Seen>& parent = *patch.seen;
+    const std::vector<int>& parent_pairs = *patch.pairs;
     const Eigen::Vector3d c = cube_face_direction(face, u, v);
-    const double cos_r = cube_patch_cos_radius(u, v, h);
-    const double sin_r = std::sqrt(std::max(0.0, 1.0 - cos_r * cos_r));
-    const double r = std::atan2(sin_r, cos_r);
+    const double r = cube_patch_radius(u, v, h);
+    const double cos_r = std::cos(r), sin_r = std::sin(r);
 
     if (problem_.workspace &&
         angle_between(c, problem_.workspace->axis) - r > workspace_angle_) {
@@ -228,7 +248,8 @@ class VisibilitySearch {
       if (seen[i] == Seen::kVisible && seen[j] == Seen::kVisible) nearest = std::min(nearest, d);
       pairs.push_back(k);
     }
-    double bound = sin_plus(nearest, cos_r, sin_r);
+    double bound = std::min(patch.bound, sin_plus(nearest, cos_r, sin_r));
+    if (mixed) bound = std::min(bound, needed_mixed_bound(seen, pairs, c, cos_r, sin_r));
     if (bound < level_ - options_.tie_tolerance) return;
 
     exact(c);
@@ -249,20 +270,66 @@ class VisibilitySearch {
       return;
     }
 
-    // Pairs whose least |a.u| over the patch exceeds the level cannot bound a sub-patch below
-    // it, and do not cross it: the sub-patches do without them.
-    const double keep_below = std::max(0.0, std::min(level_, bound));
-    std::vector<int> kept;
-    kept.reserve(pairs.size());
+    // Pairs whose least |a.u| over the patch exceeds its bound are the least pair at no
+    // trackable point of it (t <= bound there), whatever the sub-patches come to see, and they
+    // cross none of it: the sub-patches do without them. (The level would not do: it rises
+    // later, and a pair above the level now may be the least pair then.)
+    const double keep_below = bound;
+    auto kept = std::make_shared<std::vector<int>>();
+    kept->reserve(pairs.size());
     for (int k : pairs) {
       const double d = std::abs(c.dot(u_.col(k)));
       const double least = d <= sin_r ? 0.0 : d * cos_r - std::sqrt(1.0 - d * d) * sin_r;
-      if (least <= keep_below) kept.push_back(k);
+      if (least <= keep_below) kept->push_back(k);
     }
+    const auto decided = std::make_shared<const std::vector<Seen>>(std::move(seen));
     const double q = 0.5 * h;
     for (int k = 0; k < 4; ++k) {
-      process(face, u + ((k & 1) ? q : -q), v + ((k & 2) ? q : -q), q, seen, kept);
+      open_.push({face, u + ((k & 1) ? q : -q), v + ((k & 2) ? q : -q), q, bound, decided, kept});
     }
+  }
+
+  // Bound 2' of §20: a trackable direction of the patch sees every certainly visible marker
+  // and enough mixed ones to reach min_visible. `pairs` holds the pairs of markers not hidden;
+  // a pair that a parent dropped (|a.u| above the level on all of it) counts as 1.
+  double needed_mixed_bound(const std::vector<Seen>& seen, const std::vector<int>& pairs,
+                            const Eigen::Vector3d& c, double cos_r, double sin_r) const {
+    int certain = 0, mixed = 0;
+    for (Seen s : seen) {
+      certain += s == Seen::kVisible;
+      mixed += s == Seen::kMixed;
+    }
+    const int need = problem_.min_visible - certain;
+    if (need <= 0) return 1.0;
+    // With certain markers, each of them pairs with at least `need` visible mixed ones; without,
+    // some mixed marker pairs with at least min_visible - 1 other mixed ones.
+    const bool anchored = certain > 0;
+    const Seen anchor = anchored ? Seen::kVisible : Seen::kMixed;
+    const int partners = anchored ? mixed : mixed - 1;
+    const int rank = anchored ? need : problem_.min_visible - 1;
+    std::vector<std::vector<double>> partner_bounds(static_cast<std::size_t>(n_));
+    for (int k : pairs) {
+      const auto [i, j] = pairs_[static_cast<std::size_t>(k)];
+      const double b = sin_plus(std::abs(c.dot(u_.col(k))), cos_r, sin_r);
+      if (seen[i] == anchor && seen[j] == Seen::kMixed) partner_bounds[i].push_back(b);
+      if (seen[j] == anchor && seen[i] == Seen::kMixed) partner_bounds[j].push_back(b);
+    }
+    double anchored_min = 1.0, free_max = 0.0;
+    for (int i = 0; i < n_; ++i) {
+      if (seen[i] != anchor) continue;
+      std::vector<double>& b = partner_bounds[static_cast<std::size_t>(i)];
+      const int missing = partners - static_cast<int>(b.size());
+      double value = 1.0;
+      if (missing < rank) {
+        const int r = rank - missing;  // the r-th largest kept bound (r <= b.size(): pruned
+                                       // before otherwise, as fewer than min_visible can be seen)
+        std::nth_element(b.begin(), b.begin() + (r - 1), b.end(), std::greater<double>());
+        value = b[static_cast<std::size_t>(r - 1)];
+      }
+      anchored_min = std::min(anchored_min, value);
+      free_max = std::max(free_max, value);
+    }
+    return anchored ? anchored_min : free_max;
   }
 
   // Marker i on the patch of centre c and radius r: certainly visible, hidden or mixed.
@@ -330,7 +397,7 @@ class VisibilitySearch {
     out.t = pair_min(out.visible_markers, out.viewpoint);
     out.t_lower = out.t;
     out.t_upper = std::max(upper_, out.t);
-    out.pbar_min = pbar_from_t(out.t);
+    out.pbar_min = pbar_at(visible_vectors(out.visible_markers), out.viewpoint);
     const bool certified =
         !exhausted_ && out.t_upper - out.t_lower <= options_.certificate_tolerance;
     out.status = certified ? VisibilityWorstViewpoint::Status::kCertified
@@ -371,6 +438,7 @@ class VisibilitySearch {
   std::vector<double> cone_angle_;
   double workspace_angle_ = kPi;
   std::vector<Candidate> candidates_;
+  std::priority_queue<Patch> open_;
   double level_ = -1.0;
   double upper_ = 0.0;
   long patches_ = 0;

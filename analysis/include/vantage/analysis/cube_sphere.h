@@ -24,8 +24,9 @@ struct CubeFacePoint {
 /// The face and coordinates of direction `a` (any non-zero length).
 CubeFacePoint cube_face_point(const Eigen::Vector3d& a);
 
-/// cos of the angular radius of the patch of centre (u, v) and half-width h on any face: the
-/// smallest cos between its centre direction and its corners (the farthest points).
-double cube_patch_cos_radius(double u, double v, double h);
+/// The angular radius (radians) of the patch of centre (u, v) and half-width h on any face: the
+/// largest angle between its centre direction and its corners (the farthest points), rounded
+/// up so that it bounds the patch.
+double cube_patch_radius(double u, double v, double h);
 
 }  // namespace vantage
