@@ -1,5 +1,6 @@
 #include "vantage/body/occlusion.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <string>
