@@ -39,7 +39,16 @@ constexpr double kCrossingSlack = 1e-15;
 // Fibonacci directions tried before the branch and bound, for a first attained value.
 constexpr int kSeedSamples = 2000;
 
-enum class Seen : std::uint8_t { kVisible, kHidden, kMixed };
+// A marker on a patch: certainly visible, certainly hidden, mixed, or mixed only at the edge
+// of its cone (clear of the body on the whole patch), where markers of one normal and one cone
+// are seen together or not at all.
+enum class Seen : std::uint8_t { kVisible, kHidden, kMixed, kConeEdge };
+
+bool is_mixed(Seen s) { return s == Seen::kMixed || s == Seen::kConeEdge; }
+
+// Bound 2' enumerates unit pairs when no marker is certainly visible; beyond this many mixed
+// units the patch (a large one) keeps its other bounds and is split.
+constexpr int kMaxFreeUnits = 48;
 
 double sin_plus(double s, double cos_r, double sin_r) {
   if (s >= cos_r) return 1.0;
@@ -75,6 +84,17 @@ class VisibilitySearch {
           problem.points.col(pairs_[k].second) - problem.points.col(pairs_[k].first);
     }
     u_ = normalized_columns(free, "points");
+    cone_class_.resize(n_);
+    for (int i = 0; i < n_; ++i) {
+      cone_class_[i] = i;
+      for (int j = 0; j < i; ++j) {
+        if (problem.normals.col(j) == problem.normals.col(i) &&
+            problem.cos_cone(j) == problem.cos_cone(i)) {
+          cone_class_[i] = cone_class_[j];
+          break;
+        }
+      }
+    }
     cone_angle_.resize(n_);
     for (int i = 0; i < n_; ++i) cone_angle_[i] = std::acos(problem.cos_cone(i));
     if (problem.workspace) workspace_angle_ = std::acos(problem.workspace->cos_half_angle);
@@ -231,9 +251,9 @@ class VisibilitySearch {
     int possible = 0;
     bool mixed = false;
     for (int i = 0; i < n_; ++i) {
-      if (seen[i] == Seen::kMixed) seen[i] = decide(i, c, r, face, u, v, h);
+      if (is_mixed(seen[i])) seen[i] = decide(i, c, r, face, u, v, h);
       if (seen[i] != Seen::kHidden) ++possible;
-      mixed = mixed || seen[i] == Seen::kMixed;
+      mixed = mixed || is_mixed(seen[i]);
     }
     if (possible < problem_.min_visible) return;  // nothing here is trackable
 
@@ -289,47 +309,73 @@ class VisibilitySearch {
     }
   }
 
-  // Bound 2' of §20: a trackable direction of the patch sees every certainly visible marker
-  // and enough mixed ones to reach min_visible. `pairs` holds the pairs of markers not hidden;
-  // a pair that a parent dropped (|a.u| above the level on all of it) counts as 1.
+  // Bound 2' of §20. A trackable direction of the patch sees every certainly visible marker
+  // and enough mixed ones to reach min_visible; mixed markers come in units (those at the edge
+  // of one shared cone together, the others alone), each seen whole or not at all. `pairs`
+  // holds the pairs of markers not hidden; a pair a parent dropped (|a.u| above the parent's
+  // bound on all of it) counts as 1.
   double needed_mixed_bound(const std::vector<Seen>& seen, const std::vector<int>& pairs,
                             const Eigen::Vector3d& c, double cos_r, double sin_r) const {
-    int certain = 0, mixed = 0;
-    for (Seen s : seen) {
-      certain += s == Seen::kVisible;
-      mixed += s == Seen::kMixed;
+    int certain = 0;
+    std::vector<int> unit_of(static_cast<std::size_t>(n_), -1);
+    std::vector<int> unit_size;
+    std::vector<int> class_unit(static_cast<std::size_t>(n_), -1);
+    for (int i = 0; i < n_; ++i) {
+      certain += seen[i] == Seen::kVisible;
+      if (!is_mixed(seen[i])) continue;
+      int& shared = class_unit[static_cast<std::size_t>(cone_class_[i])];
+      if (seen[i] == Seen::kConeEdge && shared >= 0) {
+        unit_of[i] = shared;
+      } else {
+        unit_of[i] = static_cast<int>(unit_size.size());
+        unit_size.push_back(0);
+        if (seen[i] == Seen::kConeEdge) shared = unit_of[i];
+      }
+      ++unit_size[static_cast<std::size_t>(unit_of[i])];
     }
     const int need = problem_.min_visible - certain;
     if (need <= 0) return 1.0;
-    // With certain markers, each of them pairs with at least `need` visible mixed ones; without,
-    // some mixed marker pairs with at least min_visible - 1 other mixed ones.
-    const bool anchored = certain > 0;
-    const Seen anchor = anchored ? Seen::kVisible : Seen::kMixed;
-    const int partners = anchored ? mixed : mixed - 1;
-    const int rank = anchored ? need : problem_.min_visible - 1;
-    std::vector<std::vector<double>> partner_bounds(static_cast<std::size_t>(n_));
+    const int units = static_cast<int>(unit_size.size());
+    if (certain == 0 && units > kMaxFreeUnits) return 1.0;
+    // w(U, V): the least pair bound between units U and V (U == V: within U); -1 for a certain
+    // marker's unit index. Pairs never listed keep 1.
+    const int side = units + 1;  // index 0: the certainly visible markers
+    std::vector<double> w(static_cast<std::size_t>(side) * side, 1.0);
+    auto unit_index = [&](int i) { return seen[i] == Seen::kVisible ? 0 : unit_of[i] + 1; };
     for (int k : pairs) {
       const auto [i, j] = pairs_[static_cast<std::size_t>(k)];
+      const int x = unit_index(i), y = unit_index(j);
+      if (x == 0 && y == 0) continue;  // bound 2's pairs
       const double b = sin_plus(std::abs(c.dot(u_.col(k))), cos_r, sin_r);
-      if (seen[i] == anchor && seen[j] == Seen::kMixed) partner_bounds[i].push_back(b);
-      if (seen[j] == anchor && seen[i] == Seen::kMixed) partner_bounds[j].push_back(b);
+      double& wxy = w[static_cast<std::size_t>(x) * side + y];
+      wxy = std::min(wxy, b);
+      w[static_cast<std::size_t>(y) * side + x] = wxy;
     }
-    double anchored_min = 1.0, free_max = 0.0;
-    for (int i = 0; i < n_; ++i) {
-      if (seen[i] != anchor) continue;
-      std::vector<double>& b = partner_bounds[static_cast<std::size_t>(i)];
-      const int missing = partners - static_cast<int>(b.size());
-      double value = 1.0;
-      if (missing < rank) {
-        const int r = rank - missing;  // the r-th largest kept bound (r <= b.size(): pruned
-                                       // before otherwise, as fewer than min_visible can be seen)
-        std::nth_element(b.begin(), b.begin() + (r - 1), b.end(), std::greater<double>());
-        value = b[static_cast<std::size_t>(r - 1)];
+    auto weight = [&](int x, int y) { return w[static_cast<std::size_t>(x) * side + y]; };
+    // The greedy threshold: the best units by w(anchor, U) and w(U, U), until `size` more
+    // markers are seen. Any selection of units that large holds a unit at most this.
+    auto threshold = [&](int anchor, int size) {
+      std::vector<std::pair<double, int>> by_value;
+      for (int x = 1; x < side; ++x) {
+        if (x == anchor) continue;
+        by_value.emplace_back(std::min(weight(anchor, x), weight(x, x)), unit_size[x - 1]);
       }
-      anchored_min = std::min(anchored_min, value);
-      free_max = std::max(free_max, value);
+      std::sort(by_value.begin(), by_value.end(), std::greater<>());
+      int taken = 0;
+      for (const auto& [value, count] : by_value) {
+        taken += count;
+        if (taken >= size) return value;
+      }
+      return 0.0;  // too few markers: pruned before (fewer than min_visible can be seen)
+    };
+    if (certain > 0) return threshold(0, need);
+    // No certain marker: some unit U is seen; the rest follows as above, U's pairs included.
+    double best = 0.0;
+    for (int x = 1; x < side; ++x) {
+      const int rest = problem_.min_visible - unit_size[x - 1];
+      best = std::max(best, rest <= 0 ? weight(x, x) : std::min(weight(x, x), threshold(x, rest)));
     }
-    return anchored ? anchored_min : free_max;
+    return best;
   }
 
   // Marker i on the patch of centre c and radius r: certainly visible, hidden or mixed.
@@ -341,12 +387,12 @@ class VisibilitySearch {
       if (delta - r > cone_angle_[i]) return Seen::kHidden;
       in_cone = delta + r <= cone_angle_[i];
     }
-    if (problem_.occlusion == nullptr) return in_cone ? Seen::kVisible : Seen::kMixed;
+    if (problem_.occlusion == nullptr) return in_cone ? Seen::kVisible : Seen::kConeEdge;
     switch (problem_.occlusion->span(i, face, u - h, u + h, v - h, v + h)) {
       case OcclusionGrid::Span::kBlocked:
         return Seen::kHidden;
       case OcclusionGrid::Span::kClear:
-        return in_cone ? Seen::kVisible : Seen::kMixed;
+        return in_cone ? Seen::kVisible : Seen::kConeEdge;
       case OcclusionGrid::Span::kMixed:
         break;
     }
@@ -436,6 +482,7 @@ class VisibilitySearch {
   std::vector<std::pair<int, int>> pairs_;
   Eigen::Matrix3Xd u_;
   std::vector<double> cone_angle_;
+  std::vector<int> cone_class_;  // markers of one normal and one cone share a class
   double workspace_angle_ = kPi;
   std::vector<Candidate> candidates_;
   std::priority_queue<Patch> open_;

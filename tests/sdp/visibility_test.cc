@@ -144,6 +144,25 @@ TEST(VisibilityWorstViewpoint, RandomMarkersWithRandomNormalsAgainstDenseSamplin
   }
 }
 
+TEST(VisibilityWorstViewpoint, MarkersSharingOneConeAgainstDenseSampling) {
+  // The satellite's markers without its body: eight panel corners share the normal +z and one
+  // cone, so on the cone's edge they are seen together or not at all (and one corner marker
+  // alone is not trackable); four bus corners look out radially.
+  VisibilityProblem p;
+  p.points.resize(3, 12);
+  p.points << 0.5, -0.5, 0.5, -0.5, 0.4, -0.4, 0.4, -0.4, 0.4, -0.4, 0.4, -0.4,  //
+      0.5, 0.5, -0.5, -0.5, 0.6, 0.6, 3.0, 3.0, -0.6, -0.6, -3.0, -3.0,            //
+      0.75, -0.75, -0.75, 0.75, 0, 0, 0, 0, 0, 0, 0, 0;
+  p.normals = Eigen::Matrix3Xd::Zero(3, 12);
+  p.normals.row(2).setOnes();
+  for (int i = 0; i < 4; ++i) p.normals.col(i) = p.points.col(i).normalized();
+  for (double cone : {60.0, 80.0}) {
+    SCOPED_TRACE(cone);
+    p.cos_cone = Eigen::VectorXd::Constant(12, std::cos(cone / kDegreesPerRadian));
+    expect_certified_against_sampling(p, 200000);
+  }
+}
+
 TEST(VisibilityWorstViewpoint, WorkspaceCapAgainstDenseSampling) {
   VisibilityProblem p = box(70.0);
   p.workspace = Workspace{Eigen::Vector3d(0.3, 0.2, 1.0).normalized(),

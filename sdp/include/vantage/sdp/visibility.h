@@ -58,7 +58,7 @@ struct VisibilitySearchOptions {
   /// [0, 1e-3].
   double tie_tolerance = 1e-9;
   /// Patch budget of the branch and bound, >= 1; when exhausted the result is not certified.
-  long max_patches = 20'000'000;
+  long max_patches = 4'000'000;
 
   bool is_valid(std::string* why = nullptr) const;
 };
