@@ -11,7 +11,7 @@
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/internal/checks.h"
 #include "vantage/analysis/parallel.h"
-#include "vantage/body/occlusion.h"
+#include "vantage/sdp/visibility_model.h"
 
 namespace vantage::sdp {
 namespace {
@@ -53,8 +53,8 @@ void add_dropout(const VisibilityProblem& problem, const VisibilityReportOptions
   } else {
     parallel_blocks(n, options.threads, [&](long begin, long end) {
       for (long k = begin; k < end; ++k) {
-        const OcclusionGrid reduced = grid != nullptr ? grid->without(static_cast<int>(k))
-                                                      : OcclusionGrid();
+        const OcclusionGrid reduced =
+            grid != nullptr ? grid->without(static_cast<int>(k)) : OcclusionGrid();
         const VisibilityProblem p =
             without(problem, static_cast<int>(k), grid != nullptr ? &reduced : nullptr);
         const VisibilityWorstViewpoint w = visibility_worst_viewpoint(p, options.search);
@@ -87,7 +87,8 @@ bool VisibilityReportOptions::is_valid(std::string* why) const {
   std::string inner;
   if (!search.is_valid(&inner)) return vantage::internal::invalid_option(why, "search", inner);
   if (!(occlusion_resolution_deg >= 0.45 && occlusion_resolution_deg <= 30.0)) {
-    return vantage::internal::invalid_option(why, "occlusion_resolution_deg", "must be in [0.45, 30]");
+    return vantage::internal::invalid_option(why, "occlusion_resolution_deg",
+                                             "must be in [0.45, 30]");
   }
   if (coverage_samples < 100) {
     return vantage::internal::invalid_option(why, "coverage_samples", "must be >= 100");
@@ -123,31 +124,26 @@ VisibilityProblem visibility_problem(const Layout& layout, const OcclusionGrid* 
 VisibilityReport analyze_visibility(const Layout& layout, const VisibilityReportOptions& options) {
   vantage::internal::check_options("options", options);
   VisibilityReport report;
-  OcclusionGrid grid;
-  const bool body = layout.visibility && layout.visibility->body.has_value();
-  if (body) {
-    const MarkerVisibility& v = *layout.visibility;
-    body::OcclusionOptions occlusion;
-    occlusion.resolution = options.occlusion_resolution_deg / kDegreesPerRadian;
-    occlusion.threads = options.threads;
-    const VisibilityProblem cones = visibility_problem(layout, nullptr);
-    grid = body::build_occlusion_grid(*v.body, layout.entries, v.normals, cones.cos_cone,
-                                      occlusion);
+  const VisibilityModel model =
+      VisibilityModel::of(layout, options.occlusion_resolution_deg, options.threads);
+  const VisibilityProblem& problem = model.problem();
+  const OcclusionGrid* grid = problem.occlusion;
+  if (model.has_body()) {
+    const Mesh& mesh = *layout.visibility->body;
     report.with_body = true;
-    report.occlusion_resolution_deg = grid.resolution() * kDegreesPerRadian;
-    const double far = VisibilityReport::kOffSurface * v.body->size();
+    report.occlusion_resolution_deg = model.resolution_deg();
+    const double far = VisibilityReport::kOffSurface * mesh.size();
     for (Eigen::Index i = 0; i < layout.entries.cols(); ++i) {
-      report.distance_to_body.push_back(distance_to_mesh(*v.body, layout.entries.col(i)));
+      report.distance_to_body.push_back(distance_to_mesh(mesh, layout.entries.col(i)));
       if (report.distance_to_body.back() > far) report.off_body.push_back(static_cast<int>(i));
     }
   }
-  const VisibilityProblem problem = visibility_problem(layout, body ? &grid : nullptr);
   report.min_visible = problem.min_visible;
   report.workspace = layout.workspace;
   report.worst = visibility_worst_viewpoint(problem, options.search);
   report.max_worst_case_error_deg = error_deg(report.worst);
   report.coverage = visibility_coverage(problem, options.coverage_samples);
-  if (options.dropout) add_dropout(problem, options, body ? &grid : nullptr, &report);
+  if (options.dropout) add_dropout(problem, options, grid, &report);
   return report;
 }
 

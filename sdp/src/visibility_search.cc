@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <queue>
-#include <limits>
 #include <sstream>
 
 #include "min_norm_point.h"
@@ -102,8 +102,8 @@ class VisibilitySearch {
 
   VisibilityWorstViewpoint run() {
     seed();
-    const auto all = std::make_shared<const std::vector<Seen>>(static_cast<std::size_t>(n_),
-                                                                Seen::kMixed);
+    const auto all =
+        std::make_shared<const std::vector<Seen>>(static_cast<std::size_t>(n_), Seen::kMixed);
     auto every = std::make_shared<std::vector<int>>(pairs_.size());
     for (std::size_t k = 0; k < pairs_.size(); ++k) (*every)[k] = static_cast<int>(k);
     const double h = 1.0 / kGrid;
@@ -156,7 +156,8 @@ class VisibilitySearch {
 
   bool trackable(const Eigen::Vector3d& a, const std::vector<int>& visible) const {
     if (static_cast<int>(visible.size()) < problem_.min_visible) return false;
-    if (problem_.workspace && a.dot(problem_.workspace->axis) < problem_.workspace->cos_half_angle) {
+    if (problem_.workspace &&
+        a.dot(problem_.workspace->axis) < problem_.workspace->cos_half_angle) {
       return false;
     }
     const Eigen::Vector3d first = u_.col(pair_index(visible[0], visible[1]));
@@ -242,8 +243,7 @@ class VisibilitySearch {
     const double r = cube_patch_radius(u, v, h);
     const double cos_r = std::cos(r), sin_r = std::sin(r);
 
-    if (problem_.workspace &&
-        angle_between(c, problem_.workspace->axis) - r > workspace_angle_) {
+    if (problem_.workspace && angle_between(c, problem_.workspace->axis) - r > workspace_angle_) {
       return;  // no point of the patch is in the workspace
     }
 
@@ -497,7 +497,8 @@ class VisibilitySearch {
 
 bool VisibilitySearchOptions::is_valid(std::string* why) const {
   if (!(certificate_tolerance >= 1e-15 && certificate_tolerance <= 1e-3)) {
-    return vantage::internal::invalid_option(why, "certificate_tolerance", "must be in [1e-15, 1e-3]");
+    return vantage::internal::invalid_option(why, "certificate_tolerance",
+                                             "must be in [1e-15, 1e-3]");
   }
   if (!(tie_tolerance >= 0.0 && tie_tolerance <= 1e-3)) {
     return vantage::internal::invalid_option(why, "tie_tolerance", "must be in [0, 1e-3]");

@@ -151,7 +151,7 @@ TEST(VisibilityWorstViewpoint, MarkersSharingOneConeAgainstDenseSampling) {
   VisibilityProblem p;
   p.points.resize(3, 12);
   p.points << 0.5, -0.5, 0.5, -0.5, 0.4, -0.4, 0.4, -0.4, 0.4, -0.4, 0.4, -0.4,  //
-      0.5, 0.5, -0.5, -0.5, 0.6, 0.6, 3.0, 3.0, -0.6, -0.6, -3.0, -3.0,            //
+      0.5, 0.5, -0.5, -0.5, 0.6, 0.6, 3.0, 3.0, -0.6, -0.6, -3.0, -3.0,          //
       0.75, -0.75, -0.75, 0.75, 0, 0, 0, 0, 0, 0, 0, 0;
   p.normals = Eigen::Matrix3Xd::Zero(3, 12);
   p.normals.row(2).setOnes();
@@ -165,8 +165,8 @@ TEST(VisibilityWorstViewpoint, MarkersSharingOneConeAgainstDenseSampling) {
 
 TEST(VisibilityWorstViewpoint, WorkspaceCapAgainstDenseSampling) {
   VisibilityProblem p = box(70.0);
-  p.workspace = Workspace{Eigen::Vector3d(0.3, 0.2, 1.0).normalized(),
-                          std::cos(35.0 / kDegreesPerRadian)};
+  p.workspace =
+      Workspace{Eigen::Vector3d(0.3, 0.2, 1.0).normalized(), std::cos(35.0 / kDegreesPerRadian)};
   expect_certified_against_sampling(p, 200000);
   const VisibilityWorstViewpoint w = visibility_worst_viewpoint(p);
   EXPECT_GE(w.viewpoint.dot(p.workspace->axis), p.workspace->cos_half_angle);
