@@ -20,8 +20,8 @@ LayoutWorkspace parse_workspace(const std::string& text) {
       values.push_back(std::stod(item, &used));
       if (used != item.size()) throw std::invalid_argument(item);
     } catch (const std::exception&) {
-      throw InvalidArgument("--workspace", "expected AX,AY,AZ,DEG (four numbers), got \"" +
-                                               text + "\"");
+      throw InvalidArgument("--workspace",
+                            "expected AX,AY,AZ,DEG (four numbers), got \"" + text + "\"");
     }
   }
   if (values.size() != 4) {
@@ -56,7 +56,8 @@ void VisibilityInput::add_options(CLI::App* sub) {
 void VisibilityInput::apply(Layout* layout) const {
   const bool any = !normals.empty() || cone_deg || min_visible || !body.empty();
   if (any && layout->mode != LayoutMode::kPoints) {
-    throw InvalidArgument(!normals.empty() ? "--normals" : cone_deg ? "--cone-deg"
+    throw InvalidArgument(!normals.empty() ? "--normals"
+                          : cone_deg       ? "--cone-deg"
                           : min_visible    ? "--min-visible"
                                            : "--body",
                           "only point layouts have markers on a body");
@@ -65,12 +66,14 @@ void VisibilityInput::apply(Layout* layout) const {
     if (!layout->visibility) layout->visibility.emplace();
     layout->visibility->normals = radial_normals(layout->entries);
     if (layout->visibility->cone_half_angle_deg.size() != layout->entries.cols()) {
-      layout->visibility->cone_half_angle_deg = Eigen::VectorXd::Constant(
-          layout->entries.cols(), MarkerVisibility::kDefaultConeDeg);
+      layout->visibility->cone_half_angle_deg =
+          Eigen::VectorXd::Constant(layout->entries.cols(), MarkerVisibility::kDefaultConeDeg);
     }
   }
   if ((cone_deg || min_visible || !body.empty()) && !layout->visibility) {
-    throw InvalidArgument(cone_deg ? "--cone-deg" : min_visible ? "--min-visible" : "--body",
+    throw InvalidArgument(cone_deg      ? "--cone-deg"
+                          : min_visible ? "--min-visible"
+                                        : "--body",
                           "the layout has no marker normals: give \"normals\" in the file or "
                           "--normals radial");
   }
@@ -82,9 +85,9 @@ void VisibilityInput::apply(Layout* layout) const {
   }
   if (min_visible) {
     if (*min_visible < 3 || *min_visible > layout->entries.cols()) {
-      throw InvalidArgument("--min-visible", "must be in [3, " +
-                                                 std::to_string(layout->entries.cols()) +
-                                                 "] (the layout's markers)");
+      throw InvalidArgument(
+          "--min-visible",
+          "must be in [3, " + std::to_string(layout->entries.cols()) + "] (the layout's markers)");
     }
     layout->visibility->min_visible = *min_visible;
   }
@@ -94,7 +97,7 @@ void VisibilityInput::apply(Layout* layout) const {
     } catch (const InvalidArgument& e) {
       throw InvalidArgument("--body", e.what());
     }
-    layout->visibility->body_path = body;
+    layout->visibility->body_path = std::filesystem::absolute(body).lexically_normal().string();
   }
   if (!workspace.empty()) layout->workspace = parse_workspace(workspace);
   layout->validate();

@@ -88,6 +88,9 @@ void load_body(const std::string& layout_path, Layout* layout) {
   } catch (const InvalidArgument& e) {
     internal::fail(layout_path, "visibility.body: " + std::string(e.what()));
   }
+  // From here on the path names the mesh wherever the layout goes (save_layout() writes it
+  // relative to the file it writes).
+  layout->visibility->body_path = std::filesystem::absolute(resolved).lexically_normal().string();
 }
 
 LayoutFormat layout_write_format(const std::string& path) {
@@ -116,7 +119,20 @@ void save_layout(const std::string& path, const Layout& layout, bool overwrite) 
   const LayoutFormat format = layout_write_format(path);
   std::string text;
   try {
-    text = layout_to_text(layout, format);
+    if (layout.visibility && !layout.visibility->body_path.empty()) {
+      // The body's path as the written file will read it: relative to the file's directory.
+      Layout moved = layout;
+      const std::filesystem::path body =
+          std::filesystem::absolute(layout.visibility->body_path).lexically_normal();
+      const std::filesystem::path directory = std::filesystem::path(path).parent_path();
+      const std::filesystem::path from =
+          std::filesystem::absolute(directory.empty() ? "." : directory).lexically_normal();
+      const std::filesystem::path relative = body.lexically_relative(from);
+      moved.visibility->body_path = relative.empty() ? body.string() : relative.string();
+      text = layout_to_text(moved, format);
+    } else {
+      text = layout_to_text(layout, format);
+    }
   } catch (const InvalidArgument& e) {
     internal::fail(path, e.what());
   }

@@ -1,6 +1,7 @@
 #include "visibility_fields.h"
 
 #include <cmath>
+#include <string>
 
 #include "json_fields.h"
 #include "vantage/analysis/scaling.h"
@@ -44,8 +45,13 @@ std::optional<MarkerVisibility> read_visibility(const nlohmann::json& root,
   MarkerVisibility out;
   const Eigen::Matrix3Xd given = read_vectors<3>(root["normals"], source, "normals");
   out.normals = unit_directions(given);
-  out.cone_half_angle_deg = Eigen::VectorXd::Constant(given.cols(),
-                                                      MarkerVisibility::kDefaultConeDeg);
+  for (Eigen::Index i = 0; i < given.cols(); ++i) {
+    if (out.normals.col(i).isZero()) {
+      fail(source, "normals[" + std::to_string(i) + "]: zero length (give the outward normal)");
+    }
+  }
+  out.cone_half_angle_deg =
+      Eigen::VectorXd::Constant(given.cols(), MarkerVisibility::kDefaultConeDeg);
   if (root.contains("visibility")) {
     const nlohmann::json& v = root["visibility"];
     if (!v.is_object()) fail(source, "visibility: expected an object");
@@ -68,13 +74,13 @@ std::optional<LayoutWorkspace> read_workspace(const nlohmann::json& root,
   if (!w.contains("axis") || !w.contains("half_angle_deg")) {
     fail(source, "workspace: give \"axis\" [x, y, z] and \"half_angle_deg\"");
   }
-  const Eigen::Matrix3Xd axis = read_vectors<3>(nlohmann::json::array({w["axis"]}), source,
-                                                "workspace.axis");
+  const Eigen::Matrix3Xd axis =
+      read_vectors<3>(nlohmann::json::array({w["axis"]}), source, "workspace.axis");
   LayoutWorkspace out;
   out.axis = unit_direction(axis.col(0));
   if (out.axis.isZero()) fail(source, "workspace.axis: zero length");
-  out.half_angle_deg =
-      read_numbers(nlohmann::json::array({w["half_angle_deg"]}), source, "workspace.half_angle_deg")(0);
+  out.half_angle_deg = read_numbers(nlohmann::json::array({w["half_angle_deg"]}), source,
+                                    "workspace.half_angle_deg")(0);
   return out;
 }
 

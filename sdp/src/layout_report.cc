@@ -27,19 +27,21 @@ std::string vector_text(const Eigen::Vector3d& v);
 std::string visibility_brief(const VisibilityReport& v) {
   std::ostringstream out;
   out << "on its body (" << (v.with_body ? "cones and the body's shadow" : "marker cones")
-      << ", at least " << v.min_visible << " markers seen):\n"
-      << "  trackable            " << number(100.0 * v.coverage.trackable_fraction, 4)
-      << " % of " << (v.workspace ? "the workspace" : "the sphere of directions") << "\n";
+      << ", at least " << v.min_visible << " markers seen):\n";
+  const std::string trackable = "  trackable            " +
+                                number(100.0 * v.coverage.trackable_fraction, 4) + " % of " +
+                                (v.workspace ? "the workspace" : "the sphere of directions") + "\n";
   if (v.worst.status == VisibilityWorstViewpoint::Status::kUntrackable) {
     out << "  UNTRACKABLE          no direction sees " << v.min_visible
-        << " markers that are not collinear\n";
+        << " markers that are not collinear\n"
+        << trackable;
     return out.str();
   }
   out << "  pbar_min             " << number(v.worst.pbar_min, 9) << "\n"
       << "  max worst-case error " << number(v.max_worst_case_error_deg, 6) << " deg (Eq. 30)\n"
       << "  worst viewpoint a    " << vector_text(v.worst.viewpoint) << " ("
       << v.worst.visible_markers.size() << " markers visible)\n"
-      << "  certificate          t in [" << number(v.worst.t_lower, 12) << ", "
+      << trackable << "  certificate          t in [" << number(v.worst.t_lower, 12) << ", "
       << number(v.worst.t_upper, 12) << "], " << to_string(v.worst.status);
   if (v.occlusion_resolution_deg) {
     out << ", occlusion at " << number(*v.occlusion_resolution_deg, 3) << " deg";
@@ -126,7 +128,7 @@ std::string LayoutReport::message() const {
         "dropout: " + (dropout->message.empty() ? std::string("not certified") : dropout->message));
   }
   if (visibility && !visibility->is_usable()) {
-    internal::append_message(&out, "visibility: " + visibility->message());
+    internal::append_message(&out, visibility->message());
   }
   return out;
 }
@@ -134,7 +136,8 @@ std::string LayoutReport::message() const {
 std::string LayoutReport::brief_report() const {
   const LayoutAnalysis& r = analysis;
   std::ostringstream out;
-  if (visibility) out << visibility_brief(*visibility) << "seen whole (every marker from everywhere):\n";
+  if (visibility)
+    out << visibility_brief(*visibility) << "seen whole (every marker from everywhere):\n";
   if (r.degenerate) {
     out << "DEGENERATE             every data vector is parallel to one line: the rotation "
            "about it is not determined\n";

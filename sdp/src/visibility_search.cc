@@ -49,6 +49,8 @@ bool is_mixed(Seen s) { return s == Seen::kMixed || s == Seen::kConeEdge; }
 // Bound 2' enumerates unit pairs when no marker is certainly visible; beyond this many mixed
 // units the patch (a large one) keeps its other bounds and is split.
 constexpr int kMaxFreeUnits = 48;
+// Up to this many mixed units, bound 2' takes the best of every choice of units (exact).
+constexpr int kMaxEnumeratedUnits = 12;
 
 double sin_plus(double s, double cos_r, double sin_r) {
   if (s >= cos_r) return 1.0;
@@ -336,7 +338,7 @@ class VisibilitySearch {
     const int need = problem_.min_visible - certain;
     if (need <= 0) return 1.0;
     const int units = static_cast<int>(unit_size.size());
-    if (certain == 0 && units > kMaxFreeUnits) return 1.0;
+    if (certain == 0 && units > std::max(kMaxFreeUnits, kMaxEnumeratedUnits)) return 1.0;
     // w(U, V): the least pair bound between units U and V (U == V: within U); -1 for a certain
     // marker's unit index. Pairs never listed keep 1.
     const int side = units + 1;  // index 0: the certainly visible markers
@@ -352,8 +354,32 @@ class VisibilitySearch {
       w[static_cast<std::size_t>(y) * side + x] = wxy;
     }
     auto weight = [&](int x, int y) { return w[static_cast<std::size_t>(x) * side + y]; };
-    // The greedy threshold: the best units by w(anchor, U) and w(U, U), until `size` more
-    // markers are seen. Any selection of units that large holds a unit at most this.
+    if (units <= kMaxEnumeratedUnits) {
+      // Every choice of units holding `need` markers: the least pair bound among the certain
+      // markers' pairs with them and their own pairs, at its best. Adding a unit to a choice
+      // that is large enough only adds pairs, so the search stops there.
+      std::vector<int> chosen;
+      double best = 0.0;
+      std::function<void(int, int, double)> choose = [&](int next, int size, double value) {
+        if (value <= best) return;
+        if (size >= need) {
+          best = value;
+          return;
+        }
+        for (int x = next; x < side; ++x) {
+          double with = std::min({value, weight(0, x), weight(x, x)});
+          for (int y : chosen) with = std::min(with, weight(x, y));
+          chosen.push_back(x);
+          choose(x + 1, size + unit_size[static_cast<std::size_t>(x - 1)], with);
+          chosen.pop_back();
+        }
+      };
+      choose(1, 0, 1.0);
+      return best;
+    }
+    // Many units (a large patch): the greedy threshold, the best units by w(anchor, U) and
+    // w(U, U) until `size` more markers are seen. Any choice of units that large holds a unit
+    // at most this.
     auto threshold = [&](int anchor, int size) {
       std::vector<std::pair<double, int>> by_value;
       for (int x = 1; x < side; ++x) {

@@ -144,6 +144,27 @@ TEST(VisibilityWorstViewpoint, RandomMarkersWithRandomNormalsAgainstDenseSamplin
   }
 }
 
+TEST(VisibilityWorstViewpoint, FewMarkersWithWideRandomConesAgainstDenseSampling) {
+  // Few markers and wide cones: directions where two cone edges cross and only the markers of
+  // both edges together make a trackable set.
+  std::mt19937 rng(kSeed + 72);
+  std::uniform_real_distribution<double> cone(60.0, 175.0);
+  for (int trial = 0; trial < 12; ++trial) {
+    VisibilityProblem p;
+    const int n = 4 + trial % 3;
+    p.points = testing::random_points(rng, n);
+    const Eigen::Vector3d centroid = p.points.rowwise().mean();
+    p.normals.resize(3, n);
+    p.cos_cone.resize(n);
+    for (int i = 0; i < n; ++i) {
+      p.normals.col(i) = (p.points.col(i) - centroid).normalized();
+      p.cos_cone(i) = std::cos(cone(rng) / kDegreesPerRadian);
+    }
+    SCOPED_TRACE(trial);
+    expect_certified_against_sampling(p, 50000);
+  }
+}
+
 TEST(VisibilityWorstViewpoint, MarkersSharingOneConeAgainstDenseSampling) {
   // The satellite's markers without its body: eight panel corners share the normal +z and one
   // cone, so on the cone's edge they are seen together or not at all (and one corner marker

@@ -74,6 +74,16 @@ struct Layout {
 /// smallest k >= 1 (entry_name() of every entry counts as taken).
 std::string unused_entry_name(const Layout& layout, const std::string& prefix);
 
+/// The layout without entry k (0 <= k < entries.cols()): its weight, name, and on a body its
+/// normal and cone go with it (the names of the others are kept, given or not).
+Layout without_entry(const Layout& layout, Eigen::Index k);
+
+/// Appends entry x with weight 1 (named "<name_prefix><k>" when the layout's entries are named,
+/// see unused_entry_name()). On a body the new marker looks out from the layout's centroid (the
+/// --normals radial rule; +z at the centroid itself) with the layout's widest cone, until the
+/// user says otherwise.
+void append_entry(Layout* layout, const Eigen::Vector3d& x, const std::string& name_prefix);
+
 /// The data vectors an analysis works on, with their weights.
 struct DataVectors {
   Eigen::Matrix3Xd vectors;  ///< 3 x m
