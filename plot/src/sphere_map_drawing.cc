@@ -55,8 +55,6 @@ void draw_disc_frame(Canvas& canvas, int d) {
   canvas.label(-1.0, 0.0, left, -6 * s, 0.0, 1.0, small, ink);
   canvas.label(0.0, 1.0, "+y", 0.0, -10 * s, 0.5, small, ink);
   canvas.label(0.0, -1.0, "−y", 0.0, 11 * s, 0.5, small, ink);
-  canvas.label(0.0, 0.0, d == 0 ? "+z" : "−z", 0.0, 0.0, 0.5, small, {255, 255, 255}, {25, 25, 25},
-               0.55);
   canvas.label(0.0, -1.0,
                d == 0 ? "a_z ≥ 0: +z at the centre" : "a_z < 0: −z at the centre, seen from below",
                0.0, 30 * s, 0.5, kLabelSize * s, ink);

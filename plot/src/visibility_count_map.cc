@@ -52,7 +52,8 @@ internal::Raster count_raster(const SphereSamples& s, int d, int markers) {
 // A vertical bar of the counts 0..markers, one step each, numbers on its right.
 void draw_count_bar(Canvas& canvas, double vx0, double vx1, double vy0, double vy1, int markers) {
   const int steps = markers + 1;
-  constexpr int kRowsPerStep = 8;
+  // Rows per step: the bilinear filter blurs only the edge of each step.
+  constexpr int kRowsPerStep = 32;
   Eigen::MatrixXd ramp(steps * kRowsPerStep, 1);
   for (int i = 0; i < ramp.rows(); ++i) ramp(i, 0) = markers - i / kRowsPerStep;
   plstream& pls = canvas.pls();
