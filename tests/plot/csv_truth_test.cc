@@ -61,6 +61,10 @@ class CsvTruth : public ::testing::TestWithParam<const char*> {
  protected:
   void SetUp() override {
     layout_ = example_layout(GetParam());
+    // The figures of the layout seen whole (those of a layout on its body:
+    // visibility_figures_test.cc).
+    layout_.visibility.reset();
+    layout_.workspace.reset();
     data_ = data_vectors(layout_);
     sdp::LayoutAnalysisOptions options;
     options.run_crosscheck = false;
