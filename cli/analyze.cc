@@ -127,8 +127,7 @@ void print_report(const AnalyzeArgs& args, const sdp::LayoutReport& report) {
     }
   } else {
     std::cout << "skipped ("
-              << (args.crosscheck ? r.crosscheck.skipped : std::string("--no-crosscheck"))
-              << ")\n";
+              << (args.crosscheck ? r.crosscheck.skipped : std::string("--no-crosscheck")) << ")\n";
   }
 }
 

@@ -4,8 +4,8 @@
 #include <vector>
 
 #include "json_fields.h"
-#include "vantage/io/printable.h"
 #include "vantage/analysis/common.h"
+#include "vantage/io/printable.h"
 
 namespace vantage::io {
 
