@@ -10,6 +10,10 @@ NO_NLOPT_DIR ?= build-without-nlopt
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 BUILD_TYPE ?= RelWithDebInfo
 FUZZ_SECONDS ?= 60
+# UNITY=ON compiles the libraries and the vantage command of `make test` and `make
+# test-sanitize` in unity batches: faster from scratch (.ci/run uses it), slower to rebuild
+# after an edit (the default, OFF, is for working on the code).
+UNITY ?= OFF
 FORMATS_FUZZ_SECONDS ?= 20
 # Sanitizer and fuzzer builds: -O1 with line tables only. They compile about 2.3x faster than
 # -O2 -g (analysis/src/perspective_start.cc under ASan+UBSan: 77 s against 177 s) and their
@@ -19,10 +23,10 @@ INSTRUMENTED_FLAGS ?= -O1 -g1 -DNDEBUG
 # Everything: what `make test` builds (optional parts off only when their dependency is missing).
 FULL_OPTIONS = -DVANTAGE_WITH_NLOPT=ON -DVANTAGE_WITH_PLOT=ON -DVANTAGE_BUILD_TESTS=ON \
   -DVANTAGE_BUILD_BENCH=ON -DVANTAGE_BUILD_EXAMPLES=ON -DVANTAGE_BUILD_VIEWER=ON \
-  -DVANTAGE_BUILD_PYTHON=ON -DVANTAGE_UNITY_BUILD=OFF
+  -DVANTAGE_BUILD_PYTHON=ON -DVANTAGE_UNITY_BUILD=$(UNITY)
 # What `make demo` runs: the `vantage` command without figures (vantage::plot needs PLplot, which
 # brings about 220 Debian packages), and no tests, benchmarks, examples, viewer or Python.
-# Unity batches: the lean build from scratch takes 306 s of CPU instead of 803 s (docs/benchmarks.md).
+# Unity batches: the lean build from scratch takes 407 s of CPU instead of 803 s (docs/benchmarks.md).
 LEAN_OPTIONS = -DVANTAGE_WITH_PLOT=OFF -DVANTAGE_BUILD_TESTS=OFF -DVANTAGE_BUILD_BENCH=OFF \
   -DVANTAGE_BUILD_EXAMPLES=OFF -DVANTAGE_BUILD_VIEWER=OFF -DVANTAGE_BUILD_PYTHON=OFF \
   -DVANTAGE_UNITY_BUILD=ON
@@ -70,6 +74,7 @@ bench: build
 # stderr at exit, and the CLI tests require an empty stderr from a successful run.
 test-sanitize: deps
 	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVANTAGE_SANITIZE=ON \
+	  -DVANTAGE_UNITY_BUILD=$(UNITY) \
 	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$(INSTRUMENTED_FLAGS)" \
 	  -DCMAKE_C_FLAGS_RELWITHDEBINFO="$(INSTRUMENTED_FLAGS)" \
 	  -DVANTAGE_BUILD_BENCH=OFF -DVANTAGE_BUILD_EXAMPLES=OFF -DVANTAGE_BUILD_VIEWER=OFF

@@ -4,9 +4,9 @@
 #include <vector>
 
 #include "json_fields.h"
-#include "visibility_fields.h"
-#include "vantage/io/printable.h"
 #include "vantage/analysis/common.h"
+#include "vantage/io/printable.h"
+#include "visibility_fields.h"
 
 namespace vantage::io {
 

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "global_search.h"
+#include "message_parts.h"
 #include "min_norm_point.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/scaling.h"
@@ -231,8 +232,7 @@ WorstViewpoint worst_viewpoint_result(const Eigen::Matrix3Xd& n, const SearchOut
       std::ostringstream out;
       out << "SDP confirmation disagrees: cell LMI " << to_string(result.confirmation.status)
           << " t = " << result.confirmation.t << " vs t = " << result.t;
-      if (!result.message.empty()) result.message += "; ";
-      result.message += out.str();
+      append_message(&result.message, out.str());
       if (certified) result.status = WorstViewpoint::Status::kSdpDisagrees;
     }
   }

@@ -45,7 +45,9 @@ TEST(ExtremeLayouts, OrthogonalTriadWithLengthsFrom1e80To1eMinus80) {
   EXPECT_GE(r.certificate.t_upper, reference::kTriadT - kTriadT);
   EXPECT_TRUE(r.certificate.certified);
   EXPECT_TRUE(r.trusted()) << r.message;
-  if (built_with_nlopt()) EXPECT_NEAR(r.crosscheck.t, reference::kTriadT, 1e-9);
+  if (built_with_nlopt()) {
+    EXPECT_NEAR(r.crosscheck.t, reference::kTriadT, 1e-9);
+  }
 }
 
 TEST(ExtremeLayouts, LengthsFrom1eMinus150To1e150AreDirections) {

@@ -40,11 +40,12 @@ Layout parse_csv_layout(std::string_view text, const std::string& source);
 
 /// The layout as CSV text that parse_csv_markers() reads back to the same markers, names and
 /// weights: a header "name,x,y,z,weight", then one row per marker, each number in the fewest
-/// of 15 to 17 significant digits that read back exactly; the layout's name and description go into leading '#' comment lines
-/// (the reader names a CSV layout after its file). An unnamed layout's markers are written as
-/// p0, p1, ... (Layout::entry_name). Throws InvalidArgument for what CSV cannot hold: a
-/// direction-mode layout ("vectors"), candidates, a name with a comma, a double quote, a line
-/// break, surrounding blanks or a leading '#' ("names[i]: ..."); and for an invalid layout.
+/// of 15 to 17 significant digits that read back exactly; the layout's name and description go into
+/// leading '#' comment lines (the reader names a CSV layout after its file). An unnamed layout's
+/// markers are written as p0, p1, ... (Layout::entry_name). Throws InvalidArgument for what CSV
+/// cannot hold: a direction-mode layout ("vectors"), candidates, a name with a comma, a double
+/// quote, a line break, surrounding blanks or a leading '#' ("names[i]: ..."); and for an invalid
+/// layout.
 std::string layout_to_csv(const Layout& layout);
 
 }  // namespace vantage::io

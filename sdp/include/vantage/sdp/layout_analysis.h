@@ -74,9 +74,9 @@ struct LayoutAnalysis {
   } paper_lmi;
 
   struct CrossCheckSummary {
-    bool ran = false;  ///< false with run_crosscheck = false or without NLopt: fields unset
+    bool ran = false;     ///< false with run_crosscheck = false or without NLopt: fields unset
     std::string skipped;  ///< why it did not run, when it did not ("built without NLopt", ...)
-    std::string method;  ///< "nlopt_multistart_cobyla" (when ran)
+    std::string method;   ///< "nlopt_multistart_cobyla" (when ran)
     double t = 0.0;
     bool agrees = false;
     std::string message;               ///< non-empty (loud) on disagreement
