@@ -54,7 +54,8 @@ nlohmann::ordered_json visibility_json(const VisibilityReport& r) {
   out["visible_markers"] = trackable ? Json(r.worst.visible_markers) : Json::array();
   out["certificate"] = {{"t_upper", number(r.worst.t_upper)},
                         {"t_lower", number(r.worst.t_lower)},
-                        {"certified", r.worst.certified()}};
+                        {"certified", r.worst.certified()},
+                        {"patches", r.worst.patches}};
   out["occlusion_resolution_deg"] =
       r.occlusion_resolution_deg ? Json(*r.occlusion_resolution_deg) : Json(nullptr);
   out["lost"] = {{"fraction", number(r.coverage.lost_fraction)},

@@ -19,7 +19,7 @@ using testing::run_vantage;
 using testing::ScratchDir;
 
 // The certificate's default tolerance.
-constexpr double kCertificate = 1e-9;
+constexpr double kCertificate = 1e-7;
 
 const std::string kSatellite =
     "'" + std::string(VANTAGE_SOURCE_DIR) + "/examples/layouts/satellite.json'";

@@ -23,7 +23,7 @@ namespace {
 using testing::kSeed;
 
 // The certificate's tolerance (VisibilitySearchOptions default).
-constexpr double kCertificate = 1e-9;
+constexpr double kCertificate = 1e-7;
 // Sampled values and the certified bounds are both exact evaluations of unit dot products.
 constexpr double kRounding = 1e-12;
 

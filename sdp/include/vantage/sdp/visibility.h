@@ -53,7 +53,7 @@ DirectionVisibility direction_visibility(const VisibilityProblem& problem,
 /// Options of visibility_worst_viewpoint().
 struct VisibilitySearchOptions {
   /// Required t_upper - t_lower of the certificate, in [1e-15, 1e-3].
-  double certificate_tolerance = 1e-9;
+  double certificate_tolerance = 1e-7;
   /// Attained values within this of the best are reported as further worst viewpoints, in
   /// [0, 1e-3].
   double tie_tolerance = 1e-9;
