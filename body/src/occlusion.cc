@@ -21,6 +21,15 @@ constexpr double kSurfaceOffset = 1e-6;
 constexpr double kMinResolution = 0.45 * kPi / 180.0;
 constexpr double kMaxResolution = 30.0 * kPi / 180.0;
 
+/// d turned toward the unit normal by `by` radians (0 <= by <= angle(d, normal)), in their plane.
+Eigen::Vector3d toward(const Eigen::Vector3d& d, const Eigen::Vector3d& normal, double by) {
+  const Eigen::Vector3d axis = d.cross(normal);
+  const double length = axis.norm();
+  if (length == 0.0) return d;  // d is along +-normal: the cone is all or nothing there
+  const Eigen::Vector3d k = axis / length;
+  return (d * std::cos(by) + k.cross(d) * std::sin(by)).normalized();
+}
+
 /// The cells one marker casts: those that may meet its cone (within a cell's radius of it).
 void cast_marker(const RayCaster& caster, const Eigen::Vector3d& origin,
                  const Eigen::Vector3d& normal, double cos_cone, int marker, int n,
@@ -38,7 +47,9 @@ void cast_marker(const RayCaster& caster, const Eigen::Vector3d& origin,
         const double radius = cube_patch_radius(u, v, 1.0 / n);
         const double angle = std::atan2(d.cross(normal).norm(), d.dot(normal));
         if (angle > cone + radius) continue;
-        directions.col(count++) = d;
+        // The cell's sample: its centre, or when the centre lies outside the cone the nearest
+        // direction of the cone (the part of the cell where the marker can be seen at all).
+        directions.col(count++) = angle <= cone ? d : toward(d, normal, angle - cone);
         cells.push_back((face * n + i) * n + j);
       }
     }

@@ -1,8 +1,9 @@
 #pragma once
 
 /// The occlusion grid of markers on a body: for each marker and each cell of the cube-face grid
-/// (occlusion_grid.h) inside the marker's cone, whether the ray from the marker along the cell's
-/// centre direction meets the mesh (docs/math.md §20).
+/// (occlusion_grid.h) that meets the marker's cone, whether the ray from the marker along the
+/// cell's sample direction (its centre, or the nearest direction of the cone when the centre
+/// lies outside it) meets the mesh (docs/math.md §20).
 
 #include <Eigen/Core>
 
