@@ -162,6 +162,33 @@ void draw_title(const Inset& inset, const ViewerSession& session,
   inset.list->AddText(ImVec2(inset.lo.x + 6, inset.lo.y + 21), colour, text);
 }
 
+// The markers with their normals: hidden ones grey and first, visible ones over them.
+void draw_markers(const Inset& inset, const ViewerSession& session, const VisibilityReadout& seen,
+                  const Mesh* mesh) {
+  const Layout& layout = session.layout();
+  const double size = mesh != nullptr ? mesh->size()
+                                      : Eigen::Vector3d(layout.entries.rowwise().maxCoeff() -
+                                                        layout.entries.rowwise().minCoeff())
+                                            .norm();
+  const Eigen::Matrix3Xd& normals = layout.visibility->normals;
+  // Hidden markers first, so that the visible ones are drawn over them.
+  for (const bool visible_pass : {false, true}) {
+    const std::vector<int>& group = visible_pass ? seen.visible : seen.hidden;
+    for (const int i : group) {
+      const Eigen::Vector3d p = layout.entries.col(i);
+      const ImVec2 q = inset.at(p);
+      const bool selected = i == session.selected;
+      draw_arrow(inset.list, q, inset.at(p + kNormalLength * size * normals.col(i)),
+                 visible_pass ? kNormalColour : kHiddenNormal);
+      const ImU32 fill = selected ? kSelectedColour : visible_pass ? kHalo : kHiddenMarker;
+      inset.list->AddCircleFilled(q, visible_pass ? 5.5f : 4.5f, IM_COL32(20, 20, 24, 255));
+      inset.list->AddCircleFilled(q, visible_pass ? 4.5f : 3.5f, fill);
+      inset.list->AddText(ImVec2(q.x + 6, q.y - 7), visible_pass ? kHalo : kHiddenMarker,
+                          layout.entry_name(i).c_str());
+    }
+  }
+}
+
 }  // namespace
 
 void draw_body_inset(const ViewerSession& session, const OrbitCamera& camera,
@@ -235,27 +262,7 @@ void draw_body_inset(const ViewerSession& session, const OrbitCamera& camera,
     inset.list->PopClipRect();
     return;
   }
-  const double size = mesh != nullptr ? mesh->size()
-                                      : Eigen::Vector3d(layout.entries.rowwise().maxCoeff() -
-                                                        layout.entries.rowwise().minCoeff())
-                                            .norm();
-  const Eigen::Matrix3Xd& normals = layout.visibility->normals;
-  // Hidden markers first, so that the visible ones are drawn over them.
-  for (const bool visible_pass : {false, true}) {
-    const std::vector<int>& group = visible_pass ? seen->visible : seen->hidden;
-    for (const int i : group) {
-      const Eigen::Vector3d p = layout.entries.col(i);
-      const ImVec2 q = inset.at(p);
-      const bool selected = i == session.selected;
-      draw_arrow(inset.list, q, inset.at(p + kNormalLength * size * normals.col(i)),
-                 visible_pass ? kNormalColour : kHiddenNormal);
-      const ImU32 fill = selected ? kSelectedColour : visible_pass ? kHalo : kHiddenMarker;
-      inset.list->AddCircleFilled(q, visible_pass ? 5.5f : 4.5f, IM_COL32(20, 20, 24, 255));
-      inset.list->AddCircleFilled(q, visible_pass ? 4.5f : 3.5f, fill);
-      inset.list->AddText(ImVec2(q.x + 6, q.y - 7), visible_pass ? kHalo : kHiddenMarker,
-                          layout.entry_name(i).c_str());
-    }
-  }
+  draw_markers(inset, session, *seen, mesh);
   inset.list->PopClipRect();
 }
 
