@@ -1,5 +1,6 @@
 #include "vantage/viewer/layout_document.h"
 
+#include <sstream>
 #include <utility>
 
 #include "vantage/analysis/common.h"
@@ -14,6 +15,14 @@ void check_index(const Layout& layout, int index) {
                           "]: no such entry (the layout has " +
                           std::to_string(layout.entries.cols()) + ")");
   }
+}
+
+// The layout's visibility, for an edit of `field`; InvalidArgument when it has none.
+MarkerVisibility& visibility_of(Layout& layout, const char* field) {
+  if (!layout.visibility) {
+    throw InvalidArgument(field, "the layout has no marker normals (no visibility to edit)");
+  }
+  return *layout.visibility;
 }
 
 }  // namespace
@@ -67,6 +76,37 @@ void LayoutDocument::remove_entry(int index) {
     next.names.push_back(layout_.entry_name(i));
     ++k;
   }
+  if (layout_.visibility) {
+    const MarkerVisibility& from = *layout_.visibility;
+    MarkerVisibility& to = *next.visibility;
+    to.normals.resize(3, n - 1);
+    to.cone_half_angle_deg.resize(n - 1);
+    for (Eigen::Index i = 0, k = 0; i < n; ++i) {
+      if (i == index) continue;
+      to.normals.col(k) = from.normals.col(i);
+      to.cone_half_angle_deg(k) = from.cone_half_angle_deg(i);
+      ++k;
+    }
+  }
+  commit(std::move(next), true);
+}
+
+void LayoutDocument::set_cone_half_angle_deg(double degrees) {
+  constexpr const char* kField = "visibility.cone_half_angle_deg";
+  Layout next = layout_;
+  MarkerVisibility& visibility = visibility_of(next, kField);
+  if (!(degrees > 0.0 && degrees <= 180.0)) {
+    std::ostringstream got;
+    got << degrees;
+    throw InvalidArgument(kField, "must be in (0, 180] degrees, got " + got.str());
+  }
+  visibility.cone_half_angle_deg.setConstant(degrees);
+  commit(std::move(next), true);
+}
+
+void LayoutDocument::set_min_visible(int k) {
+  Layout next = layout_;
+  visibility_of(next, "visibility.min_visible").min_visible = k;
   commit(std::move(next), true);
 }
 
