@@ -129,7 +129,4 @@ void BM_WorstViewpoint_VisibilityMesh(benchmark::State& state) {
 
 BENCHMARK(BM_WorstViewpoint_VisibilityBaseline)->Arg(30)->Arg(100)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_WorstViewpoint_Visibility)->Arg(30)->Arg(100)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_WorstViewpoint_VisibilityMesh)
-    ->Arg(30)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+BENCHMARK(BM_WorstViewpoint_VisibilityMesh)->Arg(30)->Unit(benchmark::kMillisecond)->UseRealTime();

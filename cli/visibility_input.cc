@@ -51,9 +51,22 @@ void VisibilityInput::add_options(CLI::App* sub) {
   sub->add_option("--workspace", workspace,
                   "AX,AY,AZ,DEG: only directions within DEG of the axis (a docking approach, a "
                   "fixed tracker)");
+  sub->add_flag("--seen-whole", seen_whole,
+                "ignore the file's normals, cones, body and workspace: every camera sees every "
+                "marker (the paper's model)");
 }
 
 void VisibilityInput::apply(Layout* layout) const {
+  if (seen_whole) {
+    if (!normals.empty() || cone_deg || min_visible || !body.empty() || !workspace.empty()) {
+      throw InvalidArgument("--seen-whole",
+                            "drops the body: it does not go with --normals, --cone-deg, "
+                            "--min-visible, --body or --workspace");
+    }
+    layout->visibility.reset();
+    layout->workspace.reset();
+    return;
+  }
   const bool any = !normals.empty() || cone_deg || min_visible || !body.empty();
   if (any && layout->mode != LayoutMode::kPoints) {
     throw InvalidArgument(!normals.empty() ? "--normals"

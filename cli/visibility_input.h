@@ -1,8 +1,9 @@
 #pragma once
 
 // The options that put a layout on its body (issue 18; docs/math.md §20): --normals radial,
-// --cone-deg, --min-visible, --body and --workspace. They override the layout file's
-// "normals", "visibility" and "workspace" fields; LayoutInput registers and applies them.
+// --cone-deg, --min-visible, --body and --workspace, and --seen-whole, which drops them all. They
+// override the layout file's "normals", "visibility" and "workspace" fields; LayoutInput registers
+// and applies them.
 
 #include <CLI/CLI.hpp>
 #include <optional>
@@ -16,8 +17,9 @@ struct VisibilityInput {
   std::string normals;  ///< "" (the file's) or "radial"
   std::optional<double> cone_deg;
   std::optional<int> min_visible;
-  std::string body;       ///< a mesh path, as typed (relative to the working directory)
-  std::string workspace;  ///< "AX,AY,AZ,DEG", as typed
+  std::string body;         ///< a mesh path, as typed (relative to the working directory)
+  std::string workspace;    ///< "AX,AY,AZ,DEG", as typed
+  bool seen_whole = false;  ///< --seen-whole: drop the file's normals, cones, body, workspace
 
   void add_options(CLI::App* sub);
 

@@ -1,6 +1,7 @@
 #include "vantage/analysis/marker_visibility.h"
 
 #include <cmath>
+#include <limits>
 
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/internal/checks.h"
@@ -20,7 +21,8 @@ void validate_visibility(const MarkerVisibility& v, Eigen::Index markers) {
       throw InvalidArgument("normals", static_cast<long>(i), "not finite");
     }
     if (!(std::abs(v.normals.col(i).norm() - 1.0) <= kUnit)) {
-      throw InvalidArgument("normals", static_cast<long>(i), "must be a unit vector (zero length?)");
+      throw InvalidArgument("normals", static_cast<long>(i),
+                            "must be a unit vector (zero length?)");
     }
   }
   if (v.cone_half_angle_deg.size() != markers) {
@@ -37,9 +39,9 @@ void validate_visibility(const MarkerVisibility& v, Eigen::Index markers) {
     }
   }
   if (v.min_visible < 3 || v.min_visible > markers) {
-    throw InvalidArgument("visibility.min_visible",
-                          "must be in [3, " + std::to_string(markers) + "] (the markers), got " +
-                              std::to_string(v.min_visible));
+    throw InvalidArgument("visibility.min_visible", "must be in [3, " + std::to_string(markers) +
+                                                        "] (the markers), got " +
+                                                        std::to_string(v.min_visible));
   }
   if (v.body) v.body->validate();
 }
@@ -51,6 +53,13 @@ void validate_workspace(const LayoutWorkspace& w) {
   if (!(w.half_angle_deg > 0.0 && w.half_angle_deg <= 180.0)) {
     throw InvalidArgument("workspace.half_angle_deg", "must be in (0, 180] degrees");
   }
+}
+
+Eigen::Vector3d unit_normal(const Eigen::Vector3d& v) {
+  const double length = v.norm();
+  if (length == 0.0 || !std::isfinite(length)) return Eigen::Vector3d::Zero();
+  if (std::abs(length - 1.0) <= 4.0 * std::numeric_limits<double>::epsilon()) return v;
+  return v / length;
 }
 
 Eigen::Matrix3Xd radial_normals(const Eigen::Matrix3Xd& points) {

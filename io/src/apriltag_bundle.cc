@@ -185,7 +185,7 @@ AprilTagMarkers read_markers(std::string_view text, const std::string& source,
     for (int c = 0; c < per_tag; ++c) {
       const Eigen::Index j = static_cast<Eigen::Index>(k) * per_tag + c;
       layout.entries.col(j) = corners ? Eigen::Vector3d(R_bundle_tag * corner_tag[c] + p) : p;
-      normals.col(j) = R_bundle_tag.col(2);
+      normals.col(j) = unit_normal(R_bundle_tag.col(2).normalized());
       out.tag_ids.push_back(static_cast<int>(id));
       out.corners.push_back(corners ? c : -1);
       layout.names.push_back("tag" + std::to_string(id) +

@@ -196,9 +196,9 @@ CsvMarkers parse_csv_markers(std::string_view text, const std::string& source) {
       }
     }
     if (with_normals) {
-      const double length = normals.col(static_cast<Eigen::Index>(k)).norm();
-      if (!(length > 0.0)) fail(source, where(row, name) + ", nx,ny,nz: zero length");
-      normals.col(static_cast<Eigen::Index>(k)) /= length;
+      const Eigen::Vector3d normal = unit_normal(normals.col(static_cast<Eigen::Index>(k)));
+      if (normal.isZero()) fail(source, where(row, name) + ", nx,ny,nz: zero length");
+      normals.col(static_cast<Eigen::Index>(k)) = normal;
     }
     out.names.push_back(name);
     labels.push_back(where(row, name));

@@ -44,7 +44,8 @@ std::optional<MarkerVisibility> read_visibility(const nlohmann::json& root,
   }
   MarkerVisibility out;
   const Eigen::Matrix3Xd given = read_vectors<3>(root["normals"], source, "normals");
-  out.normals = unit_directions(given);
+  out.normals.resize(3, given.cols());
+  for (Eigen::Index i = 0; i < given.cols(); ++i) out.normals.col(i) = unit_normal(given.col(i));
   for (Eigen::Index i = 0; i < given.cols(); ++i) {
     if (out.normals.col(i).isZero()) {
       fail(source, "normals[" + std::to_string(i) + "]: zero length (give the outward normal)");

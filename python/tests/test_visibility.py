@@ -5,6 +5,7 @@ and the loader reads normals, visibility and workspace as the JSON file gives th
 import json
 
 import numpy as np
+import pytest
 
 from conftest import LAYOUTS, assert_same, cli_json
 from test_simulate import without_times
@@ -81,3 +82,19 @@ def test_the_loader_reads_normals_visibility_and_workspace_as_the_json_does(vant
     np.testing.assert_array_equal(v.workspace.axis, [0.0, 0.0, 1.0])  # normalised on reading
     assert v.workspace.half_angle_deg == 60.0
     assert v.worst_viewpoint @ v.workspace.axis >= np.cos(np.radians(60.0)) - DOT_ROUNDING
+
+
+def test_a_layout_built_in_python_on_its_body_is_the_files(vantage):
+    spec = json.loads((LAYOUTS / "docking_target.json").read_text())
+    built = vantage.Layout(points=np.array(spec["points"]), normals=np.array(spec["normals"]),
+                           visibility=spec["visibility"], workspace=spec["workspace"])
+    loaded = vantage.load_layout(str(LAYOUTS / "docking_target.json"))
+    np.testing.assert_array_equal(built.normals, loaded.normals)
+    assert_same(vantage.analyze(built).to_dict()["visibility"],
+                vantage.analyze(loaded).to_dict()["visibility"])
+    assert vantage.Layout(points=np.array(spec["points"])).normals is None
+    with pytest.raises(ValueError, match="visibility.min_visible"):
+        vantage.Layout(points=np.array(spec["points"]), normals=np.array(spec["normals"]),
+                       visibility={"min_visible": 2})
+    with pytest.raises(ValueError, match="normals"):
+        vantage.Layout(points=np.array(spec["points"]), visibility={"min_visible": 3})

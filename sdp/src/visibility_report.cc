@@ -107,10 +107,10 @@ VisibilityProblem visibility_problem(const Layout& layout, const OcclusionGrid* 
   p.normals = v.normals;
   p.cos_cone.resize(v.cone_half_angle_deg.size());
   for (Eigen::Index i = 0; i < p.cos_cone.size(); ++i) {
-    // cos(180 deg) is -1 exactly: a full cone sees every direction.
-    p.cos_cone(i) = v.cone_half_angle_deg(i) >= 180.0
-                        ? -1.0
-                        : std::cos(v.cone_half_angle_deg(i) / kDegreesPerRadian);
+    // cos(90 deg) is 0 exactly, so that opposite faces' cones meet at their edge (std::cos
+    // gives 6e-17: a sliver no marker sees); a full cone sees every direction.
+    const double cone = v.cone_half_angle_deg(i);
+    p.cos_cone(i) = cone >= 180.0 ? -1.0 : cone == 90.0 ? 0.0 : std::cos(cone / kDegreesPerRadian);
   }
   p.min_visible = v.min_visible;
   if (layout.workspace && layout.workspace->half_angle_deg < 180.0) {

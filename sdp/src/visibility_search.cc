@@ -52,6 +52,19 @@ constexpr int kMaxFreeUnits = 48;
 // Up to this many mixed units, bound 2' takes the best of every choice of units (exact).
 constexpr int kMaxEnumeratedUnits = 12;
 
+// Whether the hidden sides {a : n.a < c} of two cones do not meet: open caps about -n of radius
+// pi - theta, apart when their centres are at least the sum of the radii apart. Opposite normals
+// are decided exactly (n.a < c1 and n.a > -c2 never both hold when c1 <= -c2); otherwise only a
+// margin beyond rounding counts.
+bool hidden_sides_apart(const Eigen::Vector3d& n1, double c1, const Eigen::Vector3d& n2,
+                        double c2) {
+  if (n1 == -n2) return c1 + c2 <= 0.0;
+  constexpr double kMargin = 1e-12;
+  const double between = std::atan2(n1.cross(n2).norm(), n1.dot(n2));
+  const double t1 = std::acos(std::clamp(c1, -1.0, 1.0)), t2 = std::acos(std::clamp(c2, -1.0, 1.0));
+  return between >= 2.0 * kPi - t1 - t2 + kMargin;
+}
+
 double sin_plus(double s, double cos_r, double sin_r) {
   if (s >= cos_r) return 1.0;
   return s * cos_r + std::sqrt(std::max(0.0, 1.0 - s * s)) * sin_r;
@@ -95,6 +108,14 @@ class VisibilitySearch {
           cone_class_[i] = cone_class_[j];
           break;
         }
+      }
+    }
+    hidden_apart_.assign(static_cast<std::size_t>(n_) * n_, 0);
+    for (int i = 0; i < n_; ++i) {
+      for (int j = 0; j < n_; ++j) {
+        hidden_apart_[static_cast<std::size_t>(cone_class_[i]) * n_ + cone_class_[j]] =
+            hidden_sides_apart(problem.normals.col(i), problem.cos_cone(i), problem.normals.col(j),
+                               problem.cos_cone(j));
       }
     }
     cone_angle_.resize(n_);
@@ -336,8 +357,24 @@ class VisibilitySearch {
       ++unit_size[static_cast<std::size_t>(unit_of[i])];
     }
     const int need = problem_.min_visible - certain;
-    if (need <= 0) return 1.0;
     const int units = static_cast<int>(unit_size.size());
+    // Units whose cones' hidden sides do not meet: everywhere one of them is seen (opposite
+    // faces with 90-degree cones). A choice must hold one of each such pair.
+    std::vector<int> unit_class(static_cast<std::size_t>(units), -1);
+    for (int i = 0; i < n_; ++i) {
+      if (seen[i] == Seen::kConeEdge) unit_class[unit_of[i]] = cone_class_[i];
+    }
+    std::vector<std::pair<int, int>> apart;
+    for (int x = 0; x < units && units <= kMaxEnumeratedUnits; ++x) {
+      for (int y = x + 1; y < units; ++y) {
+        if (unit_class[x] >= 0 && unit_class[y] >= 0 &&
+            hidden_apart_[static_cast<std::size_t>(unit_class[x]) * n_ + unit_class[y]]) {
+          apart.emplace_back(x + 1, y + 1);
+        }
+      }
+    }
+    if (need <= 0 && apart.empty()) return 1.0;
+    if (need <= 0 && units > kMaxEnumeratedUnits) return 1.0;
     if (certain == 0 && units > std::max(kMaxFreeUnits, kMaxEnumeratedUnits)) return 1.0;
     // w(U, V): the least pair bound between units U and V (U == V: within U); -1 for a certain
     // marker's unit index. Pairs never listed keep 1.
@@ -359,10 +396,17 @@ class VisibilitySearch {
       // markers' pairs with them and their own pairs, at its best. Adding a unit to a choice
       // that is large enough only adds pairs, so the search stops there.
       std::vector<int> chosen;
+      std::vector<char> in(static_cast<std::size_t>(side), 0);
+      auto covers = [&] {
+        for (const auto& [x, y] : apart) {
+          if (!in[x] && !in[y]) return false;
+        }
+        return true;
+      };
       double best = 0.0;
       std::function<void(int, int, double)> choose = [&](int next, int size, double value) {
         if (value <= best) return;
-        if (size >= need) {
+        if (size >= need && covers()) {
           best = value;
           return;
         }
@@ -370,7 +414,9 @@ class VisibilitySearch {
           double with = std::min({value, weight(0, x), weight(x, x)});
           for (int y : chosen) with = std::min(with, weight(x, y));
           chosen.push_back(x);
+          in[x] = 1;
           choose(x + 1, size + unit_size[static_cast<std::size_t>(x - 1)], with);
+          in[x] = 0;
           chosen.pop_back();
         }
       };
@@ -508,7 +554,8 @@ class VisibilitySearch {
   std::vector<std::pair<int, int>> pairs_;
   Eigen::Matrix3Xd u_;
   std::vector<double> cone_angle_;
-  std::vector<int> cone_class_;  // markers of one normal and one cone share a class
+  std::vector<int> cone_class_;     // markers of one normal and one cone share a class
+  std::vector<char> hidden_apart_;  // by class pair: their hidden sides do not meet
   double workspace_angle_ = kPi;
   std::vector<Candidate> candidates_;
   std::priority_queue<Patch> open_;

@@ -127,6 +127,10 @@ TEST(VisibilityWorstViewpoint, BoxWithFaceMarkersAgainstDenseSampling) {
     SCOPED_TRACE(cone);
     expect_certified_against_sampling(box(cone), 200000);
   }
+  // 90 degrees: opposite faces' cones share their edge, and every direction sees one of them.
+  VisibilityProblem half_spaces = box(90.0);
+  half_spaces.cos_cone.setZero();
+  expect_certified_against_sampling(half_spaces, 200000);
 }
 
 TEST(VisibilityWorstViewpoint, RandomMarkersWithRandomNormalsAgainstDenseSampling) {

@@ -146,7 +146,9 @@ TEST(VisibleViews, EveryDrawnViewIsTrackableAndTheImageHoldsExactlyItsVisibleMar
         accepted += 1;
       }
       EXPECT_EQ(accepted, 400);
-      if (cone == kNarrowConeDeg && !cap) EXPECT_GT(rejected, 0) << "some directions are lost";
+      if (cone == kNarrowConeDeg && !cap) {
+        EXPECT_GT(rejected, 0) << "some directions are lost";
+      }
     }
   }
 }

@@ -64,31 +64,7 @@ void LayoutDocument::set_entry(int index, const Eigen::Vector3d& value, bool con
 
 void LayoutDocument::remove_entry(int index) {
   check_index(layout_, index);
-  const Eigen::Index n = layout_.entries.cols();
-  Layout next = layout_;
-  next.entries.resize(3, n - 1);
-  next.weights.resize(n - 1);
-  next.names.clear();
-  for (Eigen::Index i = 0, k = 0; i < n; ++i) {
-    if (i == index) continue;
-    next.entries.col(k) = layout_.entries.col(i);
-    next.weights(k) = layout_.weights(i);
-    next.names.push_back(layout_.entry_name(i));
-    ++k;
-  }
-  if (layout_.visibility) {
-    const MarkerVisibility& from = *layout_.visibility;
-    MarkerVisibility& to = *next.visibility;
-    to.normals.resize(3, n - 1);
-    to.cone_half_angle_deg.resize(n - 1);
-    for (Eigen::Index i = 0, k = 0; i < n; ++i) {
-      if (i == index) continue;
-      to.normals.col(k) = from.normals.col(i);
-      to.cone_half_angle_deg(k) = from.cone_half_angle_deg(i);
-      ++k;
-    }
-  }
-  commit(std::move(next), true);
+  commit(without_entry(layout_, index), true);
 }
 
 void LayoutDocument::set_cone_half_angle_deg(double degrees) {

@@ -147,10 +147,6 @@ SaveOutcome ViewerSession::save(const std::string& path, bool overwrite) {
 }
 
 bool ViewerSession::step_augmenter() {
-  if (layout().visibility) {
-    fail("augmenter: not available for markers with normals (it would add a marker without one)");
-    return false;
-  }
   augment_requested_ = true;
   inform("augmenter: searching for the next " +
          std::string(layout().mode == LayoutMode::kPoints ? "marker" : "vector") + "...");
