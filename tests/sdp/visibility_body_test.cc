@@ -150,7 +150,8 @@ TEST(VisibilityBody, PanelShadowIsWhereTheGeometrySaysAndOnlyTakesAway) {
       const bool truth = under_the_panel(p.col(i), a);
       // The plane test with the direction tilted by two cells either way must agree.
       bool near_edge = false;
-      for (const Eigen::Vector3d tilt : {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0)}) {
+      for (int axis : {0, 1}) {
+        const Eigen::Vector3d tilt = Eigen::Vector3d::Unit(axis);
         for (double sign : {-1.0, 1.0}) {
           const Eigen::Vector3d b =
               Eigen::AngleAxisd(sign * 2 * resolution, tilt.cross(a).normalized()) * a;
