@@ -152,10 +152,14 @@ FIGURE_EXPERIMENTS = bound:bound mcinroy-orientation:mcinroy_orientation \
 .PHONY: figures
 figures: build
 	mkdir -p $(FIGURES_DIR)
-	$(BUILD_DIR)/cli/vantage design examples/layouts/satellite.json --add 2 --json \
+	$(BUILD_DIR)/cli/vantage design examples/layouts/satellite.json --seen-whole --add 2 --json \
 	  > $(BUILD_DIR)/satellite_design.json
-	$(BUILD_DIR)/cli/vantage plot examples/layouts/satellite.json --out $(FIGURES_DIR) \
-	  --design $(BUILD_DIR)/satellite_design.json
+	$(BUILD_DIR)/cli/vantage plot examples/layouts/satellite.json --seen-whole \
+	  --out $(FIGURES_DIR) --design $(BUILD_DIR)/satellite_design.json
+	rm -rf $(BUILD_DIR)/satellite_body && $(BUILD_DIR)/cli/vantage plot \
+	  examples/layouts/satellite.json --out $(BUILD_DIR)/satellite_body --only viewpoint_map,visibility
+	cp $(BUILD_DIR)/satellite_body/viewpoint_map.png $(FIGURES_DIR)/satellite_visibility.png
+	cp $(BUILD_DIR)/satellite_body/visibility.png $(FIGURES_DIR)/satellite_visible_markers.png
 	set -e; for entry in $(FIGURE_EXPERIMENTS); do \
 	  name=$${entry%%:*}; dir=$(EXPERIMENTS_DIR)/$$name; \
 	  rm -rf $$dir; \

@@ -145,6 +145,23 @@ void print_dropout(const sdp::LayoutReport& report) {
   }
 }
 
+// Markers far from the body's surface: the mesh may not be their body (or not in their units).
+std::string off_body_warning(const sdp::LayoutReport& report) {
+  const sdp::VisibilityReport& v = *report.visibility;
+  std::string names;
+  double farthest = 0.0;
+  for (int i : v.off_body) {
+    names += (names.empty() ? "" : ", ") + report.entry_label(i);
+    farthest = std::max(farthest, v.distance_to_body[static_cast<std::size_t>(i)]);
+  }
+  return "visibility.body: " + std::to_string(v.off_body.size()) +
+         " marker(s) lie off the "
+         "body's surface (" +
+         names + "; the farthest " + format_number(farthest, 4) + " away, more than " +
+         format_number(100 * sdp::VisibilityReport::kOffSurface, 2) +
+         " % of the body's size): is the mesh the markers' body, in their units and frame?";
+}
+
 int run_analyze(const AnalyzeArgs& args) {
   if (args.swaps < 1) throw InvalidArgument("--swaps", "must be >= 1");
   const Layout layout = args.input.read(args.file, args.allow_large);
@@ -165,6 +182,9 @@ int run_analyze(const AnalyzeArgs& args) {
     Progress progress("analyze", !args.json && !args.quiet);  // cleared before the report
     options.analysis.progress = progress.callback();
     report = against_source(args.file, [&] { return sdp::analyze_layout(layout, options); });
+  }
+  if (report.visibility && !report.visibility->off_body.empty()) {
+    std::cerr << "vantage: warning: " << off_body_warning(report) << std::endl;
   }
   if (args.json) {
     std::cout << sdp::to_json(report) << std::endl;

@@ -20,6 +20,7 @@ void LayoutInput::add_options(CLI::App* sub, const std::string& format_flag) {
   sub->add_option("--bundle", bundle,
                   "AprilTag bundles: the name of the bundle to read (needed when the file has "
                   "several)");
+  visibility.add_options(sub);
 }
 
 Layout LayoutInput::read(const std::string& path, bool allow_large) const {
@@ -29,7 +30,9 @@ Layout LayoutInput::read(const std::string& path, bool allow_large) const {
   options.apriltag.tag_points = io::tag_points_from_string(tag_points, "--tag-points");
   options.apriltag.bundle = bundle;
   try {
-    return io::load_layout(path, options);
+    Layout layout = io::load_layout(path, options);
+    visibility.apply(&layout);
+    return layout;
   } catch (const io::FileTooLarge& e) {
     throw io::FileTooLarge(std::string(e.what()) +
                            (allow_large ? "" : " (--allow-large raises it to 1 GiB)"));

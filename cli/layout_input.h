@@ -8,6 +8,7 @@
 #include <string>
 
 #include "vantage/analysis/layout.h"
+#include "visibility_input.h"
 
 namespace vantage::cli {
 
@@ -18,6 +19,8 @@ struct LayoutInput {
   std::string bundle;
   /// The option that sets `format`, as registered (named in its errors).
   std::string format_option = "--format";
+  /// The body options (--normals, --cone-deg, --min-visible, --body, --workspace).
+  VisibilityInput visibility;
 
   /// Adds --format (or `format_flag`, for a subcommand whose --format is something else),
   /// --tag-points and --bundle to `sub`.

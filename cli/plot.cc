@@ -164,7 +164,7 @@ int run_plot(const PlotArgs& args) {
   for (const std::string& name : args.only) {
     if (!plot::is_figure_name(name)) {
       bad("--only: unknown figure \"" + name +
-          "\" (viewpoint_map, dropout, error_surface, vectors, design)");
+          "\" (viewpoint_map, visibility, dropout, error_surface, vectors, design)");
     }
     if (name == "design" && args.design.empty()) {
       bad("--only: the design figure needs --design DESIGN.json (`vantage design --json`)");
@@ -172,12 +172,17 @@ int run_plot(const PlotArgs& args) {
   }
   options.only = args.only;
   try {
-    plot::selected_figures(options, !args.design.empty());
+    plot::selected_figures(options, !args.design.empty(), true);
   } catch (const InvalidArgument& e) {
     throw e.renamed("--" + e.field(), e.index());
   }
   check_figure_directory("--out", args.out);
   const Layout layout = args.input.read(args.file);
+  const bool on_body = layout.visibility.has_value();
+  if (!on_body && std::find(args.only.begin(), args.only.end(), "visibility") != args.only.end()) {
+    bad("--only: the visibility figure needs markers with normals (\"normals\" in " + args.file +
+        ", or --normals radial)");
+  }
   std::unique_ptr<plot::DesignCurve> design;
   if (!args.design.empty()) {
     design = std::make_unique<plot::DesignCurve>(read_design_curve(args.design));
@@ -186,7 +191,7 @@ int run_plot(const PlotArgs& args) {
   create_figure_directory("--out", args.out);
 
   sdp::LayoutReportOptions report_options;
-  report_options.dropout = plot::needs_dropout(options, design != nullptr);
+  report_options.dropout = plot::needs_dropout(options, design != nullptr, on_body);
   report_options.dropout_options.threads = options.figure.threads;
   const sdp::LayoutReport report =
       against_source(args.file, [&] { return sdp::analyze_layout(layout, report_options); });
@@ -208,6 +213,11 @@ int run_plot(const PlotArgs& args) {
     out["threshold_deg"] = options.threshold_deg;
     out["pbar_min"] = figures.pbar_min;
     out["max_worst_case_error_deg"] = figures.max_worst_case_error_deg;
+    if (figures.visibility_max_worst_case_error_deg) {
+      out["visibility"] = {
+          {"max_worst_case_error_deg", *figures.visibility_max_worst_case_error_deg},
+          {"trackable_fraction", *figures.trackable_fraction}};
+    }
     out["status"] = certified ? "certified" : "not_certified";
     if (!figures.message.empty()) out["message"] = figures.message;
     out["figures"] = figure_files_json(figures.files);
@@ -215,8 +225,15 @@ int run_plot(const PlotArgs& args) {
   } else {
     std::cout << "vantage plot: " << (layout.name.empty() ? args.file : layout.name) << "\n"
               << "p-bar_min " << format_number(figures.pbar_min, 6) << ", max worst-case error "
-              << format_number(figures.max_worst_case_error_deg, 6) << " deg\n"
-              << figures.files.size() << " figure" << (figures.files.size() == 1 ? "" : "s")
+              << format_number(figures.max_worst_case_error_deg, 6) << " deg"
+              << (figures.visibility_max_worst_case_error_deg ? " seen whole" : "") << "\n";
+    if (figures.visibility_max_worst_case_error_deg) {
+      std::cout << "on the body: max worst-case error "
+                << format_number(*figures.visibility_max_worst_case_error_deg, 6)
+                << " deg, trackable " << format_number(100.0 * *figures.trackable_fraction, 4)
+                << " %\n";
+    }
+    std::cout << figures.files.size() << " figure" << (figures.files.size() == 1 ? "" : "s")
               << " written (" << plot::to_string(options.figure.format) << " + csv):\n";
     for (const plot::FigureFiles& f : figures.files) {
       std::cout << "  " << f.image.string() << "\n  " << f.csv.string() << "\n";
@@ -236,8 +253,9 @@ Command add_plot_command(CLI::App& root) {
   CLI::App* sub = root.add_subcommand(
       "plot",
       "Figures of a layout (PNG, SVG or PDF, each with a CSV of its numbers): viewpoint_map, "
-      "dropout, error_surface, vectors, and design (with --design); or, with --experiment NAME, "
-      "the figures of a `vantage experiment NAME --out DIR` directory");
+      "visibility (markers with normals), dropout, error_surface, vectors, and design (with "
+      "--design); or, with --experiment NAME, the figures of a `vantage experiment NAME --out "
+      "DIR` directory");
   sub->add_option("LAYOUT", args->file,
                   "layout file (.json vectors or points, .csv markers, .yaml AprilTag bundle)");
   args->input.add_options(sub, "--layout-format");
@@ -251,13 +269,15 @@ Command add_plot_command(CLI::App& root) {
       ->required();
   sub->add_option("--format", args->format, "png, svg or pdf")->capture_default_str();
   sub->add_option("--only", args->only,
-                  "comma-separated figures to write: viewpoint_map, dropout, error_surface, "
-                  "vectors, design (default: all; design only with --design)")
+                  "comma-separated figures to write: viewpoint_map, visibility, dropout, "
+                  "error_surface, vectors, design (default: all; visibility only for markers "
+                  "with normals, design only with --design)")
       ->delimiter(',');
   sub->add_option("--size", args->size, "WxH in pixels (points for SVG/PDF)")
       ->capture_default_str();
   sub->add_option("--threshold-deg", args->threshold_deg,
-                  "viewpoint_map: contour of the directions whose worst-case error exceeds X deg")
+                  "viewpoint_map: contour of the directions whose worst-case error exceeds X deg "
+                  "(layouts without normals)")
       ->capture_default_str();
   sub->add_option("--design", args->design,
                   "DESIGN.json written by `vantage design ... --json`: adds the design figure");

@@ -18,6 +18,7 @@
 #include "vantage/analysis/layout.h"
 #include "vantage/io/text_file.h"
 #include "vantage/simulate/layout_simulation.h"
+#include "vantage/simulate/visibility_json.h"
 
 namespace vantage::cli {
 namespace {
@@ -168,6 +169,31 @@ std::string summary_row(const std::string& what, const Summary& s) {
          "  p95 " + format_number(s.p95, 4) + "  max " + format_number(s.max, 4) + "\n";
 }
 
+/// The check under visibility (a layout with normals).
+void print_visibility(const VisibilityCheck& v) {
+  const VisibilitySetup& s = v.setup;
+  std::cout << "\nvisibility (" << s.model() << ", min_visible " << s.min_visible
+            << "): views drawn from the trackable directions ("
+            << format_number(100.0 * s.trackable_fraction, 4) << " % of the "
+            << (s.workspace ? "workspace" : "sphere") << "), " << v.draws
+            << " directions drawn for " << v.trials << " views; markers per image "
+            << format_number(v.visible_markers.median, 4) << " median, "
+            << format_number(v.visible_markers.max, 4) << " max\n";
+  if (!v.bound_checked) return;
+  std::cout << "bound check under visibility (noise-free affine images of the visible markers): "
+            << (v.passed ? "passed" : "FAILED") << "\n"
+            << "  p-bar_min " << format_number(s.pbar_min, 9) << ", bound arccos p-bar_min "
+            << format_number(v.bound_deg, 9)
+            << " deg (certified worst viewpoint under visibility)\n"
+            << "  max error " << format_number(v.max_error_deg, 9) << " deg, max_ratio "
+            << format_number(v.max_ratio, 12) << "; largest t of a view "
+            << format_number(v.max_view_t, 9) << " (t_upper " << format_number(s.t_upper, 9)
+            << ")\n"
+            << "  per view: max error / arccos p-bar(view) " << format_number(v.max_view_ratio, 12)
+            << ", max |measured - Eq. 26| " << format_number(v.max_abs_eq26_mismatch_deg, 3)
+            << " deg\n";
+}
+
 void print_text(const Report& report) {
   std::cout << "vantage simulate: " << report.config["layout"]["name"].get<std::string>() << " ("
             << report.config["layout"]["mode"].get<std::string>() << "), " << report.run.trials
@@ -185,6 +211,7 @@ void print_text(const Report& report) {
     for (const auto& [status, count] : s.by_status) std::cout << status << " " << count << "  ";
     std::cout << "\n";
   }
+  if (report.has_visibility) print_visibility(report.visibility);
   if (!report.has_bound) return;
   const BoundCheck& b = report.bound;
   std::cout << "\nbound check (noise-free affine images, every data vector, Eq. 26 / Eq. 30): "
@@ -214,7 +241,13 @@ Report run_layout(const SimulateArgs& args, io::AtomicTextFile* csv) {
       csv->write(csv_rows(run.names, trial, errors));
     };
   }
-  return simulate::simulate_layout(layout, options);
+  try {
+    return simulate::simulate_layout(layout, options);
+  } catch (const InvalidArgument& e) {
+    // The layout's body: name the file (the options name themselves).
+    if (e.field() == "visibility") throw e.against(args.file);
+    throw;
+  }
 }
 
 Json read_json_file(const std::string& path, bool allow_large) {
@@ -227,9 +260,56 @@ Json read_json_file(const std::string& path, bool allow_large) {
   }
 }
 
+/// The setup fields of a shard's "visibility" object (the rest summarises its trials).
+Json visibility_setup_part(const Json& shard, const std::string& file) {
+  if (!shard.contains("visibility") || !shard["visibility"].is_object()) {
+    throw InvalidArgument(file + ": visibility: missing (the layout has normals)");
+  }
+  Json part = Json::object();
+  for (const char* key : {"model", "min_visible", "workspace", "occlusion_resolution_deg",
+                          "trackable_fraction", "coverage_samples", "worst_viewpoint",
+                          "worst_visible_markers", "t_upper", "t_lower", "pbar_min"}) {
+    if (shard["visibility"].contains(key)) part[key] = shard["visibility"][key];
+  }
+  return part;
+}
+
+/// The check under visibility of merged shards, in trial order.
+void merge_visibility(const std::vector<std::string>& files, const std::vector<Json>& setups,
+                      const std::vector<MonteCarloRun>& runs,
+                      const std::vector<std::vector<VisibilityTrial>>& trials, Report& report) {
+  for (std::size_t s = 1; s < setups.size(); ++s) {
+    if (setups[s] != setups[0]) {
+      throw InvalidArgument(files[s] + ": visibility: differs from " + files[0] +
+                            " (not a shard of the same run)");
+    }
+  }
+  std::vector<std::pair<long, const VisibilityTrial*>> ordered;
+  for (std::size_t s = 0; s < runs.size(); ++s) {
+    if (trials[s].size() != runs[s].trial_index.size()) {
+      throw InvalidArgument(files[s] + ": per_trial.visibility: one entry per trial expected");
+    }
+    for (std::size_t k = 0; k < trials[s].size(); ++k) {
+      ordered.push_back({runs[s].trial_index[k], &trials[s][k]});
+    }
+  }
+  std::sort(ordered.begin(), ordered.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  VisibilityCheckAccumulator check(visibility_setup_from_json(setups[0], files[0]),
+                                   report.config["camera"] == "affine");
+  for (const auto& [trial, result] : ordered) {
+    check.add(trial, *result);
+    report.visibility_trials.push_back(*result);
+  }
+  report.has_visibility = true;
+  report.visibility = check.result();
+}
+
 Report merge_files(const std::vector<std::string>& files, bool allow_large) {
   std::vector<MonteCarloRun> runs;
   std::vector<std::vector<BoundTrial>> bounds;
+  std::vector<Json> visibility_setups;
+  std::vector<std::vector<VisibilityTrial>> visibility_trials;
   Json config;
   for (const std::string& file : files) {
     const Json shard = read_json_file(file, allow_large);
@@ -255,6 +335,14 @@ Report merge_files(const std::vector<std::string>& files, bool allow_large) {
         throw InvalidArgument(file + ": per_trial.bound_check: one entry per trial expected");
       }
     }
+    if (config["layout"].contains("normals")) {
+      visibility_setups.push_back(visibility_setup_part(shard, file));
+      if (!shard["per_trial"].contains("visibility")) {
+        throw InvalidArgument(file + ": per_trial.visibility: missing (the layout has normals)");
+      }
+      visibility_trials.push_back(
+          visibility_trials_from_json(shard["per_trial"]["visibility"], file));
+    }
   }
   Report report;
   report.config = config;
@@ -278,6 +366,9 @@ Report merge_files(const std::vector<std::string>& files, bool allow_large) {
         prepare_bound_layout(entries, config["layout"]["mode"].get<std::string>() == "vectors");
     report.has_bound = true;
     report.bound = summarize_bound_check(layout, report.bound_trials);
+  }
+  if (!visibility_setups.empty()) {
+    merge_visibility(files, visibility_setups, runs, visibility_trials, report);
   }
   return report;
 }
@@ -309,6 +400,11 @@ int run_simulate(const SimulateArgs& args) {
   }
   if (report.has_bound && !report.bound.passed) {
     std::cerr << "vantage: simulate: bound check FAILED: " << report.bound.message << std::endl;
+    return kExitFailure;
+  }
+  if (report.has_visibility && !report.visibility.passed) {
+    std::cerr << "vantage: simulate: bound check under visibility FAILED: "
+              << report.visibility.message << std::endl;
     return kExitFailure;
   }
   return kExitOk;

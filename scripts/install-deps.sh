@@ -18,6 +18,7 @@ demo_packages=(
   nlohmann-json3-dev
   libcli11-dev
   libyaml-cpp-dev
+  libassimp-dev libembree-dev
 )
 all_packages=(
   "${demo_packages[@]}"

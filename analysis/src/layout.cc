@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
@@ -139,6 +140,11 @@ void Layout::validate() const {
     }
   }
   check_names(names, n, points);
+  if (visibility) {
+    if (!points) throw InvalidArgument("normals", "only point layouts have marker normals");
+    validate_visibility(*visibility, n);
+  }
+  if (workspace) validate_workspace(*workspace);
 }
 
 std::string Layout::entry_name(Eigen::Index i) const {
@@ -153,6 +159,56 @@ std::string unused_entry_name(const Layout& layout, const std::string& prefix) {
     std::string name = prefix + std::to_string(k);
     if (taken.count(name) == 0) return name;
   }
+}
+
+Layout without_entry(const Layout& layout, Eigen::Index k) {
+  const Eigen::Index n = layout.entries.cols();
+  VANTAGE_CHECK(k >= 0 && k < n, "without_entry: no such entry");
+  auto drop = [&](auto& m) {
+    using M = std::decay_t<decltype(m)>;
+    M kept(m.rows(), m.cols() - 1);
+    kept << m.leftCols(k), m.rightCols(m.cols() - 1 - k);
+    m = kept;
+  };
+  auto drop_element = [&](Eigen::VectorXd& v) {
+    Eigen::VectorXd kept(v.size() - 1);
+    kept << v.head(k), v.tail(v.size() - 1 - k);
+    v = kept;
+  };
+  Layout out = layout;
+  drop(out.entries);
+  drop_element(out.weights);
+  out.names.clear();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (i != k) out.names.push_back(layout.entry_name(i));
+  }
+  if (out.visibility) {
+    drop(out.visibility->normals);
+    drop_element(out.visibility->cone_half_angle_deg);
+    out.visibility->min_visible = std::min<int>(out.visibility->min_visible,
+                                                static_cast<int>(std::max<Eigen::Index>(n - 1, 3)));
+  }
+  return out;
+}
+
+void append_entry(Layout* layout, const Eigen::Vector3d& x, const std::string& name_prefix) {
+  const Eigen::Index n = layout->entries.cols();
+  if (!layout->names.empty()) layout->names.push_back(unused_entry_name(*layout, name_prefix));
+  if (layout->visibility) {
+    MarkerVisibility& v = *layout->visibility;
+    const Eigen::Vector3d outward = x - layout->entries.rowwise().mean();
+    const double length = outward.norm();
+    v.normals.conservativeResize(3, n + 1);
+    v.normals.col(n) = length > 0.0 ? Eigen::Vector3d(outward / length) : Eigen::Vector3d::UnitZ();
+    const double widest = v.cone_half_angle_deg.size() > 0 ? v.cone_half_angle_deg.maxCoeff()
+                                                           : MarkerVisibility::kDefaultConeDeg;
+    v.cone_half_angle_deg.conservativeResize(n + 1);
+    v.cone_half_angle_deg(n) = widest;
+  }
+  layout->entries.conservativeResize(3, n + 1);
+  layout->entries.col(n) = x;
+  layout->weights.conservativeResize(n + 1);
+  layout->weights(n) = 1.0;
 }
 
 Eigen::Index free_vector_count(Eigen::Index points) {

@@ -19,15 +19,6 @@ constexpr double kStepShrink = 0.5;
 
 }  // namespace
 
-void append_entry(const Eigen::Vector3d& x, Layout* layout) {
-  const Eigen::Index n = layout->entries.cols();
-  if (!layout->names.empty()) layout->names.push_back(unused_entry_name(*layout, "added"));
-  layout->entries.conservativeResize(3, n + 1);
-  layout->entries.col(n) = x;
-  layout->weights.conservativeResize(n + 1);
-  layout->weights(n) = 1.0;
-}
-
 bool better(const Score& a, const Score& b, double tie) {
   if (a.t < b.t - tie) return true;
   if (a.t > b.t + tie) return false;
@@ -239,7 +230,7 @@ void Designer::commit(const Option& chosen) {
     layout_.candidates = kept;
     used_.erase(used_.begin() + c);
   }
-  append_entry(chosen.x, &layout_);
+  append_entry(&layout_, chosen.x, "added");
   vectors_ = data_vectors(layout_).vectors;
   markers_ = layout_.entries;
 }

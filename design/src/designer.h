@@ -45,10 +45,6 @@ inline constexpr double kPreparedLevel = 0.7;
 /// ~level / 2, as costly as many whole solves.
 inline constexpr double kMinPreparedLevel = 1e-4;
 
-/// Appends `x` to the layout's entries with weight 1; in a named layout it gets the first free
-/// name "added<k>" (unused_entry_name), so the names stay one per entry.
-void append_entry(const Eigen::Vector3d& x, Layout* layout);
-
 /// One greedy step on one layout. Everything a step does is a function of that layout (its
 /// entries, the canonical data_vectors() order, its remaining candidates, the search box of its
 /// markers) and of the options: a step is the same whether it is the second of `--add 2` or

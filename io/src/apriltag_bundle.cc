@@ -152,6 +152,7 @@ AprilTagMarkers read_markers(std::string_view text, const std::string& source,
   layout.mode = LayoutMode::kPoints;
   layout.entries.resize(3, static_cast<Eigen::Index>(tags.size() * per_tag));
   layout.candidates.resize(3, 0);
+  Eigen::Matrix3Xd normals(3, layout.entries.cols());
   std::vector<std::string> labels;
   std::map<long, std::size_t> seen;
   for (std::size_t k = 0; k < tags.size(); ++k) {
@@ -184,6 +185,7 @@ AprilTagMarkers read_markers(std::string_view text, const std::string& source,
     for (int c = 0; c < per_tag; ++c) {
       const Eigen::Index j = static_cast<Eigen::Index>(k) * per_tag + c;
       layout.entries.col(j) = corners ? Eigen::Vector3d(R_bundle_tag * corner_tag[c] + p) : p;
+      normals.col(j) = unit_normal(R_bundle_tag.col(2).normalized());
       out.tag_ids.push_back(static_cast<int>(id));
       out.corners.push_back(corners ? c : -1);
       layout.names.push_back("tag" + std::to_string(id) +
@@ -193,6 +195,12 @@ AprilTagMarkers read_markers(std::string_view text, const std::string& source,
     }
   }
   layout.weights = Eigen::VectorXd::Ones(layout.entries.cols());
+  // A printed tag is seen from in front of its face only: its +z axis, the half-space in front.
+  MarkerVisibility visibility;
+  visibility.normals = normals;
+  visibility.cone_half_angle_deg =
+      Eigen::VectorXd::Constant(normals.cols(), MarkerVisibility::kDefaultConeDeg);
+  layout.visibility = visibility;
   internal::validate_labelled(layout, source, labels);
   return out;
 }

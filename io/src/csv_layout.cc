@@ -17,7 +17,32 @@ namespace {
 
 using internal::fail;
 
-constexpr const char* kColumns[] = {"name", "x", "y", "z", "weight"};
+// The columns of each width: name,x,y,z with an optional weight and optional outward normal.
+constexpr const char* kColumns4[] = {"name", "x", "y", "z"};
+constexpr const char* kColumns5[] = {"name", "x", "y", "z", "weight"};
+constexpr const char* kColumns7[] = {"name", "x", "y", "z", "nx", "ny", "nz"};
+constexpr const char* kColumns8[] = {"name", "x", "y", "z", "weight", "nx", "ny", "nz"};
+
+const char* const* columns_of(std::size_t width) {
+  switch (width) {
+    case 4:
+      return kColumns4;
+    case 5:
+      return kColumns5;
+    case 7:
+      return kColumns7;
+    case 8:
+      return kColumns8;
+    default:
+      return nullptr;
+  }
+}
+
+std::string lowercase(const std::string& s) {
+  std::string out;
+  for (const char c : s) out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
 
 std::string trim(std::string_view s) {
   const auto first = s.find_first_not_of(" \t\r");
@@ -84,8 +109,7 @@ bool holds_value(const std::string& cell) {
   char* end = nullptr;
   std::strtod(cell.c_str(), &end);
   if (end != cell.c_str()) return true;
-  std::string lower;
-  for (const char c : cell) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string lower = lowercase(cell);
   for (const char* missing : {"n/a", "#n/a", "na", "n.a.", "nan", "null", "none", "nil", "-", "--",
                               "?", "inf", "+inf", "-inf", "infinity"}) {
     if (lower == missing) return true;
@@ -111,13 +135,26 @@ std::string where(const Row& row, const std::string& name) {
 
 CsvMarkers parse_csv_markers(std::string_view text, const std::string& source) {
   std::vector<Row> rows = read_rows(text);
-  if (rows.empty()) fail(source, "no marker rows (expected name,x,y,z[,weight])");
+  if (rows.empty()) fail(source, "no marker rows (expected name,x,y,z[,weight][,nx,ny,nz])");
   const std::size_t columns = rows.front().fields.size();
-  if (columns < 4 || columns > 5) {
-    fail(source, where(rows.front(), "") + ": expected 4 or 5 fields (name,x,y,z[,weight]), got " +
+  const char* const* names = columns_of(columns);
+  if (names == nullptr) {
+    fail(source, where(rows.front(), "") +
+                     ": expected 4, 5, 7 or 8 fields (name,x,y,z[,weight][,nx,ny,nz]), got " +
                      std::to_string(columns));
   }
-  if (is_header(rows.front())) rows.erase(rows.begin());
+  const bool with_normals = columns >= 7;
+  if (is_header(rows.front())) {
+    // With normals the header says which of 7 or 8 columns is which: it must name them.
+    for (std::size_t c = 1; with_normals && c < columns; ++c) {
+      if (lowercase(rows.front().fields[c]) != names[c]) {
+        fail(source, where(rows.front(), "") + ": column " + std::to_string(c + 1) +
+                         " of the header is \"" + rows.front().fields[c] + "\", expected \"" +
+                         names[c] + "\" (name,x,y,z[,weight],nx,ny,nz)");
+      }
+    }
+    rows.erase(rows.begin());
+  }
   if (rows.empty()) fail(source, "no marker rows after the header");
 
   CsvMarkers out;
@@ -127,6 +164,7 @@ CsvMarkers parse_csv_markers(std::string_view text, const std::string& source) {
   layout.entries.resize(3, static_cast<Eigen::Index>(rows.size()));
   layout.weights = Eigen::VectorXd::Ones(layout.entries.cols());
   layout.candidates.resize(3, 0);
+  Eigen::Matrix3Xd normals(3, with_normals ? layout.entries.cols() : 0);
   std::map<std::string, int> seen;
   std::vector<std::string> labels;
   for (std::size_t k = 0; k < rows.size(); ++k) {
@@ -145,19 +183,34 @@ CsvMarkers parse_csv_markers(std::string_view text, const std::string& source) {
     for (std::size_t c = 1; c < columns; ++c) {
       double value = 0;
       if (!parse_number(row.fields[c], &value)) {
-        fail(source, where(row, name) + ", " + kColumns[c] + ": expected a finite number, got \"" +
+        fail(source, where(row, name) + ", " + names[c] + ": expected a finite number, got \"" +
                          row.fields[c] + "\"");
       }
+      const auto column = static_cast<Eigen::Index>(k);
       if (c < 4) {
-        layout.entries(static_cast<Eigen::Index>(c - 1), static_cast<Eigen::Index>(k)) = value;
+        layout.entries(static_cast<Eigen::Index>(c - 1), column) = value;
+      } else if (c == 4 && columns != 7) {
+        layout.weights(column) = value;
       } else {
-        layout.weights(static_cast<Eigen::Index>(k)) = value;
+        normals(static_cast<Eigen::Index>(c - (columns - 3)), column) = value;
       }
+    }
+    if (with_normals) {
+      const Eigen::Vector3d normal = unit_normal(normals.col(static_cast<Eigen::Index>(k)));
+      if (normal.isZero()) fail(source, where(row, name) + ", nx,ny,nz: zero length");
+      normals.col(static_cast<Eigen::Index>(k)) = normal;
     }
     out.names.push_back(name);
     labels.push_back(where(row, name));
   }
   layout.names = out.names;
+  if (with_normals) {
+    MarkerVisibility visibility;
+    visibility.normals = normals;
+    visibility.cone_half_angle_deg =
+        Eigen::VectorXd::Constant(normals.cols(), MarkerVisibility::kDefaultConeDeg);
+    layout.visibility = visibility;
+  }
   internal::validate_labelled(layout, source, labels);
   return out;
 }

@@ -64,14 +64,29 @@ std::string layout_to_csv(const Layout& layout) {
                             ", which CSV cannot hold; write .json");
     }
   }
+  const MarkerVisibility* visibility = layout.visibility ? &*layout.visibility : nullptr;
+  if (visibility != nullptr) {
+    const bool default_cones =
+        (visibility->cone_half_angle_deg.array() == MarkerVisibility::kDefaultConeDeg).all();
+    if (!default_cones || visibility->min_visible != 3 || !visibility->body_path.empty() ||
+        layout.workspace) {
+      throw InvalidArgument(
+          "visibility: a CSV layout holds normals only (90-degree cones, 3 markers seen, no body "
+          "or workspace); write .json to keep the rest");
+    }
+  }
   std::string out;
   if (!layout.name.empty()) out += comment("name", layout.name);
   if (!layout.description.empty()) out += comment("description", layout.description);
-  out += "name,x,y,z,weight\n";
+  out += visibility != nullptr ? "name,x,y,z,weight,nx,ny,nz\n" : "name,x,y,z,weight\n";
   for (Eigen::Index i = 0; i < n; ++i) {
     out += layout.entry_name(i);
     for (int r = 0; r < 3; ++r) out += "," + number(layout.entries(r, i));
-    out += "," + number(layout.weights(i)) + "\n";
+    out += "," + number(layout.weights(i));
+    for (int r = 0; visibility != nullptr && r < 3; ++r) {
+      out += "," + number(visibility->normals(r, i));
+    }
+    out += "\n";
   }
   return out;
 }

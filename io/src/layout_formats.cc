@@ -8,6 +8,7 @@
 #include "vantage/analysis/common.h"
 #include "vantage/io/csv_layout.h"
 #include "vantage/io/layout_file.h"
+#include "vantage/io/mesh_file.h"
 #include "vantage/io/printable.h"
 
 namespace vantage::io {
@@ -72,7 +73,24 @@ Layout parse_layout_as(std::string_view text, const std::string& source,
 }
 
 Layout load_layout(const std::string& path, const LayoutReadOptions& options) {
-  return parse_layout_as(read_text_file(path, options.max_bytes), path, options);
+  Layout layout = parse_layout_as(read_text_file(path, options.max_bytes), path, options);
+  load_body(path, &layout);
+  return layout;
+}
+
+void load_body(const std::string& layout_path, Layout* layout) {
+  if (!layout->visibility || layout->visibility->body_path.empty()) return;
+  const std::filesystem::path body(layout->visibility->body_path);
+  const std::filesystem::path resolved =
+      body.is_absolute() ? body : std::filesystem::path(layout_path).parent_path() / body;
+  try {
+    layout->visibility->body = read_mesh(resolved.string());
+  } catch (const InvalidArgument& e) {
+    internal::fail(layout_path, "visibility.body: " + std::string(e.what()));
+  }
+  // From here on the path names the mesh wherever the layout goes (save_layout() writes it
+  // relative to the file it writes).
+  layout->visibility->body_path = std::filesystem::absolute(resolved).lexically_normal().string();
 }
 
 LayoutFormat layout_write_format(const std::string& path) {
@@ -101,7 +119,20 @@ void save_layout(const std::string& path, const Layout& layout, bool overwrite) 
   const LayoutFormat format = layout_write_format(path);
   std::string text;
   try {
-    text = layout_to_text(layout, format);
+    if (layout.visibility && !layout.visibility->body_path.empty()) {
+      // The body's path as the written file will read it: relative to the file's directory.
+      Layout moved = layout;
+      const std::filesystem::path body =
+          std::filesystem::absolute(layout.visibility->body_path).lexically_normal();
+      const std::filesystem::path directory = std::filesystem::path(path).parent_path();
+      const std::filesystem::path from =
+          std::filesystem::absolute(directory.empty() ? "." : directory).lexically_normal();
+      const std::filesystem::path relative = body.lexically_relative(from);
+      moved.visibility->body_path = relative.empty() ? body.string() : relative.string();
+      text = layout_to_text(moved, format);
+    } else {
+      text = layout_to_text(layout, format);
+    }
   } catch (const InvalidArgument& e) {
     internal::fail(path, e.what());
   }

@@ -50,12 +50,21 @@ struct PenColour {
 };
 
 constexpr PenColour kPens[] = {
-    {kPenBackground, {255, 255, 255}},  {kPenInk, {25, 25, 25}},
-    {kPenWorst, kWorstViewpointColour}, {kPenPaperLmi, kPaperLmiColour},
-    {kPenVector, kDataVectorColour},    {kPenThreshold, kThresholdColour},
-    {kPenGreatCircle, {205, 205, 205}}, {kPenGrid, {200, 200, 200}},
-    {kPenBar, {49, 104, 142}},          {kPenPlane, {66, 146, 198}},
-    {kPenLegendBack, {245, 245, 245}},  {kPenDirect, {33, 113, 181}},
+    {kPenBackground, {255, 255, 255}},
+    {kPenInk, {25, 25, 25}},
+    {kPenWorst, kWorstViewpointColour},
+    {kPenPaperLmi, kPaperLmiColour},
+    {kPenVector, kDataVectorColour},
+    {kPenThreshold, kThresholdColour},
+    {kPenGreatCircle, {205, 205, 205}},
+    {kPenGrid, {200, 200, 200}},
+    {kPenBar, {49, 104, 142}},
+    {kPenPlane, {66, 146, 198}},
+    {kPenLegendBack, {245, 245, 245}},
+    {kPenDirect, {33, 113, 181}},
+    {kPenNormal, kNormalColour},
+    {kPenBody, {105, 105, 105}},
+    {kPenBodyWorst, kBodyWorstViewpointColour},
 };
 
 // Entries of PLplot's continuous colour map 1 (the value map of colormap.h).
@@ -259,6 +268,17 @@ void Canvas::label(double x, double y, const std::string& text, double dx_px, do
   set_source(cairo_, colour);
   cairo_show_text(cairo_, text.c_str());
   cairo_restore(cairo_);
+}
+
+double Canvas::text_width(const std::string& text, double size_px) {
+  cairo_save(cairo_);
+  cairo_identity_matrix(cairo_);
+  cairo_select_font_face(cairo_, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cairo_, size_px);
+  cairo_text_extents_t extents;
+  cairo_text_extents(cairo_, text.c_str(), &extents);
+  cairo_restore(cairo_);
+  return extents.x_advance;
 }
 
 namespace {

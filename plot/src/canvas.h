@@ -35,6 +35,9 @@ enum Pen : int {
   kPenPlane = 9,        ///< translucent blue of a plane
   kPenLegendBack = 10,  ///< dark legend background
   kPenDirect = 11,      ///< a second series colour (blue)
+  kPenNormal = 12,      ///< kNormalColour: marker normals
+  kPenBody = 13,        ///< grey edges of a body mesh
+  kPenBodyWorst = 14,   ///< kBodyWorstViewpointColour
   kPenCount
 };
 
@@ -89,6 +92,9 @@ class Canvas {
   /// font size. Uses the same sans-serif face as PLplot's cairo driver.
   void label(double x, double y, const std::string& text, double dx_px, double dy_px, double align,
              double size_px, Rgb colour, Rgb box = {255, 255, 255}, double box_alpha = 0.0);
+
+  /// The advance width in pixels of `text` at font size size_px (the face of label()).
+  double text_width(const std::string& text, double size_px);
 
   /// One row of a legend: a marker (shape, fill), a line (colour, width, dashed), a line with a
   /// marker on it, or nothing, and its text.

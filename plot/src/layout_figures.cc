@@ -9,6 +9,9 @@
 #include "vantage/plot/error_surface.h"
 #include "vantage/plot/vectors_figure.h"
 #include "vantage/plot/viewpoint_map.h"
+#include "vantage/plot/visibility_dropout_chart.h"
+#include "vantage/plot/visibility_maps.h"
+#include "vantage/sdp/visibility_model.h"
 
 namespace vantage::plot {
 namespace {
@@ -17,6 +20,46 @@ constexpr int kMinLayoutMapSamples = 400;
 
 bool wants(const std::vector<std::string>& names, const char* name) {
   return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+bool applies(const char* name, bool has_design, bool has_visibility) {
+  const std::string n = name;
+  return (has_design || n != "design") && (has_visibility || n != "visibility");
+}
+
+// The seen-whole dropout error of each marker, when the report has it.
+std::vector<double> seen_whole_dropout(const sdp::LayoutReport& report) {
+  if (!report.dropout) return {};
+  std::vector<double> out(static_cast<std::size_t>(report.layout.entries.cols()), -1.0);
+  for (const sdp::DropoutEntry& e : report.dropout->entries) {
+    if (e.index >= 0 && static_cast<std::size_t>(e.index) < out.size()) {
+      out[static_cast<std::size_t>(e.index)] = e.max_worst_case_error_deg;
+    }
+  }
+  return out;
+}
+
+// The figures of a layout on its body that need its visibility at every direction.
+void write_body_maps(const sdp::LayoutReport& report, const std::filesystem::path& directory,
+                     const LayoutFiguresOptions& options, const std::vector<std::string>& names,
+                     std::vector<FigureFiles>* files) {
+  const bool map = wants(names, "viewpoint_map"), count = wants(names, "visibility");
+  if (!map && !count) return;
+  const sdp::VisibilityReport& visibility = *report.visibility;
+  const sdp::VisibilityModel model = sdp::VisibilityModel::of(
+      report.layout,
+      visibility.occlusion_resolution_deg.value_or(sdp::VisibilityModel::kDefaultResolutionDeg),
+      options.figure.threads);
+  const SphereSamples samples = sample_sphere(model, options.map_samples, options.figure.threads);
+  VisibilityMapData data;
+  data.layout_name = report.layout.name;
+  data.model = &model;
+  data.report = &visibility;
+  data.seen_whole_max_error_deg = report.analysis.max_worst_case_error_deg;
+  data.samples_per_axis = options.map_samples;
+  data.samples = &samples;
+  if (map) files->push_back(write_visibility_viewpoint_map(data, directory, options.figure));
+  if (count) files->push_back(write_visibility_figure(data, directory, options.figure));
 }
 
 }  // namespace
@@ -42,11 +85,12 @@ bool LayoutFiguresOptions::is_valid(std::string* why) const {
   return true;
 }
 
-std::vector<std::string> selected_figures(const LayoutFiguresOptions& options, bool has_design) {
+std::vector<std::string> selected_figures(const LayoutFiguresOptions& options, bool has_design,
+                                          bool has_visibility) {
   if (options.only.empty()) {
     std::vector<std::string> all;
     for (const char* name : kFigureNames) {
-      if (has_design || std::string(name) != "design") all.push_back(name);
+      if (applies(name, has_design, has_visibility)) all.push_back(name);
     }
     return all;
   }
@@ -54,7 +98,8 @@ std::vector<std::string> selected_figures(const LayoutFiguresOptions& options, b
     const std::string& name = options.only[k];
     if (!is_figure_name(name)) {
       throw InvalidArgument("only: unknown figure \"" + name +
-                            "\" (viewpoint_map, dropout, error_surface, vectors, design)");
+                            "\" (viewpoint_map, visibility, dropout, error_surface, vectors, "
+                            "design)");
     }
     if (std::find(options.only.begin(), options.only.begin() + k, name) !=
         options.only.begin() + k) {
@@ -62,6 +107,9 @@ std::vector<std::string> selected_figures(const LayoutFiguresOptions& options, b
     }
     if (name == "design" && !has_design) {
       throw InvalidArgument("only", "the design figure needs a design result");
+    }
+    if (name == "visibility" && !has_visibility) {
+      throw InvalidArgument("only", "the visibility figure needs a layout with normals");
     }
   }
   std::vector<std::string> ordered;
@@ -71,8 +119,8 @@ std::vector<std::string> selected_figures(const LayoutFiguresOptions& options, b
   return ordered;
 }
 
-bool needs_dropout(const LayoutFiguresOptions& options, bool has_design) {
-  return wants(selected_figures(options, has_design), "dropout");
+bool needs_dropout(const LayoutFiguresOptions& options, bool has_design, bool has_visibility) {
+  return wants(selected_figures(options, has_design, has_visibility), "dropout");
 }
 
 LayoutFigures write_layout_figures(const sdp::LayoutReport& report,
@@ -80,8 +128,9 @@ LayoutFigures write_layout_figures(const sdp::LayoutReport& report,
                                    const LayoutFiguresOptions& options, const DesignCurve* design) {
   std::string why;
   if (!options.is_valid(&why)) throw InvalidArgument("options", why);
-  const std::vector<std::string> names = selected_figures(options, design != nullptr);
-  if (wants(names, "dropout") && !report.dropout) {
+  const bool on_body = report.visibility.has_value();
+  const std::vector<std::string> names = selected_figures(options, design != nullptr, on_body);
+  if (wants(names, "dropout") && (on_body ? report.visibility->dropout.empty() : !report.dropout)) {
     throw InvalidArgument("report", "the dropout figure needs the report's dropout analysis");
   }
   std::error_code ec;
@@ -93,10 +142,16 @@ LayoutFigures write_layout_figures(const sdp::LayoutReport& report,
   LayoutFigures result;
   result.pbar_min = r.pbar_min;
   result.max_worst_case_error_deg = r.max_worst_case_error_deg;
+  if (on_body) {
+    result.visibility_max_worst_case_error_deg = report.visibility->max_worst_case_error_deg;
+    result.trackable_fraction = report.visibility->coverage.trackable_fraction;
+  }
   if (!report.is_usable()) result.message = report.message();
   const FigureOptions& figure = options.figure;
 
-  if (wants(names, "viewpoint_map")) {
+  if (on_body) {
+    write_body_maps(report, directory, options, names, &result.files);
+  } else if (wants(names, "viewpoint_map")) {
     ViewpointMapData map;
     map.layout_name = layout.name;
     map.vectors = report.data.vectors;
@@ -108,7 +163,13 @@ LayoutFigures write_layout_figures(const sdp::LayoutReport& report,
     map.samples_per_axis = options.map_samples;
     result.files.push_back(write_viewpoint_map(map, directory, figure));
   }
-  if (wants(names, "dropout")) {
+  if (wants(names, "dropout") && on_body) {
+    VisibilityDropoutChartData chart;
+    chart.layout_name = layout.name;
+    chart.report = &*report.visibility;
+    chart.seen_whole_error_deg = seen_whole_dropout(report);
+    result.files.push_back(write_visibility_dropout_chart(chart, directory, figure));
+  } else if (wants(names, "dropout")) {
     DropoutChartData chart;
     chart.layout_name = layout.name;
     chart.mode = layout.mode;
@@ -132,6 +193,16 @@ LayoutFigures write_layout_figures(const sdp::LayoutReport& report,
     vectors.pbar_min = r.pbar_min;
     vectors.paper_lmi_viewpoint = r.paper_lmi.viewpoint;
     vectors.paper_lmi_pbar = r.paper_lmi.pbar_at;
+    if (on_body) {
+      const sdp::VisibilityReport& v = *report.visibility;
+      vectors.normals = layout.visibility->normals;
+      if (layout.visibility->body) vectors.body = &*layout.visibility->body;
+      if (v.worst.status != sdp::VisibilityWorstViewpoint::Status::kUntrackable) {
+        vectors.body_worst_viewpoint = v.worst.viewpoint;
+        vectors.body_visible_markers = v.worst.visible_markers;
+        vectors.body_max_error_deg = v.max_worst_case_error_deg;
+      }
+    }
     result.files.push_back(write_vectors_figure(vectors, directory, figure));
   }
   if (wants(names, "design")) {

@@ -8,6 +8,8 @@ namespace vantage::plot::internal {
 namespace {
 // PLplot's default character height is given in millimetres; its cairo driver draws at 90 dpi.
 constexpr double kPixelsPerMillimetre = 90.0 / 25.4;
+// Titles and subtitles fit in this fraction of the page's width.
+constexpr double kTitleWidth = 0.97;
 }  // namespace
 
 double page_scale(const Canvas& canvas) {
@@ -30,9 +32,16 @@ void draw_title(Canvas& canvas, const std::string& title, const std::string& sub
   canvas.pls().vpor(0.0, 1.0, 0.0, 1.0);
   canvas.pls().wind(0.0, 1.0, 0.0, 1.0);
   const Rgb ink{25, 25, 25};
-  canvas.label(0.5, 1.0, title, 0.0, 24.0 * s, 0.5, kTitleSize * s, ink);
+  // A long title or subtitle (a layout's long name) is set smaller to fit the page.
+  auto fitted = [&](const std::string& text, double size) {
+    const double room = kTitleWidth * canvas.width();
+    const double width = canvas.text_width(text, size);
+    return width > room ? size * room / width : size;
+  };
+  canvas.label(0.5, 1.0, title, 0.0, 24.0 * s, 0.5, fitted(title, kTitleSize * s), ink);
   if (!subtitle.empty()) {
-    canvas.label(0.5, 1.0, subtitle, 0.0, 52.0 * s, 0.5, kSubtitleSize * s, {80, 80, 80});
+    canvas.label(0.5, 1.0, subtitle, 0.0, 52.0 * s, 0.5, fitted(subtitle, kSubtitleSize * s),
+                 {80, 80, 80});
   }
 }
 

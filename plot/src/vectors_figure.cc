@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "body_drawing.h"
 #include "canvas.h"
 #include "output_file.h"
 #include "style.h"
@@ -21,6 +22,10 @@ constexpr double kWindow = 1.6;
 constexpr int kDiscPoints = 121;
 // Point layouts with more markers than this show the markers only (no free-vector lines).
 constexpr Eigen::Index kMaxPairLines = 40;
+// A marker's normal arrow, in the scene's units (the markers fill the unit ball), and its head.
+constexpr double kNormalLength = 0.16;
+constexpr double kArrowHead = 0.045;
+constexpr double kArrowHeadDeg = 28.0;
 
 Eigen::Vector3d camera_direction() {
   const double az = kVectorsAzimuthDeg * kRadiansPerDegree,
@@ -34,19 +39,38 @@ void check_data(const VectorsFigureData& data) {
   if (data.worst_viewpoints.empty()) {
     throw InvalidArgument("write_vectors_figure: worst_viewpoints is empty");
   }
+  if (data.normals.cols() > 0 &&
+      (data.mode != LayoutMode::kPoints || data.normals.cols() != data.entries.cols() ||
+       !data.normals.allFinite())) {
+    throw InvalidArgument("write_vectors_figure: normals must be finite, one per marker");
+  }
+  if (data.body != nullptr) data.body->validate();
 }
 
-// Entries in the scene: unit-ball scaled (directions by their length relative to the longest,
+// The map into the scene: unit-ball scaled (directions by their length relative to the longest,
 // points about their centroid).
-Eigen::Matrix3Xd scene_entries(const VectorsFigureData& data) {
-  Eigen::Matrix3Xd scene = data.entries;
-  if (data.mode == LayoutMode::kPoints) {
-    const Eigen::Vector3d centroid = scene.rowwise().mean();
-    scene.colwise() -= centroid;
-  }
-  const double radius = scene.colwise().norm().maxCoeff();
-  if (radius > 0.0) scene /= radius;
+struct SceneFrame {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double scale = 1.0;
+  Eigen::Vector3d operator()(const Eigen::Vector3d& p) const { return (p - centre) * scale; }
+};
+
+SceneFrame scene_frame(const VectorsFigureData& data) {
+  SceneFrame frame;
+  if (data.mode == LayoutMode::kPoints) frame.centre = data.entries.rowwise().mean();
+  const double radius = (data.entries.colwise() - frame.centre).colwise().norm().maxCoeff();
+  if (radius > 0.0) frame.scale = 1.0 / radius;
+  return frame;
+}
+
+Eigen::Matrix3Xd scene_entries(const VectorsFigureData& data, const SceneFrame& frame) {
+  Eigen::Matrix3Xd scene(3, data.entries.cols());
+  for (Eigen::Index k = 0; k < scene.cols(); ++k) scene.col(k) = frame(data.entries.col(k));
   return scene;
+}
+
+bool on_body(const VectorsFigureData& data) {
+  return data.mode == LayoutMode::kPoints && data.normals.cols() > 0;
 }
 
 void write_csv(const VectorsFigureData& data, const std::filesystem::path& path) {
@@ -65,6 +89,16 @@ void write_csv(const VectorsFigureData& data, const std::filesystem::path& path)
   const Eigen::Vector3d& lmi = data.paper_lmi_viewpoint;
   csv << "paper_lmi" << 0 << lmi.x() << lmi.y() << lmi.z();
   csv.end_row();
+  for (Eigen::Index k = 0; k < data.normals.cols(); ++k) {
+    csv << "normal" << static_cast<long>(k) << data.normals(0, k) << data.normals(1, k)
+        << data.normals(2, k);
+    csv.end_row();
+  }
+  if (data.body_worst_viewpoint) {
+    const Eigen::Vector3d& a = *data.body_worst_viewpoint;
+    csv << "body_worst_viewpoint" << 0 << a.x() << a.y() << a.z();
+    csv.end_row();
+  }
   csv.commit();
 }
 
@@ -106,6 +140,55 @@ void draw_frame_axes(Canvas& canvas) {
   }
 }
 
+// False for a marker the worst viewpoint on the body does not see (drawn hollow).
+bool seen_from_body_worst(const VectorsFigureData& data, Eigen::Index k) {
+  if (!data.body_worst_viewpoint) return true;
+  const auto& v = data.body_visible_markers;
+  return std::find(v.begin(), v.end(), static_cast<int>(k)) != v.end();
+}
+
+// Each marker's outward normal as a short arrow from the marker.
+void draw_normals(Canvas& canvas, const VectorsFigureData& data, const Eigen::Matrix3Xd& scene) {
+  const double s = internal::page_scale(canvas);
+  const double head = kArrowHeadDeg / kDegreesPerRadian;
+  canvas.pls().col0(internal::kPenNormal);
+  canvas.pls().width(1.8 * s);
+  for (Eigen::Index k = 0; k < data.normals.cols(); ++k) {
+    const Eigen::Vector3d n = data.normals.col(k).normalized();
+    const Eigen::Vector2d a = vectors_camera_projection(scene.col(k));
+    const Eigen::Vector2d b = vectors_camera_projection(scene.col(k) + kNormalLength * n);
+    canvas.pls().join(a.x(), a.y(), b.x(), b.y());
+    const Eigen::Vector2d along = b - a;
+    const double length = along.norm();
+    // A normal along the line of sight has no visible shaft: its tip is a dot.
+    if (length < 0.2 * kArrowHead) {
+      canvas.marker(b.x(), b.y(), 2.0 * s, kNormalColour);
+      continue;
+    }
+    const Eigen::Vector2d back = -along / length * std::min(kArrowHead, 0.6 * length);
+    for (const double turn : {head, -head}) {
+      const Eigen::Vector2d wing(std::cos(turn) * back.x() - std::sin(turn) * back.y(),
+                                 std::sin(turn) * back.x() + std::cos(turn) * back.y());
+      canvas.pls().join(b.x(), b.y(), b.x() + wing.x(), b.y() + wing.y());
+    }
+  }
+}
+
+// The worst viewpoint on the body: an arrow from the centre towards the camera.
+void draw_body_worst(Canvas& canvas, const VectorsFigureData& data) {
+  if (!data.body_worst_viewpoint) return;
+  const double s = internal::page_scale(canvas);
+  const Eigen::Vector3d a = data.body_worst_viewpoint->normalized();
+  canvas.pls().col0(internal::kPenBodyWorst);
+  canvas.pls().width(3.0 * s);
+  line3(canvas, Eigen::Vector3d::Zero(), kAxisLength * a);
+  const Eigen::Vector2d tip = vectors_camera_projection(kAxisLength * a);
+  canvas.marker(tip.x(), tip.y(), 6.0 * s, kBodyWorstViewpointColour);
+  canvas.label(tip.x(), tip.y(),
+               "a on the body, " + internal::fixed(data.body_max_error_deg, 2) + "°", 12 * s,
+               14 * s, 0.0, internal::kSmallSize * s, {25, 25, 25}, {255, 255, 255}, 0.85);
+}
+
 void draw_entries(Canvas& canvas, const VectorsFigureData& data, const Eigen::Matrix3Xd& scene) {
   const double s = internal::page_scale(canvas);
   plstream& pls = canvas.pls();
@@ -138,7 +221,7 @@ void draw_entries(Canvas& canvas, const VectorsFigureData& data, const Eigen::Ma
   });
   for (Eigen::Index k : order) {
     const Eigen::Vector2d p = vectors_camera_projection(scene.col(k));
-    canvas.marker(p.x(), p.y(), 5.0 * s, ink);
+    canvas.marker(p.x(), p.y(), 5.0 * s, seen_from_body_worst(data, k) ? ink : Rgb{255, 255, 255});
   }
   for (Eigen::Index k : order) {
     const Eigen::Vector2d p = vectors_camera_projection(scene.col(k));
@@ -174,10 +257,15 @@ void draw_scene(Canvas& canvas, const VectorsFigureData& data, const FigureOptio
   plstream& pls = canvas.pls();
   pls.vpas(0.02, 0.70, 0.03, 0.87, 1.0);
   pls.wind(-kWindow, kWindow, -kWindow, kWindow);
-  const Eigen::Matrix3Xd scene = scene_entries(data);
+  const SceneFrame frame = scene_frame(data);
+  const Eigen::Matrix3Xd scene = scene_entries(data, frame);
 
   draw_frame_axes(canvas);
+  if (data.body != nullptr && data.mode == LayoutMode::kPoints) {
+    internal::draw_body(canvas, *data.body, frame, vectors_camera_projection, camera_direction());
+  }
   draw_plane_disc(canvas, data.worst_viewpoints.front());
+  if (on_body(data)) draw_normals(canvas, data, scene);
   draw_entries(canvas, data, scene);
   draw_viewpoint_axis(canvas, data.paper_lmi_viewpoint, kPaperLmiColour, internal::kPenPaperLmi,
                       1.8, true, Canvas::Shape::kDiamond);
@@ -185,29 +273,43 @@ void draw_scene(Canvas& canvas, const VectorsFigureData& data, const FigureOptio
     draw_viewpoint_axis(canvas, data.worst_viewpoints[k], kWorstViewpointColour,
                         internal::kPenWorst, k == 0 ? 3.0 : 1.6, false, Canvas::Shape::kCircle);
   }
+  draw_body_worst(canvas, data);
   const Eigen::Vector2d tip = vectors_camera_projection(kAxisLength * data.worst_viewpoints[0]);
   canvas.label(tip.x(), tip.y(), "a (worst), p̄_min " + fixed(data.pbar_min, 4), 12 * s, 0.0, 0.0,
                internal::kSmallSize * s, {25, 25, 25}, {255, 255, 255}, 0.85);
 
   using Entry = Canvas::LegendEntry;
   const std::size_t ties = data.worst_viewpoints.size();
-  canvas.legend(
-      0.985, 0.22,
-      {Entry::line(
-           ties == 1 ? "global worst viewpoint a" : std::to_string(ties) + " tied worst viewpoints",
-           kWorstViewpointColour, 3.0 * s),
-       Entry::text_only(
-           "p̄_min " + fixed(data.pbar_min, 4) + ", error " +
-           fixed(std::acos(std::clamp(data.pbar_min, 0.0, 1.0)) * kDegreesPerRadian, 2) + "°"),
-       Entry::marker("plane a⊥ (first worst viewpoint)", {170, 205, 230}, Canvas::Shape::kSquare),
-       Entry::line("paper's single LMI: p̄ " + fixed(data.paper_lmi_pbar, 4), kPaperLmiColour,
-                   1.8 * s, true),
-       Entry::marker(data.mode == LayoutMode::kPoints
-                         ? std::to_string(data.entries.cols()) + " markers" +
-                               (scene.cols() <= kMaxPairLines ? ", free vectors in grey" : "")
-                         : std::to_string(data.entries.cols()) + " data vectors",
-                     kDataVectorColour)},
-      internal::kSmallSize * s, 1.0);
+  std::vector<Entry> legend{
+      Entry::line(
+          ties == 1 ? "global worst viewpoint a" : std::to_string(ties) + " tied worst viewpoints",
+          kWorstViewpointColour, 3.0 * s),
+      Entry::text_only(
+          "p̄_min " + fixed(data.pbar_min, 4) + ", error " +
+          fixed(std::acos(std::clamp(data.pbar_min, 0.0, 1.0)) * kDegreesPerRadian, 2) + "°"),
+      Entry::marker("plane a⊥ (first worst viewpoint)", {170, 205, 230}, Canvas::Shape::kSquare),
+      Entry::line("paper's single LMI: p̄ " + fixed(data.paper_lmi_pbar, 4), kPaperLmiColour,
+                  1.8 * s, true),
+      Entry::marker(data.mode == LayoutMode::kPoints
+                        ? std::to_string(data.entries.cols()) + " markers" +
+                              (scene.cols() <= kMaxPairLines ? ", free vectors in grey" : "")
+                        : std::to_string(data.entries.cols()) + " data vectors",
+                    kDataVectorColour)};
+  if (on_body(data)) {
+    legend.push_back(Entry::line("outward normals of the markers", kNormalColour, 1.8 * s));
+  }
+  if (data.body != nullptr && data.mode == LayoutMode::kPoints) {
+    legend.push_back(
+        Entry::marker("body mesh (" + std::to_string(data.body->triangles.cols()) + " triangles)",
+                      {200, 204, 208}, Canvas::Shape::kSquare));
+  }
+  if (data.body_worst_viewpoint) {
+    legend.push_back(Entry::line("worst viewpoint on the body (toward the camera)",
+                                 kBodyWorstViewpointColour, 3.0 * s));
+    legend.push_back(Entry::marker("hollow: markers it does not see", {255, 255, 255}));
+  }
+  const double height = canvas.legend_size(legend, internal::kSmallSize * s).y();
+  canvas.legend(0.985, std::max(0.22, 0.02 + height), legend, internal::kSmallSize * s, 1.0);
 }
 
 }  // namespace

@@ -56,9 +56,40 @@ std::vector<std::string> names_from(const py::object& names) {
   return out;
 }
 
+/// A dict (or None) as JSON, arrays through their tolist().
+Json json_of(const py::object& value) {
+  const py::object json = py::module_::import("json");
+  const py::object tolist = py::cpp_function([](const py::object& o) -> py::object {
+    if (py::hasattr(o, "tolist")) return o.attr("tolist")();
+    throw py::type_error("not JSON: " + py::repr(o).cast<std::string>());
+  });
+  return Json::parse(json.attr("dumps")(value, py::arg("default") = tolist).cast<std::string>());
+}
+
+/// The layout on its body: normals=, visibility= and workspace= as the JSON file gives them, read
+/// by the file's own reader (the body's path relative to the working directory).
+Layout on_body(const Layout& layout, const py::object& normals, const py::object& visibility,
+               const py::object& workspace) {
+  Json root = Json::parse(io::layout_to_json(layout));
+  if (!normals.is_none()) {
+    const Eigen::Matrix3Xd n = rows_from_array<3>(normals, "normals");
+    Json rows = Json::array();
+    for (Eigen::Index i = 0; i < n.cols(); ++i) rows.push_back({n(0, i), n(1, i), n(2, i)});
+    root["normals"] = rows;
+  }
+  if (!visibility.is_none()) root["visibility"] = json_of(visibility);
+  if (!workspace.is_none()) root["workspace"] = json_of(workspace);
+  const std::string source = "Layout";
+  Layout out = io::parse_layout(root.dump(), source);
+  io::load_body(source, &out);
+  return out;
+}
+
 Layout make_layout(const py::object& vectors, const py::object& points, const py::object& weights,
                    const py::object& candidates, const py::object& names, const std::string& name,
-                   const std::string& description) {
+                   const std::string& description, const py::object& normals = py::none(),
+                   const py::object& visibility = py::none(),
+                   const py::object& workspace = py::none()) {
   if (vectors.is_none() == points.is_none()) {
     throw InvalidArgument(
         vectors.is_none() ? "vectors/points: missing; give vectors= (directions) or points= "
@@ -76,7 +107,8 @@ Layout make_layout(const py::object& vectors, const py::object& points, const py
       candidates.is_none() ? Eigen::Matrix3Xd(3, 0) : rows_from_array<3>(candidates, "candidates");
   layout.names = names_from(names);
   layout.validate();
-  return layout;
+  if (normals.is_none() && visibility.is_none() && workspace.is_none()) return layout;
+  return on_body(layout, normals, visibility, workspace);
 }
 
 py::object layout_dict(const Layout& layout) {
@@ -119,12 +151,16 @@ void bind_layouts(py::module_& module) {
       .def(py::init([](const py::object& vectors, const py::object& points,
                        const py::object& weights, const py::object& candidates,
                        const py::object& names, const std::string& name,
-                       const std::string& description) {
-             return make_layout(vectors, points, weights, candidates, names, name, description);
+                       const std::string& description, const py::object& normals,
+                       const py::object& visibility, const py::object& workspace) {
+             return make_layout(vectors, points, weights, candidates, names, name, description,
+                                normals, visibility, workspace);
            }),
            py::kw_only(), py::arg("vectors") = py::none(), py::arg("points") = py::none(),
            py::arg("weights") = py::none(), py::arg("candidates") = py::none(),
-           py::arg("names") = py::none(), py::arg("name") = "", py::arg("description") = "")
+           py::arg("names") = py::none(), py::arg("name") = "", py::arg("description") = "",
+           py::arg("normals") = py::none(), py::arg("visibility") = py::none(),
+           py::arg("workspace") = py::none())
       .def_readonly("name", &Layout::name)
       .def_property_readonly(
           "names",
@@ -144,6 +180,13 @@ void bind_layouts(py::module_& module) {
                              [](const Layout& l) { return array_from_vector(l.weights); })
       .def_property_readonly("candidates",
                              [](const Layout& l) { return array_from_columns(l.candidates); })
+      .def_property_readonly(
+          "normals",
+          [](const Layout& l) -> py::object {
+            if (!l.visibility) return py::none();
+            return array_from_columns(l.visibility->normals);
+          },
+          "n x 3 outward unit normals of the markers on their body, or None")
       .def("to_dict", &layout_dict, "The layout as the dict of its JSON file")
       .def("__len__", [](const Layout& l) { return l.entries.cols(); })
       .def("__repr__", [](const Layout& l) {

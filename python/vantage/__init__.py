@@ -31,8 +31,9 @@ from . import _vantage
 from ._results import (
     BoundCheck, Certificate, Crosscheck, DesignCoplanarity, DesignDirect, DesignResult,
     DesignState, DesignStep, DropoutEntry, EstimatorStats, LayoutCoplanarity, LayoutReport,
-    Orientation, PaperLmi, PerTrial, PoseAlternative, PoseCamera, PoseEstimate, SimulationReport, Solver,
-    Statistic, Swap, WeightsResult, WeightsSuggestion,
+    LayoutVisibility, LostRegion, Orientation, PaperLmi, PerTrial, PoseAlternative, PoseCamera,
+    PoseEstimate, SimulationReport, SimulationVisibility, Solver, Statistic, Swap,
+    VisibilityCertificate, VisibilityDropoutEntry, WeightsResult, WeightsSuggestion, Workspace,
 )
 from ._vantage import (
     Layout,
@@ -49,9 +50,10 @@ from ._vantage import (
 __all__ = [
     "BoundCheck", "Certificate", "Crosscheck", "DesignCoplanarity", "DesignDirect",
     "DesignResult", "DesignState", "DesignStep", "DropoutEntry", "EstimatorStats", "Layout",
-    "LayoutCoplanarity", "LayoutReport", "NumericalError", "Orientation", "PaperLmi", "PerTrial",
-    "PoseAlternative", "PoseCamera", "PoseEstimate", "SimulationReport", "Solver", "Statistic",
-    "Swap", "WeightsResult", "WeightsSuggestion", "__version__", "analyze", "board",
+    "LayoutCoplanarity", "LayoutReport", "LayoutVisibility", "LostRegion", "NumericalError", "Orientation", "PaperLmi", "PerTrial",
+    "PoseAlternative", "PoseCamera", "PoseEstimate", "SimulationReport", "SimulationVisibility",
+    "Solver", "Statistic", "Swap", "VisibilityCertificate", "VisibilityDropoutEntry",
+    "WeightsResult", "WeightsSuggestion", "Workspace", "__version__", "analyze", "board",
     "data_vectors", "design", "load_correspondences", "load_layout", "orient",
     "pbar_at_viewpoints", "pose", "pose_methods", "save_layout", "simulate", "weights",
 ]

@@ -19,9 +19,10 @@ from ._vantage import Layout
 __all__ = [
     "BoundCheck", "Certificate", "Crosscheck", "DesignCoplanarity", "DesignDirect",
     "DesignResult", "DesignState", "DesignStep", "DropoutEntry", "EstimatorStats",
-    "LayoutCoplanarity", "LayoutReport", "Orientation", "PaperLmi", "PoseAlternative",
-    "PerTrial", "PoseCamera", "PoseEstimate", "SimulationReport", "Solver", "Statistic", "Swap",
-    "WeightsResult", "WeightsSuggestion",
+    "LayoutCoplanarity", "LayoutReport", "LayoutVisibility", "LostRegion", "Orientation", "PaperLmi", "PoseAlternative",
+    "PerTrial", "PoseCamera", "PoseEstimate", "SimulationReport", "SimulationVisibility",
+    "Solver", "Statistic", "Swap", "VisibilityCertificate", "VisibilityDropoutEntry",
+    "WeightsResult", "WeightsSuggestion", "Workspace",
 ]
 
 FloatArray = npt.NDArray[np.float64]
@@ -166,6 +167,90 @@ class DropoutEntry(_JsonView):
         self.certified: bool = bool(fields["certified"])
 
 
+class Workspace(_JsonView):
+    """The directions analysed: the cap {a : a . axis >= cos(half_angle_deg)}."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.axis: FloatArray = _floats(fields["axis"])
+        self.half_angle_deg: float = _float(fields["half_angle_deg"])
+
+
+def _workspace(value: Any) -> Optional[Workspace]:
+    return None if value is None else Workspace(value)
+
+
+class VisibilityCertificate(_JsonView):
+    """t_lower (attained) <= the supremum of t over the trackable directions <= t_upper."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.t_upper: float = _float(fields["t_upper"])
+        self.t_lower: float = _float(fields["t_lower"])
+        self.certified: bool = bool(fields["certified"])
+
+
+class LostRegion(_JsonView):
+    """The untrackable part of the workspace and its largest connected region."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.fraction: float = _float(fields["fraction"])
+        center = fields["largest_region_center"]
+        self.largest_region_center: Optional[FloatArray] = (
+            None if center is None else _floats(center))
+        self.largest_region_radius_deg: float = _float(fields["largest_region_radius_deg"])
+
+
+class VisibilityDropoutEntry(_JsonView):
+    """The layout on its body without marker `lost`."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.lost: int = int(fields["lost"])
+        self.status: str = str(fields["status"])
+        self.t: float = _float(fields["t"])
+        self.pbar_min: float = _float(fields["pbar_min"])
+        self.max_worst_case_error_deg: float = _float(fields["max_worst_case_error_deg"])
+        self.trackable_fraction: float = _float(fields["trackable_fraction"])
+
+
+class LayoutVisibility(_JsonView):
+    """The layout on its body (``vantage analyze --json`` "visibility"; docs/math.md §20): the
+    worst viewpoint over the trackable directions of the workspace and its certificate.
+    Viewpoints are signed (body -> camera); without a trackable direction they are None."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.model: str = str(fields["model"])
+        self.min_visible: int = int(fields["min_visible"])
+        self.workspace: Optional[Workspace] = _workspace(fields["workspace"])
+        self.trackable_fraction: float = _float(fields["trackable_fraction"])
+        self.status: str = str(fields["status"])
+        self.t: float = _float(fields["t"])
+        self.pbar_min: float = _float(fields["pbar_min"])
+        self.max_worst_case_error_deg: float = _float(fields["max_worst_case_error_deg"])
+        viewpoint = fields["worst_viewpoint"]
+        self.worst_viewpoint: Optional[FloatArray] = (
+            None if viewpoint is None else _floats(viewpoint))
+        self.worst_viewpoints: FloatArray = _rows(fields["worst_viewpoints"])
+        self.visible_markers: IntArray = _ints(fields["visible_markers"])
+        self.certificate = VisibilityCertificate(fields["certificate"])
+        self.occlusion_resolution_deg: Optional[float] = (
+            None if fields["occlusion_resolution_deg"] is None
+            else _float(fields["occlusion_resolution_deg"]))
+        self.lost = LostRegion(fields["lost"])
+        self.distance_to_body: Optional[FloatArray] = (
+            _floats(fields["distance_to_body"]) if "distance_to_body" in fields else None)
+        self.off_body: Optional[IntArray] = (
+            _ints(fields["off_body"]) if "off_body" in fields else None)
+        self.dropout: Optional[List[VisibilityDropoutEntry]] = (
+            [VisibilityDropoutEntry(e) for e in fields["dropout"]] if "dropout" in fields
+            else None)
+        self.dropout_by_harm: Optional[IntArray] = (
+            _ints(fields["dropout_by_harm"]) if "dropout_by_harm" in fields else None)
+
+
 class LayoutReport(_JsonView):
     """The report of one layout (``vantage analyze --json``; C++ sdp::LayoutReport).
 
@@ -196,6 +281,8 @@ class LayoutReport(_JsonView):
         self.coplanarity = LayoutCoplanarity(fields["coplanarity"])
         self.dropout: Optional[List[DropoutEntry]] = (
             [DropoutEntry(e) for e in fields["dropout"]] if "dropout" in fields else None)
+        self.visibility: Optional[LayoutVisibility] = (
+            LayoutVisibility(fields["visibility"]) if "visibility" in fields else None)
         self.usable: bool = bool(fields["usable"])
         self.message: Optional[str] = _text(fields.get("message"))
 
@@ -441,6 +528,42 @@ class BoundCheck(_JsonView):
         self.message: str = str(fields.get("message", ""))
 
 
+class SimulationVisibility(_JsonView):
+    """The simulation on the body (``vantage simulate --json`` "visibility"): views drawn from
+    the trackable directions, images of the visible markers only, and (affine camera) the bound
+    check against each view's p-bar and the certified p-bar_min under visibility. The check's
+    fields are nan (passed True) when bound_checked is False (pinhole camera)."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.model: str = str(fields["model"])
+        self.min_visible: int = int(fields["min_visible"])
+        self.workspace: Optional[Workspace] = _workspace(fields["workspace"])
+        self.occlusion_resolution_deg: Optional[float] = (
+            None if fields["occlusion_resolution_deg"] is None
+            else _float(fields["occlusion_resolution_deg"]))
+        self.trackable_fraction: float = _float(fields["trackable_fraction"])
+        self.coverage_samples: int = int(fields["coverage_samples"])
+        self.worst_viewpoint: FloatArray = _floats(fields["worst_viewpoint"])
+        self.worst_visible_markers: IntArray = _ints(fields["worst_visible_markers"])
+        self.t_upper: float = _float(fields["t_upper"])
+        self.t_lower: float = _float(fields["t_lower"])
+        self.pbar_min: float = _float(fields["pbar_min"])
+        self.bound_deg: float = _float(fields["bound_deg"])
+        self.trials: int = int(fields["trials"])
+        self.draws: int = int(fields["draws"])
+        self.visible_markers = Statistic(fields["visible_markers"])
+        self.max_view_t: float = _float(fields["max_view_t"])
+        self.bound_checked: bool = bool(fields["bound_checked"])
+        self.max_error_deg: float = _float(fields.get("max_error_deg"))
+        self.max_ratio: float = _float(fields.get("max_ratio"))
+        self.max_view_ratio: float = _float(fields.get("max_view_ratio"))
+        self.max_view_excess_over_tolerance: float = _float(
+            fields.get("max_view_excess_over_tolerance"))
+        self.passed: bool = bool(fields.get("passed", True))
+        self.message: str = str(fields.get("message", ""))
+
+
 class SimulationReport(_JsonView):
     """vantage.simulate (``vantage simulate --json``): the estimators' statistics by name."""
 
@@ -456,6 +579,8 @@ class SimulationReport(_JsonView):
         self.bound_check: Optional[BoundCheck] = (
             BoundCheck(fields["bound_check"]) if isinstance(fields.get("bound_check"), dict)
             else None)
+        self.visibility: Optional[SimulationVisibility] = (
+            SimulationVisibility(fields["visibility"]) if "visibility" in fields else None)
         self.config: Dict[str, Any] = copy.deepcopy(fields["config"])
         self.per_trial: Optional[PerTrial] = (
             PerTrial(fields["per_trial"]) if "per_trial" in fields else None)

@@ -2,7 +2,7 @@
 # that return results are wrapped in vantage/__init__.py, which has the typed signatures users
 # call; this stub describes what the extension itself takes and returns.
 import os
-from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -22,7 +22,9 @@ class Layout:
     def __init__(self, *, vectors: _Array = None, points: _Array = None,
                  weights: _Array = None, candidates: _Array = None,
                  names: Optional[Sequence[str]] = None, name: str = "",
-                 description: str = "") -> None: ...
+                 description: str = "", normals: _Array = None,
+                 visibility: Optional[Mapping[str, Any]] = None,
+                 workspace: Optional[Mapping[str, Any]] = None) -> None: ...
     @property
     def name(self) -> str: ...
     @property
@@ -37,6 +39,8 @@ class Layout:
     def weights(self) -> npt.NDArray[np.float64]: ...
     @property
     def candidates(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def normals(self) -> Optional[npt.NDArray[np.float64]]: ...
     def to_dict(self) -> Dict[str, Any]: ...
     def __len__(self) -> int: ...
 

@@ -21,6 +21,35 @@ std::string number(double x, int digits) {
   return out.str();
 }
 
+std::string vector_text(const Eigen::Vector3d& v);
+
+/// The head of the report for a layout on its body: what the user will meet.
+std::string visibility_brief(const VisibilityReport& v) {
+  std::ostringstream out;
+  out << "on its body (" << (v.with_body ? "cones and the body's shadow" : "marker cones")
+      << ", at least " << v.min_visible << " markers seen):\n";
+  const std::string trackable = "  trackable            " +
+                                number(100.0 * v.coverage.trackable_fraction, 4) + " % of " +
+                                (v.workspace ? "the workspace" : "the sphere of directions") + "\n";
+  if (v.worst.status == VisibilityWorstViewpoint::Status::kUntrackable) {
+    out << "  UNTRACKABLE          no direction sees " << v.min_visible
+        << " markers that are not collinear\n"
+        << trackable;
+    return out.str();
+  }
+  out << "  pbar_min             " << number(v.worst.pbar_min, 9) << "\n"
+      << "  max worst-case error " << number(v.max_worst_case_error_deg, 6) << " deg (Eq. 30)\n"
+      << "  worst viewpoint a    " << vector_text(v.worst.viewpoint) << " ("
+      << v.worst.visible_markers.size() << " markers visible)\n"
+      << trackable << "  certificate          t in [" << number(v.worst.t_lower, 12) << ", "
+      << number(v.worst.t_upper, 12) << "], " << to_string(v.worst.status);
+  if (v.occlusion_resolution_deg) {
+    out << ", occlusion at " << number(*v.occlusion_resolution_deg, 3) << " deg";
+  }
+  out << "\n";
+  return out.str();
+}
+
 std::string vector_text(const Eigen::Vector3d& v) {
   std::string out = "[";
   for (int i = 0; i < 3; ++i) {
@@ -57,6 +86,9 @@ bool LayoutReportOptions::is_valid(std::string* why) const {
   if (!(coplanarity_threshold >= 0.0)) {
     return vantage::internal::invalid_option(why, "coplanarity_threshold", "must be >= 0");
   }
+  if (!visibility.is_valid(&inner)) {
+    return vantage::internal::invalid_option(why, "visibility", inner);
+  }
   return true;
 }
 
@@ -72,12 +104,19 @@ LayoutReport analyze_layout(const Layout& layout, const LayoutReportOptions& opt
     if (options.analysis.progress) options.analysis.progress("dropout");
     report.dropout = dropout_analysis(layout, options.dropout_options);
   }
+  if (layout.visibility) {
+    if (options.analysis.progress) options.analysis.progress("visibility");
+    VisibilityReportOptions visibility = options.visibility;
+    visibility.dropout = options.dropout;
+    report.visibility = analyze_visibility(layout, visibility);
+  }
   return report;
 }
 
 bool LayoutReport::is_usable() const {
   return analysis.trusted() && !analysis.degenerate && !analysis.near_degenerate &&
-         (!dropout || dropout->status == DropoutAnalysis::Status::kCertified);
+         (!dropout || dropout->status == DropoutAnalysis::Status::kCertified) &&
+         (!visibility || visibility->is_usable());
 }
 
 std::string LayoutReport::message() const {
@@ -88,12 +127,17 @@ std::string LayoutReport::message() const {
         &out,
         "dropout: " + (dropout->message.empty() ? std::string("not certified") : dropout->message));
   }
+  if (visibility && !visibility->is_usable()) {
+    internal::append_message(&out, visibility->message());
+  }
   return out;
 }
 
 std::string LayoutReport::brief_report() const {
   const LayoutAnalysis& r = analysis;
   std::ostringstream out;
+  if (visibility)
+    out << visibility_brief(*visibility) << "seen whole (every marker from everywhere):\n";
   if (r.degenerate) {
     out << "DEGENERATE             every data vector is parallel to one line: the rotation "
            "about it is not determined\n";

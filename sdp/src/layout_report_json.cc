@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "vantage/sdp/layout_report.h"
+#include "visibility_report_json.h"
 
 namespace vantage::sdp {
 namespace {
@@ -98,6 +99,7 @@ std::string to_json(const LayoutReport& report) {
                         {"nearly_coplanar", report.coplanarity.nearly_coplanar},
                         {"threshold", report.coplanarity.threshold}};
   if (report.dropout) out["dropout"] = dropout(*report.dropout);
+  if (report.visibility) out["visibility"] = internal::visibility_json(*report.visibility);
   out["usable"] = report.is_usable();
   const std::string message = report.message();
   if (!message.empty()) out["message"] = message;

@@ -322,11 +322,17 @@ TEST(HardeningCli, SatelliteReportLeadsWithTheVerdict) {
   std::string line;
   std::vector<std::string> all;
   while (std::getline(lines, line)) all.push_back(line);
-  ASSERT_GT(all.size(), 5u);
-  EXPECT_EQ(all[3].rfind("pbar_min", 0), 0u) << run.out;
-  EXPECT_EQ(all[4].rfind("max worst-case error", 0), 0u) << run.out;
+  ASSERT_GT(all.size(), 12u);
+  // The satellite has normals: what its body lets a camera see comes first, then the layout
+  // seen whole, each with its verdict in its first two lines.
+  EXPECT_EQ(all[3].rfind("on its body", 0), 0u) << run.out;
+  EXPECT_EQ(all[4].rfind("  pbar_min", 0), 0u) << run.out;
+  EXPECT_EQ(all[5].rfind("  max worst-case error", 0), 0u) << run.out;
+  EXPECT_EQ(all[9].rfind("seen whole", 0), 0u) << run.out;
+  EXPECT_EQ(all[10].rfind("pbar_min", 0), 0u) << run.out;
+  EXPECT_EQ(all[11].rfind("max worst-case error", 0), 0u) << run.out;
   EXPECT_THAT(run.out, HasSubstr("5 of 66 (--verbose or --json for all)"));
-  EXPECT_LT(all.size(), 30u) << "the default report stays short";
+  EXPECT_LT(all.size(), 36u) << "the default report stays short";
   EXPECT_THAT(run.out, Not(HasSubstr("-0.000000")));
   // Noise-free swaps of the satellite's free vectors never move the rotation: said plainly.
   EXPECT_THAT(run.out, HasSubstr("0 deg for every one of the 2145 pairs"));

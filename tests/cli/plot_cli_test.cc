@@ -99,6 +99,8 @@ TEST(PlotCli, BadInputIsOneLineExitTwoAndWritesNothing) {
       {"out cannot be created", nullptr, "LAYOUT --out /proc/vantage_figures", "--out"},
       {"bad layout", R"({"vectors": [[1, 0, 0], [0, 0, 0]]})", "in.json --out figs", "in.json"},
       {"design file not JSON", nullptr, "LAYOUT --out figs --design in.txt", "in.txt"},
+      {"visibility figure without normals", nullptr, "LAYOUT --out figs --only visibility",
+       "--only"},
   };
   for (const testing::BadCall& call : calls) {
     SCOPED_TRACE(call.name);
@@ -112,6 +114,19 @@ TEST(PlotCli, BadInputIsOneLineExitTwoAndWritesNothing) {
     EXPECT_FALSE(std::filesystem::exists(scratch.dir() / "figs"));
     EXPECT_FALSE(std::filesystem::exists("/proc/vantage_figures"));
   }
+}
+
+TEST(PlotCli, OnABodyTheVisibilityFigureAndBothAnswers) {
+  ScratchDir scratch;
+  const auto json =
+      testing::run_json("plot " + layout("satellite") + " --out figs --only visibility", scratch);
+  ASSERT_EQ(json["figures"].size(), 1u);
+  EXPECT_EQ(json["figures"][0]["image"], "figs/visibility.png");
+  const auto analysis = testing::run_json("analyze " + layout("satellite") + " --json", scratch);
+  EXPECT_EQ(json["visibility"]["max_worst_case_error_deg"],
+            analysis["visibility"]["max_worst_case_error_deg"]);
+  EXPECT_EQ(json["visibility"]["trackable_fraction"], analysis["visibility"]["trackable_fraction"]);
+  EXPECT_EQ(json["max_worst_case_error_deg"], analysis["max_worst_case_error_deg"]) << "seen whole";
 }
 
 TEST(AnalyzeDropoutCli, EntriesEqualTheAnalysisOfTheLayoutWithoutThatVector) {

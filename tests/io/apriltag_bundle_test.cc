@@ -177,6 +177,11 @@ TEST(AprilTagBundle, RotatedTagsKeepTheirSizeAndLieInTheirPlane) {
     const Eigen::Vector3d turn =
         (corners.col(1) - corners.col(0)).cross(corners.col(2) - corners.col(1));
     EXPECT_NEAR(turn.normalized().dot(R.col(2)), 1.0, kTurnTolerance) << trial;
+    // Each corner's normal is the side its corners turn counter-clockwise about: the tag's face.
+    ASSERT_TRUE(m.layout.visibility.has_value());
+    for (int c = 0; c < 4; ++c) {
+      EXPECT_NEAR(m.layout.visibility->normals.col(c).dot(turn.normalized()), 1.0, kTurnTolerance);
+    }
   }
 }
 

@@ -47,8 +47,14 @@ const BadCsv kBadCsvs[] = {
     {"Empty", "", "no marker rows"},
     {"OnlyComments", "# nothing\n\n# here\n", "no marker rows"},
     {"OnlyHeader", "name,x,y,z\n", "no marker rows after the header"},
-    {"ThreeFields", "a,0,0\nb,1,0\nc,0,1\n", "line 1: expected 4 or 5 fields"},
-    {"SixFields", "a,0,0,0,1,9\n", "line 1: expected 4 or 5 fields"},
+    {"ThreeFields", "a,0,0\nb,1,0\nc,0,1\n", "line 1: expected 4, 5, 7 or 8 fields"},
+    {"SixFields", "a,0,0,0,1,9\n", "line 1: expected 4, 5, 7 or 8 fields"},
+    {"ZeroNormal", "a,0,0,0,0,0,1\nb,1,0,0,0,0,0\nc,0,1,0,0,0,1\n",
+     "line 2 (b), nx,ny,nz: zero length"},
+    {"NormalNotANumber", "a,0,0,0,1,0,0,1\nb,1,0,0,1,0,x,0\nc,0,1,0,1,0,0,1\n",
+     "line 2 (b), ny: expected a finite number"},
+    {"HeaderMisnamesNormals", "name,x,y,z,w,nx,ny,nz\na,0,0,0,1,0,0,1\nb,1,0,0,1,0,0,1\n",
+     "line 1: column 5 of the header is \"w\", expected \"weight\""},
     {"RaggedRow", "a,0,0,0\nb,1,0,0,2\nc,0,1,0\n", "line 2 (b): expected 4 fields like the first"},
     {"TypoInTheFirstRow", "a,0,O,0\nb,1,0,0\nc,0,1,0\nd,1,1,1\n",
      "line 1 (a), y: expected a finite number, got \"O\""},
@@ -151,6 +157,32 @@ TEST(CsvLayout, WrittenCsvReadsBackExactly) {
   layout.names.clear();
   EXPECT_THAT(parse_csv_markers(layout_to_csv(layout), "b.csv").layout.names,
               ElementsAre("p0", "p1", "p2", "p3"));
+}
+
+// Normals in nx,ny,nz columns (7 fields, or 8 with the weight): normalised on reading, written
+// back and read again exactly; the rest of the visibility model has no CSV column.
+TEST(CsvLayout, NormalsColumnsReadNormalisedAndWriteBack) {
+  const CsvMarkers seven =
+      parse_csv_markers("a,0,0,0,0,0,2\nb,1,0,0,3,4,0\nc,0,1,0,0,-1,0\n", "n.csv");
+  ASSERT_TRUE(seven.layout.visibility.has_value());
+  const Eigen::Matrix3Xd& n = seven.layout.visibility->normals;
+  EXPECT_EQ(n.col(0), Eigen::Vector3d(0, 0, 1));
+  EXPECT_NEAR((n.col(1) - Eigen::Vector3d(0.6, 0.8, 0)).norm(), 0.0, 1e-15);
+  EXPECT_TRUE((seven.layout.weights.array() == 1.0).all());
+  EXPECT_TRUE(
+      (seven.layout.visibility->cone_half_angle_deg.array() == MarkerVisibility::kDefaultConeDeg)
+          .all());
+  const CsvMarkers eight = parse_csv_markers(
+      "name,x,y,z,weight,nx,ny,nz\na,0,0,0,2,0,0,1\nb,1,0,0,1,1,0,0\nc,0,1,0,1,0,1,0\n", "n.csv");
+  EXPECT_EQ(eight.layout.weights(0), 2.0);
+  EXPECT_EQ(eight.layout.visibility->normals.col(1), Eigen::Vector3d(1, 0, 0));
+  const std::string text = layout_to_csv(seven.layout);
+  EXPECT_THAT(text, HasSubstr("name,x,y,z,weight,nx,ny,nz\n"));
+  const CsvMarkers again = parse_csv_markers(text, "n.csv");
+  EXPECT_TRUE((again.layout.visibility->normals.array() == n.array()).all());
+  Layout narrow = seven.layout;
+  narrow.visibility->cone_half_angle_deg.setConstant(45.0);
+  EXPECT_THROW(layout_to_csv(narrow), InvalidArgument);
 }
 
 TEST(CsvLayout, WriterRefusesWhatCsvCannotHold) {

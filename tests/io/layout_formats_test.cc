@@ -129,7 +129,7 @@ TEST(LayoutFormats, SaveWritesTheFormatTheExtensionNames) {
   // same markers, weights and names.
   EXPECT_THROW(parse_layout(read_text_file(scratch.file("body.csv")), "body.csv"), InvalidArgument);
   const Layout from_csv = load_layout(scratch.file("body.csv"));
-  const Layout from_json = load_layout(scratch.file("body.JSON"), {LayoutFormat::kJson});
+  const Layout from_json = load_layout(scratch.file("body.JSON"), {LayoutFormat::kJson, {}});
   for (const Layout* again : {&from_csv, &from_json}) {
     EXPECT_TRUE((again->entries.array() == csv.entries.array()).all());
     EXPECT_TRUE((again->weights.array() == csv.weights.array()).all());

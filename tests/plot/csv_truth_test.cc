@@ -61,6 +61,10 @@ class CsvTruth : public ::testing::TestWithParam<const char*> {
  protected:
   void SetUp() override {
     layout_ = example_layout(GetParam());
+    // The figures of the layout seen whole (those of a layout on its body:
+    // visibility_figures_test.cc).
+    layout_.visibility.reset();
+    layout_.workspace.reset();
     data_ = data_vectors(layout_);
     sdp::LayoutAnalysisOptions options;
     options.run_crosscheck = false;
@@ -129,6 +133,7 @@ TEST_P(CsvTruth, DropoutRowsEqualTheAnalysisOfTheReducedLayout) {
     EXPECT_GE(pbar, previous - kRounding) << "sorted by harm";
     previous = pbar;
     Layout reduced = layout_;
+    reduced.visibility.reset();  // the rows are the layout seen whole
     reduced.entries.resize(3, n - 1);
     reduced.weights.resize(n - 1);
     for (long i = 0, j = 0; i < n; ++i) {

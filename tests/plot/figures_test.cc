@@ -103,10 +103,12 @@ TEST_P(EveryFigure, RendersWithItsCsv) {
   EXPECT_EQ(::testing::internal::GetCapturedStderr(), "") << "the library must stay silent";
   EXPECT_EQ(figures.status, LayoutFigures::Status::kCertified);
 
-  ASSERT_EQ(figures.files.size(), kFigureNames.size());
-  for (std::size_t k = 0; k < kFigureNames.size(); ++k) {
+  const std::vector<std::string> names =
+      selected_figures(options, true, layout.visibility.has_value());
+  ASSERT_EQ(figures.files.size(), names.size());
+  for (std::size_t k = 0; k < names.size(); ++k) {
     const FigureFiles& f = figures.files[k];
-    EXPECT_EQ(f.name, kFigureNames[k]);
+    EXPECT_EQ(f.name, names[k]);
     EXPECT_EQ(f.image, dir.path() / (f.name + "." + to_string(format)));
     EXPECT_EQ(f.csv, dir.path() / (f.name + ".csv"));
     ASSERT_TRUE(std::filesystem::exists(f.image)) << f.image;
@@ -134,7 +136,7 @@ TEST_P(EveryFigure, RendersWithItsCsv) {
     ++entries;
     EXPECT_NE(entry.path().filename().string().front(), '.') << "temporary file left behind";
   }
-  EXPECT_EQ(entries, 2 * kFigureNames.size());
+  EXPECT_EQ(entries, 2 * names.size());
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -159,6 +161,7 @@ TEST(Figures, SelectionFollowsOnlyAndNeedsADesignForTheDesignFigure) {
   EXPECT_EQ(selected_figures(options, false),
             (std::vector<std::string>{"viewpoint_map", "dropout", "error_surface", "vectors"}));
   EXPECT_EQ(selected_figures(options, true).size(), 5u);
+  EXPECT_EQ(selected_figures(options, true, true).size(), 6u) << "with normals: visibility";
   options.only = {"vectors", "dropout"};
   EXPECT_EQ(selected_figures(options, false), (std::vector<std::string>{"dropout", "vectors"}));
   options.only = {"histogram"};

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -53,6 +54,11 @@ TEST(LayoutDocument, EveryEditIsUndoneExactly) {
   // entry needs a name too.
   ASSERT_EQ(grown.names.size(), 11u);
   grown.names.push_back("new");
+  MarkerVisibility& on_body = *grown.visibility;
+  on_body.normals.conservativeResize(3, on_body.normals.cols() + 1);
+  on_body.normals.col(on_body.normals.cols() - 1) = Eigen::Vector3d::UnitZ();
+  on_body.cone_half_angle_deg.conservativeResize(on_body.normals.cols());
+  on_body.cone_half_angle_deg(on_body.normals.cols() - 1) = 80.0;
   doc.replace(grown);
   EXPECT_EQ(doc.undo_depth(), 3u);
   EXPECT_TRUE(doc.modified());
@@ -65,6 +71,66 @@ TEST(LayoutDocument, EveryEditIsUndoneExactly) {
   expect_same_layout(doc.layout(), original);
   EXPECT_FALSE(doc.undo());
   EXPECT_EQ(doc.revision(), r0 + 6);  // three edits and three undos, each a new revision
+}
+
+TEST(LayoutDocument, RemovingAMarkerRemovesItsNormalAndCone) {
+  Layout layout = io::read_layout(kSatellite);
+  ASSERT_TRUE(layout.visibility);
+  layout.visibility->cone_half_angle_deg(5) = 30.0;  // one marker's cone differs
+  LayoutDocument doc(layout, kSatellite);
+  doc.remove_entry(4);
+  const MarkerVisibility& left = *doc.layout().visibility;
+  ASSERT_EQ(left.normals.cols(), 11);
+  ASSERT_EQ(left.cone_half_angle_deg.size(), 11);
+  for (Eigen::Index i = 0; i < 11; ++i) {
+    const Eigen::Index from = i < 4 ? i : i + 1;
+    EXPECT_EQ(left.normals.col(i), layout.visibility->normals.col(from)) << i;
+    EXPECT_EQ(left.cone_half_angle_deg(i), layout.visibility->cone_half_angle_deg(from)) << i;
+  }
+  EXPECT_EQ(left.cone_half_angle_deg(4), 30.0);
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(doc.layout().visibility->normals, layout.visibility->normals);
+}
+
+TEST(LayoutDocument, ConeAndMinVisibleEditsAreUndoableAndBadOnesThrow) {
+  LayoutDocument doc(io::read_layout(kSatellite), kSatellite);
+  const Layout original = doc.layout();
+  std::uint64_t revision = doc.revision();
+  doc.set_cone_half_angle_deg(45.0);
+  EXPECT_EQ(doc.revision(), ++revision);
+  EXPECT_TRUE((doc.layout().visibility->cone_half_angle_deg.array() == 45.0).all());
+  doc.set_cone_half_angle_deg(180.0);  // the closed end of (0, 180]
+  doc.set_min_visible(12);             // every marker
+  EXPECT_EQ(doc.layout().visibility->min_visible, 12);
+  revision += 2;
+  auto expect_refused = [&](auto edit, const std::string& field) {
+    const Layout before = doc.layout();
+    try {
+      edit();
+      FAIL() << field << ": accepted";
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(field + ":", 0), 0u) << e.what();
+    }
+    EXPECT_EQ(doc.revision(), revision);
+    EXPECT_EQ(doc.layout().visibility->cone_half_angle_deg, before.visibility->cone_half_angle_deg);
+    EXPECT_EQ(doc.layout().visibility->min_visible, before.visibility->min_visible);
+  };
+  const std::string cone = "visibility.cone_half_angle_deg";
+  expect_refused([&] { doc.set_cone_half_angle_deg(0.0); }, cone);
+  expect_refused([&] { doc.set_cone_half_angle_deg(180.000001); }, cone);
+  expect_refused([&] { doc.set_cone_half_angle_deg(std::nan("")); }, cone);
+  expect_refused([&] { doc.set_cone_half_angle_deg(INFINITY); }, cone);
+  expect_refused([&] { doc.set_min_visible(2); }, "visibility.min_visible");
+  expect_refused([&] { doc.set_min_visible(13); }, "visibility.min_visible");
+  ASSERT_TRUE(doc.undo());
+  ASSERT_TRUE(doc.undo());
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(doc.layout().visibility->cone_half_angle_deg, original.visibility->cone_half_angle_deg);
+  EXPECT_EQ(doc.layout().visibility->min_visible, original.visibility->min_visible);
+
+  LayoutDocument whole(LayoutDocument::default_layout());
+  EXPECT_THROW(whole.set_cone_half_angle_deg(45.0), InvalidArgument);
+  EXPECT_THROW(whole.set_min_visible(3), InvalidArgument);
 }
 
 TEST(LayoutDocument, ADragIsOneUndoStep) {

@@ -41,6 +41,9 @@ TEST(ViewerCli, BadOptionsNameTheOption) {
   expect_refused(run_viewer("env -u DISPLAY", "--size 100000x900", scratch), "--size");
   expect_refused(run_viewer("env -u DISPLAY", "--view bottom", scratch), "--view");
   expect_refused(run_viewer("env -u DISPLAY", "--frames 0", scratch), "--frames");
+  expect_refused(run_viewer("env -u DISPLAY", "--pin 0,0,0", scratch), "--pin");
+  expect_refused(run_viewer("env -u DISPLAY", "--pin 1,2", scratch), "--pin");
+  expect_refused(run_viewer("env -u DISPLAY", "--pin 1,2,nan", scratch), "--pin");
 }
 
 TEST(ViewerCli, NoDisplayIsAFailureNotACrash) {

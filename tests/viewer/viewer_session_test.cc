@@ -11,7 +11,9 @@
 #include "support/eigen_testing.h"
 #include "vantage/analysis/common.h"
 #include "vantage/io/layout_file.h"
+#include "vantage/io/layout_formats.h"
 #include "vantage/sdp/layout_analysis.h"
+#include "vantage/sdp/visibility_report.h"
 #include "viewer/viewer_runner.h"
 
 namespace vantage::viewer {
@@ -220,6 +222,88 @@ TEST(ViewerSession, ShadingAndReadoutAgreeWithTheCertifiedWorstCase) {
     EXPECT_NEAR(r.max_error_deg, report.max_worst_case_error_deg, kReadoutDeg);
     EXPECT_NEAR(r.p(r.limiting), r.pbar_at, kExact);
   }
+}
+
+// The satellite on its body (io::load_layout reads the mesh the file names).
+ViewerSession open_on_body() {
+  return ViewerSession(
+      LayoutDocument(io::load_layout(kLayouts + "satellite.json"), kLayouts + "satellite.json"));
+}
+
+TEST(ViewerSession, ConeEditIsReanalysedThroughTheWorkerAsAnalyze) {
+  ViewerSession session = open_on_body();
+  ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
+  ASSERT_TRUE(session.analysis()->visibility);
+  const sdp::VisibilityReport before = *session.analysis()->visibility;
+  const std::uint64_t revision = session.document().revision();
+  ASSERT_TRUE(session.set_cone_half_angle_deg(60.0));
+  EXPECT_EQ(session.document().revision(), revision + 1);
+  EXPECT_FALSE(session.analysis_current()) << "the edit asks for a new analysis";
+  ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
+  ASSERT_EQ(session.analysis()->error, "");
+  const sdp::VisibilityReport& after = *session.analysis()->visibility;
+
+  // What `vantage analyze --cone-deg 60` computes: the file with every cone set to 60 degrees.
+  Layout edited = io::load_layout(kLayouts + "satellite.json");
+  edited.visibility->cone_half_angle_deg.setConstant(60.0);
+  const sdp::VisibilityReport want = sdp::analyze_visibility(edited);
+  EXPECT_NEAR(after.worst.t, want.worst.t, kSameRun);
+  EXPECT_NEAR(after.worst.t_upper, want.worst.t_upper, kSameRun);
+  EXPECT_EQ(after.worst.visible_markers, want.worst.visible_markers);
+  EXPECT_EQ(after.coverage.trackable_fraction, want.coverage.trackable_fraction);
+  // A narrower cone sees a subset of the markers from every direction: nothing becomes
+  // trackable (the coverage samples the same directions).
+  EXPECT_LE(after.coverage.trackable_fraction, before.coverage.trackable_fraction);
+  EXPECT_NE(after.worst.t, before.worst.t);
+  // The viewer's own model follows the edit too.
+  ASSERT_NE(session.visibility(), nullptr);
+  EXPECT_NEAR(session.visibility()->problem().cos_cone(0), std::cos(60.0 / kDegreesPerRadian),
+              kSameRun);
+
+  ASSERT_TRUE(session.set_min_visible(5));
+  ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
+  EXPECT_EQ(session.analysis()->visibility->min_visible, 5);
+  EXPECT_LE(session.analysis()->visibility->coverage.trackable_fraction,
+            after.coverage.trackable_fraction);
+  ASSERT_TRUE(session.undo());
+  ASSERT_TRUE(session.undo());
+  ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
+  EXPECT_EQ(session.analysis()->visibility->worst.t, before.worst.t) << "undo: the same answer";
+}
+
+TEST(ViewerSession, BadVisibilityEditsAreRefusedAndChangeNothing) {
+  ViewerSession session = open_on_body();
+  ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
+  const std::uint64_t revision = session.document().revision();
+  for (const double cone : {0.0, -10.0, 180.5, std::nan("")}) {
+    EXPECT_FALSE(session.set_cone_half_angle_deg(cone)) << cone;
+    EXPECT_TRUE(session.message_is_error());
+    EXPECT_NE(session.message().find("visibility.cone_half_angle_deg"), std::string::npos)
+        << session.message();
+  }
+  for (const int k : {2, 13}) {
+    EXPECT_FALSE(session.set_min_visible(k)) << k;
+    EXPECT_NE(session.message().find("visibility.min_visible"), std::string::npos)
+        << session.message();
+  }
+  EXPECT_EQ(session.document().revision(), revision);
+  EXPECT_TRUE(session.analysis_current()) << "no analysis was asked for";
+  EXPECT_FALSE(session.working());
+  EXPECT_EQ(session.layout().visibility->cone_half_angle_deg(0), 80.0);
+
+  // The augmenter's marker comes with a normal and a cone (analysis' append_entry).
+  const Eigen::Index before = session.layout().entries.cols();
+  session.step_augmenter();
+  ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
+  EXPECT_FALSE(session.message_is_error()) << session.message();
+  ASSERT_EQ(session.layout().entries.cols(), before + 1);
+  EXPECT_EQ(session.layout().visibility->normals.cols(), before + 1);
+  EXPECT_EQ(session.layout().visibility->cone_half_angle_deg.size(), before + 1);
+
+  ViewerSession whole = open("triad.json");
+  EXPECT_FALSE(whole.set_cone_half_angle_deg(45.0));
+  EXPECT_NE(whole.message().find("visibility.cone_half_angle_deg"), std::string::npos)
+      << whole.message();
 }
 
 TEST(ViewerSession, ViewPresetsUseTheAnalysis) {

@@ -1,4 +1,5 @@
 // vantage-viewer [LAYOUT] [--screenshot FILE.png [--frames N]] [--size WxH] [--view NAME]
+//                [--pin AX,AY,AZ]
 //
 // The interactive viewer (GLFW + Dear ImGui). Exit status: 0 done, 2 bad input or usage (one
 // line on stderr naming the file, field or option), 1 failure (no display or OpenGL context,
@@ -6,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <Eigen/Core>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -36,6 +38,19 @@ bool parse_size(const std::string& text, int* width, int* height) {
   return true;
 }
 
+// "AX,AY,AZ", a finite non-zero direction; normalised.
+bool parse_direction(const std::string& text, Eigen::Vector3d* direction) {
+  double x = 0.0;
+  double y = 0.0;
+  double z = 0.0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &x, &y, &z, &extra) != 3) return false;
+  const Eigen::Vector3d d(x, y, z);
+  if (!d.allFinite() || !(d.norm() > 0.0)) return false;
+  *direction = d / d.norm();
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -56,6 +71,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1000));
   cli.add_option("--size", size, "window size WxH in pixels (320..8192 each)");
   cli.add_option("--view", view, "starting view: " + vantage::viewer::view_preset_names());
+  std::string pin;
+  cli.add_option("--pin", pin,
+                 "pin the viewpoint AX,AY,AZ (object frame, body -> camera; normalised): the "
+                 "readout and the inset show it");
   cli.add_option("--timeout", options.timeout_seconds,
                  "with --screenshot: seconds to wait for the analysis (>= 1)")
       ->check(CLI::Range(1, 86400));
@@ -80,6 +99,12 @@ int main(int argc, char** argv) {
     return 2;
   }
   options.view = *preset;
+  Eigen::Vector3d pinned = Eigen::Vector3d::UnitZ();
+  if (!pin.empty() && !parse_direction(pin, &pinned)) {
+    std::cerr << "vantage-viewer: --pin: expected AX,AY,AZ, a non-zero direction, got '" << pin
+              << "'\n";
+    return 2;
+  }
 
   std::optional<vantage::viewer::LayoutDocument> document;
   try {
@@ -91,5 +116,6 @@ int main(int argc, char** argv) {
     return 2;
   }
   vantage::viewer::ViewerSession session(std::move(*document));
+  if (!pin.empty()) session.pinned_viewpoint = pinned;
   return vantage::viewer::app::run_window(session, options);
 }

@@ -50,7 +50,7 @@ void Panels::design_panel(ViewerSession& session) {
   ImGui::Text("%s mode: %d %ss -> %d data vectors", to_string(layout.mode),
               static_cast<int>(layout.entries.cols()), entry_word(layout),
               static_cast<int>(session.data().vectors.cols()));
-  ImGui::BeginDisabled(session.augmenting());
+  ImGui::BeginDisabled(session.augmenting() || layout.visibility.has_value());
   if (ImGui::Button(session.augmenting() ? "Augmenting..." : "Add next (A)")) {
     session.step_augmenter();
   }
@@ -70,6 +70,10 @@ void Panels::design_panel(ViewerSession& session) {
   }
   ImGui::Separator();
   analysis_summary(session);
+  if (layout.visibility) {
+    ImGui::Separator();
+    visibility_editor(session);
+  }
   ImGui::Separator();
   entry_editor(session);
 }
@@ -88,6 +92,10 @@ void Panels::analysis_summary(const ViewerSession& session) {
   }
   const sdp::LayoutAnalysis& r = snap->analysis;
   if (!session.analysis_current()) ImGui::TextColored(ImVec4(1, 0.75f, 0.25f, 1), "recomputing...");
+  if (snap->visibility) {
+    visibility_summary(*snap);
+    ImGui::TextDisabled("seen whole (every camera sees every marker):");
+  }
   ImGui::Text("p\u0304_min %.6f  (max error %.2f\u00b0, Eq. 30)", r.pbar_min,
               r.max_worst_case_error_deg);
   ImGui::Text("ceiling cos(\u03c0/2m) %.6f  (m = %d)", snap->ceiling,

@@ -1,10 +1,13 @@
 #pragma once
 
 // The panel column of vantage-viewer: the layout and design panel (augmenter, undo, edit,
-// remove, load/save, p_bar_min, certificate, ceiling, coplanarity), the viewpoint readout (p_i,
-// p_bar, Eq. 26 errors) and the Eq. (26) error surface with the current viewpoint on it.
+// remove, load/save, p_bar_min, certificate, ceiling, coplanarity; for markers on a body the
+// answer with visibility first, and the cone and min_visible editors), the viewpoint readout
+// (p_i, p_bar, Eq. 26 errors; the markers the viewpoint sees) and the Eq. (26) error surface with
+// the current viewpoint on it.
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +31,9 @@ class Panels {
  private:
   void design_panel(ViewerSession& session);
   void analysis_summary(const ViewerSession& session);
+  void visibility_summary(const AnalysisSnapshot& snapshot);
+  void visibility_editor(ViewerSession& session);
+  void visibility_readout(const ViewerSession& session, const Eigen::Vector3d& a);
   void entry_editor(ViewerSession& session);
   void readout_panel(const ViewerSession& session, const std::optional<Eigen::Vector3d>& hovered);
   void error_surface_panel(const ViewerSession& session,
@@ -47,6 +53,9 @@ class Panels {
   bool confirm_discard_ = false;  // the Load dialog asked whether to drop unsaved edits
   int edited_entry_ = -1;
   float edit_value_[3] = {0, 0, 0};
+  std::uint64_t visibility_revision_ = 0;  // the revision the two fields below were read from
+  double cone_edit_ = 0.0;
+  int min_visible_edit_ = 3;
 };
 
 }  // namespace vantage::viewer::app

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <numeric>
 #include <string>
+#include <vector>
 
 #include "draw_style.h"
 #include "panels.h"
@@ -47,6 +48,11 @@ std::optional<Eigen::Vector3d> Panels::shown_viewpoint(
     return session.pinned_viewpoint;
   }
   if (session.analysis() && session.analysis()->error.empty()) {
+    const std::optional<sdp::VisibilityReport>& body = session.analysis()->visibility;
+    if (body && body->worst.status != sdp::VisibilityWorstViewpoint::Status::kUntrackable) {
+      *what = "the worst viewpoint on the body (hover the sphere)";
+      return body->worst.viewpoint;
+    }
     *what = "the global worst viewpoint (hover the sphere)";
     return session.analysis()->analysis.worst_viewpoint;
   }
@@ -65,6 +71,15 @@ void Panels::readout_panel(const ViewerSession& session,
   const ViewpointReadout r = read_viewpoint(data.vectors, *a);
   ImGui::TextDisabled("%s", what);
   ImGui::Text("a = (%.3f, %.3f, %.3f)", a->x(), a->y(), a->z());
+  std::vector<bool> hidden;  // per marker, for markers on a body
+  if (session.visibility() != nullptr) {
+    visibility_readout(session, *a);
+    hidden.assign(static_cast<std::size_t>(session.layout().entries.cols()), true);
+    for (const int i : read_visibility(*session.visibility(), *a).visible) {
+      hidden[static_cast<std::size_t>(i)] = false;
+    }
+    ImGui::TextDisabled("seen whole:");
+  }
   ImGui::Text("p\u0304(a) = %.4f   worst-case error arccos p\u0304 = %.2f\u00b0", r.pbar_at,
               r.max_error_deg);
   std::vector<int> order(static_cast<std::size_t>(r.p.size()));
@@ -87,7 +102,14 @@ void Panels::readout_panel(const ViewerSession& session,
                                    ? layout.entry_name(i)
                                    : layout.entry_name(data.pairs[i].first) + "\u2192" +
                                          layout.entry_name(data.pairs[i].second);
-      ImGui::Text("%s%s", name.c_str(), i == r.limiting ? "  (sets p\u0304)" : "");
+      const bool unseen = !hidden.empty() && !data.pairs.empty() &&
+                          (hidden[static_cast<std::size_t>(data.pairs[i].first)] ||
+                           hidden[static_cast<std::size_t>(data.pairs[i].second)]);
+      if (unseen) {
+        ImGui::TextDisabled("%s  (hidden)", name.c_str());
+      } else {
+        ImGui::Text("%s%s", name.c_str(), i == r.limiting ? "  (sets p\u0304)" : "");
+      }
       ImGui::TableNextColumn();
       ImGui::Text("%.4f", r.p(i));
       ImGui::TableNextColumn();

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "body_view.h"
 #include "draw_style.h"
 #include "vantage/analysis/common.h"
 #include "vantage/plot/colormap.h"
@@ -76,12 +77,49 @@ struct Painter {
   }
 };
 
+// The visibility report of the current analysis, when the layout has normals and it is current.
+const sdp::VisibilityReport* current_visibility(const ViewerSession& session) {
+  if (!session.analysis_current() || !session.analysis()->error.empty()) return nullptr;
+  return session.analysis()->visibility ? &*session.analysis()->visibility : nullptr;
+}
+
+// The top of the colour scale: the certified worst-case error (with visibility for markers on a
+// body), or the largest shaded value while the analysis runs.
 double colour_range_deg(const ViewerSession& session) {
+  if (const VisibilityShading* vis = session.visibility_shading()) {
+    const sdp::VisibilityReport* report = current_visibility(session);
+    if (report != nullptr &&
+        report->worst.status != sdp::VisibilityWorstViewpoint::Status::kUntrackable) {
+      return report->max_worst_case_error_deg;
+    }
+    double top = 0.0;
+    for (std::size_t v = 0; v < vis->states.size(); ++v) {
+      if (vis->states[v] == ViewpointState::kTrackable) {
+        top = std::max(top, vis->error_deg(static_cast<Eigen::Index>(v)));
+      }
+    }
+    return top;
+  }
   if (session.analysis_current() && session.analysis()->error.empty()) {
     return kDegreesPerRadian *
            std::acos(std::clamp(session.analysis()->analysis.pbar_min, 0.0, 1.0));
   }
   return session.shading().error_deg.maxCoeff();
+}
+
+// A vertex's colour: its error on the scale, or grey where it cannot track the body.
+plot::Rgb vertex_colour(const ViewerSession& session, Eigen::Index v, double top) {
+  const VisibilityShading* vis = session.visibility_shading();
+  if (vis == nullptr) return plot::value_colour(session.shading().error_deg(v), 0.0, top);
+  switch (vis->states[static_cast<std::size_t>(v)]) {
+    case ViewpointState::kTrackable:
+      return plot::value_colour(vis->error_deg(v), 0.0, top);
+    case ViewpointState::kLost:
+      return kLostGrey;
+    case ViewpointState::kOutsideWorkspace:
+      break;
+  }
+  return kOutsideGrey;
 }
 
 void draw_sphere(const Painter& paint, const ViewerSession& session) {
@@ -94,7 +132,7 @@ void draw_sphere(const Painter& paint, const ViewerSession& session) {
   std::vector<std::optional<Eigen::Vector2d>> pixels(s.vertices.cols());
   for (Eigen::Index v = 0; v < s.vertices.cols(); ++v) {
     const double light = 0.82 + 0.18 * std::max(0.0, s.vertices.col(v).dot(back));
-    colours[v] = shaded(plot::value_colour(s.error_deg(v), 0.0, top), light);
+    colours[v] = shaded(vertex_colour(session, v, top), light);
     pixels[v] = paint.camera.project(s.vertices.col(v), paint.viewport);
   }
   // Every vertex once, indices only for the triangles facing the eye (a convex surface: they
@@ -183,9 +221,33 @@ void draw_analysis(const Painter& paint, const ViewerSession& session) {
   const ImU32 red = to_imgui(plot::kWorstViewpointColour, alpha);
   const ImU32 magenta = to_imgui(plot::kPaperLmiColour, alpha);
   draw_viewpoint_axis(paint, report.paper_lmi.viewpoint, magenta, true, "paper LMI");
+  const std::optional<sdp::VisibilityReport>& body = session.analysis()->visibility;
+  if (!body) {
+    for (std::size_t k = 0; k < report.worst_viewpoints.size(); ++k) {
+      paint.great_circle(report.worst_viewpoints[k], red, 2.0f);
+      draw_viewpoint_axis(paint, report.worst_viewpoints[k], red, false, k == 0 ? "worst" : "");
+    }
+    return;
+  }
+  // Markers on a body: the worst viewpoint is signed (a camera on that side of the body); the
+  // viewpoints that are worst when every marker is seen are rings on both sides.
   for (std::size_t k = 0; k < report.worst_viewpoints.size(); ++k) {
-    paint.great_circle(report.worst_viewpoints[k], red, 2.0f);
-    draw_viewpoint_axis(paint, report.worst_viewpoints[k], red, false, k == 0 ? "worst" : "");
+    for (const double s : {1.0, -1.0}) {
+      if (const std::optional<ImVec2> q = paint.at(s * report.worst_viewpoints[k])) {
+        paint.list->AddCircle(*q, 9.0f, red, 0, 2.0f);
+      }
+    }
+    if (k == 0) paint.label(report.worst_viewpoints[k], "worst seen whole", red, true);
+  }
+  if (body->worst.status == sdp::VisibilityWorstViewpoint::Status::kUntrackable) return;
+  for (std::size_t k = 0; k < body->worst.viewpoints.size(); ++k) {
+    const Eigen::Vector3d& a = body->worst.viewpoints[k];
+    paint.segment(a, kAxisLength * a, red, 2.5f);
+    if (const std::optional<ImVec2> q = paint.at(a)) {
+      paint.list->AddCircleFilled(*q, 7.5f, red);
+      paint.list->AddCircle(*q, 8.0f, kHalo, 0, 1.0f);
+    }
+    if (k == 0) paint.label(kAxisLength * a, "worst on the body", red);
   }
 }
 
@@ -206,45 +268,6 @@ void draw_probe(const Painter& paint, const std::optional<Eigen::Vector3d>& hove
   }
 }
 
-// The layout as the camera sees it (affine projection on the image plane: right, up).
-void draw_camera_inset(const ViewerSession& session, const OrbitCamera& camera,
-                       const Viewport& viewport) {
-  ImDrawList* list = ImGui::GetBackgroundDrawList();
-  const float side = 170.0f;
-  const ImVec2 lo(static_cast<float>(viewport.x + viewport.width) - side - 14.0f,
-                  static_cast<float>(viewport.y) + 14.0f);
-  const ImVec2 hi(lo.x + side, lo.y + side);
-  list->AddRectFilled(lo, hi, IM_COL32(12, 12, 16, 230), 4.0f);
-  list->AddRect(lo, hi, kAxisGrey, 4.0f);
-  list->AddText(ImVec2(lo.x + 6, lo.y + 4), kAxisGrey, "image from this view");
-  const Layout& layout = session.layout();
-  const bool points = layout.mode == LayoutMode::kPoints;
-  const Eigen::Vector3d centre =
-      points ? Eigen::Vector3d(layout.entries.rowwise().mean()) : Eigen::Vector3d::Zero();
-  double extent = 1e-12;
-  for (Eigen::Index i = 0; i < layout.entries.cols(); ++i) {
-    const Eigen::Vector3d d = layout.entries.col(i) - centre;
-    extent = std::max({extent, std::abs(d.dot(camera.right())), std::abs(d.dot(camera.up()))});
-  }
-  const float scale = 0.40f * side / static_cast<float>(extent);
-  const ImVec2 mid(0.5f * (lo.x + hi.x), 0.5f * (lo.y + hi.y) + 8.0f);
-  auto image = [&](const Eigen::Vector3d& x) {
-    const Eigen::Vector3d d = x - centre;
-    return ImVec2(mid.x + scale * static_cast<float>(d.dot(camera.right())),
-                  mid.y - scale * static_cast<float>(d.dot(camera.up())));
-  };
-  for (Eigen::Index i = 0; i < layout.entries.cols(); ++i) {
-    const ImU32 colour = i == session.selected ? kSelectedColour : kHalo;
-    const ImVec2 q = image(layout.entries.col(i));
-    if (!points) list->AddLine(mid, q, colour, 2.0f);
-    list->AddCircleFilled(q, 3.5f, colour);
-    // Names can be long: the inset clips them at its border.
-    list->PushClipRect(lo, hi, true);
-    list->AddText(ImVec2(q.x + 4, q.y - 2), colour, layout.entry_name(i).c_str());
-    list->PopClipRect();
-  }
-}
-
 void draw_colour_bar(const ViewerSession& session, const Viewport& viewport) {
   ImDrawList* list = ImGui::GetBackgroundDrawList();
   const double top = colour_range_deg(session);
@@ -260,8 +283,26 @@ void draw_colour_bar(const ViewerSession& session, const Viewport& viewport) {
   }
   list->AddRect(ImVec2(x0, y1 - 14), ImVec2(x0 + width, y1), kAxisGrey);
   char text[160];
-  std::snprintf(text, sizeof text, "worst-case error arccos p\u0304(a):  0\u00b0 \u2026 %.2f\u00b0",
-                top);
+  if (session.visibility_shading() != nullptr) {
+    // Markers on a body: the error with the visible markers; grey swatches for the lost
+    // directions (and those outside the workspace).
+    std::snprintf(
+        text, sizeof text,
+        "worst-case error with the visible markers, asin t(a):  0\u00b0 \u2026 %.2f\u00b0", top);
+    const float gx = x0 + width + 16.0f;
+    list->AddRectFilled(ImVec2(gx, y1 - 14), ImVec2(gx + 22, y1), to_imgui(kLostGrey));
+    list->AddRect(ImVec2(gx, y1 - 14), ImVec2(gx + 22, y1), kAxisGrey);
+    list->AddText(ImVec2(gx + 28, y1 - 16), kHalo, "lost (untrackable)");
+    if (session.layout().workspace) {
+      const float wx = gx + 34.0f + ImGui::CalcTextSize("lost (untrackable)").x;
+      list->AddRectFilled(ImVec2(wx, y1 - 14), ImVec2(wx + 22, y1), to_imgui(kOutsideGrey));
+      list->AddRect(ImVec2(wx, y1 - 14), ImVec2(wx + 22, y1), kAxisGrey);
+      list->AddText(ImVec2(wx + 28, y1 - 16), kHalo, "outside the workspace");
+    }
+  } else {
+    std::snprintf(text, sizeof text,
+                  "worst-case error arccos p\u0304(a):  0\u00b0 \u2026 %.2f\u00b0", top);
+  }
   list->AddText(ImVec2(x0, y1 - 34), kHalo, text);
   std::snprintf(text, sizeof text, "0\u00b0");
   list->AddText(ImVec2(x0, y1 + 2), kAxisGrey, text);
@@ -335,9 +376,18 @@ std::optional<Eigen::Vector3d> SceneView::draw(ViewerSession& session, const Vie
   draw_world_axes(paint);
   draw_analysis(paint, session);
   draw_data_vectors(paint, session);
-  draw_probe(paint, drag_ == Drag::kOrbit && moved_ ? std::nullopt : hovered,
-             session.pinned_viewpoint);
-  draw_camera_inset(session, session.camera, viewport);
+  const std::optional<Eigen::Vector3d> probe =
+      drag_ == Drag::kOrbit && moved_ ? std::nullopt : hovered;
+  draw_probe(paint, probe, session.pinned_viewpoint);
+  if (probe) {
+    draw_body_inset(session, session.camera, viewport, *probe, InsetViewpoint::kHovered);
+  } else if (session.pinned_viewpoint) {
+    draw_body_inset(session, session.camera, viewport, *session.pinned_viewpoint,
+                    InsetViewpoint::kPinned);
+  } else {
+    draw_body_inset(session, session.camera, viewport, session.camera.back(),
+                    InsetViewpoint::kCamera);
+  }
   draw_colour_bar(session, viewport);
   return hovered;
 }

@@ -1,5 +1,6 @@
 #include "vantage/viewer/layout_document.h"
 
+#include <sstream>
 #include <utility>
 
 #include "vantage/analysis/common.h"
@@ -14,6 +15,14 @@ void check_index(const Layout& layout, int index) {
                           "]: no such entry (the layout has " +
                           std::to_string(layout.entries.cols()) + ")");
   }
+}
+
+// The layout's visibility, for an edit of `field`; InvalidArgument when it has none.
+MarkerVisibility& visibility_of(Layout& layout, const char* field) {
+  if (!layout.visibility) {
+    throw InvalidArgument(field, "the layout has no marker normals (no visibility to edit)");
+  }
+  return *layout.visibility;
 }
 
 }  // namespace
@@ -55,18 +64,25 @@ void LayoutDocument::set_entry(int index, const Eigen::Vector3d& value, bool con
 
 void LayoutDocument::remove_entry(int index) {
   check_index(layout_, index);
-  const Eigen::Index n = layout_.entries.cols();
+  commit(without_entry(layout_, index), true);
+}
+
+void LayoutDocument::set_cone_half_angle_deg(double degrees) {
+  constexpr const char* kField = "visibility.cone_half_angle_deg";
   Layout next = layout_;
-  next.entries.resize(3, n - 1);
-  next.weights.resize(n - 1);
-  next.names.clear();
-  for (Eigen::Index i = 0, k = 0; i < n; ++i) {
-    if (i == index) continue;
-    next.entries.col(k) = layout_.entries.col(i);
-    next.weights(k) = layout_.weights(i);
-    next.names.push_back(layout_.entry_name(i));
-    ++k;
+  MarkerVisibility& visibility = visibility_of(next, kField);
+  if (!(degrees > 0.0 && degrees <= 180.0)) {
+    std::ostringstream got;
+    got << degrees;
+    throw InvalidArgument(kField, "must be in (0, 180] degrees, got " + got.str());
   }
+  visibility.cone_half_angle_deg.setConstant(degrees);
+  commit(std::move(next), true);
+}
+
+void LayoutDocument::set_min_visible(int k) {
+  Layout next = layout_;
+  visibility_of(next, "visibility.min_visible").min_visible = k;
   commit(std::move(next), true);
 }
 

@@ -15,6 +15,19 @@ ViewerSession::ViewerSession(LayoutDocument document) : document_(std::move(docu
 void ViewerSession::changed() {
   data_ = data_vectors(document_.layout());
   shading_ = shade_sphere(data_.vectors);
+  visibility_.reset();
+  visibility_shading_.reset();
+  if (document_.layout().visibility) {
+    // The document holds only valid layouts, so the model builds; a failure to cast the body's
+    // rays is reported and leaves the sphere shaded as seen whole.
+    try {
+      visibility_ = sdp::VisibilityModel::of(document_.layout());
+      visibility_shading_ = shade_visibility(*visibility_, shading_.vertices);
+    } catch (const std::exception& e) {
+      visibility_.reset();
+      fail(std::string("visibility: ") + e.what());
+    }
+  }
   if (selected >= document_.layout().entries.cols()) selected = -1;
   worker_.request_analysis(document_.layout(), document_.revision());
 }
@@ -56,6 +69,28 @@ bool ViewerSession::remove_entry(int index) {
   inform("removed " + std::string(layout().mode == LayoutMode::kPoints ? "marker " : "vector ") +
          removed_name);
   selected = -1;
+  changed();
+  return true;
+}
+
+bool ViewerSession::set_cone_half_angle_deg(double degrees) {
+  try {
+    document_.set_cone_half_angle_deg(degrees);
+  } catch (const std::exception& e) {
+    fail(e.what());
+    return false;
+  }
+  changed();
+  return true;
+}
+
+bool ViewerSession::set_min_visible(int k) {
+  try {
+    document_.set_min_visible(k);
+  } catch (const std::exception& e) {
+    fail(e.what());
+    return false;
+  }
   changed();
   return true;
 }
@@ -111,11 +146,12 @@ SaveOutcome ViewerSession::save(const std::string& path, bool overwrite) {
   return SaveOutcome::kSaved;
 }
 
-void ViewerSession::step_augmenter() {
+bool ViewerSession::step_augmenter() {
   augment_requested_ = true;
   inform("augmenter: searching for the next " +
          std::string(layout().mode == LayoutMode::kPoints ? "marker" : "vector") + "...");
   worker_.request_augment(document_.layout(), document_.revision());
+  return true;
 }
 
 bool ViewerSession::poll() {
@@ -132,7 +168,12 @@ bool ViewerSession::poll() {
     } else if (outcome->revision != document_.revision()) {
       fail("augmenter: the layout changed while it ran; step discarded");
     } else {
-      document_.replace(std::move(outcome->augmented));
+      try {
+        document_.replace(std::move(outcome->augmented));
+      } catch (const std::exception& e) {
+        fail(std::string("augmenter: its layout was refused: ") + e.what());
+        return any;
+      }
       std::ostringstream note;
       note.precision(4);
       note << "added " << outcome->step.added.transpose() << " in " << outcome->seconds
@@ -173,6 +214,12 @@ bool ViewerSession::apply_view(ViewPreset preset) {
     case ViewPreset::kWorst:
     case ViewPreset::kPaper:
       if (!analysis_ || !analysis_->error.empty()) return false;
+      if (preset == ViewPreset::kWorst && analysis_->visibility &&
+          analysis_->visibility->worst.status !=
+              sdp::VisibilityWorstViewpoint::Status::kUntrackable) {
+        camera.look_along(analysis_->visibility->worst.viewpoint);  // signed: the camera's side
+        return true;
+      }
       camera.look_along(preset == ViewPreset::kWorst ? analysis_->analysis.worst_viewpoint
                                                      : analysis_->analysis.paper_lmi.viewpoint);
       return true;

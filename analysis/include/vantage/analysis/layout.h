@@ -7,11 +7,13 @@
 /// pair weight (sqrt(w_i w_j) by default).
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "vantage/analysis/free_vectors.h"
+#include "vantage/analysis/marker_visibility.h"
 
 namespace vantage {
 
@@ -42,6 +44,11 @@ struct Layout {
   /// in the order of `entries`, or empty when the entries are unnamed. Every edit that removes
   /// or adds an entry removes or adds its name, so a marker keeps its name through every command.
   std::vector<std::string> names;
+  /// Point mode: how the markers are seen on their body (normals, cones, mesh; docs/math.md
+  /// §20), or none: every camera sees every marker (the paper's model).
+  std::optional<MarkerVisibility> visibility;
+  /// The directions the analysis covers; none: the whole sphere.
+  std::optional<LayoutWorkspace> workspace;
 
   /// Throws InvalidArgument naming the field and index of the first violation: fewer than 2
   /// vectors or 3 points (point mode needs at least 2 free vectors), non-finite values, a vector
@@ -66,6 +73,16 @@ struct Layout {
 /// A name for one more entry of `layout` that none of its entries has: "<prefix><k>" with the
 /// smallest k >= 1 (entry_name() of every entry counts as taken).
 std::string unused_entry_name(const Layout& layout, const std::string& prefix);
+
+/// The layout without entry k (0 <= k < entries.cols()): its weight, name, and on a body its
+/// normal and cone go with it (the names of the others are kept, given or not).
+Layout without_entry(const Layout& layout, Eigen::Index k);
+
+/// Appends entry x with weight 1 (named "<name_prefix><k>" when the layout's entries are named,
+/// see unused_entry_name()). On a body the new marker looks out from the layout's centroid (the
+/// --normals radial rule; +z at the centroid itself) with the layout's widest cone, until the
+/// user says otherwise.
+void append_entry(Layout* layout, const Eigen::Vector3d& x, const std::string& name_prefix);
 
 /// The data vectors an analysis works on, with their weights.
 struct DataVectors {

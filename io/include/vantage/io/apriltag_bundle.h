@@ -10,7 +10,9 @@
 /// Each tag's pose in the bundle frame is p_bundle = R(q) p_tag + (x, y, z), q = (qw, qx, qy, qz)
 /// normalised. The tag frame has its origin at the tag centre and the tag in its z = 0 plane;
 /// the corners are (-s, -s), (s, -s), (s, s), (-s, s) with s = size / 2, in this order (the
-/// order apriltag_ros uses for its bundle PnP). standalone_tags is allowed and not read. As in a
+/// order apriltag_ros uses for its bundle PnP). Each marker's outward normal is its tag's +z
+/// axis R(q) e_z, with a 90-degree cone (a printed tag is seen from in front of its face only;
+/// docs/math.md §20). standalone_tags is allowed and not read. As in a
 /// JSON layout, a key that appears twice in any map of the document, and an unknown field (at
 /// the top level, in a bundle or in a tag), is an error. Every error is one line
 /// "<source>: tag_bundles[b].layout[k].<field>: <problem>" in a vantage::InvalidArgument.

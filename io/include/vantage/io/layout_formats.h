@@ -49,6 +49,11 @@ Layout parse_layout_as(std::string_view text, const std::string& source,
 /// Reads the layout file at `path` in any supported format (errors name the path).
 Layout load_layout(const std::string& path, const LayoutReadOptions& options = {});
 
+/// Reads the body mesh a layout names ("visibility": {"body": ...}, relative to the layout
+/// file's directory) into layout->visibility->body; nothing without one. Throws InvalidArgument
+/// "<layout_path>: visibility.body: <why>" when the mesh does not load. load_layout() calls it.
+void load_body(const std::string& layout_path, Layout* layout);
+
 /// The format save_layout() writes to `path`: kJson for .json, kCsv for .csv (case-insensitive).
 /// Throws InvalidArgument "<path>: ..." for .yaml/.yml (AprilTag bundles describe printed tags,
 /// which a layout does not hold) and for any other extension.

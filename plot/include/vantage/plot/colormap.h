@@ -36,5 +36,9 @@ inline constexpr Rgb kWorstViewpointColour{228, 26, 28};  ///< red: a global wor
 inline constexpr Rgb kPaperLmiColour{255, 0, 255};        ///< magenta: the paper's single LMI
 inline constexpr Rgb kDataVectorColour{33, 33, 33};       ///< near black: vectors and markers
 inline constexpr Rgb kThresholdColour{255, 255, 255};     ///< white: an error-threshold contour
+inline constexpr Rgb kNormalColour{217, 95, 2};           ///< orange: a marker's outward normal
+/// green: the worst viewpoint of a layout on its body (only the markers it sees), beside the red
+/// one of the layout seen whole.
+inline constexpr Rgb kBodyWorstViewpointColour{27, 140, 70};
 
 }  // namespace vantage::plot

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,9 +17,12 @@
 
 namespace vantage::plot {
 
-/// The figures, in the order they are written (file names <name>.<ext>, <name>.csv).
-inline constexpr std::array<const char*, 5> kFigureNames = {"viewpoint_map", "dropout",
-                                                            "error_surface", "vectors", "design"};
+/// The figures, in the order they are written (file names <name>.<ext>, <name>.csv). For a
+/// layout with normals (on its body, docs/math.md §20) viewpoint_map and dropout are drawn under
+/// visibility (visibility_maps.h, visibility_dropout_chart.h) and "visibility" is added; for
+/// other layouts "visibility" does not apply.
+inline constexpr std::array<const char*, 6> kFigureNames = {
+    "viewpoint_map", "visibility", "dropout", "error_surface", "vectors", "design"};
 
 /// True for a name in kFigureNames.
 bool is_figure_name(const std::string& name);
@@ -44,23 +48,31 @@ struct LayoutFigures {
   };
   Status status = Status::kNotCertified;
   std::vector<FigureFiles> files;  ///< in kFigureNames order
-  double pbar_min = 1.0;           ///< of the layout
+  double pbar_min = 1.0;           ///< of the layout seen whole
   double max_worst_case_error_deg = 0.0;
+  /// On its body (a layout with normals): the worst-case error with visibility and the
+  /// trackable fraction of the workspace.
+  std::optional<double> visibility_max_worst_case_error_deg;
+  std::optional<double> trackable_fraction;
   std::string message;
 };
 
-/// The figure names write_layout_figures() will write for these options (checks `only`).
-/// Throws InvalidArgument naming "only" for an unknown or repeated name, or for "design"
-/// without a design curve.
-std::vector<std::string> selected_figures(const LayoutFiguresOptions& options, bool has_design);
+/// The figure names write_layout_figures() will write for these options (checks `only`);
+/// has_visibility: the layout has normals (Layout::visibility). Throws InvalidArgument naming
+/// "only" for an unknown or repeated name, for "design" without a design curve, or for
+/// "visibility" without normals.
+std::vector<std::string> selected_figures(const LayoutFiguresOptions& options, bool has_design,
+                                          bool has_visibility = false);
 
 /// True when the figures `options` select need the report's dropout analysis (the dropout
 /// figure): run sdp::analyze_layout() with LayoutReportOptions::dropout then.
-bool needs_dropout(const LayoutFiguresOptions& options, bool has_design);
+bool needs_dropout(const LayoutFiguresOptions& options, bool has_design,
+                   bool has_visibility = false);
 
 /// Writes the selected figures of the layout of `report` into `directory` (which must exist).
-/// design may be null (no design figure). Throws InvalidArgument on invalid options or curve, or
-/// a dropout figure without the report's dropout analysis; RenderError when drawing or writing
+/// design may be null (no design figure). Throws InvalidArgument on invalid options or curve, a
+/// dropout figure without the report's dropout analysis, or a visibility figure for a layout
+/// without normals; RenderError when drawing or writing
 /// fails.
 LayoutFigures write_layout_figures(const sdp::LayoutReport& report,
                                    const std::filesystem::path& directory,

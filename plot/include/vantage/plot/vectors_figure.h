@@ -8,14 +8,21 @@
 /// Camera: orthographic, fixed, looking at the object frame's origin from azimuth
 /// kVectorsAzimuthDeg (from +x towards +y) and elevation kVectorsElevationDeg (above the x-y
 /// plane), +z up on the page.
+///
+/// A layout on its body (point mode with normals, docs/math.md §20) adds each marker's outward
+/// normal as a short arrow, the body mesh (translucent faces and the edges where it folds), and
+/// the worst viewpoint on the body as an arrow towards the camera, with the markers it does not
+/// see drawn hollow.
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "vantage/analysis/layout.h"
+#include "vantage/analysis/mesh.h"
 #include "vantage/plot/figure.h"
 
 namespace vantage::plot {
@@ -32,6 +39,14 @@ struct VectorsFigureData {
   double pbar_min = 1.0;
   Eigen::Vector3d paper_lmi_viewpoint = Eigen::Vector3d::UnitZ();
   double paper_lmi_pbar = 1.0;
+  /// Point mode on a body: the markers' outward unit normals (3 x n), or empty.
+  Eigen::Matrix3Xd normals;
+  /// The body mesh in the markers' frame, or null.
+  const Mesh* body = nullptr;
+  /// The worst viewpoint on the body (signed, unit) and the markers it sees, when drawn.
+  std::optional<Eigen::Vector3d> body_worst_viewpoint;
+  std::vector<int> body_visible_markers;
+  double body_max_error_deg = 0.0;  ///< asin t of the worst viewpoint on the body, degrees
 };
 
 /// Page coordinates of object-frame point p under the fixed camera: (p.right, p.up), where
@@ -39,7 +54,8 @@ struct VectorsFigureData {
 Eigen::Vector2d vectors_camera_projection(const Eigen::Vector3d& p);
 
 /// Writes vectors.<ext> and vectors.csv (columns series,index,x,y,z in the object frame: series
-/// "vector" or "point" for the entries, "worst_viewpoint" and "paper_lmi" for the unit axes)
+/// "vector" or "point" for the entries, "worst_viewpoint" and "paper_lmi" for the unit axes,
+/// then on a body "normal" (one per marker) and "body_worst_viewpoint")
 /// into `directory`. Throws InvalidArgument on bad data or options, RenderError when drawing or
 /// writing fails.
 FigureFiles write_vectors_figure(const VectorsFigureData& data,

@@ -19,6 +19,7 @@
 #include "vantage/sdp/dropout.h"
 #include "vantage/sdp/layout_analysis.h"
 #include "vantage/sdp/layout_measures.h"
+#include "vantage/sdp/visibility_report.h"
 
 namespace vantage::sdp {
 
@@ -33,6 +34,9 @@ struct LayoutReportOptions {
   DropoutOptions dropout_options;
   /// smallest_singular_value below which the data vectors count as nearly coplanar, >= 0.
   double coplanarity_threshold = 0.1;
+  /// The analysis on the body, for a layout with normals (Layout::visibility); its `dropout`
+  /// follows `dropout` above.
+  VisibilityReportOptions visibility;
 
   /// True when every field is in range; otherwise *why names the field and the constraint.
   bool is_valid(std::string* why = nullptr) const;
@@ -49,6 +53,9 @@ struct LayoutReport {
   Coplanarity coplanarity;  ///< of the data vectors
   /// The layout without each entry (when LayoutReportOptions::dropout).
   std::optional<DropoutAnalysis> dropout;
+  /// The layout on its body (docs/math.md §20), for a layout with normals: the worst viewpoint
+  /// over the trackable directions of the workspace, the coverage, the dropout under visibility.
+  std::optional<VisibilityReport> visibility;
 
   /// True when the numbers can be relied on: the worst viewpoint is certified and confirmed on
   /// the SDP, the cross-check (when run) agrees, the layout is not degenerate, and the dropout

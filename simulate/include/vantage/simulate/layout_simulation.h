@@ -4,6 +4,13 @@
 /// applicable estimator on seeded random views of the layout and, on the affine camera, the
 /// bound check of Eq. (26) / Eq. (30) on every trial. report_json() is the object that
 /// `vantage simulate --json` prints.
+///
+/// A point layout with normals (Layout::visibility) is simulated on its body (docs/math.md §20,
+/// visible_views.h): the views are drawn from the trackable directions of the workspace and the
+/// image holds the markers visible from the view only. The bound check ("bound_check") keeps its
+/// meaning, the layout seen whole at the same views; the check under visibility
+/// (visibility_check.h) is reported beside it ("visibility"). --viewpoint worst then looks from
+/// the certified worst viewpoint under visibility, and a fixed scene.viewpoint must be trackable.
 
 #include <string>
 #include <vector>
@@ -13,6 +20,7 @@
 #include "vantage/simulate/monte_carlo.h"
 #include "vantage/simulate/report_json.h"
 #include "vantage/simulate/scene.h"
+#include "vantage/simulate/visibility_check.h"
 
 namespace vantage::simulate {
 
@@ -41,6 +49,10 @@ struct LayoutSimulation {
   /// One per trial of `run`, in its order, when its per-trial values are kept
   /// (MonteCarloOptions::keep_trials); empty otherwise.
   std::vector<BoundTrial> bound_trials;
+  bool has_visibility = false;  ///< the layout has normals: simulated on its body
+  VisibilityCheck visibility;
+  /// One per trial of `run` (with visibility), when its per-trial values are kept.
+  std::vector<VisibilityTrial> visibility_trials;
   std::string shard = "1/1";  ///< "K/N", or "merged"
 };
 
@@ -50,8 +62,8 @@ struct LayoutSimulation {
 LayoutSimulation simulate_layout(const Layout& layout, const LayoutSimulationOptions& options);
 
 /// {"layout", "mode", "trials", "total_trials", "seed", "shard", "estimators", "bound_check"
-/// (affine camera), "config", and "per_trial" when `per_trial`: what --merge needs; the run
-/// must then have kept its trials}.
+/// (affine camera), "visibility" (a layout with normals; visibility_json.h), "config", and
+/// "per_trial" when `per_trial`: what --merge needs; the run must then have kept its trials}.
 Json report_json(const LayoutSimulation& simulation, bool per_trial);
 
 }  // namespace vantage::simulate

@@ -28,7 +28,7 @@ struct Viewport {
 /// Named starting views of `--view` and of the view buttons.
 enum class ViewPreset {
   kIso,    ///< oblique default: yaw 35 deg, pitch 25 deg
-  kWorst,  ///< along the (first) global worst viewpoint
+  kWorst,  ///< along the (first) global worst viewpoint; on the body's side for markers on a body
   kPaper,  ///< along the paper's single-LMI viewpoint
   kTop,    ///< along +z
   kFront,  ///< along +x

@@ -8,6 +8,8 @@
 /// restores the previous layout exactly (same entries, weights, candidates, names, name); a load
 /// is undone too, back to the layout, file and unsaved edits it replaced. Entries keep their
 /// names (Layout::entry_name) through every edit: removing one never renumbers the others.
+/// A marker on a body (Layout::visibility, docs/math.md §20) keeps its normal and cone through
+/// every edit, and its removal removes them.
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -46,6 +48,13 @@ class LayoutDocument {
   /// Removes entry `index`, its weight and its name (a marker dropout in point mode). The other
   /// entries keep their names: an unnamed layout is named p0, p1, ... (v0, ...) first.
   void remove_entry(int index);
+  /// Gives every marker the cone half-angle `degrees` (the file's
+  /// "visibility.cone_half_angle_deg" as one number). Throws InvalidArgument naming that field
+  /// for a layout without normals or a value outside (0, 180].
+  void set_cone_half_angle_deg(double degrees);
+  /// Sets "visibility.min_visible", the markers a tracked direction must see. Throws
+  /// InvalidArgument naming that field for a layout without normals or k outside [3, markers].
+  void set_min_visible(int k);
   /// Replaces the whole layout (e.g. by the augmenter's result) as one undoable step.
   void replace(Layout layout);
   /// Restores the layout before the last edit; false when there is nothing to undo.

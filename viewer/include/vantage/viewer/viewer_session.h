@@ -2,8 +2,9 @@
 
 /// The state of one vantage-viewer window, without the window: the layout document, the camera,
 /// the selection, the pinned viewpoint, the latest analysis and the augmenter, wired to the
-/// background AnalysisWorker. The drawing code (viewer/app) reads it and calls its actions; the
-/// tests drive it directly.
+/// background AnalysisWorker; for markers on a body (docs/math.md §20) also the visibility model
+/// that says which markers a viewpoint sees. The drawing code (viewer/app) reads it and calls its
+/// actions; the tests drive it directly.
 
 #include <Eigen/Core>
 #include <chrono>
@@ -15,6 +16,7 @@
 #include "vantage/viewer/camera.h"
 #include "vantage/viewer/layout_document.h"
 #include "vantage/viewer/viewpoint_readout.h"
+#include "vantage/viewer/visibility_readout.h"
 
 namespace vantage::viewer {
 
@@ -43,6 +45,14 @@ class ViewerSession {
   const DataVectors& data() const { return data_; }
   /// The sphere shaded for the current layout, recomputed on every change.
   const SphereShading& shading() const { return shading_; }
+  /// The visibility model of the current layout (its normals, cones, min_visible, workspace and
+  /// body mesh, the occlusion grid cast at the report's default resolution), or null for a
+  /// layout without normals. Rebuilt on every change.
+  const sdp::VisibilityModel* visibility() const { return visibility_ ? &*visibility_ : nullptr; }
+  /// The sphere's vertices (shading().vertices) under visibility, or null without normals.
+  const VisibilityShading* visibility_shading() const {
+    return visibility_shading_ ? &*visibility_shading_ : nullptr;
+  }
 
   /// The latest analysis received (possibly of an older revision while a new one runs).
   const std::optional<AnalysisSnapshot>& analysis() const { return analysis_; }
@@ -60,6 +70,11 @@ class ViewerSession {
   // action is refused (bad index, invalid resulting layout, unreadable file, ...).
   bool set_entry(int index, const Eigen::Vector3d& value, bool continue_edit = false);
   bool remove_entry(int index);
+  /// Gives every marker the cone half-angle `degrees` (LayoutDocument::set_cone_half_angle_deg)
+  /// and asks for the analysis of the new layout.
+  bool set_cone_half_angle_deg(double degrees);
+  /// Sets min_visible (LayoutDocument::set_min_visible) and asks for the new analysis.
+  bool set_min_visible(int k);
   bool undo();
   /// Reads `path` (any layout format). With unsaved edits (document().modified()) it reads only
   /// when `discard_edits` is set (the user confirmed); undo() brings the edits back either way.
@@ -73,8 +88,9 @@ class ViewerSession {
   bool drag_vector_tip(int index, const Eigen::Vector2d& pixel, const Viewport& viewport,
                        double tip_radius, bool continue_edit);
   /// Asks the worker for one augmenter step; its result is applied by poll() if the layout has not
-  /// changed meanwhile (else discarded with a message).
-  void step_augmenter();
+  /// changed meanwhile (else discarded with a message). Refused (false, with a message) for a
+  /// layout with marker normals: the augmenter adds markers without a normal.
+  bool step_augmenter();
 
   /// Takes finished work from the worker (call once per frame). True when anything changed.
   bool poll();
@@ -100,6 +116,8 @@ class ViewerSession {
   LayoutDocument document_;
   DataVectors data_;
   SphereShading shading_;
+  std::optional<sdp::VisibilityModel> visibility_;
+  std::optional<VisibilityShading> visibility_shading_;
   std::optional<AnalysisSnapshot> analysis_;
   bool augment_requested_ = false;
   std::string message_;

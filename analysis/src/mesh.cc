@@ -1,0 +1,82 @@
+#include "vantage/analysis/mesh.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "vantage/analysis/common.h"
+
+namespace vantage {
+namespace {
+
+/// The point of triangle (a, b, c) nearest to p (Ericson, Real-Time Collision Detection, 5.1.5:
+/// Voronoi regions of the vertices, then the edges, then the face).
+Eigen::Vector3d closest_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                                    const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return a;
+  const Eigen::Vector3d bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + d1 / (d1 - d3) * ab;
+  const Eigen::Vector3d cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + d2 / (d2 - d6) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+    return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+  }
+  const double denominator = va + vb + vc;
+  if (!(denominator > 0.0)) return a;  // a degenerate (zero-area) triangle: its first vertex
+  return a + (vb / denominator) * ab + (vc / denominator) * ac;
+}
+
+}  // namespace
+
+void Mesh::validate() const {
+  if (triangles.cols() == 0) throw InvalidArgument("body", "the mesh has no triangles");
+  for (Eigen::Index k = 0; k < vertices.cols(); ++k) {
+    if (!vertices.col(k).allFinite()) {
+      throw InvalidArgument("body", "vertex " + std::to_string(k) + " is not finite");
+    }
+  }
+  for (Eigen::Index k = 0; k < triangles.cols(); ++k) {
+    if (triangles.col(k).minCoeff() < 0 || triangles.col(k).maxCoeff() >= vertices.cols()) {
+      throw InvalidArgument("body", "triangle " + std::to_string(k) +
+                                        " names a vertex the mesh does not have");
+    }
+  }
+}
+
+double Mesh::size() const {
+  if (vertices.cols() == 0) return 0.0;
+  return (vertices.rowwise().maxCoeff() - vertices.rowwise().minCoeff()).norm();
+}
+
+double Mesh::area() const {
+  double total = 0.0;
+  for (Eigen::Index k = 0; k < triangles.cols(); ++k) {
+    const Eigen::Vector3d a = vertices.col(triangles(0, k));
+    total += 0.5 * (vertices.col(triangles(1, k)) - a).cross(vertices.col(triangles(2, k)) - a).norm();
+  }
+  return total;
+}
+
+double distance_to_mesh(const Mesh& mesh, const Eigen::Vector3d& point) {
+  double best = std::numeric_limits<double>::infinity();
+  for (Eigen::Index k = 0; k < mesh.triangles.cols(); ++k) {
+    const Eigen::Vector3d q =
+        closest_on_triangle(point, mesh.vertices.col(mesh.triangles(0, k)),
+                            mesh.vertices.col(mesh.triangles(1, k)),
+                            mesh.vertices.col(mesh.triangles(2, k)));
+    best = std::min(best, (q - point).norm());
+  }
+  return best;
+}
+
+}  // namespace vantage

@@ -1,0 +1,138 @@
+#include "vantage/simulate/visible_views.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "vantage/analysis/common.h"
+
+namespace vantage::simulate {
+namespace {
+
+std::string percent(double fraction) {
+  std::ostringstream s;
+  s.precision(3);
+  s << 100.0 * fraction << " %";
+  return s.str();
+}
+
+VisibilitySetup make_setup(const Layout& layout, const sdp::VisibilityModel& model) {
+  const sdp::VisibilityProblem& problem = model.problem();
+  VisibilitySetup setup;
+  setup.with_body = model.has_body();
+  setup.min_visible = problem.min_visible;
+  setup.workspace = layout.workspace;
+  setup.occlusion_resolution_deg = model.resolution_deg();
+  const sdp::VisibilityCoverage coverage =
+      sdp::visibility_coverage(problem, VisibleViews::kCoverageSamples);
+  setup.trackable_fraction = coverage.trackable_fraction;
+  setup.coverage_samples = coverage.samples;
+  const std::string sees = "no direction of the workspace sees " +
+                           std::to_string(problem.min_visible) +
+                           " markers (min_visible) that are not collinear";
+  if (coverage.trackable_fraction == 0.0) {
+    throw InvalidArgument("visibility", sees + " in " + std::to_string(coverage.samples) +
+                                            " sampled directions: there is no view to simulate");
+  }
+  if (coverage.trackable_fraction < VisibleViews::kMinTrackableFraction) {
+    throw InvalidArgument("visibility", "only " + percent(coverage.trackable_fraction) +
+                                            " of the workspace is trackable (below " +
+                                            percent(VisibleViews::kMinTrackableFraction) +
+                                            "): too few directions to draw random views from");
+  }
+  const sdp::VisibilityWorstViewpoint worst = sdp::visibility_worst_viewpoint(problem);
+  if (worst.status == sdp::VisibilityWorstViewpoint::Status::kUntrackable) {
+    throw InvalidArgument("visibility", sees + ": there is no view to simulate");
+  }
+  if (!worst.certified()) {
+    throw std::runtime_error("the worst viewpoint under visibility is not certified: " +
+                             worst.message);
+  }
+  setup.worst_viewpoint = worst.viewpoint;
+  setup.worst_visible = worst.visible_markers;
+  setup.t_lower = worst.t_lower;
+  setup.t_upper = worst.t_upper;
+  setup.pbar_min = worst.pbar_min;
+  setup.bound_rad = std::asin(std::min(1.0, worst.t_upper));
+  return setup;
+}
+
+/// The columns `index` of `m`.
+template <class Matrix>
+Matrix columns(const Matrix& m, const std::vector<int>& index) {
+  Matrix out(m.rows(), static_cast<Eigen::Index>(index.size()));
+  for (std::size_t k = 0; k < index.size(); ++k) {
+    out.col(static_cast<Eigen::Index>(k)) = m.col(index[k]);
+  }
+  return out;
+}
+
+}  // namespace
+
+VisibleViews::VisibleViews(const Layout& layout)
+    : model_(sdp::VisibilityModel::of(layout)), setup_(make_setup(layout, model_)) {}
+
+void VisibleViews::look_from(const Eigen::Vector3d& a, const std::string& field) {
+  if (!model_.at(a).trackable) {
+    throw InvalidArgument(field,
+                          "the body is not trackable from this direction (too few markers "
+                          "visible, collinear ones, or outside the workspace)");
+  }
+  fixed_ = a;
+}
+
+Eigen::Vector3d VisibleViews::uniform_direction(TrialRandom& random) const {
+  if (!setup_.workspace) return random.unit_vector();
+  // Uniform on the cap by area: the height along the axis is uniform on [cos phi, 1].
+  const LayoutWorkspace& w = *setup_.workspace;
+  const double cos_phi = std::cos(w.half_angle_deg / kDegreesPerRadian);
+  const double z = random.uniform(cos_phi, 1.0);
+  const double azimuth = random.uniform(0.0, 2.0 * kPi);
+  const double r = std::sqrt(std::max(0.0, (1.0 - z) * (1.0 + z)));
+  const Eigen::Matrix3d frame = rotation_with_viewpoint(w.axis, 0.0);
+  const Eigen::Vector3d a = r * std::cos(azimuth) * frame.row(0).transpose() +
+                            r * std::sin(azimuth) * frame.row(1).transpose() +
+                            z * frame.row(2).transpose();
+  return a / a.norm();
+}
+
+VisibleView VisibleViews::draw(TrialRandom& random) const {
+  VisibleView view;
+  if (fixed_) {
+    view.direction = *fixed_;
+    view.visibility = model_.at(*fixed_);
+    return view;
+  }
+  for (view.draws = 1; view.draws <= kMaxDraws; ++view.draws) {
+    view.direction = uniform_direction(random);
+    view.visibility = model_.at(view.direction);
+    if (view.visibility.trackable) return view;
+  }
+  throw std::runtime_error("no trackable view in " + std::to_string(kMaxDraws) +
+                           " random directions (the trackable fraction of the workspace is "
+                           "estimated at " +
+                           percent(setup_.trackable_fraction) + ")");
+}
+
+VisibleScenes VisibleViews::scenes(const Eigen::Matrix3Xd& points,
+                                   const LayoutSceneOptions& options, TrialRandom& random) const {
+  VisibleScenes out;
+  out.view = draw(random);
+  const std::vector<int>& visible = out.view.visibility.visible;
+  const Eigen::Matrix3Xd seen = columns(points, visible);
+  // The visible markers at the whole layout's depth and offset (sizes are the whole layout's).
+  const double scale = points.colwise().norm().maxCoeff() / seen.colwise().norm().maxCoeff();
+  LayoutSceneOptions whole = options;
+  whole.viewpoint = -out.view.direction;
+  LayoutSceneOptions part = whole;
+  part.range = options.range * scale;
+  part.lateral_offset = options.lateral_offset * scale;
+  TrialRandom same_roll = random;  // both scenes draw the roll first
+  out.visible = make_layout_scene(seen, false, part, random);
+  out.whole = make_layout_scene(points, false, whole, same_roll);
+  return out;
+}
+
+}  // namespace vantage::simulate

@@ -1,0 +1,142 @@
+// `vantage analyze` on markers with normals (docs/math.md §20): both answers, the issue's field
+// names, the overrides, the off-body warning, and bad input (one line, exit 2, nothing written).
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_runner.h"
+
+namespace vantage {
+namespace {
+
+using testing::BadCall;
+using testing::CliRun;
+using ::testing::HasSubstr;
+using testing::run_vantage;
+using testing::ScratchDir;
+
+// The certificate's default tolerance.
+constexpr double kCertificate = 1e-7;
+
+const std::string kSatellite =
+    "'" + std::string(VANTAGE_SOURCE_DIR) + "/examples/layouts/satellite.json'";
+
+// Four markers on the faces of a unit cube around the origin, each with its face's normal.
+constexpr const char* kCorner =
+    R"({"points": [[0.5, 0.1, 0.2], [0.1, 0.5, -0.2], [-0.2, 0.1, 0.5], [0.3, -0.2, 0.5]],
+        "normals": [[1, 0, 0], [0, 1, 0], [0, 0, 1], [0, 0, 1]]})";
+
+TEST(VisibilityCli, SatelliteReportsBothAnswersWithTheIssuesFields) {
+  ScratchDir scratch;
+  const nlohmann::json json = testing::run_json("analyze " + kSatellite, scratch);
+  EXPECT_TRUE(json.contains("pbar_min"));  // the layout seen whole, as before
+  ASSERT_TRUE(json.contains("visibility"));
+  const nlohmann::json& v = json["visibility"];
+  for (const char* field :
+       {"model", "min_visible", "workspace", "trackable_fraction", "t", "pbar_min",
+        "max_worst_case_error_deg", "worst_viewpoint", "worst_viewpoints", "visible_markers",
+        "certificate", "occlusion_resolution_deg", "lost"}) {
+    EXPECT_TRUE(v.contains(field)) << field;
+  }
+  EXPECT_EQ(v["model"], "cone+mesh");
+  EXPECT_TRUE(v["workspace"].is_null());
+  EXPECT_TRUE(v["certificate"]["certified"].get<bool>());
+  EXPECT_LE(v["certificate"]["t_upper"].get<double>() - v["certificate"]["t_lower"].get<double>(),
+            kCertificate);
+  // Hiding markers can only lose data vectors: the bound with visibility is no better.
+  EXPECT_GE(v["max_worst_case_error_deg"].get<double>(),
+            json["max_worst_case_error_deg"].get<double>());
+  const double t = v["t"].get<double>();
+  EXPECT_NEAR(v["pbar_min"].get<double>(), std::sqrt(1 - t * t), 1e-12);
+  EXPECT_GT(v["trackable_fraction"].get<double>(), 0.0);
+  EXPECT_LT(v["trackable_fraction"].get<double>(), 1.0);
+  EXPECT_NEAR(v["lost"]["fraction"].get<double>(), 1.0 - v["trackable_fraction"].get<double>(),
+              1e-12);
+  const CliRun text = run_vantage("analyze " + kSatellite, scratch);
+  EXPECT_EQ(text.status, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("on its body"));
+  EXPECT_THAT(text.out, HasSubstr("seen whole"));
+}
+
+TEST(VisibilityCli, OverridesReachTheReport) {
+  ScratchDir scratch;
+  scratch.write("corner.json", kCorner);
+  const nlohmann::json json =
+      testing::run_json("analyze corner.json --cone-deg 170 --workspace 1,1,1,30", scratch);
+  const nlohmann::json& v = json["visibility"];
+  EXPECT_EQ(v["model"], "cone");
+  EXPECT_NEAR(v["workspace"]["half_angle_deg"].get<double>(), 30.0, 0.0);
+  const nlohmann::json& a = v["worst_viewpoint"];
+  const double cos_to_axis =
+      (a[0].get<double>() + a[1].get<double>() + a[2].get<double>()) / std::sqrt(3.0);
+  EXPECT_GE(cos_to_axis, std::cos(30.0 * M_PI / 180.0) - 1e-12);
+  // --normals radial replaces the file's normals by the directions from the centroid.
+  const nlohmann::json radial = testing::run_json("analyze corner.json --normals radial", scratch);
+  EXPECT_TRUE(radial.contains("visibility"));
+}
+
+TEST(VisibilityCli, MarkersOffTheBodyAreWarnedAbout) {
+  ScratchDir scratch;
+  // A 10 x 10 x 0.1 plate far below the markers.
+  scratch.write("plate.obj",
+                "v -5 -5 -10\nv 5 -5 -10\nv 5 5 -10\nv -5 5 -10\n"
+                "v -5 -5 -10.1\nv 5 -5 -10.1\nv 5 5 -10.1\nv -5 5 -10.1\n"
+                "f 1 2 3 4\nf 8 7 6 5\nf 1 5 6 2\nf 2 6 7 3\nf 3 7 8 4\nf 4 8 5 1\n");
+  scratch.write("far.json",
+                R"({"points": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]],
+                    "normals": [[0, 0, 1], [0, 0, 1], [0, 0, 1], [0, 0, 1]],
+                    "visibility": {"cone_half_angle_deg": 80, "body": "plate.obj"}})");
+  const CliRun run = run_vantage("analyze far.json", scratch);
+  EXPECT_THAT(run.err, HasSubstr("vantage: warning: visibility.body: 4 marker(s) lie off"));
+  EXPECT_THAT(run.out, HasSubstr("on its body"));
+}
+
+const BadCall kBadCalls[] = {
+    {"ZeroNormal", R"({"points": [[0,0,0],[1,0,0],[0,1,0]], "normals": [[0,0,1],[0,0,0],[0,0,1]]})",
+     "in.json", "normals[1]: zero length"},
+    {"ConeZero",
+     R"({"points": [[0,0,0],[1,0,0],[0,1,0]], "normals": [[0,0,1],[0,0,1],[0,0,1]],
+         "visibility": {"cone_half_angle_deg": 0}})",
+     "in.json", "visibility.cone_half_angle_deg"},
+    {"ConeBeyond180",
+     R"({"points": [[0,0,0],[1,0,0],[0,1,0]], "normals": [[0,0,1],[0,0,1],[0,0,1]],
+         "visibility": {"cone_half_angle_deg": [90, 181, 90]}})",
+     "in.json", "visibility.cone_half_angle_deg[1]"},
+    {"MinVisibleTwo",
+     R"({"points": [[0,0,0],[1,0,0],[0,1,0]], "normals": [[0,0,1],[0,0,1],[0,0,1]],
+         "visibility": {"min_visible": 2}})",
+     "in.json", "visibility.min_visible"},
+    {"MeshDoesNotLoad",
+     R"({"points": [[0,0,0],[1,0,0],[0,1,0]], "normals": [[0,0,1],[0,0,1],[0,0,1]],
+         "visibility": {"body": "missing.obj"}})",
+     "in.json", "visibility.body"},
+    {"WorkspaceAxisZero",
+     R"({"points": [[0,0,0],[1,0,0],[0,1,0]], "normals": [[0,0,1],[0,0,1],[0,0,1]],
+         "workspace": {"axis": [0, 0, 0], "half_angle_deg": 20}})",
+     "in.json", "workspace.axis"},
+    {"VisibilityWithoutNormals",
+     R"({"points": [[0,0,0],[1,0,0],[0,1,0]], "visibility": {"min_visible": 3}})", "in.json",
+     "needs \"normals\""},
+    {"OptionConeZero", kCorner, "in.json --cone-deg 0", "--cone-deg"},
+    {"OptionMinVisibleTwo", kCorner, "in.json --min-visible 2", "--min-visible"},
+    {"OptionBodyMissing", kCorner, "in.json --body nowhere.stl", "--body"},
+    {"OptionWorkspaceAxisZero", kCorner, "in.json --workspace 0,0,0,20", "--workspace"},
+    {"OptionWorkspaceThreeNumbers", kCorner, "in.json --workspace 0,0,1", "--workspace"},
+    {"OptionNormalsUnknown", kCorner, "in.json --normals inward", "--normals"},
+};
+
+class VisibilityCliBadInput : public ::testing::TestWithParam<BadCall> {};
+
+TEST_P(VisibilityCliBadInput, OneErrorLineExitTwo) {
+  ScratchDir scratch;
+  testing::run_bad_call("analyze", GetParam(), scratch);
+}
+
+INSTANTIATE_TEST_SUITE_P(VisibilityCli, VisibilityCliBadInput, ::testing::ValuesIn(kBadCalls),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace vantage
