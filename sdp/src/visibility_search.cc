@@ -20,6 +20,9 @@
 
 namespace vantage::sdp {
 namespace {
+// Its own namespace: in a unity batch with worst_viewpoint.cc and global_search.cc, whose
+// constants and helpers of the same names mean the same but are theirs.
+namespace visibility {
 
 using internal::is_mixed;
 using internal::min_norm_point;
@@ -407,6 +410,7 @@ class VisibilitySearch {
   bool exhausted_ = false;
 };
 
+}  // namespace visibility
 }  // namespace
 
 bool VisibilitySearchOptions::is_valid(std::string* why) const {
@@ -437,7 +441,7 @@ VisibilityWorstViewpoint visibility_worst_viewpoint(const VisibilityProblem& pro
                                                     const VisibilitySearchOptions& options) {
   vantage::internal::check_options("options", options);
   problem.validate();
-  VisibilitySearch search(problem, options);
+  visibility::VisibilitySearch search(problem, options);
   return search.run();
 }
 
