@@ -143,6 +143,23 @@ void print_dropout(const sdp::LayoutReport& report) {
               << format_number(e.max_worst_case_error_deg, 6) << " deg"
               << (e.certified ? "" : "  (NOT certified)") << "\n";
   }
+  if (!report.visibility || report.visibility->dropout.empty()) return;
+  const sdp::VisibilityReport& v = *report.visibility;
+  std::cout << "\ndropout on its body, most harmful first (max worst-case error, trackable):\n";
+  for (int k : v.dropout_by_harm) {
+    const sdp::VisibilityDropoutEntry& e = v.dropout[static_cast<std::size_t>(k)];
+    std::cout << "  without " << report.entry_label(e.lost) << "  ";
+    if (e.status == sdp::VisibilityWorstViewpoint::Status::kUntrackable) {
+      std::cout << "untrackable";
+    } else {
+      std::cout << format_number(e.max_worst_case_error_deg, 6) << " deg";
+    }
+    std::cout << "  trackable " << format_number(100.0 * e.trackable_fraction, 4) << " %"
+              << (e.status == sdp::VisibilityWorstViewpoint::Status::kNotCertified
+                      ? "  (NOT certified)"
+                      : "")
+              << "\n";
+  }
 }
 
 // Markers far from the body's surface: the mesh may not be their body (or not in their units).

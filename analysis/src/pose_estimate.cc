@@ -12,6 +12,8 @@ const char* to_string(PoseStatus status) {
       return "max_iterations";
     case PoseStatus::kDegenerate:
       return "degenerate";
+    case PoseStatus::kNoPointsInFront:
+      return "no_points_in_front";
   }
   return "unknown";
 }

@@ -20,10 +20,10 @@ constexpr double kUnitNormal = 1e-9;
 
 void VisibilityProblem::validate() const {
   const Eigen::Index n = points.cols();
-  internal::check_min_count("points", n, 3, "markers");
-  internal::check_finite_columns("points", points);
-  internal::check_count_matches("normals", normals.cols(), n, "points");
-  internal::check_unit_columns("normals", normals, kUnitNormal);
+  vantage::internal::check_min_count("points", n, 3, "markers");
+  vantage::internal::check_finite_columns("points", points);
+  vantage::internal::check_count_matches("normals", normals.cols(), n, "points");
+  vantage::internal::check_unit_columns("normals", normals, kUnitNormal);
   if (cos_cone.size() != n) {
     throw InvalidArgument("visibility.cone_half_angle_deg",
                           "has " + std::to_string(cos_cone.size()) + " entries, expected " +
@@ -36,20 +36,19 @@ void VisibilityProblem::validate() const {
     }
   }
   if (min_visible < 3 || min_visible > n) {
-    throw InvalidArgument("visibility.min_visible",
-                          "must be in [3, " + std::to_string(n) + "] (the markers), got " +
-                              std::to_string(min_visible));
+    throw InvalidArgument("visibility.min_visible", "must be in [3, " + std::to_string(n) +
+                                                        "] (the markers), got " +
+                                                        std::to_string(min_visible));
   }
   if (workspace) {
-    internal::check_unit_vector("workspace.axis", workspace->axis, kUnitNormal);
+    vantage::internal::check_unit_vector("workspace.axis", workspace->axis, kUnitNormal);
     if (!(workspace->cos_half_angle >= -1.0 && workspace->cos_half_angle < 1.0)) {
       throw InvalidArgument("workspace.half_angle_deg", "must be in (0, 180] degrees");
     }
   }
   if (occlusion != nullptr && occlusion->markers() != n) {
-    throw InvalidArgument("body", "the occlusion grid has " +
-                                      std::to_string(occlusion->markers()) + " markers, expected " +
-                                      std::to_string(n));
+    throw InvalidArgument("body", "the occlusion grid has " + std::to_string(occlusion->markers()) +
+                                      " markers, expected " + std::to_string(n));
   }
 }
 
@@ -75,8 +74,8 @@ DirectionVisibility direction_visibility(const VisibilityProblem& problem,
       if (x == 0 && y > 1 && u.cross(first).norm() > kParallelTolerance) collinear = false;
     }
   }
-  const bool inside = !problem.workspace || a.dot(problem.workspace->axis) >=
-                                                problem.workspace->cos_half_angle;
+  const bool inside =
+      !problem.workspace || a.dot(problem.workspace->axis) >= problem.workspace->cos_half_angle;
   out.trackable = inside && static_cast<int>(k) >= problem.min_visible && !collinear;
   return out;
 }

@@ -4,7 +4,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <memory>
 #include <queue>
@@ -17,12 +16,19 @@
 #include "vantage/sdp/layout_analysis.h"
 #include "vantage/sdp/visibility.h"
 #include "vantage/sdp/worst_viewpoint.h"
+#include "visibility_units.h"
 
 namespace vantage::sdp {
 namespace {
+// Its own namespace: in a unity batch with worst_viewpoint.cc and global_search.cc, whose
+// constants and helpers of the same names mean the same but are theirs.
+namespace visibility {
 
+using internal::is_mixed;
 using internal::min_norm_point;
 using internal::MinNormPoint;
+using internal::Seen;
+using internal::sin_plus;
 
 // Initial grid per cube face (kGrid x kGrid patches, six faces: the whole sphere).
 constexpr int kGrid = 4;
@@ -38,37 +44,6 @@ constexpr double kSameValue = 1e-14;
 constexpr double kCrossingSlack = 1e-15;
 // Fibonacci directions tried before the branch and bound, for a first attained value.
 constexpr int kSeedSamples = 2000;
-
-// A marker on a patch: certainly visible, certainly hidden, mixed, or mixed only at the edge
-// of its cone (clear of the body on the whole patch), where markers of one normal and one cone
-// are seen together or not at all.
-enum class Seen : std::uint8_t { kVisible, kHidden, kMixed, kConeEdge };
-
-bool is_mixed(Seen s) { return s == Seen::kMixed || s == Seen::kConeEdge; }
-
-// Bound 2' enumerates unit pairs when no marker is certainly visible; beyond this many mixed
-// units the patch (a large one) keeps its other bounds and is split.
-constexpr int kMaxFreeUnits = 48;
-// Up to this many mixed units, bound 2' takes the best of every choice of units (exact).
-constexpr int kMaxEnumeratedUnits = 12;
-
-// Whether the hidden sides {a : n.a < c} of two cones do not meet: open caps about -n of radius
-// pi - theta, apart when their centres are at least the sum of the radii apart. Opposite normals
-// are decided exactly (n.a < c1 and n.a > -c2 never both hold when c1 <= -c2); otherwise only a
-// margin beyond rounding counts.
-bool hidden_sides_apart(const Eigen::Vector3d& n1, double c1, const Eigen::Vector3d& n2,
-                        double c2) {
-  if (n1 == -n2) return c1 + c2 <= 0.0;
-  constexpr double kMargin = 1e-12;
-  const double between = std::atan2(n1.cross(n2).norm(), n1.dot(n2));
-  const double t1 = std::acos(std::clamp(c1, -1.0, 1.0)), t2 = std::acos(std::clamp(c2, -1.0, 1.0));
-  return between >= 2.0 * kPi - t1 - t2 + kMargin;
-}
-
-double sin_plus(double s, double cos_r, double sin_r) {
-  if (s >= cos_r) return 1.0;
-  return s * cos_r + std::sqrt(std::max(0.0, 1.0 - s * s)) * sin_r;
-}
 
 // The angle between unit vectors, to full precision near 0 and pi.
 double angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
@@ -89,7 +64,10 @@ struct Candidate {
 class VisibilitySearch {
  public:
   VisibilitySearch(const VisibilityProblem& problem, const VisibilitySearchOptions& options)
-      : problem_(problem), options_(options), n_(static_cast<int>(problem.points.cols())) {
+      : problem_(problem),
+        options_(options),
+        n_(static_cast<int>(problem.points.cols())),
+        classes_(problem.normals, problem.cos_cone) {
     for (int i = 0; i < n_; ++i) {
       for (int j = i + 1; j < n_; ++j) pairs_.emplace_back(i, j);
     }
@@ -99,25 +77,6 @@ class VisibilitySearch {
           problem.points.col(pairs_[k].second) - problem.points.col(pairs_[k].first);
     }
     u_ = normalized_columns(free, "points");
-    cone_class_.resize(n_);
-    for (int i = 0; i < n_; ++i) {
-      cone_class_[i] = i;
-      for (int j = 0; j < i; ++j) {
-        if (problem.normals.col(j) == problem.normals.col(i) &&
-            problem.cos_cone(j) == problem.cos_cone(i)) {
-          cone_class_[i] = cone_class_[j];
-          break;
-        }
-      }
-    }
-    hidden_apart_.assign(static_cast<std::size_t>(n_) * n_, 0);
-    for (int i = 0; i < n_; ++i) {
-      for (int j = 0; j < n_; ++j) {
-        hidden_apart_[static_cast<std::size_t>(cone_class_[i]) * n_ + cone_class_[j]] =
-            hidden_sides_apart(problem.normals.col(i), problem.cos_cone(i), problem.normals.col(j),
-                               problem.cos_cone(j));
-      }
-    }
     cone_angle_.resize(n_);
     for (int i = 0; i < n_; ++i) cone_angle_[i] = std::acos(problem.cos_cone(i));
     if (problem.workspace) workspace_angle_ = std::acos(problem.workspace->cos_half_angle);
@@ -292,7 +251,11 @@ class VisibilitySearch {
       pairs.push_back(k);
     }
     double bound = std::min(patch.bound, sin_plus(nearest, cos_r, sin_r));
-    if (mixed) bound = std::min(bound, needed_mixed_bound(seen, pairs, c, cos_r, sin_r));
+    if (mixed) {
+      bound =
+          std::min(bound, internal::needed_mixed_bound(classes_, problem_.min_visible,
+                                                       {seen, pairs_, u_, pairs, c, cos_r, sin_r}));
+    }
     if (bound < level_ - options_.tie_tolerance) return;
 
     exact(c);
@@ -330,124 +293,6 @@ class VisibilitySearch {
     for (int k = 0; k < 4; ++k) {
       open_.push({face, u + ((k & 1) ? q : -q), v + ((k & 2) ? q : -q), q, bound, decided, kept});
     }
-  }
-
-  // Bound 2' of §20. A trackable direction of the patch sees every certainly visible marker
-  // and enough mixed ones to reach min_visible; mixed markers come in units (those at the edge
-  // of one shared cone together, the others alone), each seen whole or not at all. `pairs`
-  // holds the pairs of markers not hidden; a pair a parent dropped (|a.u| above the parent's
-  // bound on all of it) counts as 1.
-  double needed_mixed_bound(const std::vector<Seen>& seen, const std::vector<int>& pairs,
-                            const Eigen::Vector3d& c, double cos_r, double sin_r) const {
-    int certain = 0;
-    std::vector<int> unit_of(static_cast<std::size_t>(n_), -1);
-    std::vector<int> unit_size;
-    std::vector<int> class_unit(static_cast<std::size_t>(n_), -1);
-    for (int i = 0; i < n_; ++i) {
-      certain += seen[i] == Seen::kVisible;
-      if (!is_mixed(seen[i])) continue;
-      int& shared = class_unit[static_cast<std::size_t>(cone_class_[i])];
-      if (seen[i] == Seen::kConeEdge && shared >= 0) {
-        unit_of[i] = shared;
-      } else {
-        unit_of[i] = static_cast<int>(unit_size.size());
-        unit_size.push_back(0);
-        if (seen[i] == Seen::kConeEdge) shared = unit_of[i];
-      }
-      ++unit_size[static_cast<std::size_t>(unit_of[i])];
-    }
-    const int need = problem_.min_visible - certain;
-    const int units = static_cast<int>(unit_size.size());
-    // Units whose cones' hidden sides do not meet: everywhere one of them is seen (opposite
-    // faces with 90-degree cones). A choice must hold one of each such pair.
-    std::vector<int> unit_class(static_cast<std::size_t>(units), -1);
-    for (int i = 0; i < n_; ++i) {
-      if (seen[i] == Seen::kConeEdge) unit_class[unit_of[i]] = cone_class_[i];
-    }
-    std::vector<std::pair<int, int>> apart;
-    for (int x = 0; x < units && units <= kMaxEnumeratedUnits; ++x) {
-      for (int y = x + 1; y < units; ++y) {
-        if (unit_class[x] >= 0 && unit_class[y] >= 0 &&
-            hidden_apart_[static_cast<std::size_t>(unit_class[x]) * n_ + unit_class[y]]) {
-          apart.emplace_back(x + 1, y + 1);
-        }
-      }
-    }
-    if (need <= 0 && apart.empty()) return 1.0;
-    if (need <= 0 && units > kMaxEnumeratedUnits) return 1.0;
-    if (certain == 0 && units > std::max(kMaxFreeUnits, kMaxEnumeratedUnits)) return 1.0;
-    // w(U, V): the least pair bound between units U and V (U == V: within U); -1 for a certain
-    // marker's unit index. Pairs never listed keep 1.
-    const int side = units + 1;  // index 0: the certainly visible markers
-    std::vector<double> w(static_cast<std::size_t>(side) * side, 1.0);
-    auto unit_index = [&](int i) { return seen[i] == Seen::kVisible ? 0 : unit_of[i] + 1; };
-    for (int k : pairs) {
-      const auto [i, j] = pairs_[static_cast<std::size_t>(k)];
-      const int x = unit_index(i), y = unit_index(j);
-      if (x == 0 && y == 0) continue;  // bound 2's pairs
-      const double b = sin_plus(std::abs(c.dot(u_.col(k))), cos_r, sin_r);
-      double& wxy = w[static_cast<std::size_t>(x) * side + y];
-      wxy = std::min(wxy, b);
-      w[static_cast<std::size_t>(y) * side + x] = wxy;
-    }
-    auto weight = [&](int x, int y) { return w[static_cast<std::size_t>(x) * side + y]; };
-    if (units <= kMaxEnumeratedUnits) {
-      // Every choice of units holding `need` markers: the least pair bound among the certain
-      // markers' pairs with them and their own pairs, at its best. Adding a unit to a choice
-      // that is large enough only adds pairs, so the search stops there.
-      std::vector<int> chosen;
-      std::vector<char> in(static_cast<std::size_t>(side), 0);
-      auto covers = [&] {
-        for (const auto& [x, y] : apart) {
-          if (!in[x] && !in[y]) return false;
-        }
-        return true;
-      };
-      double best = 0.0;
-      std::function<void(int, int, double)> choose = [&](int next, int size, double value) {
-        if (value <= best) return;
-        if (size >= need && covers()) {
-          best = value;
-          return;
-        }
-        for (int x = next; x < side; ++x) {
-          double with = std::min({value, weight(0, x), weight(x, x)});
-          for (int y : chosen) with = std::min(with, weight(x, y));
-          chosen.push_back(x);
-          in[x] = 1;
-          choose(x + 1, size + unit_size[static_cast<std::size_t>(x - 1)], with);
-          in[x] = 0;
-          chosen.pop_back();
-        }
-      };
-      choose(1, 0, 1.0);
-      return best;
-    }
-    // Many units (a large patch): the greedy threshold, the best units by w(anchor, U) and
-    // w(U, U) until `size` more markers are seen. Any choice of units that large holds a unit
-    // at most this.
-    auto threshold = [&](int anchor, int size) {
-      std::vector<std::pair<double, int>> by_value;
-      for (int x = 1; x < side; ++x) {
-        if (x == anchor) continue;
-        by_value.emplace_back(std::min(weight(anchor, x), weight(x, x)), unit_size[x - 1]);
-      }
-      std::sort(by_value.begin(), by_value.end(), std::greater<>());
-      int taken = 0;
-      for (const auto& [value, count] : by_value) {
-        taken += count;
-        if (taken >= size) return value;
-      }
-      return 0.0;  // too few markers: pruned before (fewer than min_visible can be seen)
-    };
-    if (certain > 0) return threshold(0, need);
-    // No certain marker: some unit U is seen; the rest follows as above, U's pairs included.
-    double best = 0.0;
-    for (int x = 1; x < side; ++x) {
-      const int rest = problem_.min_visible - unit_size[x - 1];
-      best = std::max(best, rest <= 0 ? weight(x, x) : std::min(weight(x, x), threshold(x, rest)));
-    }
-    return best;
   }
 
   // Marker i on the patch of centre c and radius r: certainly visible, hidden or mixed.
@@ -551,11 +396,10 @@ class VisibilitySearch {
   const VisibilityProblem& problem_;
   const VisibilitySearchOptions& options_;
   const int n_;
+  const internal::ConeClasses classes_;
   std::vector<std::pair<int, int>> pairs_;
   Eigen::Matrix3Xd u_;
   std::vector<double> cone_angle_;
-  std::vector<int> cone_class_;     // markers of one normal and one cone share a class
-  std::vector<char> hidden_apart_;  // by class pair: their hidden sides do not meet
   double workspace_angle_ = kPi;
   std::vector<Candidate> candidates_;
   std::priority_queue<Patch> open_;
@@ -566,6 +410,7 @@ class VisibilitySearch {
   bool exhausted_ = false;
 };
 
+}  // namespace visibility
 }  // namespace
 
 bool VisibilitySearchOptions::is_valid(std::string* why) const {
@@ -596,7 +441,7 @@ VisibilityWorstViewpoint visibility_worst_viewpoint(const VisibilityProblem& pro
                                                     const VisibilitySearchOptions& options) {
   vantage::internal::check_options("options", options);
   problem.validate();
-  VisibilitySearch search(problem, options);
+  visibility::VisibilitySearch search(problem, options);
   return search.run();
 }
 

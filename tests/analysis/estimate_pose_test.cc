@@ -334,5 +334,12 @@ TEST(EstimatePose, ExplicitFreeVectorsBeyondProp4sLimitAreRefused) {
   EXPECT_NO_THROW(estimate_pose(PoseMethod::kStandard, data, options));
 }
 
+TEST(PoseStatus, EveryStatusHasTheNameTheDocsGive) {
+  EXPECT_STREQ(to_string(PoseStatus::kOk), "ok");
+  EXPECT_STREQ(to_string(PoseStatus::kMaxIterations), "max_iterations");
+  EXPECT_STREQ(to_string(PoseStatus::kDegenerate), "degenerate");
+  EXPECT_STREQ(to_string(PoseStatus::kNoPointsInFront), "no_points_in_front");
+}
+
 }  // namespace
 }  // namespace vantage

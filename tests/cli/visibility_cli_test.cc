@@ -46,7 +46,8 @@ TEST(VisibilityCli, SatelliteReportsBothAnswersWithTheIssuesFields) {
   EXPECT_TRUE(v["certificate"]["certified"].get<bool>());
   EXPECT_LE(v["certificate"]["t_upper"].get<double>() - v["certificate"]["t_lower"].get<double>(),
             kCertificate);
-  // Hiding markers can only lose data vectors: the bound with visibility is no better.
+  // The satellite's shadowed, one-sided markers make it worse on its body (not a theorem: the
+  // worst direction seen whole may be untrackable, as the drone's is).
   EXPECT_GE(v["max_worst_case_error_deg"].get<double>(),
             json["max_worst_case_error_deg"].get<double>());
   const double t = v["t"].get<double>();
@@ -59,6 +60,22 @@ TEST(VisibilityCli, SatelliteReportsBothAnswersWithTheIssuesFields) {
   EXPECT_EQ(text.status, 0) << text.err;
   EXPECT_THAT(text.out, HasSubstr("on its body"));
   EXPECT_THAT(text.out, HasSubstr("seen whole"));
+}
+
+TEST(VisibilityCli, DropoutOnTheBodyIsReportedInTextAndJson) {
+  ScratchDir scratch;
+  const nlohmann::json json = testing::run_json("analyze " + kSatellite + " --dropout", scratch);
+  const nlohmann::json& v = json["visibility"];
+  ASSERT_EQ(v["dropout"].size(), 12u);
+  ASSERT_EQ(v["dropout_by_harm"].size(), 12u);
+  // Losing a marker can only make directions untrackable (the same 20 000 directions). (Its
+  // error may go either way: the worst direction may become untrackable.)
+  for (const nlohmann::json& e : v["dropout"]) {
+    EXPECT_LE(e["trackable_fraction"].get<double>(), v["trackable_fraction"].get<double>());
+  }
+  const CliRun text = run_vantage("analyze " + kSatellite + " --dropout", scratch);
+  EXPECT_EQ(text.status, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("dropout on its body, most harmful first"));
 }
 
 TEST(VisibilityCli, OverridesReachTheReport) {
