@@ -47,8 +47,8 @@ void Mesh::validate() const {
   }
   for (Eigen::Index k = 0; k < triangles.cols(); ++k) {
     if (triangles.col(k).minCoeff() < 0 || triangles.col(k).maxCoeff() >= vertices.cols()) {
-      throw InvalidArgument("body", "triangle " + std::to_string(k) +
-                                        " names a vertex the mesh does not have");
+      throw InvalidArgument(
+          "body", "triangle " + std::to_string(k) + " names a vertex the mesh does not have");
     }
   }
 }
@@ -62,7 +62,8 @@ double Mesh::area() const {
   double total = 0.0;
   for (Eigen::Index k = 0; k < triangles.cols(); ++k) {
     const Eigen::Vector3d a = vertices.col(triangles(0, k));
-    total += 0.5 * (vertices.col(triangles(1, k)) - a).cross(vertices.col(triangles(2, k)) - a).norm();
+    total +=
+        0.5 * (vertices.col(triangles(1, k)) - a).cross(vertices.col(triangles(2, k)) - a).norm();
   }
   return total;
 }
@@ -70,10 +71,9 @@ double Mesh::area() const {
 double distance_to_mesh(const Mesh& mesh, const Eigen::Vector3d& point) {
   double best = std::numeric_limits<double>::infinity();
   for (Eigen::Index k = 0; k < mesh.triangles.cols(); ++k) {
-    const Eigen::Vector3d q =
-        closest_on_triangle(point, mesh.vertices.col(mesh.triangles(0, k)),
-                            mesh.vertices.col(mesh.triangles(1, k)),
-                            mesh.vertices.col(mesh.triangles(2, k)));
+    const Eigen::Vector3d q = closest_on_triangle(point, mesh.vertices.col(mesh.triangles(0, k)),
+                                                  mesh.vertices.col(mesh.triangles(1, k)),
+                                                  mesh.vertices.col(mesh.triangles(2, k)));
     best = std::min(best, (q - point).norm());
   }
   return best;

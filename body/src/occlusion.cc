@@ -90,8 +90,8 @@ OcclusionGrid build_occlusion_grid(const Mesh& mesh, const Eigen::Matrix3Xd& poi
   parallel_blocks(markers, options.threads, [&](long begin, long end) {
     for (long i = begin; i < end; ++i) {
       const Eigen::Vector3d normal = normals.col(i).normalized();
-      cast_marker(caster, points.col(i) + offset * normal, normal, cos_cone(i),
-                  static_cast<int>(i), n, &grid);
+      cast_marker(caster, points.col(i) + offset * normal, normal, cos_cone(i), static_cast<int>(i),
+                  n, &grid);
     }
   });
   grid.finish();

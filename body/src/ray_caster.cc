@@ -37,7 +37,7 @@ RTCRay make_ray(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
   ray.dir_z = static_cast<float>(direction.z());
   ray.time = 0.0f;
   ray.tfar = far < std::numeric_limits<float>::max() ? static_cast<float>(far)
-                                                      : std::numeric_limits<float>::infinity();
+                                                     : std::numeric_limits<float>::infinity();
   ray.mask = 0xFFFFFFFFu;
   ray.id = 0;
   ray.flags = 0;
@@ -58,9 +58,9 @@ RayCaster::RayCaster(const Mesh& mesh) : scene_(std::make_unique<Scene>()) {
   auto* vertices = static_cast<float*>(
       rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                               3 * sizeof(float), static_cast<std::size_t>(mesh.vertices.cols())));
-  auto* indices = static_cast<unsigned*>(
-      rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                              3 * sizeof(unsigned), static_cast<std::size_t>(mesh.triangles.cols())));
+  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
+      static_cast<std::size_t>(mesh.triangles.cols())));
   if (vertices == nullptr || indices == nullptr) {
     rtcReleaseGeometry(geometry);
     embree_failed(scene_->device, "rtcSetNewGeometryBuffer");

@@ -28,10 +28,9 @@ std::vector<std::string> read_names(const nlohmann::json& value, const std::stri
 
 Layout parse_layout(std::string_view text, const std::string& source) {
   const nlohmann::json root = internal::parse_object(text, source);
-  internal::reject_unknown_fields(
-      root, source,
-      {"name", "description", "vectors", "points", "names", "weights", "candidates", "normals",
-       "visibility", "workspace"});
+  internal::reject_unknown_fields(root, source,
+                                  {"name", "description", "vectors", "points", "names", "weights",
+                                   "candidates", "normals", "visibility", "workspace"});
   const bool has_vectors = root.contains("vectors");
   const bool has_points = root.contains("points");
   if (has_vectors == has_points) {

@@ -18,10 +18,11 @@ Mesh read_mesh(const std::string& path) {
   }
   Assimp::Importer importer;
   // Points and lines are dropped (the body is its surface): only triangles remain.
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene = importer.ReadFile(
-      path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
-                aiProcess_SortByPType);
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                              aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const aiScene* scene =
+      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                  aiProcess_PreTransformVertices | aiProcess_SortByPType);
   if (scene == nullptr) {
     throw InvalidArgument(printable(path) + ": not a mesh assimp can read (" +
                           printable(importer.GetErrorString()) + ")");

@@ -76,10 +76,10 @@ struct VisibilityWorstViewpoint {
   Eigen::Vector3d viewpoint = Eigen::Vector3d::UnitZ();
   std::vector<Eigen::Vector3d> viewpoints;  ///< every optimum within tie_tolerance, viewpoint first
   std::vector<int> visible_markers;         ///< the markers visible from `viewpoint`
-  double t = 0.0;         ///< t(viewpoint) = t_lower
-  double pbar_min = 1.0;  ///< sqrt(1 - t^2)
-  double t_upper = 1.0;   ///< proven: no trackable direction has t above it
-  double t_lower = 0.0;   ///< attained at `viewpoint`
+  double t = 0.0;                           ///< t(viewpoint) = t_lower
+  double pbar_min = 1.0;                    ///< sqrt(1 - t^2)
+  double t_upper = 1.0;                     ///< proven: no trackable direction has t above it
+  double t_lower = 0.0;                     ///< attained at `viewpoint`
   long patches = 0;
   long cells_solved = 0;
   std::string message;
@@ -96,9 +96,9 @@ VisibilityWorstViewpoint visibility_worst_viewpoint(const VisibilityProblem& pro
 
 /// How much of the workspace is trackable (docs/math.md §20, "Coverage").
 struct VisibilityCoverage {
-  int samples = 0;                    ///< Fibonacci directions in the workspace
-  double trackable_fraction = 0.0;    ///< of the workspace's area
-  double lost_fraction = 0.0;         ///< 1 - trackable_fraction
+  int samples = 0;                  ///< Fibonacci directions in the workspace
+  double trackable_fraction = 0.0;  ///< of the workspace's area
+  double lost_fraction = 0.0;       ///< 1 - trackable_fraction
   /// The largest connected untrackable region: its centre (unit) and angular radius.
   std::optional<Eigen::Vector3d> largest_region_center;
   double largest_region_radius_deg = 0.0;
