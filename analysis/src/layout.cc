@@ -176,6 +176,7 @@ Layout without_entry(const Layout& layout, Eigen::Index k) {
     v = kept;
   };
   Layout out = layout;
+  out.placement.reset();
   drop(out.entries);
   drop_element(out.weights);
   out.names.clear();
@@ -193,6 +194,7 @@ Layout without_entry(const Layout& layout, Eigen::Index k) {
 
 void append_entry(Layout* layout, const Eigen::Vector3d& x, const std::string& name_prefix) {
   const Eigen::Index n = layout->entries.cols();
+  layout->placement.reset();
   if (!layout->names.empty()) layout->names.push_back(unused_entry_name(*layout, name_prefix));
   if (layout->visibility) {
     MarkerVisibility& v = *layout->visibility;

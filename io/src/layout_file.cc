@@ -6,6 +6,7 @@
 #include "json_fields.h"
 #include "vantage/analysis/common.h"
 #include "vantage/io/printable.h"
+#include "placement_fields.h"
 #include "visibility_fields.h"
 
 namespace vantage::io {
@@ -30,7 +31,7 @@ Layout parse_layout(std::string_view text, const std::string& source) {
   const nlohmann::json root = internal::parse_object(text, source);
   internal::reject_unknown_fields(root, source,
                                   {"name", "description", "vectors", "points", "names", "weights",
-                                   "candidates", "normals", "visibility", "workspace"});
+                                   "candidates", "normals", "visibility", "workspace", "placement"});
   const bool has_vectors = root.contains("vectors");
   const bool has_points = root.contains("points");
   if (has_vectors == has_points) {
@@ -56,6 +57,7 @@ Layout parse_layout(std::string_view text, const std::string& source) {
                           : Eigen::Matrix3Xd(3, 0);
   layout.visibility = internal::read_visibility(root, source, layout.entries.cols());
   layout.workspace = internal::read_workspace(root, source);
+  layout.placement = internal::read_placement(root, source, layout.entries.cols());
   try {
     layout.validate();
   } catch (const InvalidArgument& e) {
@@ -83,6 +85,7 @@ std::string layout_to_json(const Layout& layout) {
       std::vector<double>(layout.weights.data(), layout.weights.data() + layout.weights.size());
   if (layout.candidates.cols() > 0) out["candidates"] = rows(layout.candidates);
   internal::write_visibility(layout, &out);
+  internal::write_placement(layout, &out);
   // Names read from CSV or YAML files may not be UTF-8 (JSON requires it): such bytes are
   // written as U+FFFD instead of throwing.
   return out.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";

@@ -17,6 +17,13 @@ namespace {
 // Lattice points closer than this many mean spacings are neighbours.
 constexpr double kNeighbourSpacings = 2.5;
 
+int find(std::vector<int>& parent, int k) {
+  while (parent[k] != k) k = parent[k] = parent[parent[k]];
+  return k;
+}
+
+}  // namespace
+
 Eigen::Matrix3Xd fibonacci_directions(int count) {
   Eigen::Matrix3Xd out(3, count);
   const double golden = kPi * (3.0 - std::sqrt(5.0));
@@ -27,13 +34,6 @@ Eigen::Matrix3Xd fibonacci_directions(int count) {
   }
   return out;
 }
-
-int find(std::vector<int>& parent, int k) {
-  while (parent[k] != k) k = parent[k] = parent[parent[k]];
-  return k;
-}
-
-}  // namespace
 
 VisibilityCoverage visibility_coverage(const VisibilityProblem& problem, int samples) {
   problem.validate();

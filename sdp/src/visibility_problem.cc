@@ -46,7 +46,18 @@ void VisibilityProblem::validate() const {
       throw InvalidArgument("workspace.half_angle_deg", "must be in (0, 180] degrees");
     }
   }
-  if (occlusion != nullptr && occlusion->markers() != n) {
+  if (!occlusion_markers.empty()) {
+    if (occlusion == nullptr || static_cast<Eigen::Index>(occlusion_markers.size()) != n) {
+      throw InvalidArgument("body", "occlusion_markers needs a grid and one entry per point");
+    }
+    for (int m : occlusion_markers) {
+      if (m < 0 || m >= occlusion->markers()) {
+        throw InvalidArgument("body", "occlusion marker " + std::to_string(m) +
+                                          " is not in the grid's " +
+                                          std::to_string(occlusion->markers()));
+      }
+    }
+  } else if (occlusion != nullptr && occlusion->markers() != n) {
     throw InvalidArgument("body", "the occlusion grid has " + std::to_string(occlusion->markers()) +
                                       " markers, expected " + std::to_string(n));
   }
@@ -57,7 +68,7 @@ DirectionVisibility direction_visibility(const VisibilityProblem& problem,
   DirectionVisibility out;
   for (Eigen::Index i = 0; i < problem.points.cols(); ++i) {
     if (problem.normals.col(i).dot(a) < problem.cos_cone(i)) continue;
-    if (problem.occlusion != nullptr && problem.occlusion->blocked(static_cast<int>(i), a)) {
+    if (problem.occlusion != nullptr && problem.occlusion->blocked(problem.occlusion_marker(static_cast<int>(i)), a)) {
       continue;
     }
     out.visible.push_back(static_cast<int>(i));

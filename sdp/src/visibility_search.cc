@@ -100,6 +100,11 @@ class VisibilitySearch {
     // fast as the bounds allow and no region is refined below what the certificate needs.
     while (!open_.empty()) {
       const Patch patch = open_.top();
+      if (level_ >= options_.stop_above) {
+        stopped_ = true;
+        upper_ = std::max(upper_, patch.bound);
+        break;
+      }
       if (patch.bound < level_ - options_.tie_tolerance) break;  // every open patch is pruned
       if (patch.bound <= level_ + 0.5 * options_.certificate_tolerance) {
         upper_ = std::max(upper_, patch.bound);  // the largest bound left open
@@ -130,7 +135,7 @@ class VisibilitySearch {
     std::vector<int> visible;
     for (int i = 0; i < n_; ++i) {
       if (problem_.normals.col(i).dot(a) < problem_.cos_cone(i)) continue;
-      if (problem_.occlusion != nullptr && problem_.occlusion->blocked(i, a)) continue;
+      if (problem_.occlusion != nullptr && problem_.occlusion->blocked(problem_.occlusion_marker(i), a)) continue;
       visible.push_back(i);
     }
     return visible;
@@ -305,7 +310,7 @@ class VisibilitySearch {
       in_cone = delta + r <= cone_angle_[i];
     }
     if (problem_.occlusion == nullptr) return in_cone ? Seen::kVisible : Seen::kConeEdge;
-    switch (problem_.occlusion->span(i, face, u - h, u + h, v - h, v + h)) {
+    switch (problem_.occlusion->span(problem_.occlusion_marker(i), face, u - h, u + h, v - h, v + h)) {
       case OcclusionGrid::Span::kBlocked:
         return Seen::kHidden;
       case OcclusionGrid::Span::kClear:
@@ -362,10 +367,12 @@ class VisibilitySearch {
     out.t_upper = std::max(upper_, out.t);
     out.pbar_min = pbar_at(visible_vectors(out.visible_markers), out.viewpoint);
     const bool certified =
-        !exhausted_ && out.t_upper - out.t_lower <= options_.certificate_tolerance;
+        !exhausted_ && !stopped_ && out.t_upper - out.t_lower <= options_.certificate_tolerance;
     out.status = certified ? VisibilityWorstViewpoint::Status::kCertified
                            : VisibilityWorstViewpoint::Status::kNotCertified;
-    if (!certified) {
+    if (stopped_) {
+      out.message = "stopped: an attained value reached stop_above";
+    } else if (!certified) {
       std::ostringstream message;
       message << "not certified: t_upper - t_lower = " << out.t_upper - out.t_lower << " after "
               << patches_ << " patches";
@@ -408,6 +415,7 @@ class VisibilitySearch {
   long patches_ = 0;
   long cells_solved_ = 0;
   bool exhausted_ = false;
+  bool stopped_ = false;
 };
 
 }  // namespace visibility
@@ -422,6 +430,9 @@ bool VisibilitySearchOptions::is_valid(std::string* why) const {
     return vantage::internal::invalid_option(why, "tie_tolerance", "must be in [0, 1e-3]");
   }
   if (max_patches < 1) return vantage::internal::invalid_option(why, "max_patches", "must be >= 1");
+  if (std::isnan(stop_above)) {
+    return vantage::internal::invalid_option(why, "stop_above", "must not be NaN");
+  }
   return true;
 }
 

@@ -26,6 +26,18 @@ enum class LayoutMode {
 /// "vectors" or "points".
 const char* to_string(LayoutMode mode);
 
+/// Where the markers of a placed layout came from (`vantage place`, docs/math.md §21): kept in
+/// the file so that figures can show the sites that were not chosen and the greedy steps.
+struct LayoutPlacement {
+  std::string sites;           ///< the candidates' source (a mesh or a sites file), as given
+  std::vector<int> chosen;     ///< the site of each marker, in the order of the entries (-1: kept)
+  std::string objective;       ///< what was optimised, in words
+  Eigen::Matrix3Xd site_points;   ///< every candidate site
+  Eigen::Matrix3Xd site_normals;  ///< their outward unit normals
+  /// The greedy construction: p-bar_min (certified, under visibility) after k markers.
+  std::vector<std::pair<int, double>> steps;
+};
+
 /// A layout in the object frame.
 struct Layout {
   static constexpr double kMinLength = 1e-150;  ///< squares of lengths stay normal doubles
@@ -49,6 +61,8 @@ struct Layout {
   std::optional<MarkerVisibility> visibility;
   /// The directions the analysis covers; none: the whole sphere.
   std::optional<LayoutWorkspace> workspace;
+  /// How `vantage place` chose the markers, or none. Dropped by every edit of the entries.
+  std::optional<LayoutPlacement> placement;
 
   /// Throws InvalidArgument naming the field and index of the first violation: fewer than 2
   /// vectors or 3 points (point mode needs at least 2 free vectors), non-finite values, a vector

@@ -30,8 +30,16 @@ struct VisibilityProblem {
   Eigen::VectorXd cos_cone;  ///< cos of each marker's cone half-angle, in [-1, 1)
   int min_visible = 3;       ///< markers a trackable direction must see, >= 3
   std::optional<Workspace> workspace;
-  /// Occlusion by a body (docs/math.md §20), one grid marker per point; null without a body.
+  /// Occlusion by a body (docs/math.md §20); null without a body.
   const OcclusionGrid* occlusion = nullptr;
+  /// The grid marker of each point (a subset of a larger grid's markers: marker placement,
+  /// docs/math.md §21), or empty: point i is grid marker i.
+  std::vector<int> occlusion_markers;
+
+  /// The grid marker of point i.
+  int occlusion_marker(int i) const {
+    return occlusion_markers.empty() ? i : occlusion_markers[static_cast<std::size_t>(i)];
+  }
 
   /// Throws InvalidArgument naming the field ("normals[2]", "min_visible", ...) on bad input.
   void validate() const;
@@ -59,6 +67,10 @@ struct VisibilitySearchOptions {
   double tie_tolerance = 1e-9;
   /// Patch budget of the branch and bound, >= 1; when exhausted the result is not certified.
   long max_patches = 4'000'000;
+  /// The search stops as soon as an attained value reaches this (a caller that only needs to
+  /// know whether t*_vis is below a level: marker placement, docs/math.md §21). The result is
+  /// then not certified, and its t_lower is at least stop_above. Default: never.
+  double stop_above = 2.0;
 
   bool is_valid(std::string* why = nullptr) const;
 };
@@ -67,7 +79,7 @@ struct VisibilitySearchOptions {
 struct VisibilityWorstViewpoint {
   enum class Status {
     kCertified,     ///< t_upper - t_lower <= certificate_tolerance
-    kNotCertified,  ///< patch budget exhausted first
+    kNotCertified,  ///< patch budget exhausted first, or stopped at options.stop_above
     kUntrackable,   ///< no direction of the workspace is trackable: t, viewpoint mean nothing
   };
   Status status = Status::kNotCertified;
@@ -93,6 +105,10 @@ const char* to_string(VisibilityWorstViewpoint::Status status);
 /// The search of docs/math.md §20. Throws InvalidArgument on a bad problem or options.
 VisibilityWorstViewpoint visibility_worst_viewpoint(const VisibilityProblem& problem,
                                                     const VisibilitySearchOptions& options = {});
+
+/// `count` directions of the Fibonacci lattice on the sphere (3 x count, unit): the lattice of
+/// the coverage estimate. count >= 1.
+Eigen::Matrix3Xd fibonacci_directions(int count);
 
 /// How much of the workspace is trackable (docs/math.md §20, "Coverage").
 struct VisibilityCoverage {

@@ -1,0 +1,149 @@
+#pragma once
+
+/// Placing markers on a body: K of N candidate sites (docs/math.md §21).
+///
+/// Each site is a point on the body with its outward normal and cone; the body's mesh, when
+/// there is one, shadows them (docs/math.md §20). place_markers() chooses K sites (kept markers
+/// included) that first make every workspace direction trackable, then maximise the certified
+/// worst-case p-bar_min under visibility (or, robustly, the worst of it over the loss of any one
+/// marker), under a minimum separation and a minimum distance difference. Small instances are
+/// searched exhaustively, larger ones greedily and then by swaps; the report says how far from
+/// optimal the answer may be (greedy steps, random baseline).
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vantage/analysis/mesh.h"
+#include "vantage/sdp/visibility.h"
+
+namespace vantage::design {
+
+/// Candidate sites on a body: the markers of a VisibilityProblem (points, unit normals, cone
+/// cosines, min_visible, workspace, and the occlusion grid of every site, or null).
+struct PlacementProblem {
+  sdp::VisibilityProblem sites;
+  /// Sites that are already markers (kept: always chosen, counted in `markers`), distinct.
+  std::vector<int> keep;
+  int markers = 0;                      ///< K: the markers of the answer, kept ones included
+  double min_separation = 0.0;          ///< least distance between chosen markers, >= 0
+  double min_distance_difference = 0.0;  ///< least |d_ij - d_kl| of distinct pairs, >= 0
+
+  /// Throws InvalidArgument naming the field: "markers" (K above the sites, below
+  /// min_visible, below the kept markers), "keep", "min_separation" (also when kept markers
+  /// violate it), "min_distance_difference", and the sites' own fields.
+  void validate() const;
+};
+
+/// Options of place_markers().
+struct PlaceOptions {
+  /// The certified analysis of each subset (docs/math.md §20); its certificate_tolerance is the
+  /// resolution at which two placements are told apart.
+  sdp::VisibilitySearchOptions search;
+  int coverage_samples = 20000;  ///< whole-sphere Fibonacci lattice of the coverage, >= 100
+  bool robust_dropout = false;   ///< objective 3 of docs/math.md §21
+  /// Search every feasible subset when there are at most this many K-subsets of the free
+  /// sites, >= 0 (0: never).
+  long exhaustive_limit = 5000;
+  int random_trials = 1000;  ///< random feasible subsets of the baseline, >= 0
+  std::uint64_t seed = 1;    ///< the baseline's random engine
+  int threads = 0;           ///< >= 0 (0: all cores); the answer does not depend on it
+  /// Called with a stage ("greedy 3/12", "swaps, pass 2") from the calling thread, or empty.
+  std::function<void(const std::string&)> progress;
+
+  bool is_valid(std::string* why = nullptr) const;
+};
+
+/// What one choice of sites promises (docs/math.md §21's objective).
+struct PlacementValue {
+  double coverage = 0.0;  ///< trackable fraction of the workspace's lattice directions
+  /// The certified worst case t_upper (1 when nothing is trackable) and p-bar_min =
+  /// sqrt(1 - t_upper^2).
+  double t_upper = 1.0;
+  double pbar_min = 0.0;
+  sdp::VisibilityWorstViewpoint::Status status = sdp::VisibilityWorstViewpoint::Status::kUntrackable;
+};
+
+/// The placement after greedy step k (k markers chosen).
+struct PlacementStep {
+  int k = 0;
+  int added = -1;  ///< the site added at this step (-1 for the kept markers' row)
+  PlacementValue value;
+};
+
+/// The random feasible subsets of the baseline.
+struct RandomBaseline {
+  int trials = 0;        ///< feasible subsets drawn (fewer than asked when few are feasible)
+  int complete = 0;      ///< of them, how many cover every lattice direction
+  double best_coverage = 0.0;
+  double best_pbar_min = 0.0;    ///< of the best trial by the objective
+  double median_pbar_min = 0.0;  ///< median over the trials (0 for an untrackable trial)
+  std::vector<int> best;         ///< the best trial's sites, increasing
+};
+
+/// The worst single loss (with robust_dropout).
+struct RobustValue {
+  double coverage = 0.0;  ///< least coverage over the loss of one marker
+  double pbar_min = 0.0;  ///< least certified p-bar_min over the loss of one marker
+  int worst_lost_marker = -1;  ///< the site whose loss gives it
+};
+
+/// The answer of place_markers().
+struct PlacementResult {
+  enum class Status {
+    kComplete,    ///< every lattice direction of the workspace is trackable by the answer
+    kIncomplete,  ///< no K-subset found covers the workspace; `chosen` is the best coverage
+  };
+  Status status = Status::kIncomplete;
+  std::vector<int> chosen;  ///< site indices, increasing (kept sites included)
+  PlacementValue value;     ///< of `chosen`, at the search's tolerance
+  std::optional<RobustValue> robust;
+  std::string search;              ///< "exhaustive" or "greedy+swap"
+  std::vector<PlacementStep> steps;  ///< greedy construction (empty when exhaustive)
+  int swaps = 0;                   ///< improving swaps made after the greedy
+  long evaluations = 0;            ///< certified searches run (not counting the baseline)
+  long subsets = 0;                ///< feasible subsets searched exhaustively
+  RandomBaseline random_baseline;
+  /// When incomplete: the markers at which greedy by coverage alone covers the lattice (an upper
+  /// bound on the smallest complete K), or none when all sites together do not.
+  std::optional<int> covering_markers;
+  double all_sites_coverage = 0.0;  ///< coverage with every site chosen
+  std::string message;
+};
+
+/// "complete" or "incomplete".
+const char* to_string(PlacementResult::Status status);
+
+/// Chooses the sites (docs/math.md §21). Deterministic for a seed and any thread count.
+/// Throws InvalidArgument on a bad problem or options.
+PlacementResult place_markers(const PlacementProblem& problem, const PlaceOptions& options = {});
+
+/// Candidate sites sampled on a mesh (docs/math.md §21, "Sites").
+struct SurfaceSites {
+  Eigen::Matrix3Xd points;   ///< 3 x N
+  Eigen::Matrix3Xd normals;  ///< outward unit normals of the sites' triangles
+  std::vector<int> triangles;  ///< the triangle of each site
+  int drawn = 0;             ///< samples drawn before thinning
+};
+
+/// `count` area-uniform samples of `mesh` from an engine seeded with `seed`, thinned to
+/// `min_separation` (>= 0) in the order drawn; normals flipped outward when the mesh's signed
+/// volume is negative. Throws InvalidArgument ("body: ...") for a bad mesh, count < 1, or a
+/// mesh of zero area.
+SurfaceSites sample_surface_sites(const Mesh& mesh, int count, double min_separation,
+                                  std::uint64_t seed);
+
+/// min |d_ij - d_kl| over distinct unordered pairs {i, j} != {k, l} of the columns of `points`
+/// (ART's identification rule), with the two pairs (i < j, pair_a before pair_b in the order
+/// (0,1), (0,2), ..., (1,2), ...); +infinity with fewer than two pairs.
+struct DistanceDifference {
+  double value = 0.0;
+  std::pair<int, int> pair_a{-1, -1};
+  std::pair<int, int> pair_b{-1, -1};
+};
+DistanceDifference min_distance_difference(const Eigen::Matrix3Xd& points);
+
+}  // namespace vantage::design

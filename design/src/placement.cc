@@ -1,0 +1,171 @@
+// place_markers(): K of N sites on a body (docs/math.md §21).
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "placement_search.h"
+#include "vantage/analysis/common.h"
+#include "vantage/analysis/internal/checks.h"
+#include "vantage/design/placement.h"
+
+namespace vantage::design {
+namespace {
+
+PlacementValue value_of(const internal::Scored& s, int directions) {
+  PlacementValue out;
+  out.coverage = directions == 0 ? 0.0 : static_cast<double>(s.cover.covered) / directions;
+  out.t_upper = s.t;
+  out.pbar_min = std::sqrt(std::max(0.0, 1.0 - s.t * s.t));
+  out.status = s.status;
+  return out;
+}
+
+// The least coverage and p-bar_min over the loss of one marker of `chosen`.
+RobustValue robust_value(internal::PlacementSearch& search, const std::vector<int>& chosen) {
+  RobustValue out;
+  out.coverage = 1.0;
+  out.pbar_min = 1.0;
+  const int directions = search.coverage().directions();
+  for (std::size_t m = 0; m < chosen.size(); ++m) {
+    const internal::Scored lost = search.score(internal::without_position(chosen, m));
+    const double coverage =
+        directions == 0 ? 0.0 : static_cast<double>(lost.cover.covered) / directions;
+    const double pbar = std::sqrt(std::max(0.0, 1.0 - lost.t * lost.t));
+    out.coverage = std::min(out.coverage, coverage);
+    if (out.worst_lost_marker < 0 || pbar < out.pbar_min) {
+      out.pbar_min = pbar;
+      out.worst_lost_marker = chosen[m];
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+void PlacementProblem::validate() const {
+  sites.validate();
+  const long n = static_cast<long>(sites.points.cols());
+  std::vector<int> sorted_keep = keep;
+  std::sort(sorted_keep.begin(), sorted_keep.end());
+  for (std::size_t k = 0; k < sorted_keep.size(); ++k) {
+    if (sorted_keep[k] < 0 || sorted_keep[k] >= n) {
+      throw InvalidArgument("keep", "site " + std::to_string(sorted_keep[k]) + " is not one of the " +
+                                        std::to_string(n) + " sites");
+    }
+    if (k > 0 && sorted_keep[k] == sorted_keep[k - 1]) {
+      throw InvalidArgument("keep", "site " + std::to_string(sorted_keep[k]) + " is kept twice");
+    }
+  }
+  if (markers > n) {
+    throw InvalidArgument("markers", std::to_string(markers) + " exceeds the " + std::to_string(n) +
+                                         " sites");
+  }
+  if (markers < sites.min_visible) {
+    throw InvalidArgument("markers", "must be at least min_visible (" +
+                                         std::to_string(sites.min_visible) + "), got " +
+                                         std::to_string(markers));
+  }
+  if (static_cast<long>(keep.size()) > markers) {
+    throw InvalidArgument("markers", "the " + std::to_string(keep.size()) +
+                                         " kept markers exceed " + std::to_string(markers));
+  }
+  if (!(min_separation >= 0.0) || !std::isfinite(min_separation)) {
+    throw InvalidArgument("min_separation", "must be a finite number >= 0");
+  }
+  if (!(min_distance_difference >= 0.0) || !std::isfinite(min_distance_difference)) {
+    throw InvalidArgument("min_distance_difference", "must be a finite number >= 0");
+  }
+  for (std::size_t i = 0; i < keep.size(); ++i) {
+    for (std::size_t j = i + 1; j < keep.size(); ++j) {
+      const double d = (sites.points.col(keep[i]) - sites.points.col(keep[j])).norm();
+      if (d < min_separation) {
+        throw InvalidArgument("min_separation", "kept sites " + std::to_string(keep[i]) +
+                                                    " and " + std::to_string(keep[j]) +
+                                                    " are closer than it");
+      }
+    }
+  }
+}
+
+bool PlaceOptions::is_valid(std::string* why) const {
+  if (!search.is_valid(why)) return false;
+  if (coverage_samples < 100) {
+    return vantage::internal::invalid_option(why, "coverage_samples", "must be >= 100");
+  }
+  if (exhaustive_limit < 0) {
+    return vantage::internal::invalid_option(why, "exhaustive_limit", "must be >= 0");
+  }
+  if (random_trials < 0) {
+    return vantage::internal::invalid_option(why, "random_trials", "must be >= 0");
+  }
+  if (threads < 0) return vantage::internal::invalid_option(why, "threads", "must be >= 0");
+  return true;
+}
+
+const char* to_string(PlacementResult::Status status) {
+  switch (status) {
+    case PlacementResult::Status::kComplete:
+      return "complete";
+    case PlacementResult::Status::kIncomplete:
+      return "incomplete";
+  }
+  return "unknown";
+}
+
+PlacementResult place_markers(const PlacementProblem& problem, const PlaceOptions& options) {
+  vantage::internal::check_options("options", options);
+  problem.validate();
+  if (options.robust_dropout && problem.markers <= problem.sites.min_visible) {
+    throw InvalidArgument("markers", "robust_dropout needs more markers than min_visible (" +
+                                         std::to_string(problem.sites.min_visible) + ")");
+  }
+  internal::PlacementSearch search(problem, options);
+  const int directions = search.coverage().directions();
+  PlacementResult out;
+
+  std::optional<internal::Scored> random_best;
+  out.random_baseline = search.baseline(&random_best);
+
+  std::optional<internal::Scored> best;
+  if (options.exhaustive_limit > 0 &&
+      search.subset_count(options.exhaustive_limit) <= options.exhaustive_limit) {
+    out.search = "exhaustive";
+    best = search.exhaustive(&out.subsets);
+  } else {
+    out.search = "greedy+swap";
+    best = search.greedy(&out.steps);
+    if (best) best = search.swaps(*best, &out.swaps);
+    // The answer is never worse than the baseline it reports: swaps from its best as well.
+    if (random_best && (!best || search.better(*random_best, *best))) {
+      const internal::Scored from_random = search.swaps(*random_best, &out.swaps);
+      if (!best || search.better(from_random, *best)) best = from_random;
+    }
+  }
+  if (!best) {
+    throw InvalidArgument("min_separation",
+                          "no " + std::to_string(problem.markers) +
+                              " sites satisfy the separation and distance-difference constraints");
+  }
+  out.chosen = best->chosen;
+  out.value = value_of(*best, directions);
+  if (options.robust_dropout) out.robust = robust_value(search, out.chosen);
+  out.evaluations = search.evaluations();
+  out.status = best->cover.covered == directions ? PlacementResult::Status::kComplete
+                                                 : PlacementResult::Status::kIncomplete;
+  {
+    std::vector<int> all(static_cast<std::size_t>(problem.sites.points.cols()));
+    for (std::size_t s = 0; s < all.size(); ++s) all[s] = static_cast<int>(s);
+    out.all_sites_coverage =
+        directions == 0 ? 0.0
+                        : static_cast<double>(search.coverage().key(all).covered) / directions;
+  }
+  if (out.status == PlacementResult::Status::kIncomplete) {
+    out.covering_markers = search.covering_markers();
+    out.message = "no placement of " + std::to_string(problem.markers) +
+                  " markers found makes every workspace direction trackable";
+  }
+  return out;
+}
+
+}  // namespace vantage::design

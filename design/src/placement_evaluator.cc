@@ -1,0 +1,117 @@
+// The certified worst case of a choice of sites against a level (docs/math.md §21).
+
+#include "placement_evaluator.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vantage::design::internal {
+
+PlacementEvaluator::PlacementEvaluator(const PlacementProblem& problem,
+                                       const PlaceOptions& options)
+    : problem_(problem), options_(options) {}
+
+sdp::VisibilityProblem PlacementEvaluator::subproblem(const std::vector<int>& chosen) const {
+  const sdp::VisibilityProblem& all = problem_.sites;
+  sdp::VisibilityProblem out;
+  const Eigen::Index n = static_cast<Eigen::Index>(chosen.size());
+  out.points.resize(3, n);
+  out.normals.resize(3, n);
+  out.cos_cone.resize(n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const int s = chosen[static_cast<std::size_t>(k)];
+    out.points.col(k) = all.points.col(s);
+    out.normals.col(k) = all.normals.col(s);
+    out.cos_cone(k) = all.cos_cone(s);
+  }
+  out.min_visible = all.min_visible;
+  out.workspace = all.workspace;
+  out.occlusion = all.occlusion;
+  if (all.occlusion != nullptr) {
+    for (int s : chosen) out.occlusion_markers.push_back(all.occlusion_marker(s));
+  }
+  return out;
+}
+
+bool PlacementEvaluator::feasible(const std::vector<int>& chosen) const {
+  for (std::size_t k = 1; k < chosen.size(); ++k) {
+    const std::vector<int> before(chosen.begin(), chosen.begin() + static_cast<long>(k));
+    if (!feasible_with(before, chosen[k])) return false;
+  }
+  return true;
+}
+
+bool PlacementEvaluator::feasible_with(const std::vector<int>& chosen, int c) const {
+  const Eigen::Matrix3Xd& p = problem_.sites.points;
+  for (int s : chosen) {
+    if ((p.col(s) - p.col(c)).norm() < problem_.min_separation) return false;
+  }
+  const double gap = problem_.min_distance_difference;
+  if (!(gap > 0.0)) return true;
+  std::vector<double> old;
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    for (std::size_t j = i + 1; j < chosen.size(); ++j) {
+      old.push_back((p.col(chosen[i]) - p.col(chosen[j])).norm());
+    }
+  }
+  std::vector<double> added;
+  for (int s : chosen) added.push_back((p.col(s) - p.col(c)).norm());
+  std::sort(old.begin(), old.end());
+  std::sort(added.begin(), added.end());
+  for (std::size_t k = 1; k < added.size(); ++k) {
+    if (added[k] - added[k - 1] < gap) return false;
+  }
+  for (double d : added) {
+    const auto it = std::lower_bound(old.begin(), old.end(), d);
+    if (it != old.end() && *it - d < gap) return false;
+    if (it != old.begin() && d - *(it - 1) < gap) return false;
+  }
+  return true;
+}
+
+FamilyValue PlacementEvaluator::family_t(const std::vector<std::vector<int>>& family, double level,
+                                         const std::vector<Eigen::Vector3d>& witnesses) const {
+  FamilyValue out;
+  std::vector<sdp::VisibilityProblem> problems;
+  problems.reserve(family.size());
+  for (const std::vector<int>& member : family) problems.push_back(subproblem(member));
+  // A trackable witness at or above the level is an attained value: the family cannot beat it.
+  for (const Eigen::Vector3d& w : witnesses) {
+    for (const sdp::VisibilityProblem& p : problems) {
+      const sdp::DirectionVisibility seen = sdp::direction_visibility(p, w);
+      if (seen.trackable && seen.t >= level) return out;
+    }
+  }
+  sdp::VisibilitySearchOptions search = options_.search;
+  search.stop_above = level;
+  out.t_upper = -1.0;
+  for (std::size_t m = 0; m < problems.size(); ++m) {
+    const sdp::VisibilityWorstViewpoint r = sdp::visibility_worst_viewpoint(problems[m], search);
+    ++out.searches;
+    const bool untrackable = r.status == sdp::VisibilityWorstViewpoint::Status::kUntrackable;
+    if (!untrackable) out.witnesses.push_back(r.viewpoint);
+    const double t = untrackable ? 1.0 : r.t_upper;
+    if (t >= level || (!untrackable && r.t_lower >= level)) {
+      out.t_upper = 1.0;
+      return out;
+    }
+    if (t > out.t_upper) {
+      out.t_upper = t;
+      out.worst_member = static_cast<int>(m);
+      out.status = r.status;
+    }
+  }
+  out.below = true;
+  return out;
+}
+
+std::vector<int> without_position(const std::vector<int>& chosen, std::size_t m) {
+  std::vector<int> out;
+  out.reserve(chosen.size() - 1);
+  for (std::size_t k = 0; k < chosen.size(); ++k) {
+    if (k != m) out.push_back(chosen[k]);
+  }
+  return out;
+}
+
+}  // namespace vantage::design::internal

@@ -1,0 +1,50 @@
+#pragma once
+
+// Private to vantage::design: the certified worst case of a choice of sites, or of the choices
+// left after the loss of one marker, needed only when it beats a level (docs/math.md §21).
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "vantage/design/placement.h"
+
+namespace vantage::design::internal {
+
+/// An attained viewpoint beyond which a subset is rejected without a search, and the value
+/// t_upper of a subset family when it beat the level.
+struct FamilyValue {
+  bool below = false;  ///< every member's t_upper is below the level (then the fields hold)
+  double t_upper = 1.0;  ///< the largest t_upper of the members (1 for an untrackable member)
+  int worst_member = -1;
+  sdp::VisibilityWorstViewpoint::Status status =
+      sdp::VisibilityWorstViewpoint::Status::kUntrackable;  ///< of the worst member
+  std::vector<Eigen::Vector3d> witnesses;  ///< worst viewpoints the searches found
+  int searches = 0;                        ///< certified searches run
+};
+
+class PlacementEvaluator {
+ public:
+  PlacementEvaluator(const PlacementProblem& problem, const PlaceOptions& options);
+
+  /// The visibility problem of the chosen sites (their grid markers remapped).
+  sdp::VisibilityProblem subproblem(const std::vector<int>& chosen) const;
+
+  /// The separation and distance-difference constraints hold for `chosen`.
+  bool feasible(const std::vector<int>& chosen) const;
+  /// The constraints hold for `chosen` plus site c, given that they hold for `chosen`.
+  bool feasible_with(const std::vector<int>& chosen, int c) const;
+
+  /// The largest t_upper over `family` (subsets of sites), when below `level`: attained values
+  /// at the witnesses first, then a search per member that stops once it attains the level.
+  FamilyValue family_t(const std::vector<std::vector<int>>& family, double level,
+                       const std::vector<Eigen::Vector3d>& witnesses) const;
+
+ private:
+  const PlacementProblem& problem_;
+  const PlaceOptions& options_;
+};
+
+/// `chosen` without its entry m (by position).
+std::vector<int> without_position(const std::vector<int>& chosen, std::size_t m);
+
+}  // namespace vantage::design::internal

@@ -1,0 +1,73 @@
+#pragma once
+
+// Private to vantage::design: the searches of marker placement (docs/math.md §21) over one
+// objective: exhaustive, greedy, swaps, the random baseline, and greedy by coverage alone.
+
+#include <optional>
+#include <vector>
+
+#include "placement_coverage.h"
+#include "placement_evaluator.h"
+#include "vantage/design/placement.h"
+
+namespace vantage::design::internal {
+
+/// A choice scored by the objective: coverage first (with robust_dropout, then the least
+/// coverage after one loss), then t (the largest t_upper over the family: the choice itself, or
+/// each choice left after one loss), smaller better.
+struct Scored {
+  std::vector<int> chosen;  ///< increasing
+  CoverageKey cover;
+  CoverageKey robust_cover;  ///< robust_dropout only
+  double t = 1.0;
+  int worst_lost = -1;  ///< robust_dropout: the site whose loss gives t
+  sdp::VisibilityWorstViewpoint::Status status =
+      sdp::VisibilityWorstViewpoint::Status::kUntrackable;
+};
+
+class PlacementSearch {
+ public:
+  PlacementSearch(const PlacementProblem& problem, const PlaceOptions& options);
+
+  const SiteCoverage& coverage() const { return coverage_; }
+  const PlacementEvaluator& evaluator() const { return evaluator_; }
+  long evaluations() const { return evaluations_; }
+
+  /// a is better than b by the objective.
+  bool better(const Scored& a, const Scored& b) const;
+  /// The full score of a choice (no level).
+  Scored score(std::vector<int> chosen);
+
+  /// K-subsets of the free sites, or limit + 1 when there are more than `limit`.
+  long subset_count(long limit) const;
+  /// Every feasible subset; nullopt when none is feasible. `*subsets` counts them.
+  std::optional<Scored> exhaustive(long* subsets);
+  /// The greedy construction; `steps` gets the value after each addition.
+  std::optional<Scored> greedy(std::vector<PlacementStep>* steps);
+  /// Improving swaps from `start` until none improves; `*swaps` counts them.
+  Scored swaps(Scored start, int* swaps);
+  /// The random baseline.
+  RandomBaseline baseline(std::optional<Scored>* best);
+  /// Markers at which greedy by coverage alone covers every lattice direction, if it does.
+  std::optional<int> covering_markers();
+
+ private:
+  std::vector<std::vector<int>> family(const std::vector<int>& chosen) const;
+  CoverageKey robust_cover(const std::vector<int>& chosen) const;
+  // Among `subsets` (tying on coverage), the first of least t below `level`, by chunks of fixed
+  // size so that the answer does not depend on the threads; -1 when none is below.
+  int least_t(const std::vector<std::vector<int>>& subsets, double level, Scored* best);
+  void remember(const std::vector<Eigen::Vector3d>& found);
+  std::vector<int> free_sites() const;
+  void progress(const std::string& stage) const;
+
+  const PlacementProblem& problem_;
+  const PlaceOptions& options_;
+  SiteCoverage coverage_;
+  PlacementEvaluator evaluator_;
+  std::vector<char> kept_;
+  std::vector<Eigen::Vector3d> witnesses_;
+  long evaluations_ = 0;
+};
+
+}  // namespace vantage::design::internal

@@ -1,0 +1,86 @@
+#include "placement_fields.h"
+
+#include <string>
+
+#include "json_fields.h"
+
+namespace vantage::io::internal {
+namespace {
+
+nlohmann::ordered_json rows(const Eigen::Matrix3Xd& m) {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (Eigen::Index j = 0; j < m.cols(); ++j) list.push_back({m(0, j), m(1, j), m(2, j)});
+  return list;
+}
+
+}  // namespace
+
+std::optional<LayoutPlacement> read_placement(const nlohmann::json& root, const std::string& source,
+                                              Eigen::Index markers) {
+  if (!root.contains("placement")) return std::nullopt;
+  const nlohmann::json& p = root["placement"];
+  if (!p.is_object()) fail(source, "placement: expected an object");
+  reject_unknown_fields(p, source,
+                        {"sites", "chosen", "objective", "site_points", "site_normals", "steps"});
+  LayoutPlacement out;
+  if (p.contains("sites")) out.sites = read_string(p["sites"], source, "placement.sites");
+  if (p.contains("objective")) {
+    out.objective = read_string(p["objective"], source, "placement.objective");
+  }
+  out.site_points = p.contains("site_points")
+                        ? read_vectors<3>(p["site_points"], source, "placement.site_points")
+                        : Eigen::Matrix3Xd(3, 0);
+  out.site_normals = p.contains("site_normals")
+                         ? read_vectors<3>(p["site_normals"], source, "placement.site_normals")
+                         : Eigen::Matrix3Xd(3, 0);
+  if (out.site_normals.cols() != out.site_points.cols()) {
+    fail(source, "placement.site_normals: expected one per site (" +
+                     std::to_string(out.site_points.cols()) + ")");
+  }
+  if (!p.contains("chosen") || !p["chosen"].is_array()) {
+    fail(source, "placement.chosen: expected a list of site indices");
+  }
+  const nlohmann::json& chosen = p["chosen"];
+  if (static_cast<Eigen::Index>(chosen.size()) != markers) {
+    fail(source, "placement.chosen: expected one site per marker (" + std::to_string(markers) + ")");
+  }
+  for (std::size_t k = 0; k < chosen.size(); ++k) {
+    const std::string field = "placement.chosen[" + std::to_string(k) + "]";
+    if (!chosen[k].is_number_integer()) fail(source, field + ": expected an integer");
+    const long long s = chosen[k].get<long long>();
+    if (s < -1 || s >= out.site_points.cols()) {
+      fail(source, field + ": not a site index (-1 for a kept marker)");
+    }
+    out.chosen.push_back(static_cast<int>(s));
+  }
+  if (p.contains("steps")) {
+    if (!p["steps"].is_array()) fail(source, "placement.steps: expected a list");
+    for (std::size_t k = 0; k < p["steps"].size(); ++k) {
+      const nlohmann::json& step = p["steps"][k];
+      const std::string field = "placement.steps[" + std::to_string(k) + "]";
+      if (!step.is_object() || !step.contains("k") || !step["k"].is_number_integer() ||
+          !step.contains("pbar_min") || !step["pbar_min"].is_number()) {
+        fail(source, field + ": expected {\"k\": integer, \"pbar_min\": number}");
+      }
+      out.steps.emplace_back(step["k"].get<int>(), step["pbar_min"].get<double>());
+    }
+  }
+  return out;
+}
+
+void write_placement(const Layout& layout, nlohmann::ordered_json* out) {
+  if (!layout.placement) return;
+  const LayoutPlacement& p = *layout.placement;
+  nlohmann::ordered_json block;
+  block["sites"] = p.sites;
+  block["chosen"] = p.chosen;
+  block["objective"] = p.objective;
+  nlohmann::ordered_json steps = nlohmann::ordered_json::array();
+  for (const auto& [k, pbar] : p.steps) steps.push_back({{"k", k}, {"pbar_min", pbar}});
+  block["steps"] = steps;
+  block["site_points"] = rows(p.site_points);
+  block["site_normals"] = rows(p.site_normals);
+  (*out)["placement"] = block;
+}
+
+}  // namespace vantage::io::internal
