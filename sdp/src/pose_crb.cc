@@ -34,23 +34,40 @@ Eigen::Vector3d least_aligned_axis(const Eigen::Vector3d& a) {
   return Eigen::Vector3d::Unit(k);
 }
 
+struct CrbOptionViolation {
+  const char* field;
+  const char* problem;
+};
+
+std::optional<CrbOptionViolation> first_violation(const PoseCrbOptions& o) {
+  if (!(o.distance > 0.0) || !std::isfinite(o.distance)) {
+    return CrbOptionViolation{"distance", "must be > 0 and finite"};
+  }
+  if (!(o.focal_length > 0.0) || !std::isfinite(o.focal_length)) {
+    return CrbOptionViolation{"focal_length", "must be > 0 and finite"};
+  }
+  if (!o.principal_point.allFinite()) {
+    return CrbOptionViolation{"principal_point", "must be finite"};
+  }
+  if (!(o.noise_px > 0.0) || !std::isfinite(o.noise_px)) {
+    return CrbOptionViolation{"noise_px", "must be > 0 and finite"};
+  }
+  if (o.samples < 100 || o.samples > 10'000'000) {
+    return CrbOptionViolation{"samples", "must be in [100, 10000000]"};
+  }
+  if (o.refine_starts < 1 || o.refine_starts > 1000) {
+    return CrbOptionViolation{"refine_starts", "must be in [1, 1000]"};
+  }
+  if (o.threads < 0) return CrbOptionViolation{"threads", "must be >= 0"};
+  return std::nullopt;
+}
+
 }  // namespace
 
 bool PoseCrbOptions::is_valid(std::string* why) const {
-  auto fail = [&](const char* text) {
-    if (why != nullptr) *why = text;
-    return false;
-  };
-  if (!(distance > 0.0) || !std::isfinite(distance)) return fail("distance: must be > 0, finite");
-  if (!(focal_length > 0.0) || !std::isfinite(focal_length)) {
-    return fail("focal_length: must be > 0, finite");
-  }
-  if (!principal_point.allFinite()) return fail("principal_point: must be finite");
-  if (!(noise_px > 0.0) || !std::isfinite(noise_px)) return fail("noise_px: must be > 0, finite");
-  if (samples < 100 || samples > 10'000'000) return fail("samples: must be in [100, 10000000]");
-  if (refine_starts < 1 || refine_starts > 1000) return fail("refine_starts: must be in [1, 1000]");
-  if (threads < 0) return fail("threads: must be >= 0");
-  return true;
+  const std::optional<CrbOptionViolation> v = first_violation(*this);
+  if (v && why != nullptr) *why = std::string(v->field) + ": " + v->problem;
+  return !v;
 }
 
 struct PoseCrbModel::Impl {
@@ -87,8 +104,9 @@ struct PoseCrbModel::Impl {
 
 PoseCrbModel::PoseCrbModel(const Layout& layout, const PoseCrbOptions& options)
     : impl_(std::make_unique<Impl>()) {
-  std::string why;
-  if (!options.is_valid(&why)) throw InvalidArgument(why);
+  if (const std::optional<CrbOptionViolation> v = first_violation(options)) {
+    throw InvalidArgument(v->field, v->problem);
+  }
   layout.validate();
   if (layout.mode != LayoutMode::kPoints) {
     throw InvalidArgument("vectors", "the pose bound needs marker points, not data vectors");
