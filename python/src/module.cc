@@ -4,6 +4,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include "crb_command.h"
 #include "layout_commands.h"
 #include "layouts.h"
 #include "pose_commands.h"
@@ -20,4 +21,5 @@ PYBIND11_MODULE(_vantage, module) {
   vantage::python::bind_layout_commands(module);
   vantage::python::bind_pose_commands(module);
   vantage::python::bind_simulate_command(module);
+  vantage::python::bind_crb_command(module);
 }

@@ -23,13 +23,13 @@ from __future__ import annotations
 
 import functools
 import os
-from typing import Any, Callable, Optional, Sequence, TypeVar, Union
+from typing import Any, Callable, Optional, Sequence, Tuple, TypeVar, Union
 
 import numpy.typing as npt
 
 from . import _vantage
 from ._results import (
-    BoundCheck, Certificate, Crosscheck, DesignCoplanarity, DesignDirect, DesignResult,
+    BoundCheck, Certificate, CrbBound, CrbReport, CrbSweepRow, Crosscheck, DesignCoplanarity, DesignDirect, DesignResult,
     DesignState, DesignStep, DropoutEntry, EstimatorStats, LayoutCoplanarity, LayoutReport,
     LayoutVisibility, LostRegion, Orientation, PaperLmi, PerTrial, PoseAlternative, PoseCamera,
     PoseEstimate, SimulationReport, SimulationVisibility, Solver, Statistic, Swap,
@@ -48,12 +48,12 @@ from ._vantage import (
 )
 
 __all__ = [
-    "BoundCheck", "Certificate", "Crosscheck", "DesignCoplanarity", "DesignDirect",
+    "BoundCheck", "Certificate", "CrbBound", "CrbReport", "CrbSweepRow", "Crosscheck", "DesignCoplanarity", "DesignDirect",
     "DesignResult", "DesignState", "DesignStep", "DropoutEntry", "EstimatorStats", "Layout",
     "LayoutCoplanarity", "LayoutReport", "LayoutVisibility", "LostRegion", "NumericalError", "Orientation", "PaperLmi", "PerTrial",
     "PoseAlternative", "PoseCamera", "PoseEstimate", "SimulationReport", "SimulationVisibility",
     "Solver", "Statistic", "Swap", "VisibilityCertificate", "VisibilityDropoutEntry",
-    "WeightsResult", "WeightsSuggestion", "Workspace", "__version__", "analyze", "board",
+    "WeightsResult", "WeightsSuggestion", "Workspace", "__version__", "analyze", "board", "crb",
     "data_vectors", "design", "load_correspondences", "load_layout", "orient",
     "pbar_at_viewpoints", "pose", "pose_methods", "save_layout", "simulate", "weights",
 ]
@@ -119,6 +119,31 @@ def analyze(layout: LayoutArg = None, *, vectors: Optional[npt.ArrayLike] = None
         crosscheck=crosscheck, pair_weighting=pair_weighting, dropout=dropout,
         allow_large=allow_large, format=format, tag_points=tag_points, bundle=bundle)
     return LayoutReport(fields, brief)
+
+
+def crb(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
+        distance: float, focal: float, noise_px: float,
+        principal_point: Optional[npt.ArrayLike] = None,
+        direction: Optional[npt.ArrayLike] = None,
+        sweep_distance: Optional[Tuple[float, float, int]] = None, samples: int = 10000,
+        threads: int = 0, format: Optional[str] = None, tag_points: Optional[str] = None,
+        bundle: Optional[str] = None) -> CrbReport:
+    """The Cramér–Rao bound of the pose from one pinhole image over every viewpoint (as
+    ``vantage crb --json``; docs/math.md §22).
+
+    layout: a vantage.Layout or a layout file (points), or points= (n x 3).
+    distance: the camera's distance from the markers' centroid (layout units, above the
+    layout's radius); focal: pixels; noise_px: pixel noise per coordinate.
+    direction: also the bound at this viewing direction (body toward camera), with its 6 x 6
+    covariance. sweep_distance: (D1, D2, N), the worst and median bound at N distances.
+    samples: Fibonacci directions of the map.
+
+    Raises ValueError on bad input.
+    """
+    return CrbReport(_vantage.crb(
+        layout, points=points, distance=distance, focal=focal, noise_px=noise_px,
+        principal_point=principal_point, direction=direction, sweep_distance=sweep_distance,
+        samples=samples, threads=threads, format=format, tag_points=tag_points, bundle=bundle))
 
 
 def _design_result(fields: Any) -> DesignResult:

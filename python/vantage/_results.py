@@ -603,3 +603,64 @@ def _column(values: List[Any]) -> npt.NDArray[Any]:
     if values and all(isinstance(v, (bool, str)) for v in values):
         return np.asarray(values)
     return _floats(values)
+
+
+def _optional_float(value: Any) -> Optional[float]:
+    return None if value is None else float(value)
+
+
+class CrbBound(_JsonView):
+    """The pose CRB at one viewing direction (``vantage crb --json``'s ``worst``, ``best``,
+    ``at_direction``; C++ sdp::PoseCrbAt). rot_rms_deg and trans_rms are None when the direction
+    is not trackable; ``covariance`` (6 x 6, ROS order x, y, z, rx, ry, rz, camera frame) only
+    for ``at_direction``.
+    """
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.direction: FloatArray = _floats(fields["direction"])
+        self.trackable: bool = bool(fields["trackable"])
+        self.rot_rms_deg: Optional[float] = _optional_float(fields["rot_rms_deg"])
+        self.trans_rms: Optional[float] = _optional_float(fields["trans_rms"])
+        self.visible_markers: IntArray = _ints(fields["visible_markers"])
+        cov = fields.get("covariance")
+        self.covariance: Optional[FloatArray] = (
+            None if cov is None else np.asarray(cov, dtype=np.float64))
+
+
+class CrbSweepRow(_JsonView):
+    """One distance of ``--sweep-distance``: the worst and the median direction there."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.distance: float = _float(fields["distance"])
+        self.trackable_fraction: float = _float(fields["trackable_fraction"])
+        self.worst: Optional[CrbBound] = (
+            None if fields["worst"] is None else CrbBound(fields["worst"]))
+        self.median: Optional[CrbBound] = (
+            None if fields["median"] is None else CrbBound(fields["median"]))
+
+
+class CrbReport(_JsonView):
+    """The pose Cramér–Rao bound over every viewpoint (``vantage crb --json``; C++
+    sdp::PoseCrbReport; docs/math.md §22)."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.camera: Dict[str, Any] = dict(fields["camera"])
+        self.markers: int = int(fields["markers"])
+        self.status: str = str(fields["status"])
+        self.at_direction: Optional[CrbBound] = (
+            CrbBound(fields["at_direction"]) if "at_direction" in fields else None)
+        self.worst: Optional[CrbBound] = (
+            None if fields["worst"] is None else CrbBound(fields["worst"]))
+        self.best: Optional[CrbBound] = None if fields["best"] is None else CrbBound(fields["best"])
+        self.trackable_fraction: float = _float(fields["trackable_fraction"])
+        self.percentiles: Dict[str, Optional[float]] = {
+            k: _optional_float(v) for k, v in fields["percentiles"].items()}
+        self.sliver: bool = bool(fields["sliver"])
+        self.worst_region_width_deg: float = _float(fields["worst_region_width_deg"])
+        self.affine_bound_deg: float = _float(fields["affine_bound_deg"])
+        self.sweep_distance: Optional[List[CrbSweepRow]] = (
+            [CrbSweepRow(r) for r in fields["sweep_distance"]]
+            if "sweep_distance" in fields else None)

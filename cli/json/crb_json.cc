@@ -1,0 +1,74 @@
+// The JSON of the pose CRB report (crb_json.h).
+
+#include "crb_json.h"
+
+#include <cmath>
+
+namespace vantage::crb_json {
+
+namespace {
+
+Json number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
+
+Json vector3(const Eigen::Vector3d& v) { return Json::array({v.x(), v.y(), v.z()}); }
+
+}  // namespace
+
+Json at_direction(const sdp::PoseCrbAt& at, bool with_covariance) {
+  Json out = Json::object();
+  out["direction"] = vector3(at.direction);
+  out["trackable"] = at.trackable;
+  out["rot_rms_deg"] = number(at.rot_rms_deg);
+  out["trans_rms"] = number(at.trans_rms);
+  if (with_covariance) {
+    Json rows = Json::array();
+    for (int r = 0; r < 6; ++r) {
+      Json row = Json::array();
+      for (int c = 0; c < 6; ++c) row.push_back(at.covariance(r, c));
+      rows.push_back(row);
+    }
+    out["covariance"] = at.trackable ? rows : Json(nullptr);
+    out["covariance_order"] = "x, y, z, rx, ry, rz (camera frame; layout units, radians)";
+  }
+  out["visible_markers"] = at.visible_markers;
+  return out;
+}
+
+Json report(const sdp::PoseCrbReport& r) {
+  Json out = Json::object();
+  out["camera"] = {
+      {"model", "pinhole"},
+      {"distance", r.camera.distance},
+      {"focal", r.camera.focal_length},
+      {"principal_point", {r.camera.principal_point.x(), r.camera.principal_point.y()}},
+      {"noise_px", r.camera.noise_px}};
+  out["markers"] = r.markers;
+  out["visibility"] = r.with_body ? "cone+mesh" : "cone";
+  if (r.at_direction) out["at_direction"] = at_direction(*r.at_direction, true);
+  const bool ok = r.map.status == sdp::PoseCrbMap::Status::kOk;
+  out["status"] = sdp::to_string(r.map.status);
+  out["worst"] = ok ? at_direction(r.map.worst, false) : Json(nullptr);
+  out["best"] = ok ? at_direction(r.map.best, false) : Json(nullptr);
+  out["trackable_fraction"] = r.map.trackable_fraction;
+  out["percentiles"] = {{"p50", ok ? Json(r.map.percentiles.p50) : Json(nullptr)},
+                        {"p95", ok ? Json(r.map.percentiles.p95) : Json(nullptr)},
+                        {"p99", ok ? Json(r.map.percentiles.p99) : Json(nullptr)}};
+  out["sliver"] = r.map.sliver;
+  out["worst_region_width_deg"] = r.map.worst_region_width_deg;
+  out["affine_bound_deg"] = r.affine_bound_deg;
+  out["samples"] = static_cast<int>(r.map.samples.size());
+  if (!r.sweep_distance.empty()) {
+    Json rows = Json::array();
+    for (const sdp::PoseCrbSweepRow& row : r.sweep_distance) {
+      const bool row_ok = row.status == sdp::PoseCrbMap::Status::kOk;
+      rows.push_back({{"distance", row.distance},
+                      {"trackable_fraction", row.trackable_fraction},
+                      {"worst", row_ok ? at_direction(row.worst, false) : Json(nullptr)},
+                      {"median", row_ok ? at_direction(row.median, false) : Json(nullptr)}});
+    }
+    out["sweep_distance"] = rows;
+  }
+  return out;
+}
+
+}  // namespace vantage::crb_json

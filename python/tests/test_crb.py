@@ -1,0 +1,43 @@
+"""vantage.crb (docs/math.md §22): the typed result carries exactly the fields of
+`vantage crb --json`, the covariance is 6 x 6 and its rotation trace is rot_rms_deg, and bad
+input raises ValueError naming the argument."""
+
+import math
+
+import numpy as np
+import pytest
+
+from conftest import LAYOUTS, assert_same, cli_json
+
+CUBE = str(LAYOUTS / "apriltag_cube.yaml")
+# sqrt of a trace of three doubles and a change of units: a few roundings.
+TRACE_ROUNDING = 1e-12
+
+
+def test_crb_is_the_cli_report(vantage):
+    result = vantage.crb(CUBE, distance=2, focal=900, noise_px=0.3, direction=[0.3, 0.2, 0.9])
+    cli = cli_json("crb", CUBE, "--distance", "2", "--focal", "900", "--noise-px", "0.3",
+                   "--direction", "0.3,0.2,0.9")
+    assert_same(result.to_dict(), cli)
+    assert isinstance(result, vantage.CrbReport)
+    assert isinstance(result.worst, vantage.CrbBound)
+    assert result.worst.rot_rms_deg == cli["worst"]["rot_rms_deg"]
+    assert result.affine_bound_deg == cli["affine_bound_deg"]
+    at = result.at_direction
+    assert at is not None and at.covariance is not None
+    assert at.covariance.shape == (6, 6)
+    assert math.isclose(math.degrees(math.sqrt(np.trace(at.covariance[3:, 3:]))),
+                        at.rot_rms_deg, rel_tol=TRACE_ROUNDING)
+    assert result.percentiles["p50"] <= result.percentiles["p99"] <= result.worst.rot_rms_deg
+
+
+def test_crb_sweep_has_one_row_per_distance(vantage):
+    result = vantage.crb(CUBE, distance=2, focal=900, noise_px=0.3, sweep_distance=(1, 3, 3),
+                         samples=500)
+    assert [row.distance for row in result.sweep_distance] == [1.0, 2.0, 3.0]
+
+
+def test_crb_bad_input_names_the_argument(vantage):
+    with pytest.raises(ValueError) as error:
+        vantage.crb(CUBE, distance=2, focal=900, noise_px=0)
+    assert error.value.field == "noise_px"

@@ -1,0 +1,113 @@
+// `vantage crb` (issue 21; docs/math.md §22): the issue's JSON names, the text report's worst
+// direction beside the affine bound, the bound at a direction against `vantage analyze`'s own
+// affine answer, the distance sweep, and bad input (one line, exit 2, nothing written).
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_runner.h"
+
+namespace vantage {
+namespace {
+
+using testing::BadCall;
+using testing::CliRun;
+using ::testing::HasSubstr;
+using testing::run_vantage;
+using testing::ScratchDir;
+
+const std::string kCube =
+    "'" + std::string(VANTAGE_SOURCE_DIR) + "/examples/layouts/apriltag_cube.yaml'";
+const std::string kCamera = " --distance 2 --focal 900 --noise-px 0.3";
+// JSON numbers are printed to round-trip, so a value read back is the value computed.
+constexpr double kRoundTrip = 1e-12;
+// The trace of three printed entries, a square root and a change of units: a few roundings.
+constexpr double kTraceRounding = 1e-11;
+
+TEST(CrbCli, JsonHasTheIssuesFields) {
+  ScratchDir scratch;
+  const nlohmann::json j =
+      testing::run_json("crb " + kCube + kCamera + " --direction 0.3,0.2,0.9", scratch);
+  for (const char* field : {"at_direction", "worst", "best", "trackable_fraction",
+                            "affine_bound_deg", "camera", "percentiles", "sliver"}) {
+    EXPECT_TRUE(j.contains(field)) << field;
+  }
+  for (const char* field :
+       {"direction", "rot_rms_deg", "trans_rms", "covariance", "visible_markers"}) {
+    EXPECT_TRUE(j["at_direction"].contains(field)) << field;
+  }
+  for (const char* field : {"direction", "rot_rms_deg", "trans_rms", "visible_markers"}) {
+    EXPECT_TRUE(j["worst"].contains(field)) << field;
+    EXPECT_TRUE(j["best"].contains(field)) << field;
+  }
+  for (const char* field : {"p50", "p95", "p99"}) EXPECT_TRUE(j["percentiles"].contains(field));
+  const nlohmann::json& c = j["at_direction"]["covariance"];
+  ASSERT_EQ(c.size(), 6u);
+  double rot_trace = 0.0;
+  for (int k = 3; k < 6; ++k) rot_trace += c[k][k].get<double>();
+  EXPECT_NEAR(std::sqrt(rot_trace) * 180.0 / M_PI, j["at_direction"]["rot_rms_deg"].get<double>(),
+              kTraceRounding * j["at_direction"]["rot_rms_deg"].get<double>());
+  EXPECT_GE(j["worst"]["rot_rms_deg"].get<double>(), j["percentiles"]["p99"].get<double>());
+  EXPECT_LE(j["best"]["rot_rms_deg"].get<double>(), j["percentiles"]["p50"].get<double>());
+  EXPECT_EQ(j["camera"]["focal"].get<double>(), 900.0);
+}
+
+TEST(CrbCli, AffineBoundIsTheAnalyzeAnswerOfTheSameLayout) {
+  ScratchDir scratch;
+  const nlohmann::json crb = testing::run_json("crb " + kCube + kCamera, scratch);
+  const nlohmann::json analyze =
+      testing::run_json("analyze " + kCube + " --no-crosscheck", scratch);
+  const double expected = analyze.contains("visibility")
+                              ? analyze["visibility"]["max_worst_case_error_deg"].get<double>()
+                              : analyze["max_worst_case_error_deg"].get<double>();
+  EXPECT_NEAR(crb["affine_bound_deg"].get<double>(), expected, kRoundTrip * expected);
+}
+
+TEST(CrbCli, TextReportShowsTheWorstBesideTheAffineBound) {
+  ScratchDir scratch;
+  const CliRun run = run_vantage("crb " + kCube + kCamera, scratch);
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(run.err, "");
+  EXPECT_THAT(run.out, HasSubstr("worst direction"));
+  EXPECT_THAT(run.out, HasSubstr("rot_rms"));
+  EXPECT_THAT(run.out, HasSubstr("affine bound"));
+}
+
+TEST(CrbCli, DistanceSweepHasOneRowPerDistance) {
+  ScratchDir scratch;
+  const nlohmann::json j = testing::run_json(
+      "crb " + kCube + kCamera + " --sweep-distance 1:4:4 --samples 1000", scratch);
+  ASSERT_EQ(j["sweep_distance"].size(), 4u);
+  EXPECT_EQ(j["sweep_distance"][0]["distance"].get<double>(), 1.0);
+  EXPECT_EQ(j["sweep_distance"][3]["distance"].get<double>(), 4.0);
+  for (const auto& row : j["sweep_distance"]) {
+    EXPECT_GE(row["worst"]["rot_rms_deg"].get<double>(),
+              row["median"]["rot_rms_deg"].get<double>());
+  }
+}
+
+TEST(CrbCli, BadInputIsOneLineNamingTheOption) {
+  ScratchDir scratch;
+  const BadCall calls[] = {
+      {"zero noise", nullptr, "--distance 2 --focal 900 --noise-px 0", "--noise-px"},
+      {"negative focal", nullptr, "--distance 2 --focal -900 --noise-px 1", "--focal"},
+      {"inside the markers", nullptr, "--distance 0.01 --focal 900 --noise-px 1", "--distance"},
+      {"bad direction", nullptr, "--distance 2 --focal 900 --noise-px 1 --direction 1,0",
+       "--direction"},
+      {"bad sweep", nullptr, "--distance 2 --focal 900 --noise-px 1 --sweep-distance 3:1:4",
+       "--sweep-distance"},
+      {"direction mode", R"({"vectors": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]})",
+       "in.json --distance 2 --focal 900 --noise-px 1", "vectors"},
+  };
+  for (const BadCall& call : calls) {
+    SCOPED_TRACE(call.name);
+    const std::string file = call.file_text ? "" : kCube + " ";
+    testing::run_bad_call("crb " + file, call, scratch);
+  }
+}
+
+}  // namespace
+}  // namespace vantage
