@@ -22,8 +22,8 @@ RandomBaseline PlacementSearch::baseline(std::optional<Scored>* best) {
   const int trials = options_.random_trials;
   std::vector<std::optional<Scored>> drawn(static_cast<std::size_t>(trials));
   progress("random baseline, " + std::to_string(trials) + " subsets");
-  // Each trial has its own engine and is scored on its own (no level, no witnesses), so the
-  // baseline does not depend on the threads.
+  // Each trial has its own engine, so the draws do not depend on the threads. Coverage first:
+  // it is counted, not searched.
   parallel_blocks(trials, options_.threads, [&](long b, long e) {
     for (long trial = b; trial < e; ++trial) {
       PlacementRandom random = PlacementRandom::for_draw(options_.seed, static_cast<std::uint64_t>(trial));
@@ -42,25 +42,45 @@ RandomBaseline PlacementSearch::baseline(std::optional<Scored>* best) {
         s.chosen = chosen;
         s.cover = coverage_.key(chosen);
         s.robust_cover = robust_cover(chosen);
-        const FamilyValue v = evaluator_.family_t(family(chosen), 2.0, {});
-        s.t = v.t_upper;
-        s.status = v.status;
-        if (options_.robust_dropout && v.worst_member >= 0) {
-          s.worst_lost = chosen[static_cast<std::size_t>(v.worst_member)];
-        }
         drawn[static_cast<std::size_t>(trial)] = std::move(s);
         break;
       }
     }
   });
+  // t is searched only where it counts: the complete trials (a trial that leaves a lattice
+  // direction untrackable has p-bar_min 0 in the median) and those tying the best coverage.
+  const Scored* top = nullptr;
+  for (const std::optional<Scored>& s : drawn) {
+    if (s && (top == nullptr || better_cover(*s, *top))) top = &*s;
+  }
+  std::vector<Scored*> searched;
+  for (std::optional<Scored>& s : drawn) {
+    if (!s) continue;
+    const bool complete = s->cover.covered == coverage_.directions();
+    const bool ties_top = !better_cover(*top, *s);
+    if (complete || ties_top) searched.push_back(&*s);
+  }
+  parallel_blocks(static_cast<long>(searched.size()), options_.threads, [&](long b, long e) {
+    for (long i = b; i < e; ++i) {
+      Scored& s = *searched[static_cast<std::size_t>(i)];
+      const FamilyValue v = evaluator_.family_t(family(s.chosen), 2.0, {});
+      s.t = v.t_upper;
+      s.status = v.status;
+      if (options_.robust_dropout && v.worst_member >= 0) {
+        s.worst_lost = s.chosen[static_cast<std::size_t>(v.worst_member)];
+      }
+    }
+  });
+  evaluations_ += static_cast<long>(searched.size());
   RandomBaseline out;
   std::vector<double> pbar;
   for (const std::optional<Scored>& s : drawn) {
     if (!s) continue;
     ++out.trials;
-    if (s->cover.covered == coverage_.directions()) ++out.complete;
-    pbar.push_back(std::sqrt(std::max(0.0, 1.0 - s->t * s->t)));
-    if (!*best || better(*s, **best)) *best = *s;
+    const bool complete = s->cover.covered == coverage_.directions();
+    if (complete) ++out.complete;
+    pbar.push_back(complete ? std::sqrt(std::max(0.0, 1.0 - s->t * s->t)) : 0.0);
+    if (!better_cover(*top, *s) && (!*best || better(*s, **best))) *best = *s;
   }
   if (*best) {
     out.best_coverage = coverage_.directions() == 0 ? 0.0

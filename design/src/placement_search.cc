@@ -10,8 +10,6 @@
 namespace vantage::design::internal {
 namespace {
 
-// A swap or a tie must lower t by more than this to count (rounding of equal subsets).
-constexpr double kMinGain = 1e-12;
 // Subsets whose t is compared per chunk: fixed, so that the level each chunk is searched against
 // (the best of the chunks before) does not depend on the threads.
 constexpr std::size_t kChunk = 8;
@@ -40,12 +38,15 @@ void PlacementSearch::progress(const std::string& stage) const {
   if (options_.progress) options_.progress(stage);
 }
 
-bool PlacementSearch::better(const Scored& a, const Scored& b) const {
+bool PlacementSearch::better_cover(const Scored& a, const Scored& b) const {
   if (!(a.cover == b.cover)) return b.cover < a.cover;
-  if (options_.robust_dropout && !(a.robust_cover == b.robust_cover)) {
-    return b.robust_cover < a.robust_cover;
-  }
-  return a.t < b.t - kMinGain;
+  return options_.robust_dropout && b.robust_cover < a.robust_cover;
+}
+
+bool PlacementSearch::better(const Scored& a, const Scored& b) const {
+  if (better_cover(a, b)) return true;
+  if (better_cover(b, a)) return false;
+  return a.t < b.t - min_gain();
 }
 
 std::vector<std::vector<int>> PlacementSearch::family(const std::vector<int>& chosen) const {
@@ -112,7 +113,7 @@ int PlacementSearch::least_t(const std::vector<std::vector<int>>& subsets, doubl
       remember(v.witnesses);
       if (!v.below || !(v.t_upper < level)) continue;
       found = static_cast<int>(begin + k);
-      level = v.t_upper - kMinGain;
+      level = v.t_upper - min_gain();
       best->t = v.t_upper;
       best->status = v.status;
       best->worst_lost = -1;
@@ -319,7 +320,7 @@ Scored PlacementSearch::swaps(Scored current, int* swaps) {
       const bool cover_gain =
           current.cover < top || (options_.robust_dropout && current.robust_cover < robust_top);
       Scored best;
-      const int pick = least_t(ties, cover_gain ? 2.0 : current.t - kMinGain, &best);
+      const int pick = least_t(ties, cover_gain ? 2.0 : current.t - min_gain(), &best);
       if (pick < 0) continue;
       best.chosen = ties[static_cast<std::size_t>(pick)];
       best.cover = top;

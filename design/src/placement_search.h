@@ -33,6 +33,9 @@ class PlacementSearch {
   const PlacementEvaluator& evaluator() const { return evaluator_; }
   long evaluations() const { return evaluations_; }
 
+  /// a is better than b by coverage alone (with robust_dropout, then the least coverage after
+  /// one loss).
+  bool better_cover(const Scored& a, const Scored& b) const;
   /// a is better than b by the objective.
   bool better(const Scored& a, const Scored& b) const;
   /// The full score of a choice (no level).
@@ -59,6 +62,9 @@ class PlacementSearch {
   int least_t(const std::vector<std::vector<int>>& subsets, double level, Scored* best);
   void remember(const std::vector<Eigen::Vector3d>& found);
   std::vector<int> free_sites() const;
+  // A swap or a new incumbent must lower t by more than the certificate tolerance: two t_upper
+  // closer than that are not told apart, and the earlier choice stays.
+  double min_gain() const { return options_.search.certificate_tolerance; }
   void progress(const std::string& stage) const;
 
   const PlacementProblem& problem_;
