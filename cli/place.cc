@@ -38,7 +38,7 @@ void check_args(const PlaceArgs& args) {
   }
   if (args.candidates < 1 || args.candidates > kMaxCandidates) {
     refuse("--candidates", "must be in [1, " + std::to_string(kMaxCandidates) + "], got " +
-                            std::to_string(args.candidates));
+                               std::to_string(args.candidates));
   }
   if (args.markers < 1) refuse("--markers", "must be >= 1, got " + std::to_string(args.markers));
   if (!(args.min_separation >= 0.0) || !std::isfinite(args.min_separation)) {
@@ -57,8 +57,9 @@ void check_args(const PlaceArgs& args) {
   if (!is_valid_utf8(args.out)) refuse("--out", "the file name is not valid UTF-8");
   try {
     if (io::layout_write_format(args.out) != io::LayoutFormat::kJson) {
-      refuse("--out", args.out + ": write the placed layout as .json (it keeps normals, body, "
-                              "workspace and the placement record)");
+      refuse("--out", args.out +
+                          ": write the placed layout as .json (it keeps normals, body, "
+                          "workspace and the placement record)");
     }
     io::check_write_target(args.out, args.overwrite);
   } catch (const InvalidArgument& e) {
@@ -111,15 +112,52 @@ Layout candidate_sites(const PlaceArgs& args, int* drawn) {
   return sites;
 }
 
-// The kept markers appended to the sites (their normals and cones from their file).
+// The site at exactly the position of kept marker i, or -1.
+int site_at(const Layout& sites, const Eigen::Vector3d& p) {
+  for (Eigen::Index j = 0; j < sites.entries.cols(); ++j) {
+    if (sites.entries.col(j) == p) return static_cast<int>(j);
+  }
+  return -1;
+}
+
+// The kept markers: a kept marker at a site's very position keeps that site; the others are
+// appended to the sites (their normals and cones from their file).
 std::vector<int> append_kept(const PlaceArgs& args, Layout* sites) {
   if (args.keep.empty()) return {};
-  const Layout kept = io::load_layout(args.keep);
+  Layout kept = io::load_layout(args.keep);
   if (kept.mode != LayoutMode::kPoints || !kept.visibility) {
-    refuse("--keep", args.keep + ": expected points with \"normals\" (the markers already on the body)");
+    refuse("--keep",
+           args.keep + ": expected points with \"normals\" (the markers already on the body)");
   }
+  std::vector<int> at_sites;
+  std::vector<Eigen::Index> appended;
+  for (Eigen::Index i = 0; i < kept.entries.cols(); ++i) {
+    const int site = site_at(*sites, kept.entries.col(i));
+    if (site >= 0) {
+      at_sites.push_back(site);
+    } else {
+      appended.push_back(i);
+    }
+  }
+  if (appended.size() != static_cast<std::size_t>(kept.entries.cols())) {
+    Layout rest = kept;
+    rest.entries.resize(3, static_cast<Eigen::Index>(appended.size()));
+    rest.visibility->normals.resize(3, rest.entries.cols());
+    rest.visibility->cone_half_angle_deg.resize(rest.entries.cols());
+    rest.names.clear();
+    for (std::size_t k = 0; k < appended.size(); ++k) {
+      const Eigen::Index i = appended[k], to = static_cast<Eigen::Index>(k);
+      rest.entries.col(to) = kept.entries.col(i);
+      rest.visibility->normals.col(to) = kept.visibility->normals.col(i);
+      rest.visibility->cone_half_angle_deg(to) = kept.visibility->cone_half_angle_deg(i);
+      if (!kept.names.empty()) rest.names.push_back(kept.names[static_cast<std::size_t>(i)]);
+    }
+    kept = rest;
+  }
+  std::vector<int> out = at_sites;
   const Eigen::Index n = sites->entries.cols();
   const Eigen::Index f = kept.entries.cols();
+  if (f == 0) return out;
   std::vector<std::string> names;
   for (Eigen::Index i = 0; i < n; ++i) names.push_back(sites->entry_name(i));
   for (Eigen::Index i = 0; i < f; ++i) {
@@ -139,7 +177,6 @@ std::vector<int> append_kept(const PlaceArgs& args, Layout* sites) {
   v.cone_half_angle_deg.tail(f) = kept.visibility->cone_half_angle_deg;
   sites->names = names;
   against_source(args.keep, [&] { sites->validate(); });
-  std::vector<int> out;
   for (Eigen::Index i = 0; i < f; ++i) out.push_back(static_cast<int>(n + i));
   return out;
 }
@@ -149,19 +186,19 @@ void check_problem(const PlaceArgs& args, const Layout& sites, std::size_t kept)
   const int min_visible = sites.visibility->min_visible;
   if (args.markers > n) {
     refuse("--markers", std::to_string(args.markers) + " exceeds the " + std::to_string(n) +
-                         " sites" + (kept > 0 ? " and kept markers" : ""));
+                            " sites" + (kept > 0 ? " and kept markers" : ""));
   }
   if (args.markers < min_visible) {
     refuse("--markers", "must be at least min_visible (" + std::to_string(min_visible) + "), got " +
-                         std::to_string(args.markers));
+                            std::to_string(args.markers));
   }
   if (static_cast<long>(kept) > args.markers) {
-    refuse("--markers", "the " + std::to_string(kept) + " kept markers exceed " +
-                         std::to_string(args.markers));
+    refuse("--markers",
+           "the " + std::to_string(kept) + " kept markers exceed " + std::to_string(args.markers));
   }
   if (args.robust_dropout && args.markers <= min_visible) {
     refuse("--robust-dropout", "needs --markers above min_visible (" + std::to_string(min_visible) +
-                                "): a lost marker leaves too few otherwise");
+                                   "): a lost marker leaves too few otherwise");
   }
 }
 
@@ -179,10 +216,11 @@ int run_place(const PlaceArgs& args) {
   {
     Progress progress("place", !args.json && !args.quiet);
     progress.update("occlusion grid");
-    const sdp::VisibilityModel model = against_source(
-        args.sites.empty() ? args.body : args.sites,
-        [&] { return sdp::VisibilityModel::of(sites, sdp::VisibilityModel::kDefaultResolutionDeg,
-                                              args.threads); });
+    const sdp::VisibilityModel model =
+        against_source(args.sites.empty() ? args.body : args.sites, [&] {
+          return sdp::VisibilityModel::of(sites, sdp::VisibilityModel::kDefaultResolutionDeg,
+                                          args.threads);
+        });
     design::PlacementProblem problem;
     problem.sites = model.problem();
     problem.keep = keep;
@@ -234,9 +272,9 @@ Command add_place_command(CLI::App& root) {
   sub->add_option("--sites", args->sites,
                   "candidate sites: a point layout with normals (its cones, min_visible, body and "
                   "workspace apply)");
-  CLI::Option* candidates = sub->add_option(
-      "--candidates", args->candidates, "sites sampled area-uniformly on BODY")
-                                ->capture_default_str();
+  CLI::Option* candidates =
+      sub->add_option("--candidates", args->candidates, "sites sampled area-uniformly on BODY")
+          ->capture_default_str();
   sub->add_option("--markers", args->markers, "K: markers of the answer (kept ones included)")
       ->required();
   sub->add_option("--out", args->out, "the placed layout (.json)")->required();
@@ -245,7 +283,8 @@ Command add_place_command(CLI::App& root) {
                   "least distance between chosen markers (also thins the sampled sites)")
       ->capture_default_str();
   sub->add_option("--keep", args->keep,
-                  "markers already on the body (points with normals): always chosen, counted in K");
+                  "markers already on the body: a layout of points with normals (3 or more): "
+                  "always chosen, counted in K");
   sub->add_flag("--robust-dropout", args->robust_dropout,
                 "maximise the worst case over the loss of any one marker");
   sub->add_option("--min-distance-difference", args->min_distance_difference,

@@ -71,8 +71,11 @@ PlacedLayout placed_layout(const PlaceArgs& args, const Layout& sites, int n_can
   placement.site_points = sites.entries.leftCols(n_candidates);
   placement.site_normals = sites.visibility->normals.leftCols(n_candidates);
   for (const design::PlacementStep& s : result.steps) {
-    placement.steps.emplace_back(s.k, s.value.pbar_min);
+    placement.steps.push_back({s.k, s.value.pbar_min, s.value.coverage});
   }
+  placement.random_trials = result.random_baseline.trials;
+  placement.random_best_pbar_min = result.random_baseline.best_pbar_min;
+  placement.random_median_pbar_min = result.random_baseline.median_pbar_min;
   layout.visibility = std::move(visibility);
   layout.workspace = sites.workspace;
   layout.placement = std::move(placement);
@@ -85,8 +88,8 @@ PlacedLayout placed_layout(const PlaceArgs& args, const Layout& sites, int n_can
 
 std::string failure_message(const design::PlacementResult& result, const PlacedLayout& placed) {
   if (result.status == design::PlacementResult::Status::kIncomplete) {
-    std::string message = result.message + ": the best covers " +
-                          percent(result.value.coverage) + " of the workspace";
+    std::string message = result.message + ": the best covers " + percent(result.value.coverage) +
+                          " of the workspace";
     if (result.covering_markers) {
       message += "; greedy by coverage covers it with " + std::to_string(*result.covering_markers) +
                  " markers";
@@ -130,11 +133,12 @@ Json place_json(const PlaceArgs& args, int n_candidates, int drawn,
                             {"median_pbar_min", r.random_baseline.median_pbar_min}};
   out["steps"] = steps_json(r);
   if (r.robust) {
-    out["robust"] = {{"pbar_min", r.robust->pbar_min},
-                     {"worst_lost_marker", candidate_index(r.robust->worst_lost_marker, n_candidates)},
-                     {"worst_lost_name",
-                      placed.site_names[static_cast<std::size_t>(r.robust->worst_lost_marker)]},
-                     {"coverage", r.robust->coverage}};
+    out["robust"] = {
+        {"pbar_min", r.robust->pbar_min},
+        {"worst_lost_marker", candidate_index(r.robust->worst_lost_marker, n_candidates)},
+        {"worst_lost_name",
+         placed.site_names[static_cast<std::size_t>(r.robust->worst_lost_marker)]},
+        {"coverage", r.robust->coverage}};
   }
   out["swaps"] = r.swaps;
   out["evaluations"] = r.evaluations;
@@ -154,10 +158,10 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
   std::cout << "vantage place: " << args.markers << " markers on "
             << (args.sites.empty() ? args.body : args.sites) << "\n  " << n_candidates
             << " candidate sites";
-  if (args.sites.empty()) std::cout << " (" << drawn << " drawn area-uniformly, seed " << args.seed << ")";
-  std::cout << ", min_visible " << v.min_visible << ", "
-            << (v.with_body ? "cone+mesh" : "cone") << " visibility, search " << r.search
-            << "\n\n";
+  if (args.sites.empty())
+    std::cout << " (" << drawn << " drawn area-uniformly, seed " << args.seed << ")";
+  std::cout << ", min_visible " << v.min_visible << ", " << (v.with_body ? "cone+mesh" : "cone")
+            << " visibility, search " << r.search << "\n\n";
   if (!r.steps.empty()) {
     std::cout << "greedy construction (k markers: coverage, certified p-bar_min, worst error):\n";
     for (const design::PlacementStep& s : r.steps) {
@@ -186,8 +190,8 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
   std::cout << "\n\non its body (the placed layout's analysis, as vantage analyze):\n"
             << "  coverage        " << percent(v.coverage.trackable_fraction) << "\n"
             << "  p-bar_min       " << format_number(v.worst.pbar_min, 6) << "\n"
-            << "  worst error     " << format_number(v.max_worst_case_error_deg, 6)
-            << " deg at " << format_vector(v.worst.viewpoint) << "\n"
+            << "  worst error     " << format_number(v.max_worst_case_error_deg, 6) << " deg at "
+            << format_vector(v.worst.viewpoint) << "\n"
             << "  certificate     " << sdp::to_string(v.worst.status) << " (t in ["
             << format_number(v.worst.t_lower, 9) << ", " << format_number(v.worst.t_upper, 9)
             << "])\n";

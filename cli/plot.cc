@@ -164,7 +164,7 @@ int run_plot(const PlotArgs& args) {
   for (const std::string& name : args.only) {
     if (!plot::is_figure_name(name)) {
       bad("--only: unknown figure \"" + name +
-          "\" (viewpoint_map, visibility, dropout, error_surface, vectors, design)");
+          "\" (viewpoint_map, visibility, dropout, error_surface, vectors, placement, design)");
     }
     if (name == "design" && args.design.empty()) {
       bad("--only: the design figure needs --design DESIGN.json (`vantage design --json`)");
@@ -172,7 +172,7 @@ int run_plot(const PlotArgs& args) {
   }
   options.only = args.only;
   try {
-    plot::selected_figures(options, !args.design.empty(), true);
+    plot::selected_figures(options, !args.design.empty(), true, true);
   } catch (const InvalidArgument& e) {
     throw e.renamed("--" + e.field(), e.index());
   }
@@ -183,6 +183,11 @@ int run_plot(const PlotArgs& args) {
     bad("--only: the visibility figure needs markers with normals (\"normals\" in " + args.file +
         ", or --normals radial)");
   }
+  if (!layout.placement &&
+      std::find(args.only.begin(), args.only.end(), "placement") != args.only.end()) {
+    bad("--only: the placement figure needs a layout written by vantage place (\"placement\" in " +
+        args.file + ")");
+  }
   std::unique_ptr<plot::DesignCurve> design;
   if (!args.design.empty()) {
     design = std::make_unique<plot::DesignCurve>(read_design_curve(args.design));
@@ -191,7 +196,8 @@ int run_plot(const PlotArgs& args) {
   create_figure_directory("--out", args.out);
 
   sdp::LayoutReportOptions report_options;
-  report_options.dropout = plot::needs_dropout(options, design != nullptr, on_body);
+  report_options.dropout =
+      plot::needs_dropout(options, design != nullptr, on_body, layout.placement.has_value());
   report_options.dropout_options.threads = options.figure.threads;
   const sdp::LayoutReport report =
       against_source(args.file, [&] { return sdp::analyze_layout(layout, report_options); });
@@ -270,8 +276,9 @@ Command add_plot_command(CLI::App& root) {
   sub->add_option("--format", args->format, "png, svg or pdf")->capture_default_str();
   sub->add_option("--only", args->only,
                   "comma-separated figures to write: viewpoint_map, visibility, dropout, "
-                  "error_surface, vectors, design (default: all; visibility only for markers "
-                  "with normals, design only with --design)")
+                  "error_surface, vectors, placement, design (default: all; visibility only "
+                  "for markers with normals, placement only for a layout written by vantage "
+                  "place, design only with --design)")
       ->delimiter(',');
   sub->add_option("--size", args->size, "WxH in pixels (points for SVG/PDF)")
       ->capture_default_str();

@@ -50,16 +50,16 @@ void PlacementProblem::validate() const {
   std::sort(sorted_keep.begin(), sorted_keep.end());
   for (std::size_t k = 0; k < sorted_keep.size(); ++k) {
     if (sorted_keep[k] < 0 || sorted_keep[k] >= n) {
-      throw InvalidArgument("keep", "site " + std::to_string(sorted_keep[k]) + " is not one of the " +
-                                        std::to_string(n) + " sites");
+      throw InvalidArgument("keep", "site " + std::to_string(sorted_keep[k]) +
+                                        " is not one of the " + std::to_string(n) + " sites");
     }
     if (k > 0 && sorted_keep[k] == sorted_keep[k - 1]) {
       throw InvalidArgument("keep", "site " + std::to_string(sorted_keep[k]) + " is kept twice");
     }
   }
   if (markers > n) {
-    throw InvalidArgument("markers", std::to_string(markers) + " exceeds the " + std::to_string(n) +
-                                         " sites");
+    throw InvalidArgument("markers",
+                          std::to_string(markers) + " exceeds the " + std::to_string(n) + " sites");
   }
   if (markers < sites.min_visible) {
     throw InvalidArgument("markers", "must be at least min_visible (" +
@@ -80,8 +80,8 @@ void PlacementProblem::validate() const {
     for (std::size_t j = i + 1; j < keep.size(); ++j) {
       const double d = (sites.points.col(keep[i]) - sites.points.col(keep[j])).norm();
       if (d < min_separation) {
-        throw InvalidArgument("min_separation", "kept sites " + std::to_string(keep[i]) +
-                                                    " and " + std::to_string(keep[j]) +
+        throw InvalidArgument("min_separation", "kept sites " + std::to_string(keep[i]) + " and " +
+                                                    std::to_string(keep[j]) +
                                                     " are closer than it");
       }
     }

@@ -26,7 +26,8 @@ RandomBaseline PlacementSearch::baseline(std::optional<Scored>* best) {
   // it is counted, not searched.
   parallel_blocks(trials, options_.threads, [&](long b, long e) {
     for (long trial = b; trial < e; ++trial) {
-      PlacementRandom random = PlacementRandom::for_draw(options_.seed, static_cast<std::uint64_t>(trial));
+      PlacementRandom random =
+          PlacementRandom::for_draw(options_.seed, static_cast<std::uint64_t>(trial));
       for (int attempt = 0; attempt < kDrawAttempts; ++attempt) {
         std::vector<int> pool = free;
         std::vector<int> chosen = problem_.keep;
@@ -83,9 +84,9 @@ RandomBaseline PlacementSearch::baseline(std::optional<Scored>* best) {
     if (!better_cover(*top, *s) && (!*best || better(*s, **best))) *best = *s;
   }
   if (*best) {
-    out.best_coverage = coverage_.directions() == 0 ? 0.0
-                                                    : static_cast<double>((*best)->cover.covered) /
-                                                          coverage_.directions();
+    out.best_coverage = coverage_.directions() == 0
+                            ? 0.0
+                            : static_cast<double>((*best)->cover.covered) / coverage_.directions();
     out.best_pbar_min = std::sqrt(std::max(0.0, 1.0 - (*best)->t * (*best)->t));
     out.best = (*best)->chosen;
     std::sort(pbar.begin(), pbar.end());

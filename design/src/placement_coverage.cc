@@ -74,14 +74,17 @@ void mask(const std::vector<std::uint16_t>& counts, int words, Pred pred,
 CoverageCounts::CoverageCounts(const SiteCoverage& coverage, const std::vector<int>& chosen)
     : coverage_(coverage), counts_(coverage.counts(chosen)), key_(coverage.key(counts_)) {
   const int k = coverage.min_visible();
-  mask(counts_, coverage.words(), [k](int c) { return c == k - 1; }, &one_short_);
-  mask(counts_, coverage.words(), [k](int c) { return c < k; }, &below_);
+  mask(
+      counts_, coverage.words(), [k](int c) { return c == k - 1; }, &one_short_);
+  mask(
+      counts_, coverage.words(), [k](int c) { return c < k; }, &below_);
 }
 
 int CoverageCounts::popcount_and(const std::uint64_t* a, const std::vector<std::uint64_t>& b,
                                  int words) {
   int total = 0;
-  for (int k = 0; k < words; ++k) total += __builtin_popcountll(a[k] & b[static_cast<std::size_t>(k)]);
+  for (int k = 0; k < words; ++k)
+    total += __builtin_popcountll(a[k] & b[static_cast<std::size_t>(k)]);
   return total;
 }
 
@@ -100,8 +103,10 @@ void CoverageCounts::prepare_removal(int removed) {
     if (coverage_.sees(removed, d)) --without[static_cast<std::size_t>(d)];
   }
   removed_key_ = coverage_.key(without);
-  mask(without, coverage_.words(), [k](int c) { return c == k - 1; }, &removed_one_short_);
-  mask(without, coverage_.words(), [k](int c) { return c < k; }, &removed_below_);
+  mask(
+      without, coverage_.words(), [k](int c) { return c == k - 1; }, &removed_one_short_);
+  mask(
+      without, coverage_.words(), [k](int c) { return c < k; }, &removed_below_);
 }
 
 CoverageKey CoverageCounts::with_swapped(int c) const {

@@ -13,7 +13,7 @@ namespace vantage::design::internal {
 
 /// Coverage and potential of a choice: compared in that order.
 struct CoverageKey {
-  int covered = 0;    ///< lattice directions of the workspace that see >= min_visible markers
+  int covered = 0;     ///< lattice directions of the workspace that see >= min_visible markers
   long potential = 0;  ///< sum over directions of min(count, min_visible)
 
   bool operator==(const CoverageKey& o) const {

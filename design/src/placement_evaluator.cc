@@ -7,8 +7,7 @@
 
 namespace vantage::design::internal {
 
-PlacementEvaluator::PlacementEvaluator(const PlacementProblem& problem,
-                                       const PlaceOptions& options)
+PlacementEvaluator::PlacementEvaluator(const PlacementProblem& problem, const PlaceOptions& options)
     : problem_(problem), options_(options) {}
 
 sdp::VisibilityProblem PlacementEvaluator::subproblem(const std::vector<int>& chosen) const {

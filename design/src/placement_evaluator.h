@@ -13,13 +13,13 @@ namespace vantage::design::internal {
 /// An attained viewpoint beyond which a subset is rejected without a search, and the value
 /// t_upper of a subset family when it beat the level.
 struct FamilyValue {
-  bool below = false;  ///< every member's t_upper is below the level (then the fields hold)
+  bool below = false;    ///< every member's t_upper is below the level (then the fields hold)
   double t_upper = 1.0;  ///< the largest t_upper of the members (1 for an untrackable member)
   int worst_member = -1;
   sdp::VisibilityWorstViewpoint::Status status =
       sdp::VisibilityWorstViewpoint::Status::kUntrackable;  ///< of the worst member
-  std::vector<Eigen::Vector3d> witnesses;  ///< worst viewpoints the searches found
-  int searches = 0;                        ///< certified searches run
+  std::vector<Eigen::Vector3d> witnesses;                   ///< worst viewpoints the searches found
+  int searches = 0;                                         ///< certified searches run
 };
 
 class PlacementEvaluator {

@@ -205,10 +205,10 @@ std::optional<Scored> PlacementSearch::greedy(std::vector<PlacementStep>* steps)
     PlacementStep step;
     step.k = static_cast<int>(chosen.size());
     step.added = added;
-    step.value.coverage = coverage_.directions() == 0
-                              ? 0.0
-                              : static_cast<double>(coverage_.key(chosen).covered) /
-                                    coverage_.directions();
+    step.value.coverage =
+        coverage_.directions() == 0
+            ? 0.0
+            : static_cast<double>(coverage_.key(chosen).covered) / coverage_.directions();
     step.value.t_upper = s.t;
     step.value.pbar_min = std::sqrt(std::max(0.0, 1.0 - s.t * s.t));
     step.value.status = s.status;
@@ -229,7 +229,8 @@ std::optional<Scored> PlacementSearch::greedy(std::vector<PlacementStep>* steps)
     std::vector<CoverageKey> keys(candidates.size());
     parallel_blocks(static_cast<long>(candidates.size()), options_.threads, [&](long b, long e) {
       for (long i = b; i < e; ++i) {
-        keys[static_cast<std::size_t>(i)] = counts.with_added(candidates[static_cast<std::size_t>(i)]);
+        keys[static_cast<std::size_t>(i)] =
+            counts.with_added(candidates[static_cast<std::size_t>(i)]);
       }
     });
     const CoverageKey top = *std::max_element(keys.begin(), keys.end());

@@ -13,6 +13,24 @@ nlohmann::ordered_json rows(const Eigen::Matrix3Xd& m) {
   return list;
 }
 
+void read_random_baseline(const nlohmann::json& b, const std::string& source,
+                          LayoutPlacement* out) {
+  const std::string field = "placement.random_baseline";
+  if (!b.is_object() || !b.contains("trials") || !b["trials"].is_number_integer() ||
+      !b.contains("best_pbar_min") || !b["best_pbar_min"].is_number() ||
+      !b.contains("median_pbar_min") || !b["median_pbar_min"].is_number()) {
+    fail(source, field +
+                     ": expected {\"trials\": integer, \"best_pbar_min\": number, "
+                     "\"median_pbar_min\": number}");
+  }
+  reject_unknown_fields(b, source, {"trials", "best_pbar_min", "median_pbar_min"});
+  const long long trials = b["trials"].get<long long>();
+  if (trials < 0 || trials > 1'000'000'000) fail(source, field + ".trials: expected 0 or more");
+  out->random_trials = static_cast<int>(trials);
+  out->random_best_pbar_min = b["best_pbar_min"].get<double>();
+  out->random_median_pbar_min = b["median_pbar_min"].get<double>();
+}
+
 }  // namespace
 
 std::optional<LayoutPlacement> read_placement(const nlohmann::json& root, const std::string& source,
@@ -20,8 +38,9 @@ std::optional<LayoutPlacement> read_placement(const nlohmann::json& root, const 
   if (!root.contains("placement")) return std::nullopt;
   const nlohmann::json& p = root["placement"];
   if (!p.is_object()) fail(source, "placement: expected an object");
-  reject_unknown_fields(p, source,
-                        {"sites", "chosen", "objective", "site_points", "site_normals", "steps"});
+  reject_unknown_fields(
+      p, source,
+      {"sites", "chosen", "objective", "site_points", "site_normals", "steps", "random_baseline"});
   LayoutPlacement out;
   if (p.contains("sites")) out.sites = read_string(p["sites"], source, "placement.sites");
   if (p.contains("objective")) {
@@ -42,7 +61,8 @@ std::optional<LayoutPlacement> read_placement(const nlohmann::json& root, const 
   }
   const nlohmann::json& chosen = p["chosen"];
   if (static_cast<Eigen::Index>(chosen.size()) != markers) {
-    fail(source, "placement.chosen: expected one site per marker (" + std::to_string(markers) + ")");
+    fail(source,
+         "placement.chosen: expected one site per marker (" + std::to_string(markers) + ")");
   }
   for (std::size_t k = 0; k < chosen.size(); ++k) {
     const std::string field = "placement.chosen[" + std::to_string(k) + "]";
@@ -59,12 +79,17 @@ std::optional<LayoutPlacement> read_placement(const nlohmann::json& root, const 
       const nlohmann::json& step = p["steps"][k];
       const std::string field = "placement.steps[" + std::to_string(k) + "]";
       if (!step.is_object() || !step.contains("k") || !step["k"].is_number_integer() ||
-          !step.contains("pbar_min") || !step["pbar_min"].is_number()) {
-        fail(source, field + ": expected {\"k\": integer, \"pbar_min\": number}");
+          !step.contains("pbar_min") || !step["pbar_min"].is_number() ||
+          !step.contains("coverage") || !step["coverage"].is_number()) {
+        fail(source,
+             field + ": expected {\"k\": integer, \"pbar_min\": number, \"coverage\": number}");
       }
-      out.steps.emplace_back(step["k"].get<int>(), step["pbar_min"].get<double>());
+      reject_unknown_fields(step, source, {"k", "pbar_min", "coverage"});
+      out.steps.push_back(
+          {step["k"].get<int>(), step["pbar_min"].get<double>(), step["coverage"].get<double>()});
     }
   }
+  if (p.contains("random_baseline")) read_random_baseline(p["random_baseline"], source, &out);
   return out;
 }
 
@@ -76,8 +101,15 @@ void write_placement(const Layout& layout, nlohmann::ordered_json* out) {
   block["chosen"] = p.chosen;
   block["objective"] = p.objective;
   nlohmann::ordered_json steps = nlohmann::ordered_json::array();
-  for (const auto& [k, pbar] : p.steps) steps.push_back({{"k", k}, {"pbar_min", pbar}});
+  for (const LayoutPlacement::Step& step : p.steps) {
+    steps.push_back({{"k", step.k}, {"pbar_min", step.pbar_min}, {"coverage", step.coverage}});
+  }
   block["steps"] = steps;
+  if (p.random_trials > 0) {
+    block["random_baseline"] = {{"trials", p.random_trials},
+                                {"best_pbar_min", p.random_best_pbar_min},
+                                {"median_pbar_min", p.random_median_pbar_min}};
+  }
   block["site_points"] = rows(p.site_points);
   block["site_normals"] = rows(p.site_normals);
   (*out)["placement"] = block;

@@ -7,6 +7,7 @@
 #include "vantage/analysis/error_bounds.h"
 #include "vantage/plot/dropout_chart.h"
 #include "vantage/plot/error_surface.h"
+#include "vantage/plot/placement_figure.h"
 #include "vantage/plot/vectors_figure.h"
 #include "vantage/plot/viewpoint_map.h"
 #include "vantage/plot/visibility_dropout_chart.h"
@@ -22,9 +23,32 @@ bool wants(const std::vector<std::string>& names, const char* name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-bool applies(const char* name, bool has_design, bool has_visibility) {
+bool applies(const char* name, bool has_design, bool has_visibility, bool has_placement) {
   const std::string n = name;
-  return (has_design || n != "design") && (has_visibility || n != "visibility");
+  return (has_design || n != "design") && (has_visibility || n != "visibility") &&
+         (has_placement || n != "placement");
+}
+
+FigureFiles write_placement(const sdp::LayoutReport& report, const std::filesystem::path& directory,
+                            const FigureOptions& options) {
+  const Layout& layout = report.layout;
+  PlacementFigureData data;
+  data.layout_name = layout.name;
+  data.placement = *layout.placement;
+  data.markers = layout.entries;
+  if (layout.visibility) {
+    data.normals = layout.visibility->normals;
+    if (layout.visibility->body) data.body = &*layout.visibility->body;
+  } else {
+    data.normals = Eigen::Matrix3Xd::Zero(3, layout.entries.cols());
+  }
+  if (report.visibility) {
+    const sdp::VisibilityWorstViewpoint& worst = report.visibility->worst;
+    const bool trackable = worst.status != sdp::VisibilityWorstViewpoint::Status::kUntrackable;
+    data.pbar_min = trackable ? worst.pbar_min : 0.0;
+    data.coverage = report.visibility->coverage.trackable_fraction;
+  }
+  return write_placement_figure(data, directory, options);
 }
 
 // The seen-whole dropout error of each marker, when the report has it.
@@ -86,11 +110,11 @@ bool LayoutFiguresOptions::is_valid(std::string* why) const {
 }
 
 std::vector<std::string> selected_figures(const LayoutFiguresOptions& options, bool has_design,
-                                          bool has_visibility) {
+                                          bool has_visibility, bool has_placement) {
   if (options.only.empty()) {
     std::vector<std::string> all;
     for (const char* name : kFigureNames) {
-      if (applies(name, has_design, has_visibility)) all.push_back(name);
+      if (applies(name, has_design, has_visibility, has_placement)) all.push_back(name);
     }
     return all;
   }
@@ -99,7 +123,7 @@ std::vector<std::string> selected_figures(const LayoutFiguresOptions& options, b
     if (!is_figure_name(name)) {
       throw InvalidArgument("only: unknown figure \"" + name +
                             "\" (viewpoint_map, visibility, dropout, error_surface, vectors, "
-                            "design)");
+                            "placement, design)");
     }
     if (std::find(options.only.begin(), options.only.begin() + k, name) !=
         options.only.begin() + k) {
@@ -111,6 +135,9 @@ std::vector<std::string> selected_figures(const LayoutFiguresOptions& options, b
     if (name == "visibility" && !has_visibility) {
       throw InvalidArgument("only", "the visibility figure needs a layout with normals");
     }
+    if (name == "placement" && !has_placement) {
+      throw InvalidArgument("only", "the placement figure needs a layout written by vantage place");
+    }
   }
   std::vector<std::string> ordered;
   for (const char* name : kFigureNames) {
@@ -119,8 +146,9 @@ std::vector<std::string> selected_figures(const LayoutFiguresOptions& options, b
   return ordered;
 }
 
-bool needs_dropout(const LayoutFiguresOptions& options, bool has_design, bool has_visibility) {
-  return wants(selected_figures(options, has_design, has_visibility), "dropout");
+bool needs_dropout(const LayoutFiguresOptions& options, bool has_design, bool has_visibility,
+                   bool has_placement) {
+  return wants(selected_figures(options, has_design, has_visibility, has_placement), "dropout");
 }
 
 LayoutFigures write_layout_figures(const sdp::LayoutReport& report,
@@ -129,7 +157,8 @@ LayoutFigures write_layout_figures(const sdp::LayoutReport& report,
   std::string why;
   if (!options.is_valid(&why)) throw InvalidArgument("options", why);
   const bool on_body = report.visibility.has_value();
-  const std::vector<std::string> names = selected_figures(options, design != nullptr, on_body);
+  const std::vector<std::string> names =
+      selected_figures(options, design != nullptr, on_body, report.layout.placement.has_value());
   if (wants(names, "dropout") && (on_body ? report.visibility->dropout.empty() : !report.dropout)) {
     throw InvalidArgument("report", "the dropout figure needs the report's dropout analysis");
   }
@@ -205,6 +234,7 @@ LayoutFigures write_layout_figures(const sdp::LayoutReport& report,
     }
     result.files.push_back(write_vectors_figure(vectors, directory, figure));
   }
+  if (wants(names, "placement")) result.files.push_back(write_placement(report, directory, figure));
   if (wants(names, "design")) {
     result.files.push_back(write_design_curve(*design, directory, figure));
   }

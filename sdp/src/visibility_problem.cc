@@ -68,7 +68,8 @@ DirectionVisibility direction_visibility(const VisibilityProblem& problem,
   DirectionVisibility out;
   for (Eigen::Index i = 0; i < problem.points.cols(); ++i) {
     if (problem.normals.col(i).dot(a) < problem.cos_cone(i)) continue;
-    if (problem.occlusion != nullptr && problem.occlusion->blocked(problem.occlusion_marker(static_cast<int>(i)), a)) {
+    if (problem.occlusion != nullptr &&
+        problem.occlusion->blocked(problem.occlusion_marker(static_cast<int>(i)), a)) {
       continue;
     }
     out.visible.push_back(static_cast<int>(i));

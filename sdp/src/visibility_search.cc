@@ -135,7 +135,9 @@ class VisibilitySearch {
     std::vector<int> visible;
     for (int i = 0; i < n_; ++i) {
       if (problem_.normals.col(i).dot(a) < problem_.cos_cone(i)) continue;
-      if (problem_.occlusion != nullptr && problem_.occlusion->blocked(problem_.occlusion_marker(i), a)) continue;
+      if (problem_.occlusion != nullptr &&
+          problem_.occlusion->blocked(problem_.occlusion_marker(i), a))
+        continue;
       visible.push_back(i);
     }
     return visible;
@@ -310,7 +312,8 @@ class VisibilitySearch {
       in_cone = delta + r <= cone_angle_[i];
     }
     if (problem_.occlusion == nullptr) return in_cone ? Seen::kVisible : Seen::kConeEdge;
-    switch (problem_.occlusion->span(problem_.occlusion_marker(i), face, u - h, u + h, v - h, v + h)) {
+    switch (
+        problem_.occlusion->span(problem_.occlusion_marker(i), face, u - h, u + h, v - h, v + h)) {
       case OcclusionGrid::Span::kBlocked:
         return Seen::kHidden;
       case OcclusionGrid::Span::kClear:

@@ -14,8 +14,8 @@
 namespace vantage::design {
 namespace {
 
-using testing::message_of;
 using ::testing::HasSubstr;
+using testing::message_of;
 
 constexpr unsigned kSeed = 20261202;
 // Truth and answer are certified to this (t_upper - t_lower), and place tells apart two subsets
@@ -85,7 +85,8 @@ Truth enumerate(const sdp::VisibilityProblem& all, int k) {
     while (i >= 0 && idx[static_cast<std::size_t>(i)] == n - k + i) --i;
     if (i < 0) break;
     ++idx[static_cast<std::size_t>(i)];
-    for (int j = i + 1; j < k; ++j) idx[static_cast<std::size_t>(j)] = idx[static_cast<std::size_t>(j - 1)] + 1;
+    for (int j = i + 1; j < k; ++j)
+      idx[static_cast<std::size_t>(j)] = idx[static_cast<std::size_t>(j - 1)] + 1;
   }
   using Status = sdp::VisibilityWorstViewpoint::Status;
   double least_upper = 1.0;
@@ -101,7 +102,8 @@ Truth enumerate(const sdp::VisibilityProblem& all, int k) {
   for (const Candidate& c : candidates) {
     if (c.coverage < top - kSameLattice || c.coarse.status == Status::kUntrackable) continue;
     if (c.coarse.status == Status::kCertified && c.coarse.t_lower > least_upper) continue;
-    const sdp::VisibilityWorstViewpoint w = sdp::visibility_worst_viewpoint(subset(all, c.chosen), tight);
+    const sdp::VisibilityWorstViewpoint w =
+        sdp::visibility_worst_viewpoint(subset(all, c.chosen), tight);
     if (w.t_upper < best.t) {
       best.t = w.t_upper;
       best.chosen = c.chosen;
@@ -154,7 +156,8 @@ TEST(PlaceMarkers, FindsTheExhaustiveOptimumOfEverySubset) {
     ASSERT_FALSE(s.truth.chosen.empty());
     const PlacementResult result = place_markers(problem, small_options(kTruthTolerance));
     EXPECT_EQ(result.search, "exhaustive");
-    EXPECT_EQ(result.status == PlacementResult::Status::kComplete, s.truth.coverage > 1.0 - kSameLattice);
+    EXPECT_EQ(result.status == PlacementResult::Status::kComplete,
+              s.truth.coverage > 1.0 - kSameLattice);
     EXPECT_NEAR(result.value.coverage, s.truth.coverage, kSameLattice);
     EXPECT_LE(result.value.t_upper, s.truth.t + kTie);
     // The truth's subset is certified; the answer cannot beat it by more than the tolerances.
@@ -259,7 +262,8 @@ TEST(PlaceMarkers, RobustValueIsTheWorstSingleLoss) {
   for (std::size_t m = 0; m < result.chosen.size(); ++m) {
     std::vector<int> rest = result.chosen;
     rest.erase(rest.begin() + static_cast<long>(m));
-    const sdp::VisibilityWorstViewpoint w = sdp::visibility_worst_viewpoint(subset(problem.sites, rest), tight);
+    const sdp::VisibilityWorstViewpoint w =
+        sdp::visibility_worst_viewpoint(subset(problem.sites, rest), tight);
     worst_t = std::max(worst_t, w.t_upper);
   }
   // place certifies at the default 1e-7 in t; at these t, p-bar moves by less than 1e-6.
@@ -319,9 +323,11 @@ Mesh cube(bool inward) {
   Mesh mesh;
   mesh.vertices.resize(3, 8);
   for (int i = 0; i < 8; ++i) {
-    mesh.vertices.col(i) = Eigen::Vector3d((i & 1) - 0.5, ((i >> 1) & 1) - 0.5, ((i >> 2) & 1) - 0.5);
+    mesh.vertices.col(i) =
+        Eigen::Vector3d((i & 1) - 0.5, ((i >> 1) & 1) - 0.5, ((i >> 2) & 1) - 0.5);
   }
-  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   mesh.triangles.resize(3, 12);
   for (int q = 0; q < 6; ++q) {
     const int* v = quads[q];
@@ -383,7 +389,9 @@ TEST(MinDistanceDifference, EqualsBruteForce) {
   }
   const DistanceDifference got = min_distance_difference(points);
   EXPECT_EQ(got.value, truth);
-  const auto length = [&](std::pair<int, int> p) { return (points.col(p.first) - points.col(p.second)).norm(); };
+  const auto length = [&](std::pair<int, int> p) {
+    return (points.col(p.first) - points.col(p.second)).norm();
+  };
   EXPECT_EQ(std::abs(length(got.pair_a) - length(got.pair_b)), truth);
   EXPECT_TRUE(std::isinf(min_distance_difference(points.leftCols(2)).value));
 }

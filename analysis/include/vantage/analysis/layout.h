@@ -29,13 +29,24 @@ const char* to_string(LayoutMode mode);
 /// Where the markers of a placed layout came from (`vantage place`, docs/math.md §21): kept in
 /// the file so that figures can show the sites that were not chosen and the greedy steps.
 struct LayoutPlacement {
-  std::string sites;           ///< the candidates' source (a mesh or a sites file), as given
-  std::vector<int> chosen;     ///< the site of each marker, in the order of the entries (-1: kept)
-  std::string objective;       ///< what was optimised, in words
+  std::string sites;        ///< the candidates' source (a mesh or a sites file), as given
+  std::vector<int> chosen;  ///< the site of each marker, in the order of the entries (-1: kept)
+  std::string objective;    ///< what was optimised, in words
   Eigen::Matrix3Xd site_points;   ///< every candidate site
   Eigen::Matrix3Xd site_normals;  ///< their outward unit normals
-  /// The greedy construction: p-bar_min (certified, under visibility) after k markers.
-  std::vector<std::pair<int, double>> steps;
+  /// One greedy step: k markers chosen, the trackable fraction of the workspace and the
+  /// certified p-bar_min under visibility over its trackable part.
+  struct Step {
+    int k = 0;
+    double pbar_min = 0.0;
+    double coverage = 0.0;
+  };
+  std::vector<Step> steps;  ///< the greedy construction (empty when searched exhaustively)
+  /// The random baseline of the same K: feasible subsets drawn (0: none recorded) and the best
+  /// and median p-bar_min among them.
+  int random_trials = 0;
+  double random_best_pbar_min = 0.0;
+  double random_median_pbar_min = 0.0;
 };
 
 /// A layout in the object frame.

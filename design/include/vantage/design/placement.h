@@ -28,8 +28,8 @@ struct PlacementProblem {
   sdp::VisibilityProblem sites;
   /// Sites that are already markers (kept: always chosen, counted in `markers`), distinct.
   std::vector<int> keep;
-  int markers = 0;                      ///< K: the markers of the answer, kept ones included
-  double min_separation = 0.0;          ///< least distance between chosen markers, >= 0
+  int markers = 0;                       ///< K: the markers of the answer, kept ones included
+  double min_separation = 0.0;           ///< least distance between chosen markers, >= 0
   double min_distance_difference = 0.0;  ///< least |d_ij - d_kl| of distinct pairs, >= 0
 
   /// Throws InvalidArgument naming the field: "markers" (K above the sites, below
@@ -64,7 +64,8 @@ struct PlacementValue {
   /// sqrt(1 - t_upper^2).
   double t_upper = 1.0;
   double pbar_min = 0.0;
-  sdp::VisibilityWorstViewpoint::Status status = sdp::VisibilityWorstViewpoint::Status::kUntrackable;
+  sdp::VisibilityWorstViewpoint::Status status =
+      sdp::VisibilityWorstViewpoint::Status::kUntrackable;
 };
 
 /// The placement after greedy step k (k markers chosen).
@@ -76,8 +77,8 @@ struct PlacementStep {
 
 /// The random feasible subsets of the baseline.
 struct RandomBaseline {
-  int trials = 0;        ///< feasible subsets drawn (fewer than asked when few are feasible)
-  int complete = 0;      ///< of them, how many cover every lattice direction
+  int trials = 0;    ///< feasible subsets drawn (fewer than asked when few are feasible)
+  int complete = 0;  ///< of them, how many cover every lattice direction
   double best_coverage = 0.0;
   double best_pbar_min = 0.0;    ///< of the best trial by the objective
   double median_pbar_min = 0.0;  ///< median over the trials (0 for an untrackable trial)
@@ -86,8 +87,8 @@ struct RandomBaseline {
 
 /// The worst single loss (with robust_dropout).
 struct RobustValue {
-  double coverage = 0.0;  ///< least coverage over the loss of one marker
-  double pbar_min = 0.0;  ///< least certified p-bar_min over the loss of one marker
+  double coverage = 0.0;       ///< least coverage over the loss of one marker
+  double pbar_min = 0.0;       ///< least certified p-bar_min over the loss of one marker
   int worst_lost_marker = -1;  ///< the site whose loss gives it
 };
 
@@ -101,11 +102,11 @@ struct PlacementResult {
   std::vector<int> chosen;  ///< site indices, increasing (kept sites included)
   PlacementValue value;     ///< of `chosen`, at the search's tolerance
   std::optional<RobustValue> robust;
-  std::string search;              ///< "exhaustive" or "greedy+swap"
+  std::string search;                ///< "exhaustive" or "greedy+swap"
   std::vector<PlacementStep> steps;  ///< greedy construction (empty when exhaustive)
-  int swaps = 0;                   ///< improving swaps made after the greedy
-  long evaluations = 0;            ///< certified searches run (not counting the baseline)
-  long subsets = 0;                ///< feasible subsets searched exhaustively
+  int swaps = 0;                     ///< improving swaps made after the greedy
+  long evaluations = 0;              ///< certified searches run (not counting the baseline)
+  long subsets = 0;                  ///< feasible subsets searched exhaustively
   RandomBaseline random_baseline;
   /// When incomplete: the markers at which greedy by coverage alone covers the lattice (an upper
   /// bound on the smallest complete K), or none when all sites together do not.
@@ -123,10 +124,10 @@ PlacementResult place_markers(const PlacementProblem& problem, const PlaceOption
 
 /// Candidate sites sampled on a mesh (docs/math.md §21, "Sites").
 struct SurfaceSites {
-  Eigen::Matrix3Xd points;   ///< 3 x N
-  Eigen::Matrix3Xd normals;  ///< outward unit normals of the sites' triangles
+  Eigen::Matrix3Xd points;     ///< 3 x N
+  Eigen::Matrix3Xd normals;    ///< outward unit normals of the sites' triangles
   std::vector<int> triangles;  ///< the triangle of each site
-  int drawn = 0;             ///< samples drawn before thinning
+  int drawn = 0;               ///< samples drawn before thinning
 };
 
 /// `count` area-uniform samples of `mesh` from an engine seeded with `seed`, thinned to

@@ -20,9 +20,10 @@ namespace vantage::plot {
 /// The figures, in the order they are written (file names <name>.<ext>, <name>.csv). For a
 /// layout with normals (on its body, docs/math.md §20) viewpoint_map and dropout are drawn under
 /// visibility (visibility_maps.h, visibility_dropout_chart.h) and "visibility" is added; for
-/// other layouts "visibility" does not apply.
-inline constexpr std::array<const char*, 6> kFigureNames = {
-    "viewpoint_map", "visibility", "dropout", "error_surface", "vectors", "design"};
+/// other layouts "visibility" does not apply. "placement" (placement_figure.h) applies to a
+/// layout written by `vantage place` (Layout::placement).
+inline constexpr std::array<const char*, 7> kFigureNames = {
+    "viewpoint_map", "visibility", "dropout", "error_surface", "vectors", "placement", "design"};
 
 /// True for a name in kFigureNames.
 bool is_figure_name(const std::string& name);
@@ -58,16 +59,17 @@ struct LayoutFigures {
 };
 
 /// The figure names write_layout_figures() will write for these options (checks `only`);
-/// has_visibility: the layout has normals (Layout::visibility). Throws InvalidArgument naming
-/// "only" for an unknown or repeated name, for "design" without a design curve, or for
-/// "visibility" without normals.
+/// has_visibility: the layout has normals (Layout::visibility); has_placement: it was placed
+/// (Layout::placement). Throws InvalidArgument naming "only" for an unknown or repeated name,
+/// for "design" without a design curve, "visibility" without normals or "placement" without a
+/// placement.
 std::vector<std::string> selected_figures(const LayoutFiguresOptions& options, bool has_design,
-                                          bool has_visibility = false);
+                                          bool has_visibility = false, bool has_placement = false);
 
 /// True when the figures `options` select need the report's dropout analysis (the dropout
 /// figure): run sdp::analyze_layout() with LayoutReportOptions::dropout then.
 bool needs_dropout(const LayoutFiguresOptions& options, bool has_design,
-                   bool has_visibility = false);
+                   bool has_visibility = false, bool has_placement = false);
 
 /// Writes the selected figures of the layout of `report` into `directory` (which must exist).
 /// design may be null (no design figure). Throws InvalidArgument on invalid options or curve, a

@@ -1,0 +1,158 @@
+// `vantage place` (docs/math.md §21): the issue's JSON names, the written layout analysing to
+// the reported numbers, --keep, --threads, the placement figure, and bad input (one line, exit
+// 2, nothing written).
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_runner.h"
+
+namespace vantage {
+namespace {
+
+using testing::BadCall;
+using testing::CliRun;
+using ::testing::HasSubstr;
+using testing::run_vantage;
+using testing::ScratchDir;
+
+const std::string kSatelliteBody =
+    "'" + std::string(VANTAGE_SOURCE_DIR) + "/examples/bodies/satellite.obj'";
+
+// Sixteen sites: the centres and the quarter points of the faces of a unit cube (normals the
+// faces'), less the bottom face's last two; 150 degree cones.
+std::string cube_sites() {
+  nlohmann::json points = nlohmann::json::array(), normals = nlohmann::json::array();
+  const double offsets[3][2] = {{0.0, 0.0}, {0.25, 0.1}, {-0.2, -0.25}};
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int sign : {1, -1}) {
+      for (const auto& o : offsets) {
+        if (points.size() == 16) break;
+        double p[3], n[3] = {0, 0, 0};
+        p[axis] = 0.5 * sign;
+        p[(axis + 1) % 3] = o[0];
+        p[(axis + 2) % 3] = o[1];
+        n[axis] = sign;
+        points.push_back({p[0], p[1], p[2]});
+        normals.push_back({n[0], n[1], n[2]});
+      }
+    }
+  }
+  nlohmann::json layout = {{"name", "cube sites"},
+                           {"points", points},
+                           {"normals", normals},
+                           {"visibility", {{"cone_half_angle_deg", 150.0}, {"min_visible", 3}}}};
+  return layout.dump();
+}
+
+TEST(PlaceCli, SatelliteWritesALayoutThatAnalysesToTheReportedNumbers) {
+  ScratchDir scratch;
+  const nlohmann::json json =
+      testing::run_json("place " + kSatelliteBody +
+                            " --markers 6 --candidates 200 --random-trials 100 --out sat6.json",
+                        scratch);
+  for (const char* field : {"chosen", "n_candidates", "visibility", "coverage", "random_baseline",
+                            "steps", "written"}) {
+    EXPECT_TRUE(json.contains(field)) << field;
+  }
+  EXPECT_FALSE(json.contains("robust"));
+  EXPECT_EQ(json["chosen"].size(), 6u);
+  EXPECT_EQ(json["n_candidates"], 200);
+  for (const char* field : {"trials", "best_pbar_min", "median_pbar_min"}) {
+    EXPECT_TRUE(json["random_baseline"].contains(field)) << field;
+  }
+  for (const nlohmann::json& step : json["steps"]) {
+    EXPECT_TRUE(step.contains("k") && step.contains("pbar_min"));
+  }
+  ASSERT_EQ(json["written"], "sat6.json");
+  const double pbar = json["visibility"]["pbar_min"].get<double>();
+  EXPECT_GE(pbar, json["random_baseline"]["best_pbar_min"].get<double>());
+
+  // analyze on the written file: the same numbers, bit for bit (the same analysis).
+  const nlohmann::json analysed = testing::run_json("analyze sat6.json", scratch);
+  EXPECT_EQ(analysed["visibility"]["pbar_min"], json["visibility"]["pbar_min"]);
+  EXPECT_EQ(analysed["visibility"]["trackable_fraction"], json["visibility"]["trackable_fraction"]);
+  EXPECT_EQ(analysed["visibility"]["worst_viewpoint"], json["visibility"]["worst_viewpoint"]);
+
+  const nlohmann::json file = nlohmann::json::parse(testing::read_file(scratch.path("sat6.json")));
+  ASSERT_TRUE(file.contains("placement"));
+  EXPECT_EQ(file["placement"]["chosen"], json["chosen"]);
+  EXPECT_EQ(file["placement"]["site_points"].size(), 200u);
+  EXPECT_TRUE(file.contains("normals"));
+  EXPECT_TRUE(file["visibility"].contains("body"));
+
+  // The placement figure of the written layout.
+  const CliRun plot = run_vantage("plot sat6.json --out figs --only placement", scratch);
+  EXPECT_EQ(plot.status, 0) << plot.err;
+  EXPECT_TRUE(std::filesystem::exists(scratch.path("figs/placement.png")));
+  const std::string csv = testing::read_file(scratch.path("figs/placement.csv"));
+  EXPECT_THAT(csv, HasSubstr("series,k,pbar_min,coverage"));
+  EXPECT_THAT(csv, HasSubstr("answer,6,"));
+}
+
+TEST(PlaceCli, SixteenSitesFourMarkersIsExhaustive) {
+  ScratchDir scratch;
+  scratch.write("sites.json", cube_sites());
+  const nlohmann::json json =
+      testing::run_json("place --sites sites.json --markers 4 --out four.json", scratch);
+  EXPECT_EQ(json["search"], "exhaustive");
+  EXPECT_EQ(json["n_candidates"], 16);
+  EXPECT_EQ(json["chosen"].size(), 4u);
+}
+
+TEST(PlaceCli, KeptMarkersAreChosenAndThreadsDoNotChangeTheAnswer) {
+  ScratchDir scratch;
+  scratch.write("sites.json", cube_sites());
+  // A layout file holds at least 3 markers: three kept ones, one at a site (site 0, the +x
+  // face's centre, which is then kept) and two elsewhere.
+  scratch.write("keep.json", R"({"points": [[0.5, 0.0, 0.0], [0.1, 0.5, 0.1], [0.1, 0.1, 0.5]],
+                                 "normals": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]})");
+  const std::string args =
+      "place --sites sites.json --markers 7 --keep keep.json --exhaustive-limit 0 --out k.json "
+      "--overwrite";
+  const nlohmann::json one = testing::run_json(args + " --threads 1", scratch);
+  const nlohmann::json two = testing::run_json(args + " --threads 2", scratch);
+  EXPECT_EQ(one["chosen"], two["chosen"]);
+  EXPECT_EQ(one["visibility"]["pbar_min"], two["visibility"]["pbar_min"]);
+  const nlohmann::json file = nlohmann::json::parse(testing::read_file(scratch.path("k.json")));
+  const nlohmann::json keep = nlohmann::json::parse(testing::read_file(scratch.path("keep.json")));
+  for (const nlohmann::json& k : keep["points"]) {
+    bool kept = false;
+    for (const nlohmann::json& p : file["points"]) kept = kept || p == k;
+    EXPECT_TRUE(kept) << k;
+  }
+  EXPECT_EQ(file["points"].size(), 7u);
+}
+
+TEST(PlaceCli, BadInputGetsOneLineAndWritesNothing) {
+  ScratchDir scratch;
+  scratch.write("sites.json", cube_sites());
+  scratch.write("bare.json", R"({"points": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]})");
+  scratch.write("empty.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+  std::filesystem::create_directories(scratch.path("adir"));
+  const BadCall calls[] = {
+      {"K above the sites", nullptr, "--sites sites.json --markers 17 --out o.json", "--markers"},
+      {"K below min_visible", nullptr, "--sites sites.json --markers 2 --out o.json", "--markers"},
+      {"a mesh with no faces", nullptr, "empty.obj --markers 4 --out o.json", "empty.obj"},
+      {"sites without normals", nullptr, "--sites bare.json --markers 3 --out o.json", "normals"},
+      {"--out in a missing directory", nullptr, "--sites sites.json --markers 4 --out none/o.json",
+       "--out"},
+      {"--out a directory", nullptr, "--sites sites.json --markers 4 --out adir --overwrite",
+       "--out"},
+      {"neither body nor sites", nullptr, "--markers 4 --out o.json", "BODY"},
+  };
+  for (const BadCall& call : calls) {
+    SCOPED_TRACE(call.name);
+    testing::run_bad_call("place", call, scratch);
+    EXPECT_FALSE(std::filesystem::exists(scratch.path("o.json")));
+    EXPECT_FALSE(std::filesystem::exists(scratch.path("none")));
+    EXPECT_TRUE(std::filesystem::is_empty(scratch.path("adir")));
+  }
+}
+
+}  // namespace
+}  // namespace vantage
