@@ -13,6 +13,9 @@ namespace {
 
 // Draws of one random subset before it counts as infeasible.
 constexpr int kDrawAttempts = 100;
+// The baseline's trials are certified to this in t (or the search's tolerance, if coarser): an
+// anchor reported to four digits, and its t_upper only errs on the baseline's side.
+constexpr double kBaselineTolerance = 1e-5;
 
 }  // namespace
 
@@ -64,7 +67,9 @@ RandomBaseline PlacementSearch::baseline(std::optional<Scored>* best) {
   parallel_blocks(static_cast<long>(searched.size()), options_.threads, [&](long b, long e) {
     for (long i = b; i < e; ++i) {
       Scored& s = *searched[static_cast<std::size_t>(i)];
-      const FamilyValue v = evaluator_.family_t(family(s.chosen), 2.0, {});
+      const FamilyValue v =
+          evaluator_.family_t(family(s.chosen), 2.0, {},
+                              std::max(kBaselineTolerance, options_.search.certificate_tolerance));
       s.t = v.t_upper;
       s.status = v.status;
       if (options_.robust_dropout && v.worst_member >= 0) {

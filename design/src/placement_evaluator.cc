@@ -69,7 +69,8 @@ bool PlacementEvaluator::feasible_with(const std::vector<int>& chosen, int c) co
 }
 
 FamilyValue PlacementEvaluator::family_t(const std::vector<std::vector<int>>& family, double level,
-                                         const std::vector<Eigen::Vector3d>& witnesses) const {
+                                         const std::vector<Eigen::Vector3d>& witnesses,
+                                         double tolerance) const {
   FamilyValue out;
   std::vector<sdp::VisibilityProblem> problems;
   problems.reserve(family.size());
@@ -83,6 +84,7 @@ FamilyValue PlacementEvaluator::family_t(const std::vector<std::vector<int>>& fa
   }
   sdp::VisibilitySearchOptions search = options_.search;
   search.stop_above = level;
+  if (tolerance > 0.0) search.certificate_tolerance = tolerance;
   out.t_upper = -1.0;
   for (std::size_t m = 0; m < problems.size(); ++m) {
     const sdp::VisibilityWorstViewpoint r = sdp::visibility_worst_viewpoint(problems[m], search);

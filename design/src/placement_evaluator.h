@@ -36,8 +36,9 @@ class PlacementEvaluator {
 
   /// The largest t_upper over `family` (subsets of sites), when below `level`: attained values
   /// at the witnesses first, then a search per member that stops once it attains the level.
+  /// `tolerance` > 0 replaces the search's certificate tolerance (the random baseline's).
   FamilyValue family_t(const std::vector<std::vector<int>>& family, double level,
-                       const std::vector<Eigen::Vector3d>& witnesses) const;
+                       const std::vector<Eigen::Vector3d>& witnesses, double tolerance = 0.0) const;
 
  private:
   const PlacementProblem& problem_;
