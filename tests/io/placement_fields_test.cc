@@ -1,0 +1,80 @@
+// The "placement" block of a layout written by `vantage place` (docs/math.md §21): it survives
+// a write and a read bit for bit, and a bad block gets one error naming its field.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "vantage/analysis/common.h"
+#include "vantage/io/layout_file.h"
+
+namespace vantage::io {
+namespace {
+
+using ::testing::HasSubstr;
+
+// Three markers on a cube's faces, chosen from four sites; one greedy step and a baseline.
+constexpr const char* kPlaced = R"({
+  "points": [[0.5, 0.1, 0.0], [0.0, 0.5, 0.1], [0.1, 0.0, 0.5]],
+  "normals": [[1, 0, 0], [0, 1, 0], [0, 0, 1]],
+  "placement": {
+    "sites": "cube.obj",
+    "chosen": [0, 2, -1],
+    "objective": "coverage, then certified p-bar_min",
+    "steps": [{"k": 3, "pbar_min": 0.5, "coverage": 0.25}],
+    "random_baseline": {"trials": 10, "best_pbar_min": 0.4, "median_pbar_min": 0.1},
+    "site_points": [[0.5, 0.1, 0.0], [-0.5, 0, 0], [0.0, 0.5, 0.1], [0, -0.5, 0]],
+    "site_normals": [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0]]
+  }
+})";
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_layout(text, "placed.json");
+  } catch (const InvalidArgument& e) {
+    return e.what();
+  }
+  return "no exception";
+}
+
+std::string with(const std::string& from, const std::string& to) {
+  std::string text = kPlaced;
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return text.replace(at, from.size(), to);
+}
+
+TEST(PlacementFields, SurviveAWriteAndARead) {
+  const Layout layout = parse_layout(kPlaced, "placed.json");
+  ASSERT_TRUE(layout.placement.has_value());
+  const LayoutPlacement& p = *layout.placement;
+  EXPECT_EQ(p.chosen, (std::vector<int>{0, 2, -1}));
+  EXPECT_EQ(p.site_points.cols(), 4);
+  ASSERT_EQ(p.steps.size(), 1u);
+  EXPECT_EQ(p.steps[0].coverage, 0.25);
+  EXPECT_EQ(p.random_trials, 10);
+  const Layout again = parse_layout(layout_to_json(layout), "again.json");
+  ASSERT_TRUE(again.placement.has_value());
+  EXPECT_EQ(again.placement->chosen, p.chosen);
+  EXPECT_EQ(again.placement->site_points, p.site_points);
+  EXPECT_EQ(again.placement->site_normals, p.site_normals);
+  EXPECT_EQ(again.placement->steps[0].pbar_min, 0.5);
+  EXPECT_EQ(again.placement->random_median_pbar_min, 0.1);
+  EXPECT_EQ(again.placement->sites, "cube.obj");
+}
+
+TEST(PlacementFields, BadBlocksNameTheirField) {
+  EXPECT_THAT(error_of(with("\"chosen\": [0, 2, -1]", "\"chosen\": [0, 2]")),
+              HasSubstr("placement.chosen: expected one site per marker"));
+  EXPECT_THAT(error_of(with("\"chosen\": [0, 2, -1]", "\"chosen\": [0, 4, -1]")),
+              HasSubstr("placement.chosen[1]"));
+  EXPECT_THAT(error_of(with("\"coverage\": 0.25", "\"cover\": 0.25")),
+              HasSubstr("placement.steps[0]"));
+  EXPECT_THAT(error_of(with("\"trials\": 10", "\"trials\": -1")),
+              HasSubstr("placement.random_baseline.trials"));
+  EXPECT_THAT(error_of(with("\"site_normals\": [[1, 0, 0], ", "\"site_normals\": [")),
+              HasSubstr("placement.site_normals"));
+  EXPECT_THAT(error_of(with("\"objective\"", "\"purpose\"")), HasSubstr("purpose"));
+}
+
+}  // namespace
+}  // namespace vantage::io
