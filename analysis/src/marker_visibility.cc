@@ -56,7 +56,9 @@ void validate_workspace(const LayoutWorkspace& w) {
 }
 
 Eigen::Vector3d unit_normal(const Eigen::Vector3d& v) {
-  const double length = v.norm();
+  // stableNorm: |v| of a normal given as 1e300 or 1e-200 neither overflows nor underflows.
+  if (!v.allFinite()) return Eigen::Vector3d::Zero();
+  const double length = v.stableNorm();
   if (length == 0.0 || !std::isfinite(length)) return Eigen::Vector3d::Zero();
   if (std::abs(length - 1.0) <= 4.0 * std::numeric_limits<double>::epsilon()) return v;
   return v / length;
