@@ -87,8 +87,15 @@ FamilyValue PlacementEvaluator::family_t(const std::vector<std::vector<int>>& fa
   if (tolerance > 0.0) search.certificate_tolerance = tolerance;
   out.t_upper = -1.0;
   for (std::size_t m = 0; m < problems.size(); ++m) {
-    const sdp::VisibilityWorstViewpoint r = sdp::visibility_worst_viewpoint(problems[m], search);
-    ++out.searches;
+    // A member with fewer markers than a direction must see tracks nothing (robust_dropout's
+    // losses early in the greedy): no search, t = 1.
+    const bool too_few = problems[m].points.cols() < problems[m].min_visible;
+    sdp::VisibilityWorstViewpoint r;
+    r.status = sdp::VisibilityWorstViewpoint::Status::kUntrackable;
+    if (!too_few) {
+      r = sdp::visibility_worst_viewpoint(problems[m], search);
+      ++out.searches;
+    }
     const bool untrackable = r.status == sdp::VisibilityWorstViewpoint::Status::kUntrackable;
     if (!untrackable) out.witnesses.push_back(r.viewpoint);
     const double t = untrackable ? 1.0 : r.t_upper;

@@ -271,6 +271,22 @@ TEST(PlaceMarkers, RobustValueIsTheWorstSingleLoss) {
   EXPECT_NEAR(result.robust->pbar_min, std::sqrt(1.0 - worst_t * worst_t), kDefaultCertificate);
 }
 
+TEST(PlaceMarkers, RobustGreedyStartsFromTooFewMarkersToLoseOne) {
+  // The greedy's first steps hold fewer than min_visible + 1 markers: every loss leaves an
+  // untrackable layout, which must score as such rather than fail.
+  PlacementProblem problem;
+  problem.sites = sphere_sites(12, 120.0, kSeed + 4);
+  problem.markers = 5;
+  PlaceOptions options = small_options();
+  options.robust_dropout = true;
+  options.exhaustive_limit = 0;
+  options.random_trials = 20;
+  const PlacementResult result = place_markers(problem, options);
+  EXPECT_EQ(result.search, "greedy+swap");
+  ASSERT_TRUE(result.robust.has_value());
+  EXPECT_EQ(result.chosen.size(), 5u);
+}
+
 TEST(PlaceMarkers, RejectsBadProblemsNamingTheField) {
   PlacementProblem problem = larger_problem();
   problem.markers = 61;
