@@ -38,7 +38,7 @@ void check_args(const PlaceArgs& args) {
   }
   if (args.candidates < 1 || args.candidates > kMaxCandidates) {
     refuse("--candidates", "must be in [1, " + std::to_string(kMaxCandidates) + "], got " +
-                            std::to_string(args.candidates));
+                               std::to_string(args.candidates));
   }
   if (args.markers < 1) refuse("--markers", "must be >= 1, got " + std::to_string(args.markers));
   if (!(args.min_separation >= 0.0) || !std::isfinite(args.min_separation)) {
@@ -57,8 +57,9 @@ void check_args(const PlaceArgs& args) {
   if (!is_valid_utf8(args.out)) refuse("--out", "the file name is not valid UTF-8");
   try {
     if (io::layout_write_format(args.out) != io::LayoutFormat::kJson) {
-      refuse("--out", args.out + ": write the placed layout as .json (it keeps normals, body, "
-                              "workspace and the placement record)");
+      refuse("--out", args.out +
+                          ": write the placed layout as .json (it keeps normals, body, "
+                          "workspace and the placement record)");
     }
     io::check_write_target(args.out, args.overwrite);
   } catch (const InvalidArgument& e) {
@@ -92,18 +93,9 @@ Layout candidate_sites(const PlaceArgs& args, int* drawn) {
     refuse("BODY", args.body + ": " + e.what());
   }
   *drawn = sampled.drawn;
-  Layout sites;
+  Layout sites = design::surface_sites_layout(
+      sampled, mesh, std::filesystem::absolute(args.body).lexically_normal().string());
   sites.name = std::filesystem::path(args.body).stem().string();
-  sites.mode = LayoutMode::kPoints;
-  sites.entries = sampled.points;
-  sites.weights = Eigen::VectorXd::Ones(sampled.points.cols());
-  MarkerVisibility visibility;
-  visibility.normals = sampled.normals;
-  visibility.cone_half_angle_deg =
-      Eigen::VectorXd::Constant(sampled.points.cols(), MarkerVisibility::kDefaultConeDeg);
-  visibility.body = std::move(mesh);
-  visibility.body_path = std::filesystem::absolute(args.body).lexically_normal().string();
-  sites.visibility = std::move(visibility);
   if (!args.input.visibility.body.empty()) {
     refuse("--body", "the positional BODY is the body; --body goes with --sites");
   }
@@ -116,7 +108,8 @@ std::vector<int> append_kept(const PlaceArgs& args, Layout* sites) {
   if (args.keep.empty()) return {};
   const Layout kept = io::load_layout(args.keep);
   if (kept.mode != LayoutMode::kPoints || !kept.visibility) {
-    refuse("--keep", args.keep + ": expected points with \"normals\" (the markers already on the body)");
+    refuse("--keep",
+           args.keep + ": expected points with \"normals\" (the markers already on the body)");
   }
   const Eigen::Index n = sites->entries.cols();
   const Eigen::Index f = kept.entries.cols();
@@ -149,19 +142,19 @@ void check_problem(const PlaceArgs& args, const Layout& sites, std::size_t kept)
   const int min_visible = sites.visibility->min_visible;
   if (args.markers > n) {
     refuse("--markers", std::to_string(args.markers) + " exceeds the " + std::to_string(n) +
-                         " sites" + (kept > 0 ? " and kept markers" : ""));
+                            " sites" + (kept > 0 ? " and kept markers" : ""));
   }
   if (args.markers < min_visible) {
     refuse("--markers", "must be at least min_visible (" + std::to_string(min_visible) + "), got " +
-                         std::to_string(args.markers));
+                            std::to_string(args.markers));
   }
   if (static_cast<long>(kept) > args.markers) {
-    refuse("--markers", "the " + std::to_string(kept) + " kept markers exceed " +
-                         std::to_string(args.markers));
+    refuse("--markers",
+           "the " + std::to_string(kept) + " kept markers exceed " + std::to_string(args.markers));
   }
   if (args.robust_dropout && args.markers <= min_visible) {
     refuse("--robust-dropout", "needs --markers above min_visible (" + std::to_string(min_visible) +
-                                "): a lost marker leaves too few otherwise");
+                                   "): a lost marker leaves too few otherwise");
   }
 }
 
@@ -179,10 +172,11 @@ int run_place(const PlaceArgs& args) {
   {
     Progress progress("place", !args.json && !args.quiet);
     progress.update("occlusion grid");
-    const sdp::VisibilityModel model = against_source(
-        args.sites.empty() ? args.body : args.sites,
-        [&] { return sdp::VisibilityModel::of(sites, sdp::VisibilityModel::kDefaultResolutionDeg,
-                                              args.threads); });
+    const sdp::VisibilityModel model =
+        against_source(args.sites.empty() ? args.body : args.sites, [&] {
+          return sdp::VisibilityModel::of(sites, sdp::VisibilityModel::kDefaultResolutionDeg,
+                                          args.threads);
+        });
     design::PlacementProblem problem;
     problem.sites = model.problem();
     problem.keep = keep;
@@ -234,9 +228,9 @@ Command add_place_command(CLI::App& root) {
   sub->add_option("--sites", args->sites,
                   "candidate sites: a point layout with normals (its cones, min_visible, body and "
                   "workspace apply)");
-  CLI::Option* candidates = sub->add_option(
-      "--candidates", args->candidates, "sites sampled area-uniformly on BODY")
-                                ->capture_default_str();
+  CLI::Option* candidates =
+      sub->add_option("--candidates", args->candidates, "sites sampled area-uniformly on BODY")
+          ->capture_default_str();
   sub->add_option("--markers", args->markers, "K: markers of the answer (kept ones included)")
       ->required();
   sub->add_option("--out", args->out, "the placed layout (.json)")->required();

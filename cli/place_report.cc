@@ -8,12 +8,6 @@
 namespace vantage::cli {
 namespace {
 
-constexpr const char* kObjective =
-    "every workspace direction trackable, then the largest certified p-bar_min under visibility";
-constexpr const char* kRobustObjective =
-    "every workspace direction trackable, then under the loss of any one marker the largest "
-    "coverage and certified p-bar_min";
-
 double error_deg(double pbar_min) {
   return std::asin(std::sqrt(std::max(0.0, 1.0 - pbar_min * pbar_min))) * kDegreesPerRadian;
 }
@@ -40,53 +34,24 @@ PlacedLayout placed_layout(const PlaceArgs& args, const Layout& sites, int n_can
                            const design::PlacementResult& result) {
   PlacedLayout out;
   for (Eigen::Index i = 0; i < sites.entries.cols(); ++i) {
-    out.site_names.push_back(sites.names.empty() ? "site" + std::to_string(i)
-                                                 : sites.entry_name(i));
+    out.site_names.push_back(design::site_name(sites, static_cast<int>(i)));
   }
-  Layout& layout = out.layout;
-  layout.name = sites.name.empty() ? "placed" : sites.name + " (placed)";
-  layout.description = "vantage place: " + std::to_string(args.markers) + " of " +
-                       std::to_string(n_candidates) + " sites";
-  layout.mode = LayoutMode::kPoints;
-  const Eigen::Index k = static_cast<Eigen::Index>(result.chosen.size());
-  layout.entries.resize(3, k);
-  layout.weights = Eigen::VectorXd::Ones(k);
-  MarkerVisibility visibility;
-  visibility.normals.resize(3, k);
-  visibility.cone_half_angle_deg.resize(k);
-  visibility.min_visible = sites.visibility->min_visible;
-  visibility.body_path = sites.visibility->body_path;
-  visibility.body = sites.visibility->body;
-  LayoutPlacement placement;
-  placement.sites = args.sites.empty() ? args.body : args.sites;
-  placement.objective = args.robust_dropout ? kRobustObjective : kObjective;
-  for (Eigen::Index j = 0; j < k; ++j) {
-    const int s = result.chosen[static_cast<std::size_t>(j)];
-    layout.entries.col(j) = sites.entries.col(s);
-    visibility.normals.col(j) = sites.visibility->normals.col(s);
-    visibility.cone_half_angle_deg(j) = sites.visibility->cone_half_angle_deg(s);
-    layout.names.push_back(out.site_names[static_cast<std::size_t>(s)]);
-    placement.chosen.push_back(candidate_index(s, n_candidates));
-  }
-  placement.site_points = sites.entries.leftCols(n_candidates);
-  placement.site_normals = sites.visibility->normals.leftCols(n_candidates);
-  for (const design::PlacementStep& s : result.steps) {
-    placement.steps.emplace_back(s.k, s.value.pbar_min);
-  }
-  layout.visibility = std::move(visibility);
-  layout.workspace = sites.workspace;
-  layout.placement = std::move(placement);
+  design::PlacedLayoutRecord record;
+  record.sites = args.sites.empty() ? args.body : args.sites;
+  record.n_candidates = n_candidates;
+  record.robust_dropout = args.robust_dropout;
+  out.layout = design::placed_layout(sites, result, record);
   sdp::LayoutReportOptions options;
   options.visibility.search.certificate_tolerance = args.certificate_tolerance;
   options.visibility.threads = args.threads;
-  out.report = sdp::analyze_layout(layout, options);
+  out.report = sdp::analyze_layout(out.layout, options);
   return out;
 }
 
 std::string failure_message(const design::PlacementResult& result, const PlacedLayout& placed) {
   if (result.status == design::PlacementResult::Status::kIncomplete) {
-    std::string message = result.message + ": the best covers " +
-                          percent(result.value.coverage) + " of the workspace";
+    std::string message = result.message + ": the best covers " + percent(result.value.coverage) +
+                          " of the workspace";
     if (result.covering_markers) {
       message += "; greedy by coverage covers it with " + std::to_string(*result.covering_markers) +
                  " markers";
@@ -130,11 +95,12 @@ Json place_json(const PlaceArgs& args, int n_candidates, int drawn,
                             {"median_pbar_min", r.random_baseline.median_pbar_min}};
   out["steps"] = steps_json(r);
   if (r.robust) {
-    out["robust"] = {{"pbar_min", r.robust->pbar_min},
-                     {"worst_lost_marker", candidate_index(r.robust->worst_lost_marker, n_candidates)},
-                     {"worst_lost_name",
-                      placed.site_names[static_cast<std::size_t>(r.robust->worst_lost_marker)]},
-                     {"coverage", r.robust->coverage}};
+    out["robust"] = {
+        {"pbar_min", r.robust->pbar_min},
+        {"worst_lost_marker", candidate_index(r.robust->worst_lost_marker, n_candidates)},
+        {"worst_lost_name",
+         placed.site_names[static_cast<std::size_t>(r.robust->worst_lost_marker)]},
+        {"coverage", r.robust->coverage}};
   }
   out["swaps"] = r.swaps;
   out["evaluations"] = r.evaluations;
@@ -154,10 +120,10 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
   std::cout << "vantage place: " << args.markers << " markers on "
             << (args.sites.empty() ? args.body : args.sites) << "\n  " << n_candidates
             << " candidate sites";
-  if (args.sites.empty()) std::cout << " (" << drawn << " drawn area-uniformly, seed " << args.seed << ")";
-  std::cout << ", min_visible " << v.min_visible << ", "
-            << (v.with_body ? "cone+mesh" : "cone") << " visibility, search " << r.search
-            << "\n\n";
+  if (args.sites.empty())
+    std::cout << " (" << drawn << " drawn area-uniformly, seed " << args.seed << ")";
+  std::cout << ", min_visible " << v.min_visible << ", " << (v.with_body ? "cone+mesh" : "cone")
+            << " visibility, search " << r.search << "\n\n";
   if (!r.steps.empty()) {
     std::cout << "greedy construction (k markers: coverage, certified p-bar_min, worst error):\n";
     for (const design::PlacementStep& s : r.steps) {
@@ -186,8 +152,8 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
   std::cout << "\n\non its body (the placed layout's analysis, as vantage analyze):\n"
             << "  coverage        " << percent(v.coverage.trackable_fraction) << "\n"
             << "  p-bar_min       " << format_number(v.worst.pbar_min, 6) << "\n"
-            << "  worst error     " << format_number(v.max_worst_case_error_deg, 6)
-            << " deg at " << format_vector(v.worst.viewpoint) << "\n"
+            << "  worst error     " << format_number(v.max_worst_case_error_deg, 6) << " deg at "
+            << format_vector(v.worst.viewpoint) << "\n"
             << "  certificate     " << sdp::to_string(v.worst.status) << " (t in ["
             << format_number(v.worst.t_lower, 9) << ", " << format_number(v.worst.t_upper, 9)
             << "])\n";
