@@ -173,3 +173,8 @@ figures: build
 	xvfb-run -a -s '-screen 0 1600x1200x24' $(BUILD_DIR)/viewer/vantage-viewer \
 	  examples/layouts/satellite.json --screenshot $(FIGURES_DIR)/viewer.png --size 1400x900 \
 	  --view iso --frames 3
+	$(BUILD_DIR)/cli/vantage place examples/bodies/satellite.obj --markers 4 --candidates 200 \
+	  --workspace 0,0,1,60 --cone-deg 80 --out $(BUILD_DIR)/satellite_top.json --overwrite --quiet
+	xvfb-run -a -s '-screen 0 1600x1200x24' $(BUILD_DIR)/viewer/vantage-viewer \
+	  $(BUILD_DIR)/satellite_top.json --place 8 --screenshot $(FIGURES_DIR)/viewer_place.png \
+	  --size 1400x1200 --view top --frames 3

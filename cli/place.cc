@@ -93,18 +93,9 @@ Layout candidate_sites(const PlaceArgs& args, int* drawn) {
     refuse("BODY", args.body + ": " + e.what());
   }
   *drawn = sampled.drawn;
-  Layout sites;
+  Layout sites = design::surface_sites_layout(
+      sampled, mesh, std::filesystem::absolute(args.body).lexically_normal().string());
   sites.name = std::filesystem::path(args.body).stem().string();
-  sites.mode = LayoutMode::kPoints;
-  sites.entries = sampled.points;
-  sites.weights = Eigen::VectorXd::Ones(sampled.points.cols());
-  MarkerVisibility visibility;
-  visibility.normals = sampled.normals;
-  visibility.cone_half_angle_deg =
-      Eigen::VectorXd::Constant(sampled.points.cols(), MarkerVisibility::kDefaultConeDeg);
-  visibility.body = std::move(mesh);
-  visibility.body_path = std::filesystem::absolute(args.body).lexically_normal().string();
-  sites.visibility = std::move(visibility);
   if (!args.input.visibility.body.empty()) {
     refuse("--body", "the positional BODY is the body; --body goes with --sites");
   }

@@ -8,12 +8,6 @@
 namespace vantage::cli {
 namespace {
 
-constexpr const char* kObjective =
-    "every workspace direction trackable, then the largest certified p-bar_min under visibility";
-constexpr const char* kRobustObjective =
-    "every workspace direction trackable, then under the loss of any one marker the largest "
-    "coverage and certified p-bar_min";
-
 double error_deg(double pbar_min) {
   return std::asin(std::sqrt(std::max(0.0, 1.0 - pbar_min * pbar_min))) * kDegreesPerRadian;
 }
@@ -40,49 +34,17 @@ PlacedLayout placed_layout(const PlaceArgs& args, const Layout& sites, int n_can
                            const design::PlacementResult& result) {
   PlacedLayout out;
   for (Eigen::Index i = 0; i < sites.entries.cols(); ++i) {
-    out.site_names.push_back(sites.names.empty() ? "site" + std::to_string(i)
-                                                 : sites.entry_name(i));
+    out.site_names.push_back(design::site_name(sites, static_cast<int>(i)));
   }
-  Layout& layout = out.layout;
-  layout.name = sites.name.empty() ? "placed" : sites.name + " (placed)";
-  layout.description = "vantage place: " + std::to_string(args.markers) + " of " +
-                       std::to_string(n_candidates) + " sites";
-  layout.mode = LayoutMode::kPoints;
-  const Eigen::Index k = static_cast<Eigen::Index>(result.chosen.size());
-  layout.entries.resize(3, k);
-  layout.weights = Eigen::VectorXd::Ones(k);
-  MarkerVisibility visibility;
-  visibility.normals.resize(3, k);
-  visibility.cone_half_angle_deg.resize(k);
-  visibility.min_visible = sites.visibility->min_visible;
-  visibility.body_path = sites.visibility->body_path;
-  visibility.body = sites.visibility->body;
-  LayoutPlacement placement;
-  placement.sites = args.sites.empty() ? args.body : args.sites;
-  placement.objective = args.robust_dropout ? kRobustObjective : kObjective;
-  for (Eigen::Index j = 0; j < k; ++j) {
-    const int s = result.chosen[static_cast<std::size_t>(j)];
-    layout.entries.col(j) = sites.entries.col(s);
-    visibility.normals.col(j) = sites.visibility->normals.col(s);
-    visibility.cone_half_angle_deg(j) = sites.visibility->cone_half_angle_deg(s);
-    layout.names.push_back(out.site_names[static_cast<std::size_t>(s)]);
-    placement.chosen.push_back(candidate_index(s, n_candidates));
-  }
-  placement.site_points = sites.entries.leftCols(n_candidates);
-  placement.site_normals = sites.visibility->normals.leftCols(n_candidates);
-  for (const design::PlacementStep& s : result.steps) {
-    placement.steps.push_back({s.k, s.value.pbar_min, s.value.coverage});
-  }
-  placement.random_trials = result.random_baseline.trials;
-  placement.random_best_pbar_min = result.random_baseline.best_pbar_min;
-  placement.random_median_pbar_min = result.random_baseline.median_pbar_min;
-  layout.visibility = std::move(visibility);
-  layout.workspace = sites.workspace;
-  layout.placement = std::move(placement);
+  design::PlacedLayoutRecord record;
+  record.sites = args.sites.empty() ? args.body : args.sites;
+  record.n_candidates = n_candidates;
+  record.robust_dropout = args.robust_dropout;
+  out.layout = design::placed_layout(sites, result, record);
   sdp::LayoutReportOptions options;
   options.visibility.search.certificate_tolerance = args.certificate_tolerance;
   options.visibility.threads = args.threads;
-  out.report = sdp::analyze_layout(layout, options);
+  out.report = sdp::analyze_layout(out.layout, options);
   return out;
 }
 

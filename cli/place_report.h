@@ -11,6 +11,7 @@
 #include "layout_input.h"
 #include "vantage/analysis/layout.h"
 #include "vantage/design/placement.h"
+#include "vantage/design/placement_layout.h"
 #include "vantage/sdp/layout_report.h"
 
 namespace vantage::cli {

@@ -44,6 +44,10 @@ TEST(ViewerCli, BadOptionsNameTheOption) {
   expect_refused(run_viewer("env -u DISPLAY", "--pin 0,0,0", scratch), "--pin");
   expect_refused(run_viewer("env -u DISPLAY", "--pin 1,2", scratch), "--pin");
   expect_refused(run_viewer("env -u DISPLAY", "--pin 1,2,nan", scratch), "--pin");
+  expect_refused(run_viewer("env -u DISPLAY", "--place 2", scratch), "--place");
+  // The default layout (the triad) has no body to place markers on.
+  expect_refused(run_viewer("env -u DISPLAY", "--place 4", scratch), "--place");
+  expect_refused(run_viewer("env -u DISPLAY", "--candidates 0", scratch), "--candidates");
 }
 
 TEST(ViewerCli, NoDisplayIsAFailureNotACrash) {

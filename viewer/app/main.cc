@@ -1,5 +1,5 @@
 // vantage-viewer [LAYOUT] [--screenshot FILE.png [--frames N]] [--size WxH] [--view NAME]
-//                [--pin AX,AY,AZ]
+//                [--pin AX,AY,AZ] [--place K [--candidates N]]
 //
 // The interactive viewer (GLFW + Dear ImGui). Exit status: 0 done, 2 bad input or usage (one
 // line on stderr naming the file, field or option), 1 failure (no display or OpenGL context,
@@ -78,6 +78,17 @@ int main(int argc, char** argv) {
   cli.add_option("--timeout", options.timeout_seconds,
                  "with --screenshot: seconds to wait for the analysis (>= 1)")
       ->check(CLI::Range(1, 86400));
+  int place = 0;
+  vantage::viewer::PlaceSettings place_settings;
+  cli.add_option("--place", place,
+                 "at start-up, place K markers on the layout's body (as the design panel's "
+                 "button; the layout needs normals and a body mesh); with --screenshot the PNG "
+                 "shows the placed layout")
+      ->check(CLI::Range(3, 200));
+  cli.add_option("--candidates", place_settings.candidates,
+                 "with --place: sites sampled on the body")
+      ->check(CLI::Range(1, 20000))
+      ->capture_default_str();
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -117,5 +128,12 @@ int main(int argc, char** argv) {
   }
   vantage::viewer::ViewerSession session(std::move(*document));
   if (!pin.empty()) session.pinned_viewpoint = pinned;
+  if (place > 0) {
+    place_settings.markers = place;
+    if (!session.place_markers(place_settings)) {
+      std::cerr << "vantage-viewer: --place: " << session.message() << "\n";
+      return 2;
+    }
+  }
   return vantage::viewer::app::run_window(session, options);
 }

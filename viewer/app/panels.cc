@@ -69,8 +69,30 @@ void Panels::design_panel(ViewerSession& session) {
     ImGui::PopStyleColor();
   }
   ImGui::Separator();
+  if (!is_on_body(layout)) {
+    analysis_tab(session);
+    return;
+  }
+  // A placement that starts (the button, or --place at start-up) brings its tab to the front.
+  const bool placing = session.placing();
+  const bool bring_place = placing && !was_placing_;
+  was_placing_ = placing;
+  if (!ImGui::BeginTabBar("design tabs")) return;
+  if (ImGui::BeginTabItem("Analysis")) {
+    analysis_tab(session);
+    ImGui::EndTabItem();
+  }
+  if (ImGui::BeginTabItem("Place markers", nullptr,
+                          bring_place ? ImGuiTabItemFlags_SetSelected : 0)) {
+    placement_panel(session);
+    ImGui::EndTabItem();
+  }
+  ImGui::EndTabBar();
+}
+
+void Panels::analysis_tab(ViewerSession& session) {
   analysis_summary(session);
-  if (layout.visibility) {
+  if (session.layout().visibility) {
     ImGui::Separator();
     visibility_editor(session);
   }

@@ -2,9 +2,9 @@
 
 // The panel column of vantage-viewer: the layout and design panel (augmenter, undo, edit,
 // remove, load/save, p_bar_min, certificate, ceiling, coplanarity; for markers on a body the
-// answer with visibility first, and the cone and min_visible editors), the viewpoint readout
-// (p_i, p_bar, Eq. 26 errors; the markers the viewpoint sees) and the Eq. (26) error surface with
-// the current viewpoint on it.
+// answer with visibility first, and the cone and min_visible editors, and placing K markers on the
+// body), the viewpoint readout (p_i, p_bar, Eq. 26 errors; the markers the viewpoint sees) and the
+// Eq. (26) error surface with the current viewpoint on it.
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -30,9 +30,11 @@ class Panels {
 
  private:
   void design_panel(ViewerSession& session);
+  void analysis_tab(ViewerSession& session);
   void analysis_summary(const ViewerSession& session);
   void visibility_summary(const AnalysisSnapshot& snapshot);
   void visibility_editor(ViewerSession& session);
+  void placement_panel(ViewerSession& session);
   void visibility_readout(const ViewerSession& session, const Eigen::Vector3d& a);
   void entry_editor(ViewerSession& session);
   void readout_panel(const ViewerSession& session, const std::optional<Eigen::Vector3d>& hovered);
@@ -56,6 +58,9 @@ class Panels {
   std::uint64_t visibility_revision_ = 0;  // the revision the two fields below were read from
   double cone_edit_ = 0.0;
   int min_visible_edit_ = 3;
+  bool was_placing_ = false;                          // placing on the previous frame
+  PlaceSettings place_settings_;                      // the placement controls
+  std::uint64_t place_revision_ = ~std::uint64_t{0};  // the revision K was last read from
 };
 
 }  // namespace vantage::viewer::app

@@ -113,7 +113,8 @@ int run_window(ViewerSession& session, const WindowOptions& options) {
               .count());
     }
     if (screenshot) {
-      const bool ready = session.analysis_current() && !session.augmenting() && !view_pending;
+      const bool ready = session.analysis_current() && !session.augmenting() &&
+                         !session.placing() && !view_pending;
       if (ready && ++frames_ready >= options.frames) {
         if (!save_framebuffer_png(options.screenshot_path, fb_width, fb_height)) {
           std::cerr << "vantage-viewer: " << options.screenshot_path << ": cannot write PNG\n";
@@ -132,7 +133,7 @@ int run_window(ViewerSession& session, const WindowOptions& options) {
       const double waited =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (!ready && waited > options.timeout_seconds) {
-        std::cerr << "vantage-viewer: the analysis did not finish within --timeout\n";
+        std::cerr << "vantage-viewer: the analysis or placement did not finish within --timeout\n";
         status = 1;
         break;
       }

@@ -62,7 +62,7 @@ AnalysisWorker::~AnalysisWorker() {
 void AnalysisWorker::request_analysis(const Layout& layout, std::uint64_t revision) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    pending_analysis_ = Request{layout, revision};
+    pending_analysis_ = Request{layout, revision, {}};
     newest_analysis_revision_ = revision;
   }
   changed_.notify_all();
@@ -71,7 +71,16 @@ void AnalysisWorker::request_analysis(const Layout& layout, std::uint64_t revisi
 void AnalysisWorker::request_augment(const Layout& layout, std::uint64_t revision) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    pending_augment_ = Request{layout, revision};
+    pending_augment_ = Request{layout, revision, {}};
+  }
+  changed_.notify_all();
+}
+
+void AnalysisWorker::request_place(const Layout& layout, std::uint64_t revision,
+                                   const PlaceSettings& settings) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    pending_place_ = Request{layout, revision, settings};
   }
   changed_.notify_all();
 }
@@ -90,40 +99,71 @@ std::optional<AugmentOutcome> AnalysisWorker::take_augment() {
   return out;
 }
 
+std::optional<PlaceOutcome> AnalysisWorker::take_place() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::optional<PlaceOutcome> out = std::move(finished_place_);
+  finished_place_.reset();
+  return out;
+}
+
+std::string AnalysisWorker::place_progress() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return place_progress_;
+}
+
 bool AnalysisWorker::busy() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  return running_ || pending_analysis_ || pending_augment_;
+  return running_ || any_pending();
 }
 
 bool AnalysisWorker::wait_idle(std::chrono::milliseconds timeout) const {
   std::unique_lock<std::mutex> lock(mutex_);
-  return changed_.wait_for(lock, timeout,
-                           [this] { return !running_ && !pending_analysis_ && !pending_augment_; });
+  return changed_.wait_for(lock, timeout, [this] { return !running_ && !any_pending(); });
+}
+
+AnalysisWorker::Job AnalysisWorker::next_job(Request* request) {
+  // Analyses first: the UI waits for them; an augmenter step takes several global solves, and a
+  // placement many more.
+  std::optional<Request>* pending = &pending_place_;
+  Job job = Job::kPlace;
+  if (pending_analysis_) {
+    pending = &pending_analysis_;
+    job = Job::kAnalysis;
+  } else if (pending_augment_) {
+    pending = &pending_augment_;
+    job = Job::kAugment;
+  }
+  *request = std::move(**pending);
+  pending->reset();
+  return job;
 }
 
 void AnalysisWorker::run() {
   std::unique_lock<std::mutex> lock(mutex_);
   while (true) {
-    changed_.wait(lock, [this] { return stop_ || pending_analysis_ || pending_augment_; });
+    changed_.wait(lock, [this] { return stop_ || any_pending(); });
     if (stop_) return;
-    // Analyses first: the UI waits for them; an augmenter step takes several global solves.
-    const bool analysis = pending_analysis_.has_value();
-    Request request = analysis ? std::move(*pending_analysis_) : std::move(*pending_augment_);
-    if (analysis) {
-      pending_analysis_.reset();
-    } else {
-      pending_augment_.reset();
-    }
+    Request request;
+    const Job job = next_job(&request);
     running_ = true;
     lock.unlock();
-    if (analysis) {
+    if (job == Job::kAnalysis) {
       AnalysisSnapshot snapshot = analyze_layout(request.layout, request.revision);
       lock.lock();
       if (snapshot.revision >= newest_analysis_revision_) finished_analysis_ = std::move(snapshot);
-    } else {
+    } else if (job == Job::kAugment) {
       AugmentOutcome outcome = augment_once(request.layout, request.revision);
       lock.lock();
       finished_augment_ = std::move(outcome);
+    } else {
+      PlaceOutcome outcome = place_on_body(request.layout, request.revision, request.settings,
+                                           [this](const std::string& stage) {
+                                             std::lock_guard<std::mutex> progress_lock(mutex_);
+                                             place_progress_ = stage;
+                                           });
+      lock.lock();
+      place_progress_.clear();
+      finished_place_ = std::move(outcome);
     }
     running_ = false;
     changed_.notify_all();

@@ -154,6 +154,22 @@ bool ViewerSession::step_augmenter() {
   return true;
 }
 
+bool ViewerSession::place_markers(const PlaceSettings& settings) {
+  if (!is_on_body(layout())) {
+    fail("place: the layout has no body mesh (load a layout with normals and a body)");
+    return false;
+  }
+  if (place_requested_) {
+    fail("place: a placement is already running");
+    return false;
+  }
+  place_requested_ = true;
+  inform("place: choosing " + std::to_string(settings.markers) + " of " +
+         std::to_string(settings.candidates) + " sites on the body...");
+  worker_.request_place(document_.layout(), document_.revision(), settings);
+  return true;
+}
+
 bool ViewerSession::poll() {
   bool any = false;
   if (std::optional<AnalysisSnapshot> snapshot = worker_.take_analysis()) {
@@ -163,33 +179,77 @@ bool ViewerSession::poll() {
   if (std::optional<AugmentOutcome> outcome = worker_.take_augment()) {
     augment_requested_ = false;
     any = true;
-    if (!outcome->error.empty()) {
-      fail("augmenter: " + outcome->error);
-    } else if (outcome->revision != document_.revision()) {
-      fail("augmenter: the layout changed while it ran; step discarded");
-    } else {
-      try {
-        document_.replace(std::move(outcome->augmented));
-      } catch (const std::exception& e) {
-        fail(std::string("augmenter: its layout was refused: ") + e.what());
-        return any;
-      }
-      std::ostringstream note;
-      note.precision(4);
-      note << "added " << outcome->step.added.transpose() << " in " << outcome->seconds
-           << " s: " << outcome->step.note;
-      inform(note.str());
-      changed();
-    }
+    if (!apply_augment(std::move(*outcome))) return any;
+  }
+  if (std::optional<PlaceOutcome> outcome = worker_.take_place()) {
+    place_requested_ = false;
+    any = true;
+    apply_place(std::move(*outcome));
   }
   return any;
+}
+
+bool ViewerSession::apply_augment(AugmentOutcome outcome) {
+  if (!outcome.error.empty()) {
+    fail("augmenter: " + outcome.error);
+    return true;
+  }
+  if (outcome.revision != document_.revision()) {
+    fail("augmenter: the layout changed while it ran; step discarded");
+    return true;
+  }
+  try {
+    document_.replace(std::move(outcome.augmented));
+  } catch (const std::exception& e) {
+    fail(std::string("augmenter: its layout was refused: ") + e.what());
+    return false;
+  }
+  std::ostringstream note;
+  note.precision(4);
+  note << "added " << outcome.step.added.transpose() << " in " << outcome.seconds
+       << " s: " << outcome.step.note;
+  inform(note.str());
+  changed();
+  return true;
+}
+
+bool ViewerSession::apply_place(PlaceOutcome outcome) {
+  placement_ = std::move(outcome);
+  PlaceOutcome& out = *placement_;
+  if (!out.error.empty()) {
+    fail("place: " + out.error);
+    return false;
+  }
+  if (out.result.status != design::PlacementResult::Status::kComplete) {
+    fail("place: incomplete: " + out.result.message + "; the layout is kept");
+    return false;
+  }
+  if (out.revision != document_.revision()) {
+    fail("place: the layout changed while it ran; placement discarded");
+    return false;
+  }
+  try {
+    document_.replace(out.placed);
+  } catch (const std::exception& e) {
+    fail(std::string("place: its layout was refused: ") + e.what());
+    return false;
+  }
+  std::ostringstream note;
+  note.precision(4);
+  note << "placed " << out.result.chosen.size() << " of " << out.n_candidates << " sites ("
+       << out.result.search << ") in " << out.seconds << " s (Undo returns to the previous layout)";
+  inform(note.str());
+  selected = -1;
+  pinned_viewpoint.reset();
+  changed();
+  return true;
 }
 
 bool ViewerSession::wait_until_current(std::chrono::milliseconds timeout) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   while (true) {
     poll();
-    if (analysis_current() && !augment_requested_) return true;
+    if (analysis_current() && !augment_requested_ && !place_requested_) return true;
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
         deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) return false;

@@ -3,8 +3,8 @@
 /// The viewer's global analysis, off the UI thread.
 ///
 /// The viewer computes nothing itself: analyze_layout() calls sdp::analyze_layout() — the same
-/// call as `vantage analyze` — and augment_once() calls design::augment_layout for one greedy
-/// step. AnalysisWorker runs
+/// call as `vantage analyze` — augment_once() calls design::augment_layout for one greedy
+/// step, and place_on_body() calls design::place_markers on the body. AnalysisWorker runs
 /// them on one background thread. Each request carries the document revision it was made for;
 /// a newer request replaces a pending one, and a finished result whose revision is older than the
 /// newest request is dropped, so the UI only ever receives results for what it last asked.
@@ -20,6 +20,7 @@
 #include "vantage/analysis/layout.h"
 #include "vantage/design/augment.h"
 #include "vantage/sdp/layout_report.h"
+#include "vantage/viewer/body_placement.h"
 
 namespace vantage::viewer {
 
@@ -60,10 +61,19 @@ class AnalysisWorker {
   /// Asks for augment_once(layout, revision); replaces a pending augment request.
   void request_augment(const Layout& layout, std::uint64_t revision);
 
+  /// Asks for place_on_body(layout, revision, settings); replaces a pending placement request.
+  void request_place(const Layout& layout, std::uint64_t revision, const PlaceSettings& settings);
+
   /// The newest finished analysis not taken yet, if any.
   std::optional<AnalysisSnapshot> take_analysis();
   /// The finished augmenter step not taken yet, if any.
   std::optional<AugmentOutcome> take_augment();
+
+  /// The finished placement not taken yet, if any.
+  std::optional<PlaceOutcome> take_place();
+  /// The stage the running placement last reported ("occlusion grid", "greedy 3/12", ...), or
+  /// empty when none runs.
+  std::string place_progress() const;
 
   /// True while a request is pending or running.
   bool busy() const;
@@ -74,16 +84,23 @@ class AnalysisWorker {
   struct Request {
     Layout layout;
     std::uint64_t revision = 0;
+    PlaceSettings settings;  // placement requests only
   };
+  enum class Job { kAnalysis, kAugment, kPlace };
+  bool any_pending() const { return pending_analysis_ || pending_augment_ || pending_place_; }
+  Job next_job(Request* request);
   void run();
 
   mutable std::mutex mutex_;
   mutable std::condition_variable changed_;
   std::optional<Request> pending_analysis_;
   std::optional<Request> pending_augment_;
+  std::optional<Request> pending_place_;
   std::uint64_t newest_analysis_revision_ = 0;
   std::optional<AnalysisSnapshot> finished_analysis_;
   std::optional<AugmentOutcome> finished_augment_;
+  std::optional<PlaceOutcome> finished_place_;
+  std::string place_progress_;
   bool running_ = false;
   bool stop_ = false;
   std::thread thread_;  // last: starts after the members above exist

@@ -1,10 +1,10 @@
 #pragma once
 
 /// The state of one vantage-viewer window, without the window: the layout document, the camera,
-/// the selection, the pinned viewpoint, the latest analysis and the augmenter, wired to the
-/// background AnalysisWorker; for markers on a body (docs/math.md §20) also the visibility model
-/// that says which markers a viewpoint sees. The drawing code (viewer/app) reads it and calls its
-/// actions; the tests drive it directly.
+/// the selection, the pinned viewpoint, the latest analysis, the augmenter and the placement on a
+/// body, wired to the background AnalysisWorker; for markers on a body (docs/math.md §20) also the
+/// visibility model that says which markers a viewpoint sees. The drawing code (viewer/app) reads
+/// it and calls its actions; the tests drive it directly.
 
 #include <Eigen/Core>
 #include <chrono>
@@ -61,6 +61,12 @@ class ViewerSession {
   /// True while an analysis or augmenter step runs or waits in the worker.
   bool working() const { return worker_.busy(); }
   bool augmenting() const { return augment_requested_; }
+  /// True from place_markers() until its outcome is taken by poll().
+  bool placing() const { return place_requested_; }
+  /// The stage the running placement reported last, or empty.
+  std::string place_progress() const { return worker_.place_progress(); }
+  /// The last placement outcome received (its steps, baseline and final value), if any.
+  const std::optional<PlaceOutcome>& placement() const { return placement_; }
 
   /// The last message for the user (an error of an action, or what the augmenter did).
   const std::string& message() const { return message_; }
@@ -92,10 +98,17 @@ class ViewerSession {
   /// layout with marker normals: the augmenter adds markers without a normal.
   bool step_augmenter();
 
+  /// Asks the worker to place settings.markers markers on the layout's body (place_on_body,
+  /// docs/math.md §21). poll() replaces the layout by the placed one (one undo step) when the
+  /// result is complete and the layout has not changed meanwhile; an incomplete result or an
+  /// error leaves the layout as it is, with a message. Refused (false, with a message) for a
+  /// layout without a body mesh, or while a placement runs.
+  bool place_markers(const PlaceSettings& settings);
+
   /// Takes finished work from the worker (call once per frame). True when anything changed.
   bool poll();
-  /// Polls until the current revision's analysis (and any augmenter step) has arrived or `timeout`
-  /// passes; true on success. For tests and screenshots.
+  /// Polls until the current revision's analysis (and any augmenter step or placement) has arrived
+  /// or `timeout` passes; true on success. For tests and screenshots.
   bool wait_until_current(std::chrono::milliseconds timeout);
 
   /// Camera placement for a preset; kWorst/kPaper need a current analysis (else: unchanged,
@@ -112,6 +125,8 @@ class ViewerSession {
   void changed();
   void fail(const std::string& what);
   void inform(const std::string& what);
+  bool apply_augment(AugmentOutcome outcome);
+  bool apply_place(PlaceOutcome outcome);
 
   LayoutDocument document_;
   DataVectors data_;
@@ -120,6 +135,8 @@ class ViewerSession {
   std::optional<VisibilityShading> visibility_shading_;
   std::optional<AnalysisSnapshot> analysis_;
   bool augment_requested_ = false;
+  bool place_requested_ = false;
+  std::optional<PlaceOutcome> placement_;
   std::string message_;
   bool message_is_error_ = false;
   AnalysisWorker worker_;  // last: its thread stops before the members above go

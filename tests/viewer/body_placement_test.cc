@@ -1,0 +1,168 @@
+#include "vantage/viewer/body_placement.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "support/eigen_testing.h"
+#include "vantage/design/placement.h"
+#include "vantage/sdp/visibility_model.h"
+#include "vantage/viewer/viewer_session.h"
+
+namespace vantage::viewer {
+namespace {
+
+constexpr auto kPlaceWait = std::chrono::seconds(600);  // generous: the machine is shared
+constexpr double kConeDeg = 80.0;
+// The session and the direct call run the same deterministic code on the same doubles.
+constexpr double kExact = 0.0;
+
+// A unit cube centred at the origin, wound outward.
+Mesh cube() {
+  Mesh mesh;
+  mesh.vertices.resize(3, 8);
+  for (int i = 0; i < 8; ++i) {
+    mesh.vertices.col(i) =
+        Eigen::Vector3d((i & 1) - 0.5, ((i >> 1) & 1) - 0.5, ((i >> 2) & 1) - 0.5);
+  }
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  mesh.triangles.resize(3, 12);
+  for (int q = 0; q < 6; ++q) {
+    const int* v = quads[q];
+    mesh.triangles.col(2 * q) << v[0], v[1], v[2];
+    mesh.triangles.col(2 * q + 1) << v[0], v[2], v[3];
+  }
+  return mesh;
+}
+
+// Four markers on the cube's top face, seen from a 30-degree cap around +z (or, without the
+// workspace, from the whole sphere: no four sites with 80-degree cones cover it).
+Layout cube_layout(bool cap) {
+  Layout layout;
+  layout.name = "cube";
+  layout.mode = LayoutMode::kPoints;
+  layout.entries.resize(3, 4);
+  layout.entries << 0.3, -0.3, 0.2, -0.1, 0.3, 0.1, -0.3, -0.2, 0.5, 0.5, 0.5, 0.5;
+  layout.weights = Eigen::VectorXd::Ones(4);
+  MarkerVisibility visibility;
+  visibility.normals = Eigen::Vector3d::UnitZ().replicate(1, 4);
+  visibility.cone_half_angle_deg = Eigen::VectorXd::Constant(4, kConeDeg);
+  visibility.body = cube();
+  layout.visibility = visibility;
+  if (cap) layout.workspace = LayoutWorkspace{Eigen::Vector3d::UnitZ(), 30.0};
+  layout.validate();
+  return layout;
+}
+
+PlaceSettings small_settings() {
+  PlaceSettings settings;
+  settings.markers = 4;
+  settings.candidates = 40;
+  settings.random_trials = 50;
+  settings.seed = 7;
+  return settings;
+}
+
+// The truth: the library's own calls on the same inputs, as `vantage place` makes them.
+design::PlacementResult direct_placement(const Layout& layout, const PlaceSettings& settings,
+                                         Eigen::Matrix3Xd* points, Eigen::Matrix3Xd* normals) {
+  const design::SurfaceSites sampled = design::sample_surface_sites(
+      *layout.visibility->body, settings.candidates, settings.min_separation, settings.seed);
+  Layout sites = layout;
+  sites.entries = sampled.points;
+  sites.weights = Eigen::VectorXd::Ones(sampled.points.cols());
+  sites.visibility->normals = sampled.normals;
+  sites.visibility->cone_half_angle_deg =
+      Eigen::VectorXd::Constant(sampled.points.cols(), kConeDeg);
+  const sdp::VisibilityModel model = sdp::VisibilityModel::of(sites);
+  design::PlacementProblem problem;
+  problem.sites = model.problem();
+  problem.markers = settings.markers;
+  design::PlaceOptions options;
+  options.random_trials = settings.random_trials;
+  options.seed = settings.seed;
+  *points = sampled.points;
+  *normals = sampled.normals;
+  return design::place_markers(problem, options);
+}
+
+TEST(BodyPlacement, SessionPlacesTheLibrarysChoiceAndReanalyses) {
+  const Layout layout = cube_layout(true);
+  const PlaceSettings settings = small_settings();
+  Eigen::Matrix3Xd points;
+  Eigen::Matrix3Xd normals;
+  const design::PlacementResult truth = direct_placement(layout, settings, &points, &normals);
+  ASSERT_EQ(truth.status, design::PlacementResult::Status::kComplete);
+  ASSERT_EQ(truth.chosen.size(), 4u);
+
+  ViewerSession session{LayoutDocument(layout, "")};
+  ASSERT_TRUE(session.wait_until_current(kPlaceWait));
+  const std::size_t undo_before = session.document().undo_depth();
+  ASSERT_TRUE(session.place_markers(settings));
+  EXPECT_TRUE(session.placing());
+  EXPECT_FALSE(session.place_markers(settings));  // one placement at a time
+  ASSERT_TRUE(session.wait_until_current(kPlaceWait));
+  ASSERT_FALSE(session.placing());
+  ASSERT_TRUE(session.placement());
+  EXPECT_EQ(session.placement()->error, "");
+  EXPECT_EQ(session.placement()->result.chosen, truth.chosen);
+  EXPECT_EQ(session.placement()->result.value.pbar_min, truth.value.pbar_min);
+
+  const Layout& placed = session.layout();
+  ASSERT_EQ(placed.entries.cols(), settings.markers);
+  ASSERT_TRUE(placed.visibility && placed.visibility->body && placed.workspace && placed.placement);
+  for (int j = 0; j < settings.markers; ++j) {
+    const int s = truth.chosen[static_cast<std::size_t>(j)];
+    EXPECT_EIGEN_NEAR(placed.entries.col(j), points.col(s), kExact);
+    EXPECT_EIGEN_NEAR(placed.visibility->normals.col(j), normals.col(s), kExact);
+    EXPECT_EQ(placed.placement->chosen[static_cast<std::size_t>(j)], s);
+  }
+  EXPECT_EQ(placed.placement->site_points.cols(), settings.candidates);
+  EXPECT_EQ(placed.placement->steps.size(), truth.steps.size());
+  EXPECT_EQ(session.document().undo_depth(), undo_before + 1);
+  // The analysis that follows is of the placed layout, as on loading it.
+  ASSERT_TRUE(session.analysis_current());
+  ASSERT_TRUE(session.analysis()->visibility);
+  EXPECT_EQ(session.analysis()->layout.entries.cols(), settings.markers);
+  ASSERT_NE(session.visibility(), nullptr);
+}
+
+TEST(BodyPlacement, IncompleteResultLeavesTheLayout) {
+  const Layout layout = cube_layout(false);
+  const PlaceSettings settings = small_settings();
+  Eigen::Matrix3Xd points;
+  Eigen::Matrix3Xd normals;
+  const design::PlacementResult truth = direct_placement(layout, settings, &points, &normals);
+  ASSERT_EQ(truth.status, design::PlacementResult::Status::kIncomplete);
+
+  ViewerSession session{LayoutDocument(layout, "")};
+  ASSERT_TRUE(session.wait_until_current(kPlaceWait));
+  const std::uint64_t revision = session.document().revision();
+  ASSERT_TRUE(session.place_markers(settings));
+  ASSERT_TRUE(session.wait_until_current(kPlaceWait));
+  ASSERT_TRUE(session.placement());
+  EXPECT_EQ(session.placement()->result.status, design::PlacementResult::Status::kIncomplete);
+  EXPECT_EQ(session.placement()->result.chosen, truth.chosen);
+  EXPECT_TRUE(session.message_is_error());
+  EXPECT_NE(session.message().find("incomplete"), std::string::npos);
+  EXPECT_EQ(session.document().revision(), revision);
+  EXPECT_EIGEN_NEAR(session.layout().entries, layout.entries, kExact);
+  EXPECT_FALSE(session.layout().placement);
+}
+
+TEST(BodyPlacement, RefusedWithoutABody) {
+  Layout layout = cube_layout(true);
+  layout.visibility->body.reset();
+  ViewerSession session{LayoutDocument(layout, "")};
+  EXPECT_FALSE(session.place_markers(small_settings()));
+  EXPECT_TRUE(session.message_is_error());
+  EXPECT_FALSE(session.placing());
+  const PlaceOutcome outcome = place_on_body(layout, 0, small_settings());
+  EXPECT_NE(outcome.error.find("body"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace vantage::viewer
