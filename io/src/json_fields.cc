@@ -202,4 +202,10 @@ std::string read_string(const nlohmann::json& value, const std::string& source,
   return value.get<std::string>();
 }
 
+nlohmann::json vector_rows(const Eigen::Matrix3Xd& m) {
+  nlohmann::json list = nlohmann::json::array();
+  for (Eigen::Index j = 0; j < m.cols(); ++j) list.push_back({m(0, j), m(1, j), m(2, j)});
+  return list;
+}
+
 }  // namespace vantage::io::internal

@@ -35,4 +35,7 @@ Eigen::VectorXd read_numbers(const nlohmann::json& value, const std::string& sou
 std::string read_string(const nlohmann::json& value, const std::string& source,
                         const std::string& field);
 
+/// The columns of `m` as a list of [x, y, z] rows, as every layout file writes them.
+nlohmann::json vector_rows(const Eigen::Matrix3Xd& m);
+
 }  // namespace vantage::io::internal

@@ -4,9 +4,9 @@
 #include <vector>
 
 #include "json_fields.h"
+#include "placement_fields.h"
 #include "vantage/analysis/common.h"
 #include "vantage/io/printable.h"
-#include "placement_fields.h"
 #include "visibility_fields.h"
 
 namespace vantage::io {
@@ -29,9 +29,10 @@ std::vector<std::string> read_names(const nlohmann::json& value, const std::stri
 
 Layout parse_layout(std::string_view text, const std::string& source) {
   const nlohmann::json root = internal::parse_object(text, source);
-  internal::reject_unknown_fields(root, source,
-                                  {"name", "description", "vectors", "points", "names", "weights",
-                                   "candidates", "normals", "visibility", "workspace", "placement"});
+  internal::reject_unknown_fields(
+      root, source,
+      {"name", "description", "vectors", "points", "names", "weights", "candidates", "normals",
+       "visibility", "workspace", "placement"});
   const bool has_vectors = root.contains("vectors");
   const bool has_points = root.contains("points");
   if (has_vectors == has_points) {
@@ -71,19 +72,14 @@ Layout read_layout(const std::string& path, std::size_t max_bytes) {
 }
 
 std::string layout_to_json(const Layout& layout) {
-  auto rows = [](const Eigen::Matrix3Xd& m) {
-    nlohmann::json list = nlohmann::json::array();
-    for (Eigen::Index j = 0; j < m.cols(); ++j) list.push_back({m(0, j), m(1, j), m(2, j)});
-    return list;
-  };
   nlohmann::ordered_json out;
   out["name"] = layout.name;
   if (!layout.description.empty()) out["description"] = layout.description;
-  out[layout.entries_field()] = rows(layout.entries);
+  out[layout.entries_field()] = internal::vector_rows(layout.entries);
   if (!layout.names.empty()) out["names"] = layout.names;
   out["weights"] =
       std::vector<double>(layout.weights.data(), layout.weights.data() + layout.weights.size());
-  if (layout.candidates.cols() > 0) out["candidates"] = rows(layout.candidates);
+  if (layout.candidates.cols() > 0) out["candidates"] = internal::vector_rows(layout.candidates);
   internal::write_visibility(layout, &out);
   internal::write_placement(layout, &out);
   // Names read from CSV or YAML files may not be UTF-8 (JSON requires it): such bytes are

@@ -7,12 +7,6 @@
 namespace vantage::io::internal {
 namespace {
 
-nlohmann::ordered_json rows(const Eigen::Matrix3Xd& m) {
-  nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  for (Eigen::Index j = 0; j < m.cols(); ++j) list.push_back({m(0, j), m(1, j), m(2, j)});
-  return list;
-}
-
 void read_random_baseline(const nlohmann::json& b, const std::string& source,
                           LayoutPlacement* out) {
   const std::string field = "placement.random_baseline";
@@ -110,8 +104,8 @@ void write_placement(const Layout& layout, nlohmann::ordered_json* out) {
                                 {"best_pbar_min", p.random_best_pbar_min},
                                 {"median_pbar_min", p.random_median_pbar_min}};
   }
-  block["site_points"] = rows(p.site_points);
-  block["site_normals"] = rows(p.site_normals);
+  block["site_points"] = vector_rows(p.site_points);
+  block["site_normals"] = vector_rows(p.site_normals);
   (*out)["placement"] = block;
 }
 

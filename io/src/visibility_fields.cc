@@ -26,12 +26,6 @@ Eigen::VectorXd read_cones(const nlohmann::json& value, const std::string& sourc
   return read_numbers(value, source, field);
 }
 
-nlohmann::json rows(const Eigen::Matrix3Xd& m) {
-  nlohmann::json list = nlohmann::json::array();
-  for (Eigen::Index j = 0; j < m.cols(); ++j) list.push_back({m(0, j), m(1, j), m(2, j)});
-  return list;
-}
-
 }  // namespace
 
 std::optional<MarkerVisibility> read_visibility(const nlohmann::json& root,
@@ -88,7 +82,7 @@ std::optional<LayoutWorkspace> read_workspace(const nlohmann::json& root,
 void write_visibility(const Layout& layout, nlohmann::ordered_json* out) {
   if (layout.visibility) {
     const MarkerVisibility& v = *layout.visibility;
-    (*out)["normals"] = rows(v.normals);
+    (*out)["normals"] = vector_rows(v.normals);
     nlohmann::ordered_json block;
     const Eigen::VectorXd& cones = v.cone_half_angle_deg;
     if (cones.size() > 0 && (cones.array() == cones(0)).all()) {
