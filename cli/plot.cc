@@ -12,10 +12,12 @@
 #include <regex>
 
 #include "command.h"
+#include "crb_input.h"
 #include "figure_output.h"
 #include "layout_input.h"
 #include "vantage/analysis/common.h"
 #include "vantage/io/text_file.h"
+#include "vantage/plot/crb_figures.h"
 #include "vantage/plot/experiment_figures.h"
 #include "vantage/plot/layout_figures.h"
 
@@ -34,6 +36,8 @@ struct PlotArgs {
   std::string design;
   std::string title;
   std::string experiment;
+  bool crb = false;
+  CrbCameraArgs camera;
   bool json = false;
 };
 
@@ -109,6 +113,7 @@ std::string joined(const std::vector<std::string>& names) {
 
 int run_experiment_plot(const PlotArgs& args) {
   if (!args.file.empty()) bad("LAYOUT: not allowed with --experiment");
+  if (args.crb) bad("--crb: not allowed with --experiment");
   if (!args.only.empty() || !args.design.empty()) {
     bad("--only/--design: not allowed with --experiment");
   }
@@ -150,9 +155,86 @@ int run_experiment_plot(const PlotArgs& args) {
   return kExitOk;
 }
 
+// The camera options without --crb, or --crb without them or with the layout figures' options.
+void check_crb_options(const PlotArgs& args) {
+  const CrbCameraArgs& c = args.camera;
+  const std::pair<const char*, CLI::Option*> camera[] = {{"--distance", c.distance_option},
+                                                         {"--focal", c.focal_option},
+                                                         {"--noise-px", c.noise_option}};
+  for (const auto& [name, option] : camera) {
+    if (args.crb && option->count() == 0) bad(std::string(name) + ": required with --crb");
+    if (!args.crb && option->count() > 0) bad(std::string(name) + ": only with --crb");
+  }
+  if (!args.crb && (!c.principal_point.empty() || !c.sweep_distance.empty())) {
+    bad("--principal-point/--sweep-distance: only with --crb");
+  }
+  if (args.crb && (!args.only.empty() || !args.design.empty())) {
+    bad("--only/--design: not allowed with --crb (it writes crb_map and crb_sweep)");
+  }
+}
+
+void print_crb_plot(const PlotArgs& args, const Layout& layout, const plot::CrbFigures& figures,
+                    const plot::FigureOptions& options) {
+  const sdp::PoseCrbMap& map = figures.report.map;
+  const bool ok = map.status == sdp::PoseCrbMap::Status::kOk;
+  if (args.json) {
+    Json out;
+    out["layout"] = args.file;
+    out["name"] = layout.name;
+    out["out"] = args.out;
+    out["format"] = plot::to_string(options.format);
+    out["size"] = {options.width, options.height};
+    out["status"] = sdp::to_string(map.status);
+    if (ok) out["worst_rot_rms_deg"] = map.worst.rot_rms_deg;
+    out["figures"] = figure_files_json(figures.files);
+    print_json(out);
+    return;
+  }
+  std::cout << "vantage plot --crb: " << (layout.name.empty() ? args.file : layout.name) << "\n";
+  if (ok) {
+    std::cout << "worst rot_rms " << format_number(map.worst.rot_rms_deg, 4) << " deg, p50 "
+              << format_number(map.percentiles.p50, 4) << " deg\n";
+  } else {
+    std::cout << "no sampled direction is trackable\n";
+  }
+  std::cout << figures.files.size() << " figures written (" << plot::to_string(options.format)
+            << " + csv):\n";
+  for (const plot::FigureFiles& f : figures.files) {
+    std::cout << "  " << f.image.string() << "\n  " << f.csv.string() << "\n";
+  }
+}
+
+// `vantage plot LAYOUT --crb --distance D --focal F --noise-px S`: crb_map and crb_sweep.
+int run_crb_plot(const PlotArgs& args) {
+  plot::CrbFiguresOptions options;
+  options.figure.format = plot::parse_format(args.format, "--format");
+  options.figure.title = args.title;
+  parse_size(args.size, options.figure);
+  options.sweep = args.camera.sweep();
+  check_figure_directory("--out", args.out);
+  const Layout layout = args.input.read(args.file);
+  plot::CrbFigures figures;
+  try {
+    figures = plot::crb_figures(layout, args.camera.options(), options);
+  } catch (const InvalidArgument& e) {
+    throw crb_option_error(e, args.file);
+  }
+  create_figure_directory("--out", args.out);
+  try {
+    plot::write_crb_figures(figures, options, args.out);
+  } catch (const plot::RenderError& e) {
+    std::cerr << "vantage: plot: " << e.what() << std::endl;
+    return kExitFailure;
+  }
+  print_crb_plot(args, layout, figures, options.figure);
+  return kExitOk;
+}
+
 int run_plot(const PlotArgs& args) {
   if (!args.experiment.empty()) return run_experiment_plot(args);
   if (args.file.empty()) bad("LAYOUT: required (or --experiment NAME)");
+  check_crb_options(args);
+  if (args.crb) return run_crb_plot(args);
   plot::LayoutFiguresOptions options;
   options.figure.format = plot::parse_format(args.format, "--format");
   options.figure.title = args.title;
@@ -289,6 +371,11 @@ Command add_plot_command(CLI::App& root) {
   sub->add_option("--design", args->design,
                   "DESIGN.json written by `vantage design ... --json`: adds the design figure");
   sub->add_option("--title", args->title, "replaces every figure's title");
+  sub->add_flag("--crb", args->crb,
+                "write the pose Cramér-Rao bound figures crb_map and crb_sweep instead (needs "
+                "--distance, --focal, --noise-px; docs/math.md §22)");
+  args->camera.add_options(sub, false);
+  args->camera.threads = 0;
   sub->add_flag("--json", args->json, "print one JSON object listing the files written");
   return {sub, [args] { return run_plot(*args); }};
 }

@@ -1,6 +1,6 @@
 // `vantage simulate LAYOUT --trials N [--camera affine|pinhole] [--noise-px S | --snr-db X]
 // [--noise gaussian|uniform] [--range R] [--focal F] [--principal-point U V] [--offset X Y]
-// [--viewpoint worst|random] [--methods a,b] [--seed S] [--threads T] [--shard K/N]
+// [--viewpoint worst|random|AX,AY,AZ] [--methods a,b] [--seed S] [--threads T] [--shard K/N]
 // [--per-trial] [--csv FILE] [--json] [--quiet]` and `vantage simulate --merge A.json B.json ...`:
 // Monte Carlo runs of every applicable estimator on one layout, the bound check of Eq. (26) and
 // Eq. (30) (affine camera), and the exact merge of sharded runs.
@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "command.h"
+#include "crb_input.h"
 #include "layout_input.h"
 #include "limits.h"
 #include "vantage/analysis/layout.h"
@@ -84,6 +85,12 @@ void check_args(const SimulateArgs& args) {
   }
 }
 
+/// The direction a of --viewpoint AX,AY,AZ (body toward the camera), or none for random|worst.
+std::optional<Eigen::Vector3d> fixed_viewpoint(const SimulateArgs& args) {
+  if (args.viewpoint == "random" || args.viewpoint == "worst") return std::nullopt;
+  return parse_direction(args.viewpoint, "--viewpoint");
+}
+
 simulate::LayoutSimulationOptions simulation_options(const SimulateArgs& args,
                                                      const Layout& layout) {
   simulate::LayoutSimulationOptions options;
@@ -112,6 +119,7 @@ simulate::LayoutSimulationOptions simulation_options(const SimulateArgs& args,
                           " holds direction vectors");
   }
   options.worst_viewpoint = args.viewpoint == "worst";
+  if (const auto a = fixed_viewpoint(args)) options.scene.viewpoint = -*a;
   options.monte_carlo.trials = args.trials;
   options.monte_carlo.seed = args.seed;
   options.monte_carlo.threads = args.threads;
@@ -233,7 +241,11 @@ void print_text(const Report& report) {
 }
 
 Report run_layout(const SimulateArgs& args, io::AtomicTextFile* csv) {
-  const Layout layout = args.input.read(args.file);
+  // A fixed direction looks at the markers' centroid (docs/math.md §22).
+  const Layout read = args.input.read(args.file);
+  const Layout layout = fixed_viewpoint(args) && read.mode == LayoutMode::kPoints
+                            ? simulate::layout_about_centroid(read)
+                            : read;
   simulate::LayoutSimulationOptions options = simulation_options(args, layout);
   if (csv != nullptr) {
     options.monte_carlo.on_trial = [csv](const MonteCarloRun& run, long trial,
@@ -444,9 +456,9 @@ Command add_simulate_command(CLI::App& root) {
   sub->add_option("--offset", args->offset, "lateral offset X Y of the object, object sizes")
       ->expected(2);
   sub->add_option("--viewpoint", args->viewpoint,
-                  "random (uniform rotations) or worst (the certified worst viewpoint, random "
-                  "roll)")
-      ->check(CLI::IsMember({"random", "worst"}))
+                  "random (uniform rotations), worst (the certified worst viewpoint, random "
+                  "roll), or a direction AX,AY,AZ (body toward the camera; the camera then looks "
+                  "at the markers' centroid from --range sizes, docs/math.md §22)")
       ->capture_default_str();
   sub->add_option(
          "--methods", args->methods,

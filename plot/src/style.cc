@@ -50,7 +50,7 @@ void set_text_size(Canvas& canvas, double size_px) {
 }
 
 void draw_colour_bar(Canvas& canvas, double vx0, double vx1, double vy0, double vy1, double lo,
-                     double hi, const std::string& label) {
+                     double hi, const std::string& label, bool log10_scale) {
   constexpr int kSteps = 256;
   Eigen::MatrixXd ramp(kSteps, 1);
   for (int i = 0; i < kSteps; ++i) ramp(i, 0) = 1.0 - i / double(kSteps - 1);
@@ -61,7 +61,7 @@ void draw_colour_bar(Canvas& canvas, double vx0, double vx1, double vy0, double 
   set_text_size(canvas, kSmallSize);
   pls.col0(kPenInk);
   pls.width(1.0);
-  pls.box("bc", 0.0, 0, "bcmstv", 0.0, 0);
+  pls.box("bc", 0.0, 0, log10_scale ? "bcmstvl" : "bcmstv", 0.0, 0);
   set_text_size(canvas, kLabelSize);
   pls.mtex("r", 4.2, 0.5, 0.5, label.c_str());
 }

@@ -34,8 +34,9 @@ void set_text_size(Canvas& canvas, double size_px);
 
 /// A vertical colour bar of the value map in the page rectangle [vx0, vx1] x [vy0, vy1]
 /// (fractions of the page) for values lo..hi, ticks and numbers on its right, `label` beside.
+/// With `log10_scale`, lo and hi are decades and the numbers read 10^k.
 void draw_colour_bar(Canvas& canvas, double vx0, double vx1, double vy0, double vy1, double lo,
-                     double hi, const std::string& label);
+                     double hi, const std::string& label, bool log10_scale = false);
 
 /// The frame of the current viewport: PLplot's box with options xopt/yopt (major tick spacing
 /// `tick`, 0 = automatic, with `subticks` minor ticks), numbers in kSmallSize, and the axis labels

@@ -149,6 +149,19 @@ void run_checks(const Layout& layout, const LayoutSceneOptions& scene, const Mon
 
 }  // namespace
 
+Layout layout_about_centroid(const Layout& layout) {
+  if (layout.mode != LayoutMode::kPoints) {
+    throw InvalidArgument("mode", "the markers' centroid needs a point layout");
+  }
+  const Eigen::Vector3d centroid = layout.entries.rowwise().mean();
+  Layout moved = layout;
+  moved.entries.colwise() -= centroid;
+  if (moved.visibility && moved.visibility->body) {
+    moved.visibility->body->vertices.colwise() -= centroid;
+  }
+  return moved;
+}
+
 LayoutSimulation simulate_layout(const Layout& layout, const LayoutSimulationOptions& options) {
   std::string why;
   if (!options.is_valid(&why)) throw InvalidArgument("options." + why);
