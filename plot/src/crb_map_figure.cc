@@ -70,10 +70,6 @@ CrbCells sample_cells(const sdp::PoseCrbModel& model, int n, int threads) {
   return cells;
 }
 
-std::uint32_t argb(Rgb c) {
-  return 0xff000000u | (std::uint32_t{c.r} << 16) | (std::uint32_t{c.g} << 8) | c.b;
-}
-
 // The colour scale's decades: from the smallest cell (or the best direction) to the worst.
 struct LogScale {
   double lo = 0.0;
@@ -113,7 +109,7 @@ internal::Raster bound_raster(const CrbCells& cells, int d, const LogScale& scal
       } else if (cells.samples.in_workspace[d](r, c)) {
         colour = kUntrackableColour;
       }
-      raster.argb[static_cast<std::size_t>(r) * n + c] = argb(colour);
+      raster.argb[static_cast<std::size_t>(r) * n + c] = internal::opaque_argb(colour);
     }
   }
   return raster;

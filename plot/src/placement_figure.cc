@@ -15,26 +15,26 @@ namespace {
 
 using internal::Canvas;
 
-constexpr double kMargin = 1.12;    // a view's half-width over the scene's largest extent
-constexpr double kFlattest = 0.45;  // least height / width of a view
-constexpr double kViewTop = 0.88;   // page fractions of the views' band
+constexpr double kViewMargin = 1.12;    // a view's half-width over the scene's largest extent
+constexpr double kFlattestView = 0.45;  // least height / width of a view
+constexpr double kViewTop = 0.88;       // page fractions of the views' band
 constexpr double kViewBottom = 0.40;
-constexpr double kNormalLength = 0.12;  // of a view's half-width
-constexpr double kChartTick = 0.2;      // p-bar_min grid of the chart
+constexpr double kSiteNormalLength = 0.12;  // of a view's half-width
+constexpr double kKChartTick = 0.2;         // p-bar_min grid of the chart
 constexpr Rgb kSiteColour{150, 150, 150};
 constexpr Rgb kChosenColour{215, 48, 39};
 constexpr Rgb kRandomColour{33, 113, 181};
-constexpr Rgb kInk{25, 25, 25};
+constexpr Rgb kPlacementInk{25, 25, 25};
 
 // An orthographic view from azimuth az (from +x towards +y) and elevation el, +z up.
-struct View {
+struct PlacementView {
   Eigen::Vector3d right, up, toward;
   Eigen::Vector2d operator()(const Eigen::Vector3d& p) const { return {p.dot(right), p.dot(up)}; }
 };
 
-View view_from(double az_deg, double el_deg) {
+PlacementView placement_view_from(double az_deg, double el_deg) {
   const double az = az_deg / kDegreesPerRadian, el = el_deg / kDegreesPerRadian;
-  View v;
+  PlacementView v;
   v.right = Eigen::Vector3d(-std::sin(az), std::cos(az), 0.0);
   v.up = Eigen::Vector3d(-std::sin(el) * std::cos(az), -std::sin(el) * std::sin(az), std::cos(el));
   v.toward =
@@ -43,17 +43,17 @@ View view_from(double az_deg, double el_deg) {
 }
 
 // Centre and scale of the scene: the body's (or the sites') bounding box, to unit radius.
-struct Frame {
+struct PlacementFrame {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   double scale = 1.0;
   Eigen::Vector3d operator()(const Eigen::Vector3d& p) const { return (p - centre) * scale; }
 };
 
-Frame frame_of(const PlacementFigureData& data) {
+PlacementFrame placement_frame(const PlacementFigureData& data) {
   const Eigen::Matrix3Xd& cloud = data.body != nullptr && data.body->vertices.cols() > 0
                                       ? data.body->vertices
                                       : data.placement.site_points;
-  Frame f;
+  PlacementFrame f;
   if (cloud.cols() == 0) return f;
   f.centre = 0.5 * (cloud.rowwise().minCoeff() + cloud.rowwise().maxCoeff());
   const double radius = (cloud.colwise() - f.centre).colwise().norm().maxCoeff();
@@ -61,7 +61,7 @@ Frame frame_of(const PlacementFigureData& data) {
   return f;
 }
 
-void draw_arrow(Canvas& canvas, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+void draw_site_arrow(Canvas& canvas, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   canvas.pls().join(a.x(), a.y(), b.x(), b.y());
   const Eigen::Vector2d along = b - a;
   const double length = along.norm();
@@ -78,25 +78,27 @@ void draw_arrow(Canvas& canvas, const Eigen::Vector2d& a, const Eigen::Vector2d&
 // sites whose normal faces the camera.
 // The half-extents (x, y) of both views: the largest projected extent of the body (or the
 // sites) in either, with a margin.
-Eigen::Vector2d view_window(const PlacementFigureData& data, const std::vector<View>& views) {
-  const Frame frame = frame_of(data);
+Eigen::Vector2d placement_window(const PlacementFigureData& data,
+                                 const std::vector<PlacementView>& views) {
+  const PlacementFrame frame = placement_frame(data);
   const Eigen::Matrix3Xd& cloud = data.body != nullptr && data.body->vertices.cols() > 0
                                       ? data.body->vertices
                                       : data.placement.site_points;
   Eigen::Vector2d extent = Eigen::Vector2d::Zero();
-  for (const View& view : views) {
+  for (const PlacementView& view : views) {
     for (Eigen::Index i = 0; i < cloud.cols(); ++i) {
       extent = extent.cwiseMax(view(frame(cloud.col(i))).cwiseAbs());
     }
   }
-  // Not flatter than kFlattest, so that normals and labels above and below the body fit.
-  extent.y() = std::max(extent.y(), kFlattest * extent.x());
+  // Not flatter than kFlattestView, so that normals and labels above and below the body fit.
+  extent.y() = std::max(extent.y(), kFlattestView * extent.x());
   extent.x() = std::max(extent.x(), extent.y());
-  return extent.x() > 0.0 ? Eigen::Vector2d(kMargin * extent) : Eigen::Vector2d(1.0, 1.0);
+  return extent.x() > 0.0 ? Eigen::Vector2d(kViewMargin * extent) : Eigen::Vector2d(1.0, 1.0);
 }
 
-void draw_view(Canvas& canvas, const PlacementFigureData& data, const View& view,
-               const Eigen::Vector2d& window, const std::string& caption, double vx0, double vx1) {
+void draw_body_view(Canvas& canvas, const PlacementFigureData& data, const PlacementView& view,
+                    const Eigen::Vector2d& window, const std::string& caption, double vx0,
+                    double vx1) {
   const double s = internal::page_scale(canvas);
   plstream& pls = canvas.pls();
   // Top-aligned under the title; as tall as the aspect asks, down to kViewBottom at most.
@@ -107,7 +109,7 @@ void draw_view(Canvas& canvas, const PlacementFigureData& data, const View& view
   const double mid = 0.5 * (vx0 + vx1);
   pls.vpor(mid - 0.5 * width, mid + 0.5 * width, kViewTop - height, kViewTop);
   pls.wind(-window.x(), window.x(), -window.y(), window.y());
-  const Frame frame = frame_of(data);
+  const PlacementFrame frame = placement_frame(data);
   if (data.body != nullptr) {
     internal::draw_body(canvas, *data.body, frame, view, view.toward);
   }
@@ -123,8 +125,8 @@ void draw_view(Canvas& canvas, const PlacementFigureData& data, const View& view
   for (Eigen::Index k = 0; k < data.markers.cols(); ++k) {
     if (data.normals.col(k).dot(view.toward) <= 0.0) continue;
     const Eigen::Vector3d p = frame(data.markers.col(k));
-    draw_arrow(canvas, view(p),
-               view(p + kNormalLength * window.x() * data.normals.col(k).normalized()));
+    draw_site_arrow(canvas, view(p),
+                    view(p + kSiteNormalLength * window.x() * data.normals.col(k).normalized()));
   }
   for (Eigen::Index k = 0; k < data.markers.cols(); ++k) {
     if (data.normals.col(k).dot(view.toward) <= 0.0) continue;
@@ -132,18 +134,18 @@ void draw_view(Canvas& canvas, const PlacementFigureData& data, const View& view
     canvas.marker(p.x(), p.y(), 5.5 * s, kChosenColour);
     const int site = data.placement.chosen[static_cast<std::size_t>(k)];
     canvas.label(p.x(), p.y(), site < 0 ? "kept" : "s" + std::to_string(site), 8 * s, 12 * s, 0.0,
-                 internal::kSmallSize * s, kInk, {255, 255, 255}, 0.75);
+                 internal::kSmallSize * s, kPlacementInk, {255, 255, 255}, 0.75);
   }
-  canvas.label(0.0, -window.y(), caption, 0.0, 2 * s, 0.5, internal::kLabelSize * s, kInk);
+  canvas.label(0.0, -window.y(), caption, 0.0, 2 * s, 0.5, internal::kLabelSize * s, kPlacementInk);
 }
 
-struct ChartRange {
+struct KChartRange {
   double k_lo, k_hi, lo;
 };
 
-ChartRange chart_range(const PlacementFigureData& data) {
+KChartRange k_chart_range(const PlacementFigureData& data) {
   const int markers = static_cast<int>(data.markers.cols());
-  ChartRange r{static_cast<double>(markers), static_cast<double>(markers), data.pbar_min};
+  KChartRange r{static_cast<double>(markers), static_cast<double>(markers), data.pbar_min};
   for (const LayoutPlacement::Step& step : data.placement.steps) {
     r.k_lo = std::min(r.k_lo, static_cast<double>(step.k));
     if (step.coverage > 0.0) r.lo = std::min(r.lo, step.pbar_min);
@@ -156,11 +158,11 @@ ChartRange chart_range(const PlacementFigureData& data) {
 }
 
 // p-bar_min against K: the greedy steps, the answer, the random baseline.
-void draw_chart(Canvas& canvas, const PlacementFigureData& data) {
+void draw_k_chart(Canvas& canvas, const PlacementFigureData& data) {
   using internal::fixed;
   const double s = internal::page_scale(canvas);
   plstream& pls = canvas.pls();
-  const ChartRange r = chart_range(data);
+  const KChartRange r = k_chart_range(data);
   const internal::Viewport viewport{0.09, 0.42, 0.08, 0.25};
   pls.vpor(viewport.left, viewport.left + viewport.width, viewport.bottom,
            viewport.bottom + viewport.height);
@@ -168,7 +170,7 @@ void draw_chart(Canvas& canvas, const PlacementFigureData& data) {
   pls.col0(internal::kPenGrid);
   pls.width(0.8 * s);
   internal::set_text_size(canvas, internal::kSmallSize);
-  pls.box("g", 1.0, 0, "g", kChartTick, 0);
+  pls.box("g", 1.0, 0, "g", kKChartTick, 0);
 
   std::vector<double> x, y;
   for (const LayoutPlacement::Step& step : data.placement.steps) {
@@ -197,12 +199,12 @@ void draw_chart(Canvas& canvas, const PlacementFigureData& data) {
   }
   canvas.marker(k, data.pbar_min, 8.0 * s, kChosenColour, Canvas::Shape::kDiamond);
   canvas.label(k, data.pbar_min, fixed(data.pbar_min, 4), -14 * s, 14 * s, 1.0,
-               internal::kSmallSize * s, kInk, {255, 255, 255}, 0.8);
+               internal::kSmallSize * s, kPlacementInk, {255, 255, 255}, 0.8);
   internal::draw_axes(canvas, "bcnst", "bcnstv", 0.0, 0, "K: markers placed", 2.6,
                       "certified p̄_min", 4.6);
 }
 
-void draw_legend(Canvas& canvas, const PlacementFigureData& data) {
+void draw_placement_legend(Canvas& canvas, const PlacementFigureData& data) {
   using internal::fixed;
   using Entry = Canvas::LegendEntry;
   const double s = internal::page_scale(canvas);
@@ -290,14 +292,15 @@ FigureFiles write_placement_figure(const PlacementFigureData& data,
           std::to_string(data.placement.site_points.cols()) +
           " candidate sites (vantage place); orthographic views, +z up");
   const double az = kPlacementAzimuthDeg, el = kPlacementElevationDeg;
-  const std::vector<View> views{view_from(az, el), view_from(az + 180.0, el)};
-  const Eigen::Vector2d window = view_window(data, views);
-  draw_view(canvas, data, views[0], window, "front: azimuth " + internal::fixed(az, 0) + "°", 0.02,
-            0.49);
-  draw_view(canvas, data, views[1], window, "back: azimuth " + internal::fixed(az + 180.0, 0) + "°",
-            0.51, 0.98);
-  draw_chart(canvas, data);
-  draw_legend(canvas, data);
+  const std::vector<PlacementView> views{placement_view_from(az, el),
+                                         placement_view_from(az + 180.0, el)};
+  const Eigen::Vector2d window = placement_window(data, views);
+  draw_body_view(canvas, data, views[0], window, "front: azimuth " + internal::fixed(az, 0) + "°",
+                 0.02, 0.49);
+  draw_body_view(canvas, data, views[1], window,
+                 "back: azimuth " + internal::fixed(az + 180.0, 0) + "°", 0.51, 0.98);
+  draw_k_chart(canvas, data);
+  draw_placement_legend(canvas, data);
   canvas.finish();
   write_csv(data, files.csv);
   return files;

@@ -5,6 +5,7 @@
 // regions of constant visible-marker count with their numbers. Private to vantage::plot.
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -52,5 +53,10 @@ void label_count_regions(Canvas& canvas, const SphereSamples& samples, double mi
 /// A filled marker at unit direction a on its disc.
 void mark_direction(Canvas& canvas, const Eigen::Vector3d& a, double radius_px, Rgb fill,
                     Canvas::Shape shape = Canvas::Shape::kCircle);
+
+/// The opaque ARGB32 pixel of colour c (a raster cell).
+inline std::uint32_t opaque_argb(Rgb c) {
+  return 0xff000000u | (std::uint32_t{c.r} << 16) | (std::uint32_t{c.g} << 8) | c.b;
+}
 
 }  // namespace vantage::plot::internal

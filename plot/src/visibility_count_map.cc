@@ -16,13 +16,9 @@ namespace {
 using internal::Canvas;
 
 // Count regions smaller than this fraction of a disc carry no number (too small to read).
-constexpr double kLabelledRegionFraction = 0.004;
+constexpr double kCountLabelledFraction = 0.004;
 // Untrackable cells keep this much of their count's colour, the rest white.
 constexpr double kWashedOut = 0.45;
-
-std::uint32_t argb(Rgb c) {
-  return 0xff000000u | (std::uint32_t{c.r} << 16) | (std::uint32_t{c.g} << 8) | c.b;
-}
 
 Rgb washed(Rgb c) {
   auto mix = [](std::uint8_t v) {
@@ -43,7 +39,7 @@ internal::Raster count_raster(const SphereSamples& s, int d, int markers) {
         colour = value_colour(s.visible[d](r, c), 0.0, markers);
         if (!s.trackable[d](r, c)) colour = washed(colour);
       }
-      raster.argb[static_cast<std::size_t>(r) * n + c] = argb(colour);
+      raster.argb[static_cast<std::size_t>(r) * n + c] = internal::opaque_argb(colour);
     }
   }
   return raster;
@@ -70,7 +66,7 @@ void draw_count_bar(Canvas& canvas, double vx0, double vx1, double vy0, double v
   pls.mtex("r", 4.2, 0.5, 0.5, "markers visible");
 }
 
-void write_csv(const VisibilityMapData& data, const std::filesystem::path& path) {
+void write_count_csv(const VisibilityMapData& data, const std::filesystem::path& path) {
   internal::CsvWriter csv(path, "disc,x,y,z,visible,trackable,in_workspace,markers");
   const auto& workspace = data.model->problem().workspace;
   internal::for_each_csv_cell(
@@ -128,7 +124,7 @@ void draw_figure(Canvas& canvas, const VisibilityMapData& data, const SphereSamp
   internal::draw_count_boundaries(canvas, samples, 0.5, internal::kPenGrid);
   internal::draw_trackable_boundary(canvas, samples);
   for (int d = 0; d < 2; ++d) internal::draw_disc_frame(canvas, d);
-  internal::label_count_regions(canvas, samples, kLabelledRegionFraction);
+  internal::label_count_regions(canvas, samples, kCountLabelledFraction);
   const sdp::VisibilityReport& report = *data.report;
   if (report.worst.status != sdp::VisibilityWorstViewpoint::Status::kUntrackable) {
     const double s = internal::page_scale(canvas);
@@ -152,7 +148,7 @@ FigureFiles write_visibility_figure(const VisibilityMapData& data,
   Canvas canvas(files.image, options);
   draw_figure(canvas, data, samples, options);
   canvas.finish();
-  write_csv(data, files.csv);
+  write_count_csv(data, files.csv);
   return files;
 }
 

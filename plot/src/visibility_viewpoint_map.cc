@@ -16,11 +16,7 @@ namespace {
 using internal::Canvas;
 
 // Count regions smaller than this fraction of a disc carry no number (too small to read).
-constexpr double kLabelledRegionFraction = 0.006;
-
-std::uint32_t argb(Rgb c) {
-  return 0xff000000u | (std::uint32_t{c.r} << 16) | (std::uint32_t{c.g} << 8) | c.b;
-}
+constexpr double kErrorLabelledFraction = 0.006;
 
 // The error of each trackable cell on the value map, grey elsewhere.
 internal::Raster error_raster(const SphereSamples& s, int d, double hi) {
@@ -36,13 +32,13 @@ internal::Raster error_raster(const SphereSamples& s, int d, double hi) {
       } else if (s.in_workspace[d](r, c)) {
         colour = kUntrackableColour;
       }
-      raster.argb[static_cast<std::size_t>(r) * n + c] = argb(colour);
+      raster.argb[static_cast<std::size_t>(r) * n + c] = internal::opaque_argb(colour);
     }
   }
   return raster;
 }
 
-void write_csv(const VisibilityMapData& data, const std::filesystem::path& path) {
+void write_error_csv(const VisibilityMapData& data, const std::filesystem::path& path) {
   internal::CsvWriter csv(path, "disc,x,y,z,visible,trackable,pbar,max_error_deg");
   internal::for_each_csv_cell(
       data, [&](int d, const Eigen::Vector3d& a, const sdp::DirectionVisibility& v) {
@@ -131,7 +127,7 @@ void draw_map(Canvas& canvas, const VisibilityMapData& data, const SphereSamples
   for (int d = 0; d < 2; ++d) internal::paint_disc(canvas, d, error_raster(samples, d, hi));
   internal::draw_count_boundaries(canvas, samples, 0.9, internal::kPenInk);
   for (int d = 0; d < 2; ++d) internal::draw_disc_frame(canvas, d);
-  internal::label_count_regions(canvas, samples, kLabelledRegionFraction);
+  internal::label_count_regions(canvas, samples, kErrorLabelledFraction);
   draw_worst(canvas, report);
   internal::draw_colour_bar(canvas, 0.905, 0.925, 0.30, 0.84, 0.0, hi,
                             "worst-case error asin t(a)  [deg]");
@@ -150,7 +146,7 @@ FigureFiles write_visibility_viewpoint_map(const VisibilityMapData& data,
   Canvas canvas(files.image, options);
   draw_map(canvas, data, samples, options);
   canvas.finish();
-  write_csv(data, files.csv);
+  write_error_csv(data, files.csv);
   return files;
 }
 
