@@ -78,7 +78,7 @@ TEST(PlacementFigure, RefusesBadData) {
   data.placement.chosen = {0, 2, 9};
   EXPECT_THROW(write_placement_figure(data, dir.path()), InvalidArgument);
   data = cube_data();
-  data.normals = data.normals.leftCols(2);
+  data.normals.conservativeResize(3, 2);
   EXPECT_THROW(write_placement_figure(data, dir.path()), InvalidArgument);
   data = cube_data();
   data.pbar_min = 1.5;
