@@ -119,7 +119,12 @@ simulate::LayoutSimulationOptions simulation_options(const SimulateArgs& args,
                           " holds direction vectors");
   }
   options.worst_viewpoint = args.viewpoint == "worst";
-  if (const auto a = fixed_viewpoint(args)) options.scene.viewpoint = -*a;
+  if (const auto a = fixed_viewpoint(args)) {
+    // The camera of docs/math.md §22: aimed at the markers' centroid, the pose still the
+    // layout frame's (its translation is the layout origin's, as `vantage crb` bounds it).
+    options.scene.viewpoint = -*a;
+    if (layout.mode == LayoutMode::kPoints) options.scene.aim = layout.entries.rowwise().mean();
+  }
   options.monte_carlo.trials = args.trials;
   options.monte_carlo.seed = args.seed;
   options.monte_carlo.threads = args.threads;
@@ -241,11 +246,7 @@ void print_text(const Report& report) {
 }
 
 Report run_layout(const SimulateArgs& args, io::AtomicTextFile* csv) {
-  // A fixed direction looks at the markers' centroid (docs/math.md §22).
-  const Layout read = args.input.read(args.file);
-  const Layout layout = fixed_viewpoint(args) && read.mode == LayoutMode::kPoints
-                            ? simulate::layout_about_centroid(read)
-                            : read;
+  const Layout layout = args.input.read(args.file);
   simulate::LayoutSimulationOptions options = simulation_options(args, layout);
   if (csv != nullptr) {
     options.monte_carlo.on_trial = [csv](const MonteCarloRun& run, long trial,
@@ -458,7 +459,7 @@ Command add_simulate_command(CLI::App& root) {
   sub->add_option("--viewpoint", args->viewpoint,
                   "random (uniform rotations), worst (the certified worst viewpoint, random "
                   "roll), or a direction AX,AY,AZ (body toward the camera; the camera then looks "
-                  "at the markers' centroid from --range sizes, docs/math.md §22)")
+                  "at the markers' centroid from --range sizes about it, docs/math.md §22)")
       ->capture_default_str();
   sub->add_option(
          "--methods", args->methods,

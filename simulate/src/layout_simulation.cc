@@ -54,6 +54,7 @@ Json config_json(const Layout& layout, const LayoutSimulationOptions& options) {
           {"range", scene.range},
           {"principal_point", list(scene.principal_point)},
           {"offset", list(scene.lateral_offset)},
+          {"aim", list(scene.aim)},
           {"noise", to_string(scene.noise)},
           {"noise_px", scene.snr_db ? Json(nullptr) : Json(scene.noise_px)},
           {"snr_db", scene.snr_db ? Json(*scene.snr_db) : Json(nullptr)},
@@ -148,19 +149,6 @@ void run_checks(const Layout& layout, const LayoutSceneOptions& scene, const Mon
 }
 
 }  // namespace
-
-Layout layout_about_centroid(const Layout& layout) {
-  if (layout.mode != LayoutMode::kPoints) {
-    throw InvalidArgument("mode", "the markers' centroid needs a point layout");
-  }
-  const Eigen::Vector3d centroid = layout.entries.rowwise().mean();
-  Layout moved = layout;
-  moved.entries.colwise() -= centroid;
-  if (moved.visibility && moved.visibility->body) {
-    moved.visibility->body->vertices.colwise() -= centroid;
-  }
-  return moved;
-}
 
 LayoutSimulation simulate_layout(const Layout& layout, const LayoutSimulationOptions& options) {
   std::string why;

@@ -55,6 +55,7 @@ bool LayoutSceneOptions::is_valid(std::string* why) const {
     return fail(why, "noise_px: must be finite and >= 0");
   }
   if (snr_db && !std::isfinite(*snr_db)) return fail(why, "snr_db: must be finite");
+  if (!aim.allFinite()) return fail(why, "aim: must be finite");
   if (viewpoint &&
       (!viewpoint->allFinite() || std::abs(viewpoint->norm() - 1.0) > kUnitTolerance)) {
     return fail(why, "viewpoint: must be a finite unit vector");
@@ -90,8 +91,11 @@ Scene make_layout_scene(const Eigen::Matrix3Xd& entries, bool vectors,
   if (entries.cols() < 2 || !entries.allFinite()) {
     throw InvalidArgument("make_layout_scene: entries must be 3 x n, n >= 2, finite");
   }
-  const double size = entries.colwise().norm().maxCoeff();
-  if (!(size > 0.0)) throw InvalidArgument("make_layout_scene: entries are all zero");
+  const Eigen::Vector3d aim = vectors ? Eigen::Vector3d::Zero() : options.aim;
+  const double size = (entries.colwise() - aim).colwise().norm().maxCoeff();
+  if (!(size > 0.0)) {
+    throw InvalidArgument("make_layout_scene: entries are all zero (all at the aim point)");
+  }
   if (vectors && options.camera == CameraModel::kPinhole) {
     throw InvalidArgument(
         "make_layout_scene: a direction layout has no pinhole image (points only)");
@@ -106,7 +110,8 @@ Scene make_layout_scene(const Eigen::Matrix3Xd& entries, bool vectors,
                      : random.rotation();
   const double depth = options.range * size;
   scene.p_true =
-      Eigen::Vector3d(options.lateral_offset.x() * size, options.lateral_offset.y() * size, depth);
+      Eigen::Vector3d(options.lateral_offset.x() * size, options.lateral_offset.y() * size, depth) -
+      scene.R_true * aim;
   scene.alpha_true = depth / options.focal_px;
 
   const Eigen::Matrix3Xd camera_points =

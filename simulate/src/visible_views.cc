@@ -122,8 +122,10 @@ VisibleScenes VisibleViews::scenes(const Eigen::Matrix3Xd& points,
   out.view = draw(random);
   const std::vector<int>& visible = out.view.visibility.visible;
   const Eigen::Matrix3Xd seen = columns(points, visible);
-  // The visible markers at the whole layout's depth and offset (sizes are the whole layout's).
-  const double scale = points.colwise().norm().maxCoeff() / seen.colwise().norm().maxCoeff();
+  // The visible markers at the whole layout's depth and offset (sizes are the whole layout's,
+  // both about the aim point).
+  const double scale = (points.colwise() - options.aim).colwise().norm().maxCoeff() /
+                       (seen.colwise() - options.aim).colwise().norm().maxCoeff();
   LayoutSceneOptions whole = options;
   whole.viewpoint = -out.view.direction;
   LayoutSceneOptions part = whole;

@@ -61,14 +61,6 @@ struct LayoutSimulation {
 /// when the options are invalid or do not fit the layout.
 LayoutSimulation simulate_layout(const Layout& layout, const LayoutSimulationOptions& options);
 
-/// The point layout moved so that its markers' centroid is the object origin, its body mesh with
-/// it (normals, cones and workspace are directions and stay). The layout scene's camera looks at
-/// the object origin (scene.h), so on this layout a fixed scene.viewpoint = -a at scene.range =
-/// D / r, r = max_i |p_i - centroid|, is the pinhole camera of docs/math.md §22 at direction a
-/// and distance D (`vantage simulate --viewpoint AX,AY,AZ`), up to its roll, which neither the
-/// bound nor the rotation error depends on. Throws InvalidArgument "mode" for a vector layout.
-Layout layout_about_centroid(const Layout& layout);
-
 /// {"layout", "mode", "trials", "total_trials", "seed", "shard", "estimators", "bound_check"
 /// (affine camera), "visibility" (a layout with normals; visibility_json.h), "config", and
 /// "per_trial" when `per_trial`: what --merge needs; the run must then have kept its trials}.

@@ -6,9 +6,9 @@
 /// the viewpoint (optical axis in the object frame) is the third row of R (McInroy et al.,
 /// Sec. III.D).
 ///
-/// Cameras of a layout scene (make_layout_scene), with the object size s = max_i |z_i| (the
-/// largest distance of a marker from the object origin) and the object origin placed at
-/// p = (offset_x s, offset_y s, range s):
+/// Cameras of a layout scene (make_layout_scene), with the object size s = max_i |z_i - g| (the
+/// largest distance of a marker from the aim point g, by default the object origin) and g
+/// placed at (offset_x s, offset_y s, range s) in the camera frame, so p = that - R g:
 ///  - scaled orthographic ("affine", McInroy et al. Eq. 14): q_i = P (R z_i + p) / alpha + c
 ///    with alpha = p_z / f (object units per pixel; Eq. 37's p_z = alpha f holds exactly);
 ///  - pinhole: q_i = f (x / z, y / z) + c of x = R z_i + p (every marker in front: range > 1).
@@ -90,6 +90,10 @@ struct LayoutSceneOptions {
   /// When set, the camera looks along this object-frame direction (unit length; the third row
   /// of R) with a uniformly random roll about it; otherwise R is uniformly random.
   std::optional<Eigen::Vector3d> viewpoint;
+  /// The object-frame point g the camera is aimed at, finite (see the file comment): sizes are
+  /// measured about it and it sits at (offset s, range s) in the camera frame. The pose the
+  /// estimators return is still the object frame's (p = R_camera_object applied to the origin).
+  Eigen::Vector3d aim = Eigen::Vector3d::Zero();
 
   /// True when every field is in range; otherwise *why names the field and the constraint.
   bool is_valid(std::string* why = nullptr) const;
