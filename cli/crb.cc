@@ -2,6 +2,7 @@
 // one pinhole image over every viewpoint (issue 21; docs/math.md §22), the worst and best
 // directions, percentiles, the sliver flag and the affine bound of the same layout beside it.
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "limits.h"
 #include "vantage/analysis/common.h"
 #include "vantage/sdp/pose_crb.h"
+#include "vantage/sdp/pose_crb_tags.h"
 
 namespace vantage::cli {
 
@@ -25,6 +27,8 @@ struct CrbArgs {
   LayoutInput input;
   CrbCameraArgs camera;
   std::string direction;
+  bool sweep_tags = false;
+  sdp::TagSweepOptions tags;
   bool json = false;
   bool allow_large = false;
 };
@@ -77,6 +81,43 @@ void print_report(const std::string& name, const sdp::PoseCrbReport& r) {
   }
 }
 
+// One cell of the tag table: `text` right-aligned in `width` characters.
+std::string cell(const std::string& text, int width) {
+  return std::string(std::max(0, width - static_cast<int>(text.size())), ' ') + text;
+}
+
+void print_tag_sweep(const std::vector<sdp::TagFace>& faces,
+                     const std::vector<sdp::TagSweepRow>& rows) {
+  double largest = 0.0;
+  for (const sdp::TagFace& face : faces) largest = std::max(largest, face.extent);
+  std::cout << "\nhow many tags, and how big: " << faces.size() << " face(s) of fixed extent "
+            << "(largest " << format_number(largest, 4) << "), k x k tags on each, of side fill x "
+            << "extent / k\n"
+            << "   k  tags  fill  tag size  tag px   median rot_rms  median trans   p95 rot_rms  "
+               "worst rot_rms\n";
+  bool small = false;
+  for (const sdp::TagSweepRow& row : rows) {
+    const bool too_small = row.tag_pixels < sdp::TagSweepRow::kMinDetectablePixels;
+    small = small || too_small;
+    std::cout << cell(std::to_string(row.per_side), 4) << cell(std::to_string(row.tags), 6)
+              << cell(format_number(row.fill, 3), 6) << cell(format_number(row.tag_size, 4), 10)
+              << cell(format_number(row.tag_pixels, 3) + (too_small ? "*" : " "), 8);
+    if (row.status != sdp::PoseCrbMap::Status::kOk) {
+      std::cout << "   not trackable\n";
+      continue;
+    }
+    std::cout << cell(format_number(row.median.rot_rms_deg, 4) + " deg", 17)
+              << cell(format_number(row.median.trans_rms, 4), 14)
+              << cell(format_number(row.percentiles.p95, 4) + " deg", 14)
+              << cell(format_number(row.worst.rot_rms_deg, 4) + " deg", 15) << "\n";
+  }
+  if (small) {
+    std::cout << "   * under " << format_number(sdp::TagSweepRow::kMinDetectablePixels)
+              << " px across head-on: such a tag may not be decoded at this distance (the "
+                 "bound assumes it is)\n";
+  }
+}
+
 int run_crb(const CrbArgs& args) {
   const Layout layout = args.input.read(args.file, args.allow_large);
   std::optional<Eigen::Vector3d> direction;
@@ -88,10 +129,26 @@ int run_crb(const CrbArgs& args) {
   } catch (const InvalidArgument& e) {
     throw crb_option_error(e, args.file);
   }
+  std::vector<sdp::TagFace> faces;
+  std::vector<sdp::TagSweepRow> tag_rows;
+  if (args.sweep_tags) {
+    try {
+      faces = sdp::tag_faces(layout);
+      tag_rows = sdp::pose_crb_tag_sweep(layout, args.camera.options(), args.tags);
+    } catch (const InvalidArgument& e) {
+      if (e.field() == "names" || e.field() == "points") throw e.against(args.file);
+      if (e.field() == "sweep_tags.per_side") throw e.renamed("--tags-per-side", std::nullopt);
+      if (e.field() == "sweep_tags.fill") throw e.renamed("--tag-fill", std::nullopt);
+      throw crb_option_error(e, args.file);
+    }
+  }
   if (args.json) {
-    print_json(crb_json::report(report));
+    Json out = crb_json::report(report);
+    if (args.sweep_tags) out["sweep_tags"] = crb_json::tag_sweep(faces, tag_rows);
+    print_json(out);
   } else {
     print_report(layout.name.empty() ? args.file : layout.name, report);
+    if (args.sweep_tags) print_tag_sweep(faces, tag_rows);
   }
   return kExitOk;
 }
@@ -109,6 +166,16 @@ Command add_crb_command(CLI::App& root) {
   args->camera.add_options(sub, true);
   sub->add_option("--direction", args->direction,
                   "also the bound at this viewing direction AX,AY,AZ (body toward camera)");
+  sub->add_flag("--sweep-tags", args->sweep_tags,
+                "AprilTag corners: the bound with every face tiled by k x k tags of the same "
+                "extent (docs/math.md §22, \"How many tags, and how big\")");
+  sub->add_option("--tags-per-side", args->tags.per_side, "k of --sweep-tags, each in [1, 12]")
+      ->delimiter(',')
+      ->capture_default_str();
+  sub->add_option("--tag-fill", args->tags.fill,
+                  "tag side over its cell's side for --sweep-tags, each in (0, 1]")
+      ->delimiter(',')
+      ->capture_default_str();
   sub->add_option("--threads", args->camera.threads, "threads, 0 = all cores")
       ->capture_default_str();
   add_allow_large_flag(sub, args->allow_large);

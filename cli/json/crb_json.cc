@@ -71,4 +71,35 @@ Json report(const sdp::PoseCrbReport& r) {
   return out;
 }
 
+Json tag_sweep(const std::vector<sdp::TagFace>& faces, const std::vector<sdp::TagSweepRow>& rows) {
+  Json out = Json::object();
+  Json face_list = Json::array();
+  for (const sdp::TagFace& face : faces) {
+    face_list.push_back({{"centre", vector3(face.centre)},
+                         {"normal", vector3(face.normal)},
+                         {"extent", face.extent},
+                         {"tags", face.tags}});
+  }
+  out["faces"] = face_list;
+  Json row_list = Json::array();
+  for (const sdp::TagSweepRow& row : rows) {
+    const bool ok = row.status == sdp::PoseCrbMap::Status::kOk;
+    row_list.push_back({{"tags_per_side", row.per_side},
+                        {"tags", row.tags},
+                        {"fill", row.fill},
+                        {"tag_size", row.tag_size},
+                        {"tag_pixels", row.tag_pixels},
+                        {"status", sdp::to_string(row.status)},
+                        {"trackable_fraction", row.trackable_fraction},
+                        {"worst", ok ? at_direction(row.worst, false) : Json(nullptr)},
+                        {"median", ok ? at_direction(row.median, false) : Json(nullptr)},
+                        {"percentiles",
+                         {{"p50", ok ? Json(row.percentiles.p50) : Json(nullptr)},
+                          {"p95", ok ? Json(row.percentiles.p95) : Json(nullptr)},
+                          {"p99", ok ? Json(row.percentiles.p99) : Json(nullptr)}}}});
+  }
+  out["rows"] = row_list;
+  return out;
+}
+
 }  // namespace vantage::crb_json

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "vantage/sdp/pose_crb.h"
+#include "vantage/sdp/pose_crb_tags.h"
 
 namespace vantage::crb_json {
 
@@ -20,5 +21,9 @@ Json at_direction(const sdp::PoseCrbAt& at, bool with_covariance);
 /// trackable_fraction, percentiles {p50, p95, p99}, sliver, worst_region_width_deg,
 /// affine_bound_deg, samples, status and sweep_distance (when asked).
 Json report(const sdp::PoseCrbReport& report);
+
+/// The tag sweep: {faces: [{centre, normal, extent, tags}], rows: [{tags_per_side, tags, fill,
+/// tag_size, tag_pixels, status, trackable_fraction, worst, median, percentiles}]}.
+Json tag_sweep(const std::vector<sdp::TagFace>& faces, const std::vector<sdp::TagSweepRow>& rows);
 
 }  // namespace vantage::crb_json

@@ -89,6 +89,42 @@ TEST(CrbCli, DistanceSweepHasOneRowPerDistance) {
   }
 }
 
+// The cube's three tagged faces, each tiled k x k: the rows' counts and sizes follow the face's
+// extent (its one 8 cm tag), and the tag's pixels are size * f / D.
+TEST(CrbCli, TagSweepHasOneRowPerTiling) {
+  ScratchDir scratch;
+  const nlohmann::json j =
+      testing::run_json("crb " + kCube + kCamera +
+                            " --samples 1000 --sweep-tags --tags-per-side 1,2 --tag-fill "
+                            "0.5,0.9",
+                        scratch);
+  const nlohmann::json& sweep = j["sweep_tags"];
+  ASSERT_EQ(sweep["faces"].size(), 3u);
+  ASSERT_EQ(sweep["rows"].size(), 4u);
+  const double extent = sweep["faces"][0]["extent"].get<double>();
+  const int per_side[] = {1, 1, 2, 2};
+  const double fill[] = {0.5, 0.9, 0.5, 0.9};
+  for (int r = 0; r < 4; ++r) {
+    const nlohmann::json& row = sweep["rows"][r];
+    EXPECT_EQ(row["tags_per_side"].get<int>(), per_side[r]);
+    EXPECT_EQ(row["tags"].get<int>(), 3 * per_side[r] * per_side[r]);
+    EXPECT_NEAR(row["tag_size"].get<double>(), fill[r] * extent / per_side[r], 1e-12);
+    EXPECT_NEAR(row["tag_pixels"].get<double>(), row["tag_size"].get<double>() * 900 / 2, 1e-9);
+    EXPECT_EQ(row["status"], "ok");
+    EXPECT_GE(row["worst"]["rot_rms_deg"].get<double>(),
+              row["median"]["rot_rms_deg"].get<double>());
+  }
+  // Each face's extent is its own tag: fill 1 at one tag per side is the layout itself.
+  const std::string flags = kCamera + " --samples 1000";
+  const nlohmann::json own = testing::run_json("crb " + kCube + flags, scratch);
+  const nlohmann::json itself = testing::run_json(
+      "crb " + kCube + flags + " --sweep-tags --tags-per-side 1 --tag-fill 1", scratch);
+  EXPECT_NEAR(itself["sweep_tags"]["rows"][0]["median"]["rot_rms_deg"].get<double>(),
+              own["percentiles"]["p50"].get<double>(), 1e-9);
+  EXPECT_NEAR(itself["sweep_tags"]["rows"][0]["worst"]["rot_rms_deg"].get<double>(),
+              own["worst"]["rot_rms_deg"].get<double>(), 1e-9);
+}
+
 TEST(CrbCli, BadInputIsOneLineNamingTheOption) {
   ScratchDir scratch;
   const BadCall calls[] = {
@@ -101,6 +137,20 @@ TEST(CrbCli, BadInputIsOneLineNamingTheOption) {
        "--sweep-distance"},
       {"direction mode", R"({"vectors": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]})",
        "in.json --distance 2 --focal 900 --noise-px 1", "vectors"},
+      {"tag fill above 1", nullptr,
+       "--distance 2 --focal 900 --noise-px 1 --sweep-tags "
+       "--tag-fill 0.5,1.2",
+       "--tag-fill"},
+      {"touching tags", nullptr,
+       "--distance 2 --focal 900 --noise-px 1 --sweep-tags "
+       "--tags-per-side 1,2 --tag-fill 1",
+       "--tag-fill"},
+      {"no tags per side", nullptr,
+       "--distance 2 --focal 900 --noise-px 1 --sweep-tags "
+       "--tags-per-side 0",
+       "--tags-per-side"},
+      {"not tag corners", R"({"points": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]})",
+       "in.json --distance 5 --focal 900 --noise-px 1 --sweep-tags", "names"},
   };
   for (const BadCall& call : calls) {
     SCOPED_TRACE(call.name);
