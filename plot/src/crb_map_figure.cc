@@ -220,10 +220,9 @@ void draw_map(Canvas& canvas, const CrbMapData& data, const CrbCells& cells,
       canvas,
       internal::figure_title(options,
                              "Pose Cramér–Rao bound: " + internal::layout_label(data.layout_name)),
-      "RMS rotation error rot_rms of an efficient estimator from direction a (body → camera), "
-      "pinhole at D " +
+      "rot_rms of an efficient estimator from direction a (body → camera); pinhole, D " +
           internal::fixed(camera.distance, 3) + ", f " + internal::fixed(camera.focal_length, 0) +
-          " px, noise " + internal::fixed(camera.noise_px, 2) + " px; Lambert equal-area");
+          " px, noise " + internal::fixed(camera.noise_px, 2) + " px; equal-area");
   const LogScale scale = log_scale(cells, report.map);
   for (int d = 0; d < 2; ++d) internal::paint_disc(canvas, d, bound_raster(cells, d, scale));
   internal::draw_count_boundaries(canvas, cells.samples, 0.7, internal::kPenInk);

@@ -92,7 +92,8 @@ void draw_panel(Canvas& canvas, const std::vector<PoseCrbSweepRow>& rows, int qu
   const double d = camera_distance;
   if (d >= x0 - pad && d <= x1 + pad) {
     internal::draw_line(canvas, {d, d}, {y.lo, y.hi}, {120, 120, 120}, 1.2, true);
-    canvas.label(d, y.hi, "D of the map", 4 * s, 12 * s, 0.0, internal::kSmallSize * s,
+    // At the foot of the line: the legend takes a top corner.
+    canvas.label(d, y.lo, "D of the map", 4 * s, -18 * s, 0.0, internal::kSmallSize * s,
                  {90, 90, 90});
   }
   for (const auto& [series, colour] : drawn) {
