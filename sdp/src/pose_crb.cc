@@ -8,16 +8,12 @@
 #include <limits>
 
 #include "vantage/analysis/common.h"
-#include "vantage/body/ray_caster.h"
+#include "vantage/sdp/camera_visibility.h"
 #include "vantage/sdp/visibility.h"
 
 namespace vantage::sdp {
 
 namespace {
-
-// A marker's segment to the camera starts this fraction of the mesh's size off its face along
-// the normal, so that the face the marker sits on does not hide it (as occlusion.h does).
-constexpr double kCrbSurfaceOffset = 1e-6;
 
 Eigen::Vector3d unit_direction(const Eigen::Vector3d& a) {
   const double norm = a.norm();
@@ -75,12 +71,8 @@ struct PoseCrbModel::Impl {
   Eigen::Matrix3Xd points;
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   double radius = 0.0;
-  std::optional<Eigen::Matrix3Xd> normals;  // with visibility
-  Eigen::VectorXd cos_cone;
-  int min_visible = 3;
+  std::optional<CameraVisibility> visibility;
   std::optional<Workspace> workspace;
-  std::unique_ptr<body::RayCaster> caster;
-  double surface_offset = 0.0;
 
   void check_distance(double distance) const {
     if (!(distance > radius) || !std::isfinite(distance)) {
@@ -88,17 +80,6 @@ struct PoseCrbModel::Impl {
                                             std::to_string(radius) +
                                             " (the camera would be among the markers)");
     }
-  }
-
-  bool visible(int i, const Eigen::Vector3d& c) const {
-    if (!normals) return true;
-    const Eigen::Vector3d to_camera = c - points.col(i);
-    const double length = to_camera.norm();
-    if (normals->col(i).dot(to_camera) < cos_cone(i) * length) return false;
-    if (!caster) return true;
-    const Eigen::Vector3d origin = points.col(i) + surface_offset * normals->col(i);
-    const Eigen::Vector3d segment = c - origin;
-    return !caster->occluded(origin, segment / segment.norm(), segment.norm());
   }
 };
 
@@ -117,16 +98,7 @@ PoseCrbModel::PoseCrbModel(const Layout& layout, const PoseCrbOptions& options)
   m.centroid = m.points.rowwise().mean();
   m.radius = (m.points.colwise() - m.centroid).colwise().norm().maxCoeff();
   m.check_distance(options.distance);
-  if (layout.visibility) {
-    const MarkerVisibility& v = *layout.visibility;
-    m.normals = v.normals;
-    m.cos_cone = (v.cone_half_angle_deg / kDegreesPerRadian).array().cos().matrix();
-    m.min_visible = v.min_visible;
-    if (v.body) {
-      m.caster = std::make_unique<body::RayCaster>(*v.body);
-      m.surface_offset = kCrbSurfaceOffset * v.body->size();
-    }
-  }
+  m.visibility.emplace(layout);
   if (layout.workspace && layout.workspace->half_angle_deg < 180.0) {
     m.workspace = Workspace{layout.workspace->axis,
                             std::cos(layout.workspace->half_angle_deg / kDegreesPerRadian)};
@@ -141,7 +113,7 @@ const Eigen::Matrix3Xd& PoseCrbModel::points() const { return impl_->points; }
 const Eigen::Vector3d& PoseCrbModel::centroid() const { return impl_->centroid; }
 double PoseCrbModel::radius() const { return impl_->radius; }
 const PoseCrbOptions& PoseCrbModel::options() const { return impl_->options; }
-bool PoseCrbModel::with_body() const { return impl_->caster != nullptr; }
+bool PoseCrbModel::with_body() const { return impl_->visibility->with_body(); }
 
 bool PoseCrbModel::in_workspace(const Eigen::Vector3d& a) const {
   return !impl_->workspace || a.dot(impl_->workspace->axis) >= impl_->workspace->cos_half_angle;
@@ -226,14 +198,14 @@ PoseCrbAt PoseCrbModel::at(const Eigen::Vector3d& direction, double distance) co
   camera_pose(out.direction, distance, &R, &p);
   Eigen::Matrix<double, 6, 6> F = Eigen::Matrix<double, 6, 6>::Zero();
   for (int i = 0; i < static_cast<int>(m.points.cols()); ++i) {
-    if (!m.visible(i, c)) continue;
+    if (!m.visibility->visible(i, c)) continue;
     out.visible_markers.push_back(i);
     const Eigen::Matrix<double, 2, 6> J =
         pixel_jacobian(R * m.points.col(i), p, m.options.focal_length);
     F.noalias() += J.transpose() * J;
   }
   const int seen = static_cast<int>(out.visible_markers.size());
-  if (!in_workspace(out.direction) || seen < 3 || seen < m.min_visible) return out;
+  if (!in_workspace(out.direction) || seen < 3 || seen < m.visibility->min_visible()) return out;
   F /= m.options.noise_px * m.options.noise_px;
   // Scale translation by D so that both blocks are in radians-like units before the condition
   // test; the covariance is computed from the scaled matrix and scaled back.

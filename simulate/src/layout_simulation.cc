@@ -158,13 +158,14 @@ LayoutSimulation simulate_layout(const Layout& layout, const LayoutSimulationOpt
     throw InvalidArgument("scene.camera: pinhole needs a point layout; this one holds directions");
   }
   LayoutSceneOptions scene = options.scene;
+  const bool pinhole = scene.camera == CameraModel::kPinhole;
   std::unique_ptr<VisibleViews> views;
   if (layout.visibility && !vectors) {
     views = std::make_unique<VisibleViews>(layout);
     if (options.worst_viewpoint) {
-      views->look_from(views->setup().worst_viewpoint, "worst_viewpoint");
+      views->look_from(views->setup().worst_viewpoint, "worst_viewpoint", !pinhole);
     } else if (scene.viewpoint) {
-      views->look_from(-*scene.viewpoint, "scene.viewpoint");
+      views->look_from(-*scene.viewpoint, "scene.viewpoint", !pinhole);
     }
   } else if (options.worst_viewpoint) {
     scene.viewpoint = sdp::global_worst_viewpoint(data_vectors(layout).vectors).viewpoint;
@@ -177,6 +178,11 @@ LayoutSimulation simulate_layout(const Layout& layout, const LayoutSimulationOpt
   // On a body the estimators are chosen on the whole layout's image: every visible set of at
   // least min_visible (>= 3) markers then fits them too (their limits are n >= 3 and n <= max).
   TrialRandom probe_random = TrialRandom::for_trial(mc.seed, 0);
+  if (views && pinhole && (scene.viewpoint || options.worst_viewpoint)) {
+    // A fixed pinhole view its centre cannot track is bad input, said before any trial runs.
+    TrialRandom fixed_probe = probe_random;
+    views->scenes(layout.entries, scene, fixed_probe);
+  }
   const Scene probe = views ? make_layout_scene(layout.entries, vectors, scene, probe_random)
                             : generator(0, probe_random);
   const std::vector<Estimator> estimators =

@@ -11,6 +11,9 @@
 namespace vantage::simulate {
 namespace {
 
+// Visible markers are collinear when every free vector from the first is parallel to this.
+constexpr double kCollinearTolerance = 1e-12;
+
 std::string percent(double fraction) {
   std::ostringstream s;
   s.precision(3);
@@ -69,13 +72,29 @@ Matrix columns(const Matrix& m, const std::vector<int>& index) {
   return out;
 }
 
+// min |a.u_ij| over the pairs of `visible` (1 with fewer than two), as direction_visibility.
+double pair_t(const Eigen::Matrix3Xd& points, const std::vector<int>& visible,
+              const Eigen::Vector3d& a) {
+  double t = 1.0;
+  for (std::size_t x = 0; x < visible.size(); ++x) {
+    for (std::size_t y = x + 1; y < visible.size(); ++y) {
+      const Eigen::Vector3d u = (points.col(visible[y]) - points.col(visible[x])).normalized();
+      t = std::min(t, std::abs(a.dot(u)));
+    }
+  }
+  return t;
+}
+
 }  // namespace
 
 VisibleViews::VisibleViews(const Layout& layout)
-    : model_(sdp::VisibilityModel::of(layout)), setup_(make_setup(layout, model_)) {}
+    : model_(sdp::VisibilityModel::of(layout)),
+      camera_(layout),
+      setup_(make_setup(layout, model_)) {}
 
-void VisibleViews::look_from(const Eigen::Vector3d& a, const std::string& field) {
-  if (!model_.at(a).trackable) {
+void VisibleViews::look_from(const Eigen::Vector3d& a, const std::string& field,
+                             bool by_direction) {
+  if (by_direction && !model_.at(a).trackable) {
     throw InvalidArgument(field,
                           "the body is not trackable from this direction (too few markers "
                           "visible, collinear ones, or outside the workspace)");
@@ -116,25 +135,64 @@ VisibleView VisibleViews::draw(TrialRandom& random) const {
                            percent(setup_.trackable_fraction) + ")");
 }
 
+bool VisibleViews::trackable_set(const Eigen::Matrix3Xd& points,
+                                 const std::vector<int>& visible) const {
+  if (static_cast<int>(visible.size()) < std::max(3, setup_.min_visible)) return false;
+  const Eigen::Vector3d first = (points.col(visible[1]) - points.col(visible[0])).normalized();
+  for (std::size_t k = 2; k < visible.size(); ++k) {
+    const Eigen::Vector3d u = (points.col(visible[k]) - points.col(visible[0])).normalized();
+    if (u.cross(first).norm() > kCollinearTolerance) return true;
+  }
+  return false;
+}
+
 VisibleScenes VisibleViews::scenes(const Eigen::Matrix3Xd& points,
                                    const LayoutSceneOptions& options, TrialRandom& random) const {
-  VisibleScenes out;
-  out.view = draw(random);
-  const std::vector<int>& visible = out.view.visibility.visible;
-  const Eigen::Matrix3Xd seen = columns(points, visible);
-  // The visible markers at the whole layout's depth and offset (sizes are the whole layout's,
-  // both about the aim point).
-  const double scale = (points.colwise() - options.aim).colwise().norm().maxCoeff() /
-                       (seen.colwise() - options.aim).colwise().norm().maxCoeff();
-  LayoutSceneOptions whole = options;
-  whole.viewpoint = -out.view.direction;
-  LayoutSceneOptions part = whole;
-  part.range = options.range * scale;
-  part.lateral_offset = options.lateral_offset * scale;
-  TrialRandom same_roll = random;  // both scenes draw the roll first
-  out.visible = make_layout_scene(seen, false, part, random);
-  out.whole = make_layout_scene(points, false, whole, same_roll);
-  return out;
+  const bool pinhole = options.camera == CameraModel::kPinhole;
+  for (long attempt = 1;; ++attempt) {
+    VisibleScenes out;
+    if (!pinhole) {
+      out.view = draw(random);
+    } else if (fixed_) {
+      out.view.direction = *fixed_;
+    } else {
+      out.view.direction = uniform_direction(random);
+      out.view.draws = attempt;
+    }
+    LayoutSceneOptions whole = options;
+    whole.viewpoint = -out.view.direction;
+    TrialRandom same_roll = random;  // both scenes draw the roll first
+    out.whole = make_layout_scene(points, false, whole, same_roll);
+    if (pinhole) {
+      // The camera centre in the object frame, and what each marker's line of sight to it sees.
+      const Eigen::Vector3d centre = -out.whole.R_true.transpose() * out.whole.p_true;
+      out.view.visibility.visible = camera_.visible_from(centre);
+      if (!trackable_set(points, out.view.visibility.visible)) {
+        if (fixed_) {
+          throw InvalidArgument("scene.viewpoint",
+                                "the pinhole camera's centre sees fewer than min_visible markers "
+                                "that are not collinear (each by its own line of sight)");
+        }
+        if (attempt >= kMaxDraws) {
+          throw std::runtime_error("no trackable pinhole view in " + std::to_string(kMaxDraws) +
+                                   " random views");
+        }
+        continue;
+      }
+      out.view.visibility.t = pair_t(points, out.view.visibility.visible, out.view.direction);
+    }
+    const std::vector<int>& visible = out.view.visibility.visible;
+    const Eigen::Matrix3Xd seen = columns(points, visible);
+    // The visible markers at the whole layout's depth and offset (sizes are the whole layout's,
+    // both about the aim point).
+    const double scale = (points.colwise() - options.aim).colwise().norm().maxCoeff() /
+                         (seen.colwise() - options.aim).colwise().norm().maxCoeff();
+    LayoutSceneOptions part = whole;
+    part.range = options.range * scale;
+    part.lateral_offset = options.lateral_offset * scale;
+    out.visible = make_layout_scene(seen, false, part, random);
+    return out;
+  }
 }
 
 }  // namespace vantage::simulate

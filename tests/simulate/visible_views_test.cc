@@ -258,5 +258,42 @@ TEST(VisibleViews, AFixedViewpointMustBeTrackable) {
   EXPECT_THROW(simulate_layout(narrow, options), InvalidArgument);
 }
 
+// The pinhole camera sees each marker by its own line of sight to its centre c (docs/math.md §22),
+// not by the common direction a. From a 25 degrees below the horizontal towards +x, direction a
+// sees the +x and -z faces (n.a = 0.91 and 0.42 against cos 70 = 0.34); the camera 1.5 sizes
+// from the origin has c_z = -0.75, above the -z face's plane, so it sees the +x face only. Each
+// visible set equals the cone test written out.
+TEST(VisibleViews, ThePinholeCameraSeesEachMarkerByItsOwnLineOfSight) {
+  const Layout layout = box_layout();
+  const double below = 25.0 / kDegreesPerRadian;
+  const Eigen::Vector3d a(std::cos(below), 0.0, -std::sin(below));
+  VisibleViews views(layout);
+  views.look_from(a, "a");
+  LayoutSceneOptions options;
+  options.range = 1.5;
+  options.camera = CameraModel::kAffine;
+  TrialRandom random = TrialRandom::for_trial(testing::kSeed, 0);
+  const VisibleScenes affine = views.scenes(layout.entries, options, random);
+  EXPECT_EQ(affine.view.visibility.visible, in_cones(layout, a));
+  options.camera = CameraModel::kPinhole;
+  random = TrialRandom::for_trial(testing::kSeed, 0);
+  const VisibleScenes pinhole = views.scenes(layout.entries, options, random);
+  // The centre, written out: the aim (the origin) plus range sizes along a.
+  const double size = layout.entries.colwise().norm().maxCoeff();
+  const Eigen::Vector3d c = 1.5 * size * a;
+  EXPECT_LT((-pinhole.whole.R_true.transpose() * pinhole.whole.p_true - c).norm(), kRounding);
+  std::vector<int> expected;
+  const MarkerVisibility& v = *layout.visibility;
+  for (int i = 0; i < 18; ++i) {
+    const Eigen::Vector3d sight = (c - layout.entries.col(i)).normalized();
+    if (v.normals.col(i).dot(sight) >= std::cos(v.cone_half_angle_deg(i) / kDegreesPerRadian)) {
+      expected.push_back(i);
+    }
+  }
+  EXPECT_EQ(pinhole.view.visibility.visible, expected);
+  EXPECT_NE(pinhole.view.visibility.visible, affine.view.visibility.visible);
+  EXPECT_EQ(pinhole.visible.model.cols(), static_cast<Eigen::Index>(expected.size()));
+}
+
 }  // namespace
 }  // namespace vantage::simulate

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "vantage/analysis/layout.h"
+#include "vantage/sdp/camera_visibility.h"
 #include "vantage/sdp/visibility.h"
 #include "vantage/sdp/visibility_model.h"
 #include "vantage/simulate/random.h"
@@ -81,7 +82,9 @@ class VisibleViews {
 
   /// Every view from now on looks from direction a (unit, body -> camera). Throws
   /// InvalidArgument naming `field` when a is not trackable.
-  void look_from(const Eigen::Vector3d& a, const std::string& field);
+  /// With `by_direction` false (the pinhole camera, whose centre decides what it sees), a is
+  /// taken as it is and scenes() checks its centre.
+  void look_from(const Eigen::Vector3d& a, const std::string& field, bool by_direction = true);
 
   const sdp::VisibilityModel& model() const { return model_; }
   const VisibilitySetup& setup() const { return setup_; }
@@ -94,13 +97,21 @@ class VisibleViews {
   /// scaled as the whole layout is (the same depth and offset, options.range and
   /// options.lateral_offset in sizes of the whole layout), looking along -a. `points` are the
   /// layout's markers. The roll is the same in both scenes; the whole scene's noise is its own.
+  /// For the affine camera (at infinity) the visible markers are those of direction a. For the
+  /// pinhole camera they are those of its centre c = -R^T p, each marker by its own line of
+  /// sight (sdp::CameraVisibility, docs/math.md §22): its direction is drawn uniformly on the
+  /// workspace and drawn again (up to kMaxDraws times) while the centre sees fewer than
+  /// max(3, min_visible) markers or only collinear ones; a fixed view whose centre does so
+  /// throws InvalidArgument naming "scene.viewpoint".
   VisibleScenes scenes(const Eigen::Matrix3Xd& points, const LayoutSceneOptions& options,
                        TrialRandom& random) const;
 
  private:
   Eigen::Vector3d uniform_direction(TrialRandom& random) const;
+  bool trackable_set(const Eigen::Matrix3Xd& points, const std::vector<int>& visible) const;
 
   sdp::VisibilityModel model_;
+  sdp::CameraVisibility camera_;
   VisibilitySetup setup_;
   std::optional<Eigen::Vector3d> fixed_;
 };
