@@ -115,7 +115,7 @@ fuzz: deps
 	cmake --build $(FUZZ_DIR) -j $(JOBS) --target vantage_fuzz_layout_formats
 	rm -rf $(FUZZ_DIR)/corpus-formats && mkdir -p $(FUZZ_DIR)/corpus-formats
 	$(FUZZ_DIR)/fuzz/vantage_fuzz_layout_formats -max_total_time=$(FORMATS_FUZZ_SECONDS) \
-	  -print_final_stats=1 $(FUZZ_DIR)/corpus-formats examples/layouts
+	  -print_final_stats=1 $(FUZZ_DIR)/corpus-formats examples/layouts examples/tools
 
 format:
 	find analysis sdp design cli io viewer examples tests bench fuzz python \

@@ -1,7 +1,7 @@
 // `vantage layout board --type chessboard|charuco|aprilgrid --rows R --cols C --square S
 // [--marker M] [--spacing G] --out FILE.json [--overwrite] [--json]`: writes the layout of the
 // points a detector measures on a standard calibration target, so the printed target can be
-// analysed like any other layout.
+// analysed like any other layout. `vantage layout convert` (layout_convert.cc) converts formats.
 
 #include <algorithm>
 #include <cctype>
@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "command.h"
+#include "layout_convert.h"
 #include "vantage/analysis/common.h"
 #include "vantage/io/calibration_board.h"
 #include "vantage/io/layout_file.h"
@@ -100,7 +101,9 @@ Command add_layout_command(CLI::App& root) {
   sub->add_option("--out", args->out, "the layout JSON file to write")->required();
   sub->add_flag("--overwrite", args->overwrite, "replace --out if it exists");
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
-  return {layout, [args] { return run_board(*args); }};
+  const Command convert = add_layout_convert_subcommand(layout);
+  return {layout,
+          [args, convert] { return convert.app->parsed() ? convert.run() : run_board(*args); }};
 }
 
 }  // namespace vantage::cli

@@ -10,8 +10,9 @@ void LayoutInput::add_options(CLI::App* sub, const std::string& format_flag) {
   format_option = format_flag;
   sub->add_option(format_flag, format,
                   "layout file format; auto: by extension (.json, .csv name,x,y,z[,weight], "
-                  ".yaml/.yml AprilTag tag_bundles)")
-      ->check(CLI::IsMember({"auto", "json", "csv", "apriltag"}))
+                  ".yaml/.yml AprilTag tag_bundles, .ini Atracsys geometry, .rom NDI tool "
+                  "definition)")
+      ->check(CLI::IsMember({"auto", "json", "csv", "apriltag", "atracsys", "ndi"}))
       ->capture_default_str();
   sub->add_option("--tag-points", tag_points,
                   "AprilTag bundles: the markers are each tag's four corners or its centre")

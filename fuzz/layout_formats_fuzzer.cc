@@ -1,8 +1,10 @@
-// libFuzzer entry point for the CSV and AprilTag (YAML) layout readers: any input must either
-// parse into a valid layout or raise vantage::InvalidArgument with a one-line message, never
-// crash, leak or hit undefined behaviour. Every input goes to both readers (the seed corpus,
-// examples/layouts, holds files of each format). An accepted layout is finite, and a CSV data
-// row is never dropped as a header.
+// libFuzzer entry point for the CSV, AprilTag (YAML), Atracsys geometry (.ini) and NDI tool
+// definition (.rom) layout readers: any input must either parse into a valid layout or raise
+// vantage::InvalidArgument with a one-line message, never crash, leak or hit undefined
+// behaviour. Every input goes to every reader (the seed corpus, examples/layouts and
+// examples/tools, holds files of the text formats). An accepted layout is finite, a CSV data row
+// is never dropped as a header, and an accepted geometry file written back reads back to the
+// same positions bit for bit.
 
 #include <algorithm>
 #include <cstddef>
@@ -14,8 +16,10 @@
 
 #include "vantage/analysis/common.h"
 #include "vantage/io/apriltag_bundle.h"
+#include "vantage/io/atracsys_geometry.h"
 #include "vantage/io/csv_layout.h"
 #include "vantage/io/layout_file.h"
+#include "vantage/io/ndi_rom.h"
 
 namespace {
 
@@ -75,6 +79,25 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const vantage::Layout layout = vantage::io::parse_csv_layout(text, "fuzz.csv");
     check_layout(layout);
     check_csv_rows(text, layout);
+  } catch (const vantage::InvalidArgument& e) {
+    check_message(e);
+  }
+  try {
+    const vantage::io::AtracsysGeometry geometry =
+        vantage::io::parse_atracsys_geometry(text, "fuzz.ini");
+    check_layout(geometry.layout);
+    const vantage::io::AtracsysGeometry back = vantage::io::parse_atracsys_geometry(
+        vantage::io::layout_to_atracsys_geometry(geometry.layout, geometry.id, geometry.pivot),
+        "round-trip.ini");
+    if (!back.layout.entries.cwiseEqual(geometry.layout.entries).all() || back.id != geometry.id ||
+        back.pivot.has_value() != geometry.pivot.has_value()) {
+      __builtin_trap();
+    }
+  } catch (const vantage::InvalidArgument& e) {
+    check_message(e);
+  }
+  try {
+    check_layout(vantage::io::parse_ndi_rom_layout(text, "fuzz.rom"));
   } catch (const vantage::InvalidArgument& e) {
     check_message(e);
   }

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "number_text.h"
 #include "vantage/analysis/common.h"
 #include "vantage/io/csv_layout.h"
 
@@ -22,16 +23,6 @@ const char* unwritable_reason(const std::string& name) {
   }
   if (name.front() == '#') return "starts with '#' (a comment line in CSV)";
   return nullptr;
-}
-
-// The shortest of 15, 16 or 17 significant digits that reads back to x exactly (17 always does).
-std::string number(double x) {
-  char buffer[32];
-  for (int digits = 15; digits <= 17; ++digits) {
-    std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
-    if (std::strtod(buffer, nullptr) == x) break;
-  }
-  return buffer;
 }
 
 // One comment line: line breaks inside the text become blanks.
@@ -81,10 +72,10 @@ std::string layout_to_csv(const Layout& layout) {
   out += visibility != nullptr ? "name,x,y,z,weight,nx,ny,nz\n" : "name,x,y,z,weight\n";
   for (Eigen::Index i = 0; i < n; ++i) {
     out += layout.entry_name(i);
-    for (int r = 0; r < 3; ++r) out += "," + number(layout.entries(r, i));
-    out += "," + number(layout.weights(i));
+    for (int r = 0; r < 3; ++r) out += "," + internal::round_trip_number(layout.entries(r, i));
+    out += "," + internal::round_trip_number(layout.weights(i));
     for (int r = 0; visibility != nullptr && r < 3; ++r) {
-      out += "," + number(visibility->normals(r, i));
+      out += "," + internal::round_trip_number(visibility->normals(r, i));
     }
     out += "\n";
   }

@@ -6,9 +6,11 @@
 
 #include "json_fields.h"
 #include "vantage/analysis/common.h"
+#include "vantage/io/atracsys_geometry.h"
 #include "vantage/io/csv_layout.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/io/mesh_file.h"
+#include "vantage/io/ndi_rom.h"
 #include "vantage/io/printable.h"
 
 namespace vantage::io {
@@ -18,7 +20,9 @@ LayoutFormat layout_format_from_string(const std::string& name, const std::strin
   if (name == "json") return LayoutFormat::kJson;
   if (name == "csv") return LayoutFormat::kCsv;
   if (name == "apriltag") return LayoutFormat::kAprilTag;
-  throw InvalidArgument(option + ": expected auto, json, csv or apriltag, got \"" +
+  if (name == "atracsys") return LayoutFormat::kAtracsys;
+  if (name == "ndi") return LayoutFormat::kNdiRom;
+  throw InvalidArgument(option + ": expected auto, json, csv, apriltag, atracsys or ndi, got \"" +
                         printable(name) + "\"");
 }
 
@@ -32,6 +36,10 @@ const char* to_string(LayoutFormat format) {
       return "csv";
     case LayoutFormat::kAprilTag:
       return "apriltag";
+    case LayoutFormat::kAtracsys:
+      return "atracsys";
+    case LayoutFormat::kNdiRom:
+      return "ndi";
   }
   return "unknown";
 }
@@ -52,8 +60,11 @@ LayoutFormat layout_format_of(const std::string& path) {
   if (extension == ".json") return LayoutFormat::kJson;
   if (extension == ".csv") return LayoutFormat::kCsv;
   if (extension == ".yaml" || extension == ".yml") return LayoutFormat::kAprilTag;
+  if (extension == ".ini") return LayoutFormat::kAtracsys;
+  if (extension == ".rom") return LayoutFormat::kNdiRom;
   internal::fail(path, "cannot tell the layout format from the extension \"" + extension +
-                           "\" (.json, .csv, .yaml or .yml); give --format json|csv|apriltag");
+                           "\" (.json, .csv, .yaml, .yml, .ini or .rom); give --format "
+                           "json|csv|apriltag|atracsys|ndi");
 }
 
 Layout parse_layout_as(std::string_view text, const std::string& source,
@@ -65,6 +76,10 @@ Layout parse_layout_as(std::string_view text, const std::string& source,
       return parse_csv_layout(text, source);
     case LayoutFormat::kAprilTag:
       return parse_apriltag_layout(text, source, options.apriltag);
+    case LayoutFormat::kAtracsys:
+      return parse_atracsys_layout(text, source);
+    case LayoutFormat::kNdiRom:
+      return parse_ndi_rom_layout(text, source);
     case LayoutFormat::kJson:
     case LayoutFormat::kAuto:
       break;
@@ -97,19 +112,32 @@ LayoutFormat layout_write_format(const std::string& path) {
   const std::string extension = lower_extension(path);
   if (extension == ".json") return LayoutFormat::kJson;
   if (extension == ".csv") return LayoutFormat::kCsv;
+  if (extension == ".ini") {
+    atracsys_geometry_id_of(path);
+    return LayoutFormat::kAtracsys;
+  }
   if (extension == ".yaml" || extension == ".yml") {
     internal::fail(path,
                    "cannot write an AprilTag bundle (it describes printed tags, which a layout "
-                   "does not hold); name the file .json or .csv");
+                   "does not hold); name the file .json, .csv or .ini");
+  }
+  if (extension == ".rom") {
+    internal::fail(path,
+                   "cannot write an NDI tool definition (.rom is read only: its format is not "
+                   "published); name the file .json, .csv or .ini");
   }
   internal::fail(path, "cannot tell the layout format from the extension \"" + extension +
-                           "\"; name the file .json or .csv");
+                           "\"; name the file .json, .csv or .ini");
 }
 
-std::string layout_to_text(const Layout& layout, LayoutFormat format) {
+std::string layout_to_text(const Layout& layout, LayoutFormat format, std::uint32_t geometry_id) {
   if (format == LayoutFormat::kCsv) return layout_to_csv(layout);
-  if (format == LayoutFormat::kAprilTag) {
-    throw InvalidArgument("format: AprilTag bundles are read only; write json or csv");
+  if (format == LayoutFormat::kAtracsys) return layout_to_atracsys_geometry(layout, geometry_id);
+  if (format == LayoutFormat::kAprilTag || format == LayoutFormat::kNdiRom) {
+    throw InvalidArgument(
+        std::string("format: ") +
+        (format == LayoutFormat::kNdiRom ? "NDI tool definitions" : "AprilTag bundles") +
+        " are read only; write json, csv or atracsys");
   }
   layout.validate();
   return layout_to_json(layout);
@@ -117,6 +145,7 @@ std::string layout_to_text(const Layout& layout, LayoutFormat format) {
 
 void save_layout(const std::string& path, const Layout& layout, bool overwrite) {
   const LayoutFormat format = layout_write_format(path);
+  const std::uint32_t id = format == LayoutFormat::kAtracsys ? atracsys_geometry_id_of(path) : 0;
   std::string text;
   try {
     if (layout.visibility && !layout.visibility->body_path.empty()) {
@@ -129,9 +158,9 @@ void save_layout(const std::string& path, const Layout& layout, bool overwrite) 
           std::filesystem::absolute(directory.empty() ? "." : directory).lexically_normal();
       const std::filesystem::path relative = body.lexically_relative(from);
       moved.visibility->body_path = relative.empty() ? body.string() : relative.string();
-      text = layout_to_text(moved, format);
+      text = layout_to_text(moved, format, id);
     } else {
-      text = layout_to_text(layout, format);
+      text = layout_to_text(layout, format, id);
     }
   } catch (const InvalidArgument& e) {
     internal::fail(path, e.what());

@@ -102,7 +102,7 @@ def test_format_override_and_unknown_options(vantage, tmp_path):
     path = tmp_path / "markers.txt"
     path.write_text("a,0,0,0\nb,1,0,0\nc,0,1,0\n")
     assert len(vantage.load_layout(path, format="csv")) == 3
-    with pytest.raises(ValueError, match="format: expected auto, json, csv or apriltag"):
+    with pytest.raises(ValueError, match="format: expected auto, json, csv, apriltag, atracsys or ndi"):
         vantage.load_layout(path, format="xml")
     with pytest.raises(TypeError):  # a real signature: Python itself refuses the keyword
         vantage.load_layout(path, colour="red")  # type: ignore[call-arg]
@@ -172,7 +172,7 @@ def test_save_layout_writes_the_format_the_extension_names(vantage, tmp_path):
     vantage.save_layout(body, tmp_path / "body.json")
     assert vantage.load_layout(tmp_path / "body.json").names == body.names
     for name, expected in [("tags.yaml", "cannot write an AprilTag bundle"),
-                           ("body.txt", "name the file .json or .csv")]:
+                           ("body.txt", "name the file .json, .csv or .ini")]:
         with pytest.raises(ValueError, match=expected):
             vantage.save_layout(body, tmp_path / name)
         assert not (tmp_path / name).exists()

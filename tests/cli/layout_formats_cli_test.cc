@@ -103,7 +103,7 @@ TEST(LayoutFormatsCli, DesignRefusesWritesItCannotHonourBeforeTheSearch) {
   };
   const Refused refused[] = {
       {kCsv + " --add 1 --write out.yaml", "out.yaml", "out.yaml: cannot write an AprilTag"},
-      {kCsv + " --add 1 --write out.txt", "out.txt", "name the file .json or .csv"},
+      {kCsv + " --add 1 --write out.txt", "out.txt", "name the file .json, .csv or .ini"},
       {kTriad + " --add 1 --write out.csv", "out.csv", "holds marker positions"},
   };
   for (const Refused& r : refused) {

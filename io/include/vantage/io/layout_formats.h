@@ -1,13 +1,16 @@
 #pragma once
 
 /// One entry point for every layout file format vantage reads and writes: layout JSON
-/// (layout_file.h), CSV marker sets (csv_layout.h) and AprilTag bundles (apriltag_bundle.h).
+/// (layout_file.h), CSV marker sets (csv_layout.h), AprilTag bundles (apriltag_bundle.h),
+/// Atracsys geometry files (atracsys_geometry.h) and NDI tool definitions (ndi_rom.h).
 /// The format comes from the file's extension unless given: .json -> JSON, .csv -> CSV,
-/// .yaml/.yml -> AprilTag. Every command, the viewer and the Python module read with
-/// load_layout() and write with save_layout(), so each reads every format and writes the one
-/// its target's extension names (AprilTag bundles are read only).
+/// .yaml/.yml -> AprilTag, .ini -> Atracsys, .rom -> NDI. Every command, the viewer and the
+/// Python module read with load_layout() and write with save_layout(), so each reads every
+/// format and writes the one its target's extension names (AprilTag bundles and NDI tool
+/// definitions are read only).
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -23,12 +26,15 @@ enum class LayoutFormat {
   kJson,      ///< vantage layout JSON
   kCsv,       ///< name,x,y,z[,weight]
   kAprilTag,  ///< ROS apriltag tags.yaml, tag_bundles
+  kAtracsys,  ///< Atracsys fusionTrack / spryTrack geometry .ini
+  kNdiRom,    ///< NDI tool definition .rom (binary, read only)
 };
 
-/// "auto" | "json" | "csv" | "apriltag"; throws InvalidArgument naming `option` otherwise.
+/// "auto" | "json" | "csv" | "apriltag" | "atracsys" | "ndi"; throws InvalidArgument naming
+/// `option` otherwise.
 LayoutFormat layout_format_from_string(const std::string& name, const std::string& option);
 
-/// "auto", "json", "csv" or "apriltag".
+/// "auto", "json", "csv", "apriltag", "atracsys" or "ndi".
 const char* to_string(LayoutFormat format);
 
 /// The format of `path` by its extension (case-insensitive). Throws InvalidArgument
@@ -54,18 +60,24 @@ Layout load_layout(const std::string& path, const LayoutReadOptions& options = {
 /// "<layout_path>: visibility.body: <why>" when the mesh does not load. load_layout() calls it.
 void load_body(const std::string& layout_path, Layout* layout);
 
-/// The format save_layout() writes to `path`: kJson for .json, kCsv for .csv (case-insensitive).
-/// Throws InvalidArgument "<path>: ..." for .yaml/.yml (AprilTag bundles describe printed tags,
-/// which a layout does not hold) and for any other extension.
+/// The format save_layout() writes to `path`: kJson for .json, kCsv for .csv, kAtracsys for .ini
+/// (case-insensitive; an .ini name must end its stem in the geometry id,
+/// atracsys_geometry_id_of()). Throws InvalidArgument "<path>: ..." for .yaml/.yml (AprilTag
+/// bundles describe printed tags, which a layout does not hold), for .rom (read only), for an
+/// .ini name without the id, and for any other extension.
 LayoutFormat layout_write_format(const std::string& path);
 
-/// The layout as the text of `format` (kJson: layout_to_json, kCsv: layout_to_csv). Throws
-/// InvalidArgument for what the format cannot hold (csv_layout.h) and for an invalid layout.
-std::string layout_to_text(const Layout& layout, LayoutFormat format);
+/// The layout as the text of `format` (kJson: layout_to_json, kCsv: layout_to_csv, kAtracsys:
+/// layout_to_atracsys_geometry with `geometry_id`). Throws InvalidArgument for what the format
+/// cannot hold (csv_layout.h, atracsys_geometry.h), for the read-only formats and for an
+/// invalid layout.
+std::string layout_to_text(const Layout& layout, LayoutFormat format,
+                           std::uint32_t geometry_id = 0);
 
-/// Writes the layout to `path` in the format of its extension (layout_write_format), all or
-/// nothing (write_text_file): an existing file is replaced only with `overwrite`. Everything is
-/// checked before the file is touched; errors name the path.
+/// Writes the layout to `path` in the format of its extension (layout_write_format; an .ini
+/// gets the geometry id its name ends in), all or nothing (write_text_file): an existing file is
+/// replaced only with `overwrite`. Everything is checked before the file is touched; errors name
+/// the path.
 void save_layout(const std::string& path, const Layout& layout, bool overwrite = false);
 
 }  // namespace vantage::io
