@@ -1,0 +1,84 @@
+#pragma once
+
+/// The target registration error (TRE) of a tool tracked by a 3-D tracker, to first order
+/// (docs/math.md §23): markers p_i (tool frame) measured in the tracker frame with zero-mean
+/// fiducial localisation error (FLE), registered by unweighted least squares without scale
+/// (Theorem 1, Eq. 23.1), the error of the registered target r expressed in the tool frame.
+///
+/// Frames: x_tracker = R_tracker_tool * x_tool + t. The line of sight a is a unit vector in the
+/// tool frame from the tool toward the tracker (docs/math.md §20's viewing direction).
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vantage {
+
+/// The FLE of every marker: standard deviations sigma_perp across and sigma_axial along the
+/// line of sight, Sigma(a) = sigma_perp^2 (I - a a^T) + sigma_axial^2 a a^T (Eq. 23.4).
+struct FleModel {
+  double sigma_perp = 0.0;   ///< per-axis standard deviation across the line of sight, >= 0
+  double sigma_axial = 0.0;  ///< standard deviation along the line of sight, >= 0
+  /// Set by isotropic(): the model came from an RMS (E|e|^2 = rms^2), reported as such.
+  bool from_rms = false;
+
+  /// Isotropic FLE with E|e|^2 = rms^2: sigma_perp = sigma_axial = rms / sqrt(3).
+  static FleModel isotropic(double rms);
+  /// sqrt(E|e|^2) = sqrt(2 sigma_perp^2 + sigma_axial^2).
+  double rms() const;
+  /// Finite, non-negative, not both zero; otherwise *why names "sigma_perp" or "sigma_axial".
+  bool is_valid(std::string* why = nullptr) const;
+};
+
+/// RMS^2(a) = c + a^T M a for one visible set (Eq. 23.4).
+struct TreQuadratic {
+  bool registrable = false;  ///< the set has >= 3 markers, not collinear (Lambda invertible)
+  double c = 0.0;
+  Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+
+  /// c + a^T M a (a unit).
+  double rms_squared(const Eigen::Vector3d& a) const { return c + a.dot(M * a); }
+};
+
+/// The first-order maps A_i of Eq. (23.2), TRE = sum_{i in visible} A_i e'_i, one per entry of
+/// `visible` (indices into the columns of points_tool, distinct). Returns false (and leaves *A
+/// empty) when the visible markers are fewer than 3 or collinear (smallest eigenvalue of Lambda
+/// at most 1e-12 of its trace).
+bool tre_linear_maps(const Eigen::Matrix3Xd& points_tool, const std::vector<int>& visible,
+                     const Eigen::Vector3d& target_tool, std::vector<Eigen::Matrix3d>* A);
+
+/// c and M of Eq. (23.4) for the visible set.
+TreQuadratic tre_quadratic(const Eigen::Matrix3Xd& points_tool, const std::vector<int>& visible,
+                           const Eigen::Vector3d& target_tool, const FleModel& fle);
+
+/// Cov(TRE) in the tool frame at line of sight a (unit), Eq. (23.2) with Sigma(a) of every marker.
+/// Zero when the set is not registrable.
+Eigen::Matrix3d tre_covariance(const Eigen::Matrix3Xd& points_tool, const std::vector<int>& visible,
+                               const Eigen::Vector3d& target_tool, const FleModel& fle,
+                               const Eigen::Vector3d& a);
+
+/// Fitzpatrick, West & Maurer 1998's RMS TRE for isotropic FLE with E|e|^2 = fle_rms^2 and every
+/// marker registered, Eq. (23.3). Throws InvalidArgument when the markers are collinear.
+double tre_rms_isotropic(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d& target_tool,
+                         double fle_rms);
+
+/// What a Monte Carlo run measured (docs/math.md §23, "Monte Carlo").
+struct TreMonteCarlo {
+  long trials = 0;
+  double rms = 0.0;          ///< sqrt(mean |TRE|^2) measured
+  double formula_rms = 0.0;  ///< sqrt(trace Cov) of Eq. (23.2) at the same a and visible set
+  double rel_diff = 0.0;     ///< rms / formula_rms - 1
+};
+
+/// `trials` registrations of the visible markers at line of sight a: the tool at the rotation
+/// taking a to the tracker's +z, Gaussian FLE of the model's covariance in the tracker frame,
+/// the q-method fit of Eq. (23.1), the target error measured. Trials are drawn in blocks of 1024,
+/// block b from a generator seeded with (seed, b), so the result does not depend on `threads`
+/// (0: all cores). Throws InvalidArgument for trials < 1 or a set that is not registrable.
+TreMonteCarlo tre_monte_carlo(const Eigen::Matrix3Xd& points_tool, const std::vector<int>& visible,
+                              const Eigen::Vector3d& target_tool, const FleModel& fle,
+                              const Eigen::Vector3d& a, long trials, std::uint64_t seed,
+                              int threads = 0);
+
+}  // namespace vantage

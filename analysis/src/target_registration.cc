@@ -1,0 +1,117 @@
+#include "vantage/analysis/target_registration.h"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+#include "vantage/analysis/common.h"
+
+namespace vantage {
+namespace {
+
+// Lambda is singular (collinear markers) below this fraction of its trace: its condition then
+// exceeds 1e12 and the first-order maps lose every digit.
+constexpr double kCollinearFraction = 1e-12;
+
+Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d m;
+  m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return m;
+}
+
+}  // namespace
+
+FleModel FleModel::isotropic(double rms) {
+  FleModel fle;
+  fle.sigma_perp = fle.sigma_axial = rms / std::sqrt(3.0);
+  fle.from_rms = true;
+  return fle;
+}
+
+double FleModel::rms() const {
+  return std::sqrt(2.0 * sigma_perp * sigma_perp + sigma_axial * sigma_axial);
+}
+
+bool FleModel::is_valid(std::string* why) const {
+  auto fail = [why](const char* message) {
+    if (why != nullptr) *why = message;
+    return false;
+  };
+  if (!(std::isfinite(sigma_perp) && sigma_perp >= 0.0)) {
+    return fail("sigma_perp: must be finite and >= 0");
+  }
+  if (!(std::isfinite(sigma_axial) && sigma_axial >= 0.0)) {
+    return fail("sigma_axial: must be finite and >= 0");
+  }
+  if (sigma_perp == 0.0 && sigma_axial == 0.0) {
+    return fail("sigma_perp: sigma_perp and sigma_axial must not both be 0");
+  }
+  return true;
+}
+
+bool tre_linear_maps(const Eigen::Matrix3Xd& points_tool, const std::vector<int>& visible,
+                     const Eigen::Vector3d& target_tool, std::vector<Eigen::Matrix3d>* A) {
+  A->clear();
+  const int n = static_cast<int>(visible.size());
+  if (n < 3) return false;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (int i : visible) centroid += points_tool.col(i);
+  centroid /= n;
+  Eigen::Matrix3d lambda = Eigen::Matrix3d::Zero();
+  for (int i : visible) {
+    const Eigen::Vector3d q = points_tool.col(i) - centroid;
+    lambda += q.squaredNorm() * Eigen::Matrix3d::Identity() - q * q.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(lambda);
+  if (!(eigen.eigenvalues()(0) > kCollinearFraction * lambda.trace())) return false;
+  const Eigen::Matrix3d d_lambda_inv = cross_matrix(target_tool - centroid) * lambda.inverse();
+  A->reserve(visible.size());
+  for (int i : visible) {
+    A->push_back(Eigen::Matrix3d::Identity() / n -
+                 d_lambda_inv * cross_matrix(points_tool.col(i) - centroid));
+  }
+  return true;
+}
+
+TreQuadratic tre_quadratic(const Eigen::Matrix3Xd& points_tool, const std::vector<int>& visible,
+                           const Eigen::Vector3d& target_tool, const FleModel& fle) {
+  TreQuadratic out;
+  std::vector<Eigen::Matrix3d> A;
+  if (!tre_linear_maps(points_tool, visible, target_tool, &A)) return out;
+  const double perp2 = fle.sigma_perp * fle.sigma_perp;
+  const double extra = fle.sigma_axial * fle.sigma_axial - perp2;
+  for (const Eigen::Matrix3d& a : A) {
+    out.c += perp2 * a.squaredNorm();
+    out.M += extra * a.transpose() * a;
+  }
+  out.M = 0.5 * (out.M + out.M.transpose());
+  out.registrable = true;
+  return out;
+}
+
+Eigen::Matrix3d tre_covariance(const Eigen::Matrix3Xd& points_tool, const std::vector<int>& visible,
+                               const Eigen::Vector3d& target_tool, const FleModel& fle,
+                               const Eigen::Vector3d& a) {
+  std::vector<Eigen::Matrix3d> A;
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  if (!tre_linear_maps(points_tool, visible, target_tool, &A)) return cov;
+  const double perp2 = fle.sigma_perp * fle.sigma_perp;
+  const Eigen::Matrix3d sigma = perp2 * Eigen::Matrix3d::Identity() +
+                                (fle.sigma_axial * fle.sigma_axial - perp2) * a * a.transpose();
+  for (const Eigen::Matrix3d& m : A) cov += m * sigma * m.transpose();
+  return 0.5 * (cov + cov.transpose());
+}
+
+double tre_rms_isotropic(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d& target_tool,
+                         double fle_rms) {
+  std::vector<int> all(static_cast<std::size_t>(points_tool.cols()));
+  for (int i = 0; i < static_cast<int>(all.size()); ++i) all[static_cast<std::size_t>(i)] = i;
+  const TreQuadratic quadratic =
+      tre_quadratic(points_tool, all, target_tool, FleModel::isotropic(fle_rms));
+  if (!quadratic.registrable) {
+    throw InvalidArgument("points",
+                          "fewer than 3 markers or collinear: the tool cannot be registered");
+  }
+  return std::sqrt(quadratic.c);
+}
+
+}  // namespace vantage

@@ -1,0 +1,185 @@
+// `vantage tre LAYOUT --target X,Y,Z (--fle-rms F | --fle-sigma SP,SD)`: the target registration
+// error of a tool tracked by a 3-D tracker (issue 20; docs/math.md §23): Fitzpatrick's isotropic
+// RMS, the TRE at a line of sight, the certified worst and best over the tracked directions and a
+// Monte Carlo check.
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <vector>
+
+#include "command.h"
+#include "crb_input.h"
+#include "layout_input.h"
+#include "limits.h"
+#include "tre_json.h"
+#include "vantage/analysis/common.h"
+#include "vantage/sdp/tre_report.h"
+
+namespace vantage::cli {
+
+namespace {
+
+struct TreArgs {
+  std::string file;
+  LayoutInput input;
+  std::vector<std::string> targets;
+  std::optional<double> fle_rms;
+  std::string fle_sigma;
+  std::string direction;
+  long monte_carlo = 0;
+  std::uint64_t seed = 1;
+  int threads = 0;
+  bool json = false;
+  bool allow_large = false;
+};
+
+Eigen::Vector3d parse_target(const std::string& text) {
+  std::istringstream in(text);
+  Eigen::Vector3d r;
+  char comma1 = 0, comma2 = 0;
+  if (!(in >> r.x() >> comma1 >> r.y() >> comma2 >> r.z()) || comma1 != ',' || comma2 != ',' ||
+      !(in >> std::ws).eof() || !r.allFinite()) {
+    throw InvalidArgument("--target", "expected X,Y,Z, three finite numbers, got \"" + text + "\"");
+  }
+  return r;
+}
+
+FleModel parse_fle(const TreArgs& args) {
+  const bool sigma = !args.fle_sigma.empty();
+  if (args.fle_rms.has_value() == sigma) {
+    throw InvalidArgument("--fle-rms", "give exactly one of --fle-rms F and --fle-sigma SP,SD");
+  }
+  if (args.fle_rms) {
+    if (!(std::isfinite(*args.fle_rms) && *args.fle_rms > 0.0)) {
+      throw InvalidArgument("--fle-rms", "must be a finite number > 0");
+    }
+    return FleModel::isotropic(*args.fle_rms);
+  }
+  std::istringstream in(args.fle_sigma);
+  FleModel fle;
+  char comma = 0;
+  if (!(in >> fle.sigma_perp >> comma >> fle.sigma_axial) || comma != ',' ||
+      !(in >> std::ws).eof() || !fle.is_valid()) {
+    throw InvalidArgument(
+        "--fle-sigma",
+        "expected SP,SD, two finite numbers >= 0 not both 0, got \"" + args.fle_sigma + "\"");
+  }
+  return fle;
+}
+
+std::string markers_text(const std::vector<int>& visible) {
+  std::string out;
+  for (int i : visible) out += (out.empty() ? "" : " ") + std::to_string(i);
+  return out;
+}
+
+std::string extreme_line(const sdp::TreExtreme& e) {
+  if (e.status == sdp::TreExtreme::Status::kUntracked) return "no tracked direction";
+  std::string line = format_number(e.rms, 5) + "  at " + format_vector(e.direction, 4) + "  (" +
+                     std::to_string(e.visible_markers.size()) +
+                     " markers: " + markers_text(e.visible_markers) + ")  ";
+  if (e.closed_form) return line + "exact (eigenvector of M)";
+  return line + sdp::to_string(e.status) + ", bound " + format_number(e.rms_bound, 7);
+}
+
+void print_target(const sdp::TreTargetReport& t) {
+  std::cout << "target " << format_vector(t.target, 6) << "\n";
+  if (t.rms_isotropic) {
+    std::cout << "  RMS TRE, every marker (Fitzpatrick 1998)  "
+              << format_number(*t.rms_isotropic, 5) << "\n";
+  }
+  if (t.at_direction) {
+    const sdp::TreAtDirection& at = *t.at_direction;
+    std::cout << "  at line of sight " << format_vector(at.direction, 4) << "  ";
+    if (!at.tracked) {
+      std::cout << "not tracked (" << at.visible_markers.size() << " visible markers)\n";
+    } else {
+      std::cout << "RMS " << format_number(at.rms, 5) << "  (" << at.visible_markers.size()
+                << " markers: " << markers_text(at.visible_markers)
+                << ")\n  covariance (tool frame):\n"
+                << format_matrix(at.covariance, 4, 5);
+    }
+  }
+  std::cout << "  worst over tracked directions  " << extreme_line(t.extremes.worst) << "\n"
+            << "  best over tracked directions   " << extreme_line(t.extremes.best) << "\n";
+  if (t.monte_carlo) {
+    std::cout << "  Monte Carlo at " << format_vector(t.monte_carlo_direction, 4) << ": "
+              << t.monte_carlo->trials << " trials, RMS " << format_number(t.monte_carlo->rms, 5)
+              << " vs formula " << format_number(t.monte_carlo->formula_rms, 5) << " ("
+              << format_number(100.0 * t.monte_carlo->rel_diff, 3) << " %)\n";
+  }
+}
+
+void print_report(const std::string& name, const sdp::TreReport& r) {
+  std::cout << "vantage tre: " << name << "\n  " << r.markers << " markers, tracked with at least "
+            << r.min_visible << " visible; visibility "
+            << (r.with_body ? "cone+mesh" : (r.with_normals ? "cone" : "none (all seen)"))
+            << "\n  FLE ";
+  if (r.fle.from_rms) {
+    std::cout << "isotropic, RMS " << format_number(r.fle.rms(), 5);
+  } else {
+    std::cout << "sd " << format_number(r.fle.sigma_perp, 5) << " across, "
+              << format_number(r.fle.sigma_axial, 5) << " along the line of sight (RMS "
+              << format_number(r.fle.rms(), 5) << ")";
+  }
+  std::cout << "; registration: least squares, no scale (q-method); first order (docs/math.md "
+               "§23)\n  RMS TRE in the layout's units; directions are lines of sight from the "
+               "tool toward the tracker, tool frame\n\n";
+  for (const sdp::TreTargetReport& t : r.targets) print_target(t);
+}
+
+int run_tre(const TreArgs& args) {
+  if (args.targets.empty()) throw InvalidArgument("--target", "give at least one X,Y,Z");
+  std::vector<Eigen::Vector3d> targets;
+  for (const std::string& text : args.targets) targets.push_back(parse_target(text));
+  sdp::TreOptions options;
+  options.fle = parse_fle(args);
+  if (!args.direction.empty()) options.direction = parse_direction(args.direction, "--direction");
+  if (args.monte_carlo != 0 && args.monte_carlo < 1000) {
+    throw InvalidArgument("--monte-carlo", "must be >= 1000 trials");
+  }
+  if (args.threads < 0) throw InvalidArgument("--threads", "must be >= 0");
+  options.monte_carlo_trials = args.monte_carlo;
+  options.seed = args.seed;
+  options.threads = args.threads;
+  const Layout layout = args.input.read(args.file, args.allow_large);
+  const sdp::TreReport report =
+      against_source(args.file, [&] { return sdp::tre_report(layout, targets, options); });
+  if (args.json) {
+    print_json(tre_json::report(report));
+  } else {
+    print_report(layout.name.empty() ? args.file : layout.name, report);
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_tre_command(CLI::App& root) {
+  auto args = std::make_shared<TreArgs>();
+  CLI::App* sub = root.add_subcommand(
+      "tre",
+      "target registration error of a tool on a 3-D tracker (docs/math.md §23): Fitzpatrick's "
+      "RMS, the TRE at a line of sight, the certified worst and best over tracked directions");
+  sub->add_option("LAYOUT", args->file, "layout file (points, in the tool frame)")->required();
+  args->input.add_options(sub);
+  sub->add_option("--target", args->targets, "target X,Y,Z in the tool frame (repeatable)");
+  sub->add_option("--fle-rms", args->fle_rms, "isotropic FLE, RMS of the 3-D marker error");
+  sub->add_option("--fle-sigma", args->fle_sigma,
+                  "anisotropic FLE SP,SD: sd across and along the line of sight");
+  sub->add_option("--direction", args->direction,
+                  "also the TRE at this line of sight AX,AY,AZ (tool toward tracker)");
+  sub->add_option("--monte-carlo", args->monte_carlo,
+                  "trials of the Monte Carlo check (>= 1000; at --direction, else the worst)");
+  sub->add_option("--seed", args->seed, "Monte Carlo seed")->capture_default_str();
+  sub->add_option("--threads", args->threads, "Monte Carlo threads, 0 = all cores")
+      ->capture_default_str();
+  add_allow_large_flag(sub, args->allow_large);
+  sub->add_flag("--json", args->json, "print one JSON object instead of the report");
+  return {sub, [args] { return run_tre(*args); }};
+}
+
+}  // namespace vantage::cli

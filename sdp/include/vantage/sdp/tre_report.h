@@ -1,0 +1,75 @@
+#pragma once
+
+/// The target registration error report of a tool (`vantage tre`, docs/math.md §23): per
+/// target, Fitzpatrick's isotropic RMS, the TRE at a given line of sight, the certified worst and
+/// best over the tracked directions and a Monte Carlo check. The command, the figures and the
+/// tests all start from tre_report().
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vantage/analysis/layout.h"
+#include "vantage/analysis/target_registration.h"
+#include "vantage/sdp/tre_search.h"
+#include "vantage/sdp/visibility.h"
+
+namespace vantage::sdp {
+
+/// Options of tre_report().
+struct TreOptions {
+  FleModel fle;
+  /// Also the TRE at this line of sight (tool frame, tool toward tracker; normalised), if given.
+  std::optional<Eigen::Vector3d> direction;
+  long monte_carlo_trials = 0;  ///< 0: no Monte Carlo; otherwise >= 1000
+  std::uint64_t seed = 1;
+  int threads = 0;  ///< Monte Carlo threads (0: all cores); the result does not depend on it
+  TreSearchOptions search;
+
+  /// Names "fle.sigma_perp", "direction", "monte_carlo_trials" or the search's field.
+  bool is_valid(std::string* why = nullptr) const;
+};
+
+/// The TRE at one line of sight.
+struct TreAtDirection {
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  ///< unit
+  bool tracked = false;  ///< min_visible visible, not collinear, in the workspace
+  double rms = 0.0;      ///< sqrt(trace covariance); 0 when not tracked
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  ///< tool frame, Eq. (23.2)
+  std::vector<int> visible_markers;
+};
+
+/// One target's report.
+struct TreTargetReport {
+  Eigen::Vector3d target = Eigen::Vector3d::Zero();  ///< tool frame
+  /// Eq. (23.3), every marker registered: with an isotropic FLE (FleModel::from_rms) only.
+  std::optional<double> rms_isotropic;
+  std::optional<TreAtDirection> at_direction;
+  TreExtremes extremes;
+  /// At `direction` when given, else at the worst direction.
+  std::optional<TreMonteCarlo> monte_carlo;
+  Eigen::Vector3d monte_carlo_direction = Eigen::Vector3d::UnitZ();
+};
+
+struct TreReport {
+  std::vector<TreTargetReport> targets;
+  FleModel fle;
+  int markers = 0;
+  int min_visible = 3;
+  bool with_normals = false;  ///< the layout has visibility (normals, cones)
+  bool with_body = false;     ///< occlusion by a body mesh
+};
+
+/// The report for a point layout (with or without visibility) and targets in its frame.
+/// Throws InvalidArgument for a layout that is not in point mode ("points"), no targets
+/// ("target"), a non-finite target ("target[i]") or bad options.
+TreReport tre_report(const Layout& layout, const std::vector<Eigen::Vector3d>& targets,
+                     const TreOptions& options);
+
+/// The visibility problem of a layout for the TRE: its own with normals, otherwise every marker
+/// seen from everywhere (180-degree cones) inside the layout's workspace.
+VisibilityProblem tre_visibility_problem(const Layout& layout);
+
+}  // namespace vantage::sdp

@@ -1,0 +1,120 @@
+// `vantage tre` (issue 20; docs/math.md §23): the issue's JSON names, the done-when command on the
+// NDI-like tool, the text report, and bad input (one line, exit 2, nothing written).
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_runner.h"
+
+namespace vantage {
+namespace {
+
+using testing::BadCall;
+using ::testing::HasSubstr;
+using testing::run_vantage;
+using testing::ScratchDir;
+
+const std::string kTools = "'" + std::string(VANTAGE_SOURCE_DIR) + "/examples/tools/";
+const std::string kNdi = kTools + "ndi_like.json'";
+// JSON numbers are printed to round-trip; the trace of three of them, or the same RMS computed
+// by the search and at the direction (isotropic FLE: equal), differ by a few roundings.
+constexpr double kTraceRounding = 1e-12;
+// The issue's Monte Carlo agreement.
+constexpr double kMonteCarlo = 0.02;
+
+TEST(TreCli, JsonHasTheIssuesFields) {
+  ScratchDir scratch;
+  const nlohmann::json j = testing::run_json(
+      "tre " + kNdi +
+          " --target 0,0,-150 --target 10,0,-100 --fle-rms 0.25 --direction 0.2,0.1,1 "
+          "--monte-carlo 20000 --json",
+      scratch);
+  for (const char* field : {"targets", "fle", "model"}) EXPECT_TRUE(j.contains(field)) << field;
+  ASSERT_EQ(j["targets"].size(), 2u);
+  for (const nlohmann::json& t : j["targets"]) {
+    for (const char* field :
+         {"target", "rms_isotropic", "at_direction", "worst", "best", "monte_carlo"}) {
+      EXPECT_TRUE(t.contains(field)) << field;
+    }
+    for (const char* field : {"direction", "rms", "covariance", "visible_markers"}) {
+      EXPECT_TRUE(t["at_direction"].contains(field)) << field;
+    }
+    for (const char* field : {"direction", "rms", "visible_markers", "certified"}) {
+      EXPECT_TRUE(t["worst"].contains(field)) << field;
+      EXPECT_TRUE(t["best"].contains(field)) << field;
+    }
+    for (const char* field : {"trials", "rms", "rel_diff"}) {
+      EXPECT_TRUE(t["monte_carlo"].contains(field)) << field;
+    }
+    const nlohmann::json& c = t["at_direction"]["covariance"];
+    const double trace = c[0][0].get<double>() + c[1][1].get<double>() + c[2][2].get<double>();
+    const double rms = t["at_direction"]["rms"].get<double>();
+    EXPECT_NEAR(std::sqrt(trace), rms, kTraceRounding * rms);
+    EXPECT_TRUE(t["worst"]["certified"].get<bool>());
+    EXPECT_GE(t["worst"]["rms"].get<double>(), rms * (1.0 - kTraceRounding));
+    EXPECT_LE(t["best"]["rms"].get<double>(), rms * (1.0 + kTraceRounding));
+    EXPECT_LE(std::abs(t["monte_carlo"]["rel_diff"].get<double>()), kMonteCarlo);
+    EXPECT_EQ(t["monte_carlo"]["trials"].get<long>(), 20000);
+  }
+  EXPECT_EQ(j["fle"]["kind"], "isotropic");
+}
+
+TEST(TreCli, DoneWhenCommandGivesAReadableReport) {
+  ScratchDir scratch;
+  const testing::CliRun run =
+      run_vantage("tre " + kNdi + " --target 0,0,-150 --fle-sigma 0.0995,0.2985", scratch);
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(run.err, "");
+  EXPECT_THAT(run.out, HasSubstr("worst over tracked directions"));
+  EXPECT_THAT(run.out, HasSubstr("best over tracked directions"));
+  EXPECT_THAT(run.out, HasSubstr("certified"));
+  EXPECT_THAT(run.out, HasSubstr("0.0995 across, 0.2985 along the line of sight"));
+}
+
+TEST(TreCli, AnisotropicMonteCarloAgreesAtTheWorstDirection) {
+  ScratchDir scratch;
+  const nlohmann::json j =
+      testing::run_json("tre " + kTools +
+                            "five_marker.json' --target 0,0,-120 --fle-sigma 0.0995,0.2985 "
+                            "--monte-carlo 100000 --json",
+                        scratch);
+  const nlohmann::json& t = j["targets"][0];
+  EXPECT_FALSE(t.contains("rms_isotropic"));
+  EXPECT_LE(std::abs(t["monte_carlo"]["rel_diff"].get<double>()), kMonteCarlo);
+  EXPECT_EQ(t["monte_carlo"]["direction"], t["worst"]["direction"]);
+}
+
+TEST(TreCli, BadInputIsOneLineAndExitTwo) {
+  ScratchDir scratch;
+  const std::string ndi = kNdi + " ";
+  const std::string vectors = "{\"vectors\": [[1,0,0],[0,1,0],[0,0,1]]}";
+  const BadCall calls[] = {
+      {"no target", nullptr, "--fle-rms 0.2", "--target"},
+      {"bad target", nullptr, "--target 0,0 --fle-rms 0.2", "--target"},
+      {"both fle", nullptr, "--target 0,0,1 --fle-rms 0.2 --fle-sigma 0.1,0.3", "--fle-rms"},
+      {"neither fle", nullptr, "--target 0,0,1", "--fle-rms"},
+      {"negative sigma", nullptr, "--target 0,0,1 --fle-sigma -0.1,0.3", "--fle-sigma"},
+      {"zero rms", nullptr, "--target 0,0,1 --fle-rms 0", "--fle-rms"},
+      {"zero direction", nullptr, "--target 0,0,1 --fle-rms 0.2 --direction 0,0,0", "--direction"},
+      {"few trials", nullptr, "--target 0,0,1 --fle-rms 0.2 --monte-carlo 10", "--monte-carlo"},
+  };
+  for (const BadCall& call : calls) {
+    SCOPED_TRACE(call.name);
+    BadCall with_file = call;
+    const std::string args = ndi + call.args;
+    with_file.args = args.c_str();
+    testing::run_bad_call("tre", with_file, scratch);
+  }
+  scratch.write("vectors.json", vectors);
+  testing::expect_bad_input(run_vantage("tre vectors.json --target 0,0,1 --fle-rms 0.2", scratch),
+                            "points");
+  scratch.write("broken.json", "{\"points\": [[0,0,0]]");
+  testing::expect_bad_input(run_vantage("tre broken.json --target 0,0,1 --fle-rms 0.2", scratch),
+                            "broken.json");
+}
+
+}  // namespace
+}  // namespace vantage
