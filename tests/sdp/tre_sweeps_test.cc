@@ -57,7 +57,8 @@ double tre_sweep_truth(const Layout& layout, const TreModel& model, const Eigen:
 }
 
 // Fitzpatrick, West & Maurer (1998), Eq. (23.3), from the principal axes of the markers.
-double fitzpatrick(const Eigen::Matrix3Xd& points, const Eigen::Vector3d& r, double fle_rms) {
+double tre_sweep_fitzpatrick(const Eigen::Matrix3Xd& points, const Eigen::Vector3d& r,
+                             double fle_rms) {
   const Eigen::Vector3d g = points.rowwise().mean();
   const Eigen::Matrix3Xd q = points.colwise() - g;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(q * q.transpose());
@@ -180,7 +181,7 @@ TEST(TreSweeps, IsotropicCurvesFollowFitzpatrickWithoutNormals) {
   const TreTipAxisSweep& tip = sweeps.tip_axis;
   ASSERT_EQ(tip.rms_isotropic.size(), tip.distance.size());
   for (std::size_t k = 0; k < tip.distance.size(); ++k) {
-    const double truth = fitzpatrick(points, tip.target(k), 0.25);
+    const double truth = tre_sweep_fitzpatrick(points, tip.target(k), 0.25);
     EXPECT_NEAR(tip.rms_isotropic[k], truth, 1e-9 * truth) << k;
     // Isotropic FLE, every marker seen: the curve at any direction is the formula.
     EXPECT_NEAR(tip.curves[0].rms[k], truth, 1e-9 * truth) << k;
@@ -192,7 +193,7 @@ TEST(TreSweeps, IsotropicCurvesFollowFitzpatrickWithoutNormals) {
     for (std::size_t k = 0; k < iso.size(); ++k) {
       const Eigen::Vector3d r = sweeps.polar.target(axis, k);
       EXPECT_NEAR((r - tip.centroid).norm(), 90.0, 1e-12 * 90.0);
-      const double truth = fitzpatrick(points, r, 0.25);
+      const double truth = tre_sweep_fitzpatrick(points, r, 0.25);
       EXPECT_NEAR(iso[k], truth, 1e-9 * truth) << k;
     }
   }
