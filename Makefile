@@ -140,8 +140,9 @@ bench-peers: configure
 
 # Every figure in docs/figures (PNG + the CSV of each; only the PNGs are kept in git), shown in
 # README.md and docs/results.md: the five figures of the satellite example (a design run, two
-# markers added greedily and by the direct optimiser, feeds the design figure), the figures of the
-# seed papers' experiments (each experiment run with its default trials and seed 1 into
+# markers added greedily and by the direct optimiser, feeds the design figure), the TRE figures of
+# the NDI-like tool (tre_tip_axis, tre_polar, tre_map; 0.2 s), the figures of the seed papers'
+# experiments (each experiment run with its default trials and seed 1 into
 # $(EXPERIMENTS_DIR)/NAME, drawn there by `vantage plot --experiment`, copied here as
 # experiment_<figure>.png) and the viewer's screenshot (under xvfb-run). Not part of `make test`
 # or `make demo`. Once built: 23 s on this shared 2-core machine, screenshot included. Every
@@ -163,6 +164,8 @@ figures: build
 	  examples/layouts/satellite.json --out $(BUILD_DIR)/satellite_body --only viewpoint_map,visibility
 	cp $(BUILD_DIR)/satellite_body/viewpoint_map.png $(FIGURES_DIR)/satellite_visibility.png
 	cp $(BUILD_DIR)/satellite_body/visibility.png $(FIGURES_DIR)/satellite_visible_markers.png
+	$(BUILD_DIR)/cli/vantage plot examples/tools/ndi_like.json --tre --target 0,0,-150 \
+	  --fle-sigma 0.0995,0.2985 --out $(FIGURES_DIR) > /dev/null
 	set -e; for entry in $(FIGURE_EXPERIMENTS); do \
 	  name=$${entry%%:*}; dir=$(EXPERIMENTS_DIR)/$$name; \
 	  rm -rf $$dir; \

@@ -1,6 +1,8 @@
 // `vantage plot LAYOUT --out DIR [--format png|svg|pdf] [--only NAME,...] [--size WxH]
 // [--threshold-deg X] [--design DESIGN.json] [--title T] [--json]`: the figures of a layout
 // (vantage::plot), each image with the CSV of the numbers it draws.
+// `vantage plot LAYOUT --tre --target X,Y,Z (--fle-rms F | --fle-sigma SP,SD) [--direction A]
+// [--radius R] --out DIR`: the TRE figures tre_tip_axis, tre_polar and tre_map (docs/math.md §23).
 // `vantage plot --experiment NAME --out DIR [--format F] [--size WxH] [--title T] [--json]`: the
 // figures of an experiment directory written by `vantage experiment NAME --out DIR`.
 
@@ -15,11 +17,14 @@
 #include "crb_input.h"
 #include "figure_output.h"
 #include "layout_input.h"
+#include "tre_input.h"
+#include "tre_json.h"
 #include "vantage/analysis/common.h"
 #include "vantage/io/text_file.h"
 #include "vantage/plot/crb_figures.h"
 #include "vantage/plot/experiment_figures.h"
 #include "vantage/plot/layout_figures.h"
+#include "vantage/plot/tre_figures.h"
 
 namespace vantage::cli {
 
@@ -38,6 +43,10 @@ struct PlotArgs {
   std::string experiment;
   bool crb = false;
   CrbCameraArgs camera;
+  bool tre = false;
+  TreTargetArgs target;
+  double radius = 0.0;
+  CLI::Option* radius_option = nullptr;
   bool json = false;
 };
 
@@ -114,6 +123,7 @@ std::string joined(const std::vector<std::string>& names) {
 int run_experiment_plot(const PlotArgs& args) {
   if (!args.file.empty()) bad("LAYOUT: not allowed with --experiment");
   if (args.crb) bad("--crb: not allowed with --experiment");
+  if (args.tre) bad("--tre: not allowed with --experiment");
   if (!args.only.empty() || !args.design.empty()) {
     bad("--only/--design: not allowed with --experiment");
   }
@@ -230,11 +240,100 @@ int run_crb_plot(const PlotArgs& args) {
   return kExitOk;
 }
 
+// The TRE options without --tre, or --tre with the other figures' options.
+void check_tre_options(const PlotArgs& args) {
+  const TreTargetArgs& t = args.target;
+  const std::pair<const char*, CLI::Option*> tre_only[] = {{"--target", t.target_option},
+                                                           {"--fle-rms", t.fle_rms_option},
+                                                           {"--fle-sigma", t.fle_sigma_option},
+                                                           {"--direction", t.direction_option},
+                                                           {"--radius", args.radius_option}};
+  for (const auto& [name, option] : tre_only) {
+    if (!args.tre && option->count() > 0) bad(std::string(name) + ": only with --tre");
+  }
+  if (!args.tre) return;
+  if (args.crb) bad("--tre: not allowed with --crb");
+  if (!args.only.empty() || !args.design.empty()) {
+    bad("--only/--design: not allowed with --tre (it writes tre_tip_axis, tre_polar and "
+        "tre_map)");
+  }
+}
+
+void print_tre_plot(const PlotArgs& args, const Layout& layout, const plot::TreFigures& figures,
+                    const plot::FigureOptions& options) {
+  const sdp::TreExtremes& x = figures.sweeps.report.targets.front().extremes;
+  const bool tracked = x.worst.status != sdp::TreExtreme::Status::kUntracked;
+  if (args.json) {
+    Json out;
+    out["layout"] = args.file;
+    out["name"] = layout.name;
+    out["out"] = args.out;
+    out["format"] = plot::to_string(options.format);
+    out["size"] = {options.width, options.height};
+    out["worst"] = tre_json::extreme(x.worst);
+    out["best"] = tre_json::extreme(x.best);
+    out["radius"] = figures.sweeps.polar.radius;
+    out["figures"] = figure_files_json(figures.files);
+    print_json(out);
+    return;
+  }
+  std::cout << "vantage plot --tre: " << (layout.name.empty() ? args.file : layout.name) << "\n";
+  if (tracked) {
+    std::cout << "first target: worst RMS TRE " << format_number(x.worst.rms, 5) << ", best "
+              << format_number(x.best.rms, 5) << " (layout units)\n";
+  } else {
+    std::cout << "no line of sight tracks the tool\n";
+  }
+  std::cout << figures.files.size() << " figures written (" << plot::to_string(options.format)
+            << " + csv):\n";
+  for (const plot::FigureFiles& f : figures.files) {
+    std::cout << "  " << f.image.string() << "\n  " << f.csv.string() << "\n";
+  }
+}
+
+// `vantage plot LAYOUT --tre --target X,Y,Z (--fle-rms F | --fle-sigma SP,SD)`: tre_tip_axis,
+// tre_polar and tre_map.
+int run_tre_plot(const PlotArgs& args) {
+  plot::TreFiguresOptions options;
+  options.figure.format = plot::parse_format(args.format, "--format");
+  options.figure.title = args.title;
+  parse_size(args.size, options.figure);
+  const std::vector<Eigen::Vector3d> targets = args.target.parsed_targets();
+  sdp::TreOptions tre;
+  tre.fle = args.target.parsed_fle();
+  tre.direction = args.target.parsed_direction();
+  if (args.radius_option->count() > 0) {
+    if (!(std::isfinite(args.radius) && args.radius > 0.0)) {
+      bad("--radius: must be a finite number > 0, got " + format_number(args.radius));
+    }
+    options.sweep.radius = args.radius;
+  }
+  check_figure_directory("--out", args.out);
+  const Layout layout = args.input.read(args.file);
+  plot::TreFigures figures;
+  try {
+    figures = plot::tre_figures(layout, targets, tre, options);
+  } catch (const InvalidArgument& e) {
+    throw tre_option_error(e, args.file);
+  }
+  create_figure_directory("--out", args.out);
+  try {
+    plot::write_tre_figures(figures, options, args.out);
+  } catch (const plot::RenderError& e) {
+    std::cerr << "vantage: plot: " << e.what() << std::endl;
+    return kExitFailure;
+  }
+  print_tre_plot(args, layout, figures, options.figure);
+  return kExitOk;
+}
+
 int run_plot(const PlotArgs& args) {
   if (!args.experiment.empty()) return run_experiment_plot(args);
   if (args.file.empty()) bad("LAYOUT: required (or --experiment NAME)");
   check_crb_options(args);
+  check_tre_options(args);
   if (args.crb) return run_crb_plot(args);
+  if (args.tre) return run_tre_plot(args);
   plot::LayoutFiguresOptions options;
   options.figure.format = plot::parse_format(args.format, "--format");
   options.figure.title = args.title;
@@ -376,6 +475,14 @@ Command add_plot_command(CLI::App& root) {
                 "--distance, --focal, --noise-px; docs/math.md §22)");
   args->camera.add_options(sub, false);
   args->camera.threads = 0;
+  sub->add_flag("--tre", args->tre,
+                "write the target registration error figures tre_tip_axis, tre_polar and tre_map "
+                "instead (needs --target and --fle-rms or --fle-sigma; docs/math.md §23)");
+  args->target.add_options(sub);
+  args->radius_option = sub->add_option(
+      "--radius", args->radius,
+      "tre_polar: radius of the circles about the markers' centroid (default: the first "
+      "target's distance from it)");
   sub->add_flag("--json", args->json, "print one JSON object listing the files written");
   return {sub, [args] { return run_plot(*args); }};
 }

@@ -3,17 +3,15 @@
 // RMS, the TRE at a line of sight, the certified worst and best over the tracked directions and a
 // Monte Carlo check.
 
-#include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <vector>
 
 #include "command.h"
-#include "crb_input.h"
 #include "layout_input.h"
 #include "limits.h"
+#include "tre_input.h"
 #include "tre_json.h"
 #include "vantage/analysis/common.h"
 #include "vantage/sdp/tre_report.h"
@@ -25,50 +23,13 @@ namespace {
 struct TreArgs {
   std::string file;
   LayoutInput input;
-  std::vector<std::string> targets;
-  std::optional<double> fle_rms;
-  std::string fle_sigma;
-  std::string direction;
+  TreTargetArgs target;
   long monte_carlo = 0;
   std::uint64_t seed = 1;
   int threads = 0;
   bool json = false;
   bool allow_large = false;
 };
-
-Eigen::Vector3d parse_target(const std::string& text) {
-  std::istringstream in(text);
-  Eigen::Vector3d r;
-  char comma1 = 0, comma2 = 0;
-  if (!(in >> r.x() >> comma1 >> r.y() >> comma2 >> r.z()) || comma1 != ',' || comma2 != ',' ||
-      !(in >> std::ws).eof() || !r.allFinite()) {
-    throw InvalidArgument("--target", "expected X,Y,Z, three finite numbers, got \"" + text + "\"");
-  }
-  return r;
-}
-
-FleModel parse_fle(const TreArgs& args) {
-  const bool sigma = !args.fle_sigma.empty();
-  if (args.fle_rms.has_value() == sigma) {
-    throw InvalidArgument("--fle-rms", "give exactly one of --fle-rms F and --fle-sigma SP,SD");
-  }
-  if (args.fle_rms) {
-    if (!(std::isfinite(*args.fle_rms) && *args.fle_rms > 0.0)) {
-      throw InvalidArgument("--fle-rms", "must be a finite number > 0");
-    }
-    return FleModel::isotropic(*args.fle_rms);
-  }
-  std::istringstream in(args.fle_sigma);
-  FleModel fle;
-  char comma = 0;
-  if (!(in >> fle.sigma_perp >> comma >> fle.sigma_axial) || comma != ',' ||
-      !(in >> std::ws).eof() || !fle.is_valid()) {
-    throw InvalidArgument(
-        "--fle-sigma",
-        "expected SP,SD, two finite numbers >= 0 not both 0, got \"" + args.fle_sigma + "\"");
-  }
-  return fle;
-}
 
 std::string markers_text(const std::vector<int>& visible) {
   std::string out;
@@ -132,12 +93,10 @@ void print_report(const std::string& name, const sdp::TreReport& r) {
 }
 
 int run_tre(const TreArgs& args) {
-  if (args.targets.empty()) throw InvalidArgument("--target", "give at least one X,Y,Z");
-  std::vector<Eigen::Vector3d> targets;
-  for (const std::string& text : args.targets) targets.push_back(parse_target(text));
+  const std::vector<Eigen::Vector3d> targets = args.target.parsed_targets();
   sdp::TreOptions options;
-  options.fle = parse_fle(args);
-  if (!args.direction.empty()) options.direction = parse_direction(args.direction, "--direction");
+  options.fle = args.target.parsed_fle();
+  options.direction = args.target.parsed_direction();
   if (args.monte_carlo != 0 && args.monte_carlo < 1000) {
     throw InvalidArgument("--monte-carlo", "must be >= 1000 trials");
   }
@@ -166,12 +125,7 @@ Command add_tre_command(CLI::App& root) {
       "RMS, the TRE at a line of sight, the certified worst and best over tracked directions");
   sub->add_option("LAYOUT", args->file, "layout file (points, in the tool frame)")->required();
   args->input.add_options(sub);
-  sub->add_option("--target", args->targets, "target X,Y,Z in the tool frame (repeatable)");
-  sub->add_option("--fle-rms", args->fle_rms, "isotropic FLE, RMS of the 3-D marker error");
-  sub->add_option("--fle-sigma", args->fle_sigma,
-                  "anisotropic FLE SP,SD: sd across and along the line of sight");
-  sub->add_option("--direction", args->direction,
-                  "also the TRE at this line of sight AX,AY,AZ (tool toward tracker)");
+  args->target.add_options(sub);
   sub->add_option("--monte-carlo", args->monte_carlo,
                   "trials of the Monte Carlo check (>= 1000; at --direction, else the worst)");
   sub->add_option("--seed", args->seed, "Monte Carlo seed")->capture_default_str();

@@ -10,6 +10,7 @@
 #include "pose_commands.h"
 #include "results.h"
 #include "simulate_command.h"
+#include "tre_command.h"
 
 PYBIND11_MODULE(_vantage, module) {
   module.doc() =
@@ -22,4 +23,5 @@ PYBIND11_MODULE(_vantage, module) {
   vantage::python::bind_pose_commands(module);
   vantage::python::bind_simulate_command(module);
   vantage::python::bind_crb_command(module);
+  vantage::python::bind_tre_command(module);
 }

@@ -10,7 +10,7 @@ import pytest
 
 from conftest import CORRESPONDENCES, LAYOUTS, assert_same, cli_error, cli_json, run_cli
 
-PUBLIC_CALLS = ["analyze", "design", "weights", "pose", "orient", "simulate", "load_layout"]
+PUBLIC_CALLS = ["analyze", "design", "weights", "pose", "orient", "simulate", "tre", "load_layout"]
 
 # Seeded random unit directions for the size limits (any directions do: the limit counts them).
 SEED = 17
@@ -36,7 +36,8 @@ def test_public_functions_have_real_signatures_and_docstrings(vantage, name):
     assert function.__doc__ and len(function.__doc__) > 80
 
 
-@pytest.mark.parametrize("name", ["analyze", "design", "weights", "pose", "orient", "simulate"])
+@pytest.mark.parametrize(
+    "name", ["analyze", "design", "weights", "pose", "orient", "simulate", "tre"])
 def test_python_defaults_are_the_extensions_defaults(vantage, name):
     python = inspect.signature(getattr(vantage, name)).parameters
     compiled = extension_defaults(getattr(vantage._vantage, name))

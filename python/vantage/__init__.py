@@ -32,8 +32,8 @@ from ._results import (
     BoundCheck, Certificate, CrbBound, CrbReport, CrbSweepRow, Crosscheck, DesignCoplanarity, DesignDirect, DesignResult,
     DesignState, DesignStep, DropoutEntry, EstimatorStats, LayoutCoplanarity, LayoutReport,
     LayoutVisibility, LostRegion, Orientation, PaperLmi, PerTrial, PoseAlternative, PoseCamera,
-    PoseEstimate, SimulationReport, SimulationVisibility, Solver, Statistic, Swap,
-    VisibilityCertificate, VisibilityDropoutEntry, WeightsResult, WeightsSuggestion, Workspace,
+    PoseEstimate, SimulationReport, SimulationVisibility, Solver, Statistic, Swap, TreAtDirection,
+    TreExtreme, TreMonteCarlo, TreReport, TreTarget, VisibilityCertificate, VisibilityDropoutEntry, WeightsResult, WeightsSuggestion, Workspace,
 )
 from ._vantage import (
     Layout,
@@ -52,10 +52,11 @@ __all__ = [
     "DesignResult", "DesignState", "DesignStep", "DropoutEntry", "EstimatorStats", "Layout",
     "LayoutCoplanarity", "LayoutReport", "LayoutVisibility", "LostRegion", "NumericalError", "Orientation", "PaperLmi", "PerTrial",
     "PoseAlternative", "PoseCamera", "PoseEstimate", "SimulationReport", "SimulationVisibility",
-    "Solver", "Statistic", "Swap", "VisibilityCertificate", "VisibilityDropoutEntry",
+    "Solver", "Statistic", "Swap", "TreAtDirection", "TreExtreme", "TreMonteCarlo", "TreReport",
+    "TreTarget", "VisibilityCertificate", "VisibilityDropoutEntry",
     "WeightsResult", "WeightsSuggestion", "Workspace", "__version__", "analyze", "board", "crb",
     "data_vectors", "design", "load_correspondences", "load_layout", "orient",
-    "pbar_at_viewpoints", "pose", "pose_methods", "save_layout", "simulate", "weights",
+    "pbar_at_viewpoints", "pose", "pose_methods", "save_layout", "simulate", "tre", "weights",
 ]
 
 #: A layout argument: a vantage.Layout or the path of a layout file (.json, .csv, .yaml/.yml).
@@ -144,6 +145,33 @@ def crb(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
         layout, points=points, distance=distance, focal=focal, noise_px=noise_px,
         principal_point=principal_point, direction=direction, sweep_distance=sweep_distance,
         samples=samples, threads=threads, format=format, tag_points=tag_points, bundle=bundle))
+
+
+def tre(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
+        targets: Optional[npt.ArrayLike] = None, fle_rms: Optional[float] = None,
+        fle_sigma: Optional[Tuple[float, float]] = None,
+        direction: Optional[npt.ArrayLike] = None, monte_carlo: int = 0, seed: int = 1,
+        threads: int = 0, format: Optional[str] = None, tag_points: Optional[str] = None,
+        bundle: Optional[str] = None) -> TreReport:
+    """The target registration error of a tool on a 3-D optical tracker (as ``vantage tre
+    --json``; docs/math.md §23): markers registered by least squares without scale, the error of
+    each target to first order, in the layout's units.
+
+    layout: a vantage.Layout or a layout file (points, tool frame), or points= (n x 3).
+    targets: one target [x, y, z] or an n x 3 array (tool frame).
+    fle_rms: isotropic FLE with E|e|^2 = fle_rms^2 (adds Fitzpatrick 1998's ``rms_isotropic``);
+    or fle_sigma: (sigma_perp, sigma_axial), the standard deviations across and along the
+    tracker's line of sight (NDI: (0.0995, 0.2985) mm). Exactly one of the two.
+    direction: also the TRE and its 3 x 3 covariance at this line of sight (tool toward tracker,
+    tool frame). monte_carlo: trials of the seeded Monte Carlo check (0 or >= 1000), at
+    direction or else at the worst line of sight; seed, threads: as ``--seed``, ``--threads``.
+
+    Raises ValueError on bad input.
+    """
+    return TreReport(_vantage.tre(
+        layout, points=points, targets=targets, fle_rms=fle_rms, fle_sigma=fle_sigma,
+        direction=direction, monte_carlo=monte_carlo, seed=seed, threads=threads, format=format,
+        tag_points=tag_points, bundle=bundle))
 
 
 def _design_result(fields: Any) -> DesignResult:

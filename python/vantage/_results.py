@@ -21,8 +21,9 @@ __all__ = [
     "DesignResult", "DesignState", "DesignStep", "DropoutEntry", "EstimatorStats",
     "LayoutCoplanarity", "LayoutReport", "LayoutVisibility", "LostRegion", "Orientation", "PaperLmi", "PoseAlternative",
     "PerTrial", "PoseCamera", "PoseEstimate", "SimulationReport", "SimulationVisibility",
-    "Solver", "Statistic", "Swap", "VisibilityCertificate", "VisibilityDropoutEntry",
-    "WeightsResult", "WeightsSuggestion", "Workspace",
+    "Solver", "Statistic", "Swap", "TreAtDirection", "TreExtreme", "TreMonteCarlo", "TreReport",
+    "TreTarget", "VisibilityCertificate", "VisibilityDropoutEntry", "WeightsResult",
+    "WeightsSuggestion", "Workspace",
 ]
 
 FloatArray = npt.NDArray[np.float64]
@@ -664,3 +665,77 @@ class CrbReport(_JsonView):
         self.sweep_distance: Optional[List[CrbSweepRow]] = (
             [CrbSweepRow(r) for r in fields["sweep_distance"]]
             if "sweep_distance" in fields else None)
+
+
+class TreExtreme(_JsonView):
+    """The worst or best RMS TRE over the tracked lines of sight (``vantage tre --json``'s
+    ``worst``, ``best``; C++ sdp::TreExtreme). direction and rms are nan when no line of sight
+    is tracked (status 'untracked'); rms_bound is the proven bound, certified when every patch
+    closed."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.direction: FloatArray = (
+            np.full(3, math.nan) if fields["direction"] is None else _floats(fields["direction"]))
+        self.rms: float = _float(fields["rms"])
+        self.visible_markers: IntArray = _ints(fields["visible_markers"])
+        self.certified: bool = bool(fields["certified"])
+        self.status: str = str(fields["status"])
+        self.rms_bound: float = _float(fields["rms_bound"])
+        self.patches: int = int(fields["patches"])
+        self.closed_form: bool = bool(fields["closed_form"])
+
+
+class TreAtDirection(_JsonView):
+    """The TRE at the given line of sight (``at_direction``; C++ sdp::TreAtDirection): rms (nan
+    when not tracked) and its 3 x 3 covariance in the tool frame (None when not tracked)."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.direction: FloatArray = _floats(fields["direction"])
+        self.tracked: bool = bool(fields["tracked"])
+        self.rms: float = _float(fields["rms"])
+        cov = fields["covariance"]
+        self.covariance: Optional[FloatArray] = (
+            None if cov is None else np.asarray(cov, dtype=np.float64))
+        self.visible_markers: IntArray = _ints(fields["visible_markers"])
+
+
+class TreMonteCarlo(_JsonView):
+    """The Monte Carlo check (``monte_carlo``): the measured RMS of ``trials`` registrations at
+    ``direction`` beside the first-order formula, rel_diff = rms / formula_rms - 1."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.trials: int = int(fields["trials"])
+        self.rms: float = _float(fields["rms"])
+        self.formula_rms: float = _float(fields["formula_rms"])
+        self.rel_diff: float = _float(fields["rel_diff"])
+        self.direction: FloatArray = _floats(fields["direction"])
+
+
+class TreTarget(_JsonView):
+    """One target's TRE (an entry of ``targets``; C++ sdp::TreTargetReport)."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.target: FloatArray = _floats(fields["target"])
+        self.rms_isotropic: Optional[float] = _optional_float(fields.get("rms_isotropic"))
+        self.at_direction: Optional[TreAtDirection] = (
+            TreAtDirection(fields["at_direction"]) if "at_direction" in fields else None)
+        self.worst: TreExtreme = TreExtreme(fields["worst"])
+        self.best: TreExtreme = TreExtreme(fields["best"])
+        self.monte_carlo: Optional[TreMonteCarlo] = (
+            TreMonteCarlo(fields["monte_carlo"]) if "monte_carlo" in fields else None)
+
+
+class TreReport(_JsonView):
+    """The target registration error of a tool on a 3-D tracker (``vantage tre --json``; C++
+    sdp::TreReport; docs/math.md §23): per target, Fitzpatrick's isotropic RMS, the TRE at a line
+    of sight, the certified worst and best over the tracked lines of sight, Monte Carlo."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.targets: List[TreTarget] = [TreTarget(t) for t in fields["targets"]]
+        self.fle: Dict[str, Any] = dict(fields["fle"])
+        self.model: Dict[str, Any] = dict(fields["model"])

@@ -3,24 +3,19 @@
 #include <cmath>
 
 #include "vantage/analysis/common.h"
-#include "vantage/sdp/visibility_model.h"
 
 namespace vantage::sdp {
 namespace {
 
 constexpr long kTreMinTrials = 1000;
 
-TreAtDirection tre_at(const VisibilityProblem& problem, const Eigen::Vector3d& target,
-                      const FleModel& fle, const Eigen::Vector3d& a) {
-  TreAtDirection at;
-  at.direction = a;
-  const DirectionVisibility seen = direction_visibility(problem, a);
-  at.visible_markers = seen.visible;
-  if (!seen.trackable) return at;
-  at.covariance = tre_covariance(problem.points, seen.visible, target, fle, a);
-  at.tracked = true;
-  at.rms = std::sqrt(at.covariance.trace());
-  return at;
+void check_tre_targets(const std::vector<Eigen::Vector3d>& targets) {
+  if (targets.empty()) throw InvalidArgument("target", "give at least one target");
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    if (!targets[i].allFinite()) {
+      throw InvalidArgument("target", static_cast<long>(i), "must be finite");
+    }
+  }
 }
 
 }  // namespace
@@ -63,35 +58,63 @@ VisibilityProblem tre_visibility_problem(const Layout& layout) {
   return problem;
 }
 
+TreModel::TreModel(const Layout& layout, const FleModel& fle) : fle_(fle) {
+  if (layout.mode != LayoutMode::kPoints) {
+    throw InvalidArgument("points", "the TRE needs a layout of marker points, not vectors");
+  }
+  std::string why;
+  if (!fle.is_valid(&why)) throw InvalidArgument("fle." + why);
+  layout.validate();
+  if (layout.visibility) {
+    visibility_ = VisibilityModel::of(layout);
+    problem_ = visibility_->problem();
+  } else {
+    problem_ = tre_visibility_problem(layout);
+  }
+}
+
+bool TreModel::in_workspace(const Eigen::Vector3d& a) const {
+  return !problem_.workspace ||
+         a.dot(problem_.workspace->axis) >= problem_.workspace->cos_half_angle;
+}
+
+TreAtDirection TreModel::at(const Eigen::Vector3d& target_tool, const Eigen::Vector3d& a) const {
+  TreAtDirection at;
+  at.direction = a;
+  const DirectionVisibility seen = direction_visibility(problem_, a);
+  at.visible_markers = seen.visible;
+  if (!seen.trackable) return at;
+  at.covariance = tre_covariance(problem_.points, seen.visible, target_tool, fle_, a);
+  at.tracked = true;
+  at.rms = std::sqrt(at.covariance.trace());
+  return at;
+}
+
 TreReport tre_report(const Layout& layout, const std::vector<Eigen::Vector3d>& targets,
                      const TreOptions& options) {
   if (layout.mode != LayoutMode::kPoints) {
     throw InvalidArgument("points", "the TRE needs a layout of marker points, not vectors");
   }
-  if (targets.empty()) throw InvalidArgument("target", "give at least one target");
-  for (std::size_t i = 0; i < targets.size(); ++i) {
-    if (!targets[i].allFinite()) {
-      throw InvalidArgument("target", static_cast<long>(i), "must be finite");
-    }
-  }
+  check_tre_targets(targets);
   std::string why;
   if (!options.is_valid(&why)) throw InvalidArgument(why);
-  layout.validate();
-  // The model owns the occlusion grid the problem points to.
-  std::optional<VisibilityModel> model;
-  VisibilityProblem problem;
-  if (layout.visibility) {
-    model = VisibilityModel::of(layout);
-    problem = model->problem();
-  } else {
-    problem = tre_visibility_problem(layout);
-  }
+  return tre_report(TreModel(layout, options.fle), targets, options);
+}
+
+TreReport tre_report(const TreModel& model, const std::vector<Eigen::Vector3d>& targets,
+                     const TreOptions& given) {
+  TreOptions options = given;
+  options.fle = model.fle();
+  check_tre_targets(targets);
+  std::string why;
+  if (!options.is_valid(&why)) throw InvalidArgument(why);
+  const VisibilityProblem& problem = model.problem();
   TreReport report;
   report.fle = options.fle;
-  report.markers = static_cast<int>(layout.entries.cols());
+  report.markers = static_cast<int>(problem.points.cols());
   report.min_visible = problem.min_visible;
-  report.with_normals = layout.visibility.has_value();
-  report.with_body = model && model->has_body();
+  report.with_normals = model.with_normals();
+  report.with_body = model.with_body();
   for (const Eigen::Vector3d& target : targets) {
     TreTargetReport t;
     t.target = target;
@@ -99,7 +122,7 @@ TreReport tre_report(const Layout& layout, const std::vector<Eigen::Vector3d>& t
       t.rms_isotropic = tre_rms_isotropic(problem.points, target, options.fle.rms());
     }
     if (options.direction) {
-      t.at_direction = tre_at(problem, target, options.fle, options.direction->normalized());
+      t.at_direction = model.at(target, options.direction->normalized());
     }
     t.extremes = tre_extremes(problem, target, options.fle, options.search);
     if (options.monte_carlo_trials > 0) {

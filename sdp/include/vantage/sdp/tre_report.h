@@ -15,6 +15,7 @@
 #include "vantage/analysis/target_registration.h"
 #include "vantage/sdp/tre_search.h"
 #include "vantage/sdp/visibility.h"
+#include "vantage/sdp/visibility_model.h"
 
 namespace vantage::sdp {
 
@@ -39,6 +40,35 @@ struct TreAtDirection {
   double rms = 0.0;      ///< sqrt(trace covariance); 0 when not tracked
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  ///< tool frame, Eq. (23.2)
   std::vector<int> visible_markers;
+};
+
+/// A point layout ready to answer "what TRE does target r have from line of sight a?"
+/// (docs/math.md §23): its visibility problem (tre_visibility_problem(); with a body, the
+/// occlusion grid, owned here) and the FLE. The report, the sweeps and the figures evaluate the
+/// TRE through one.
+class TreModel {
+ public:
+  /// Throws InvalidArgument for a layout that is not in point mode ("points"), a bad layout or
+  /// a bad FLE ("fle.sigma_perp", "fle.sigma_axial").
+  TreModel(const Layout& layout, const FleModel& fle);
+
+  const VisibilityProblem& problem() const { return problem_; }
+  const FleModel& fle() const { return fle_; }
+  /// The layout has visibility (normals, cones); without, every marker is seen from everywhere.
+  bool with_normals() const { return visibility_.has_value(); }
+  bool with_body() const { return visibility_ && visibility_->has_body(); }
+  /// a (unit) lies in the layout's workspace (always without one).
+  bool in_workspace(const Eigen::Vector3d& a) const;
+  /// The centroid of every marker.
+  Eigen::Vector3d centroid() const { return problem_.points.rowwise().mean(); }
+  /// The TRE at target_tool from unit line of sight a: V(a) of §20 and, where tracked, Eq. (23.2)
+  /// with Sigma(a) of every visible marker.
+  TreAtDirection at(const Eigen::Vector3d& target_tool, const Eigen::Vector3d& a) const;
+
+ private:
+  std::optional<VisibilityModel> visibility_;  // owns the occlusion grid problem_ points to
+  VisibilityProblem problem_;
+  FleModel fle_;
 };
 
 /// One target's report.
@@ -71,5 +101,10 @@ TreReport tre_report(const Layout& layout, const std::vector<Eigen::Vector3d>& t
 /// The visibility problem of a layout for the TRE: its own with normals, otherwise every marker
 /// seen from everywhere (180-degree cones) inside the layout's workspace.
 VisibilityProblem tre_visibility_problem(const Layout& layout);
+
+/// tre_report() of the model's layout and FLE (options.fle is ignored): for callers that also
+/// evaluate the model (the sweeps), so that a body's occlusion grid is cast once.
+TreReport tre_report(const TreModel& model, const std::vector<Eigen::Vector3d>& targets,
+                     const TreOptions& options);
 
 }  // namespace vantage::sdp
