@@ -250,6 +250,7 @@ TEST(MirrorFit, ZeroForPlanarAndAchiralToolsPositiveForChiral) {
   const Eigen::Matrix3d R = random_rotation(rng);
   planar = R * planar;
   EXPECT_LT(mirror_fit(planar).rms, kZeroMirror * 50.0);
+  EXPECT_TRUE(mirror_fit(planar).own_mirror);
   EXPECT_LT(brute_mirror_rms(planar), kZeroMirror * 50.0);
 
   // A regular tetrahedron is its own mirror, but not under the identity assignment.
@@ -261,12 +262,14 @@ TEST(MirrorFit, ZeroForPlanarAndAchiralToolsPositiveForChiral) {
   std::vector<int> identity(4);
   std::iota(identity.begin(), identity.end(), 0);
   EXPECT_NE(achiral.assignment, identity);
+  EXPECT_TRUE(achiral.own_mirror);
 
   // Four markers at distinct heights off a scalene triangle: chiral.
   Eigen::Matrix3Xd chiral(3, 4);
   chiral << 0, 40, 10, 15, 0, 0, 30, 12, 0, 0, 0, 25;
   const MirrorFit fit = mirror_fit(chiral);
   EXPECT_GT(fit.rms, 1.0);
+  EXPECT_FALSE(fit.own_mirror);
   EXPECT_NEAR(fit.rms, brute_mirror_rms(chiral), kFitTolerance * 40.0);
 }
 

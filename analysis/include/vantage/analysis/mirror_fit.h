@@ -15,11 +15,16 @@
 
 namespace vantage {
 
+/// A fit this close, relative to the tool's RMS radius about its centroid, is exact: rounding
+/// in the fit is about 1e-15 of the radius.
+inline constexpr double kOwnMirrorTolerance = 1e-9;
+
 /// Options of mirror_fit().
 struct MirrorFitOptions {
-  /// Budget of the branch and bound over assignments, in distance comparisons (each partial
-  /// assignment costs about (assigned markers)^2 of them), >= 1. About 0.2 s of CPU at 10^8.
-  long max_comparisons = 100'000'000;
+  /// Budget of the branch and bound over assignments, in distance comparisons (a partial
+  /// assignment of k markers costs about k^2 / 2 + N of them, and each rigid fit counts as
+  /// 200 + 4k), >= 1. The default is a fraction of a second of CPU (docs/math.md §24).
+  long max_comparisons = 50'000'000;
 
   /// True when every field is in range; otherwise *why names the field and the constraint.
   bool is_valid(std::string* why = nullptr) const;
@@ -35,6 +40,9 @@ struct MirrorFit {
   double rms_lower = 0.0;
   /// The search ended within its budget, so rms is the minimum over every assignment.
   bool certified = false;
+  /// rms <= kOwnMirrorTolerance times the tool's RMS radius: the tool is its own mirror image
+  /// (planar or achiral), up to rounding.
+  bool own_mirror = false;
   /// pi: marker i of the tool is fitted onto the mirror of marker assignment[i].
   std::vector<int> assignment;
   long comparisons = 0;  ///< distance comparisons spent
