@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "orthogonal_fit.h"
@@ -113,7 +114,8 @@ class MatchSearch {
   long comparisons_ = 0;
 };
 
-void check_tool(const char* arg, const Eigen::Matrix3Xd& p, const ToolMatchOptions& options) {
+void check_tool(const std::string& arg, const Eigen::Matrix3Xd& p,
+                const ToolMatchOptions& options) {
   internal::check_min_count(arg, p.cols(), options.min_visible, "markers (min_visible)");
   internal::check_finite_columns(arg, p);
 }
@@ -173,6 +175,34 @@ ToolMatch self_ambiguity(const Eigen::Matrix3Xd& a, const ToolMatchOptions& opti
   internal::check_options("options", options);
   check_tool("a", a, options);
   return best_match(a, a, true, options);
+}
+
+ToolLibraryMatches match_tool_library(const std::vector<Eigen::Matrix3Xd>& tools,
+                                      const ToolMatchOptions& options) {
+  internal::check_options("options", options);
+  if (tools.empty()) internal::fail("tools", "need at least one tool");
+  for (std::size_t t = 0; t < tools.size(); ++t) {
+    const std::string arg = "tools[" + std::to_string(t) + "]";
+    check_tool(arg, tools[t], options);
+  }
+  ToolLibraryMatches out;
+  out.min_visible = options.min_visible;
+  out.certified = true;
+  const int n = static_cast<int>(tools.size());
+  for (int a = 0; a < n; ++a) {
+    for (int b = a; b < n; ++b) {
+      const Eigen::Matrix3Xd& ta = tools[static_cast<std::size_t>(a)];
+      const Eigen::Matrix3Xd& tb = tools[static_cast<std::size_t>(b)];
+      out.pairs.push_back({a, b, best_match(ta, tb, a == b, options)});
+      const ToolMatch& m = out.pairs.back().match;
+      out.certified = out.certified && m.certified;
+      if (out.closest < 0 ||
+          m.mismatch < out.pairs[static_cast<std::size_t>(out.closest)].match.mismatch) {
+        out.closest = static_cast<int>(out.pairs.size()) - 1;
+      }
+    }
+  }
+  return out;
 }
 
 }  // namespace vantage

@@ -178,5 +178,33 @@ TEST(MatchTools, RejectsToolsSmallerThanTheView) {
               HasSubstr("options.min_visible"));
 }
 
+TEST(MatchToolLibrary, EveryPairOnceEachAsItsOwnSearch) {
+  std::mt19937 rng(kSeed + 14);
+  const std::vector<Eigen::Matrix3Xd> tools = {
+      random_points(rng, 4, 50.0), random_points(rng, 5, 50.0), random_points(rng, 4, 50.0)};
+  ToolMatchOptions options;
+  const ToolLibraryMatches got = match_tool_library(tools, options);
+  ASSERT_EQ(got.pairs.size(), 6u);
+  EXPECT_TRUE(got.certified);
+  double smallest = std::numeric_limits<double>::infinity();
+  std::size_t k = 0;
+  for (int a = 0; a < 3; ++a) {
+    for (int b = a; b < 3; ++b, ++k) {
+      const ToolPairMatch& p = got.pairs[k];
+      EXPECT_EQ(p.a, a);
+      EXPECT_EQ(p.b, b);
+      const double truth = brute_mismatch(tools[static_cast<std::size_t>(a)],
+                                          tools[static_cast<std::size_t>(b)], 3, a == b);
+      EXPECT_EQ(p.match.mismatch, truth) << a << " " << b;
+      smallest = std::min(smallest, truth);
+    }
+  }
+  ASSERT_GE(got.closest, 0);
+  EXPECT_EQ(got.pairs[static_cast<std::size_t>(got.closest)].match.mismatch, smallest);
+  EXPECT_THAT(message_of([] { match_tool_library({}); }), HasSubstr("tools"));
+  options.min_visible = 5;
+  EXPECT_THAT(message_of([&] { match_tool_library(tools, options); }), HasSubstr("tools[0]"));
+}
+
 }  // namespace
 }  // namespace vantage

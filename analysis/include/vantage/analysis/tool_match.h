@@ -66,4 +66,26 @@ ToolMatch match_tools(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b,
 /// preconditions as match_tools() with b = a.
 ToolMatch self_ambiguity(const Eigen::Matrix3Xd& a, const ToolMatchOptions& options = {});
 
+/// One pair of a tool library: tools a <= b; a == b is the self-ambiguity of tool a.
+struct ToolPairMatch {
+  int a = 0;
+  int b = 0;
+  ToolMatch match;
+};
+
+/// Every pair of a tool library (`vantage ident`).
+struct ToolLibraryMatches {
+  int min_visible = 3;  ///< k of every match
+  /// (0,0), (0,1), ..., (0,n-1), (1,1), ...: each unordered pair once (m(A, B) = m(B, A)).
+  std::vector<ToolPairMatch> pairs;
+  int closest = -1;        ///< index into pairs of the smallest mismatch (the first such)
+  bool certified = false;  ///< every pair's search ended within its budget
+};
+
+/// match_tools() for every two tools and self_ambiguity() for each (docs/math.md §24). Throws
+/// InvalidArgument ("tools[i]": fewer markers than min_visible or non-finite; "tools": empty;
+/// "options.*").
+ToolLibraryMatches match_tool_library(const std::vector<Eigen::Matrix3Xd>& tools,
+                                      const ToolMatchOptions& options = {});
+
 }  // namespace vantage
