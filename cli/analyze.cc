@@ -13,6 +13,7 @@
 #include "limits.h"
 #include "progress.h"
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/identification.h"
 #include "vantage/analysis/layout.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/sdp/layout_report.h"
@@ -105,6 +106,32 @@ std::string paper_lmi_line(const sdp::LayoutAnalysis& r) {
   return std::string(sdp::to_string(r.paper_lmi.status)) + ": the SDP gave no solution";
 }
 
+std::string pair_label(const sdp::LayoutReport& report, const std::pair<int, int>& p) {
+  return report.entry_label(p.first) + "-" + report.entry_label(p.second);
+}
+
+std::string difference_text(const sdp::LayoutReport& report, const DistanceDifference& d) {
+  if (!std::isfinite(d.value)) return "none (one pair)";
+  return format_number(d.value, 4) + " (" + pair_label(report, d.pair_a) + " vs " +
+         pair_label(report, d.pair_b) + ")";
+}
+
+// One line: docs/math.md §24 (ART's distance rule, the closest markers, NDI's mirror rule, the
+// worst single loss).
+std::string identification_line(const sdp::LayoutReport& report) {
+  const IdentificationMargins& m = *report.identification;
+  const DropoutDifference& worst = m.under_dropout[static_cast<std::size_t>(m.worst_under_dropout)];
+  std::string mirror = m.mirror.own_mirror ? "0 (its own mirror)" : format_number(m.mirror.rms, 4);
+  if (!m.mirror.certified && !m.mirror.own_mirror) {
+    mirror = "in [" + format_number(m.mirror.rms_lower, 4) + ", " + format_number(m.mirror.rms, 4) +
+             "] (search budget spent)";
+  }
+  return "distances differ by " + difference_text(report, m.distance_difference) + ", markers " +
+         format_number(m.separation.value, 4) + " apart, mirror RMS " + mirror +
+         ", one lost: " + difference_text(report, worst.difference) + " without " +
+         report.entry_label(worst.lost);
+}
+
 void print_report(const AnalyzeArgs& args, const sdp::LayoutReport& report) {
   const Layout& layout = report.layout;
   const sdp::LayoutAnalysis& r = report.analysis;
@@ -128,6 +155,9 @@ void print_report(const AnalyzeArgs& args, const sdp::LayoutReport& report) {
   } else {
     std::cout << "skipped ("
               << (args.crosscheck ? r.crosscheck.skipped : std::string("--no-crosscheck")) << ")\n";
+  }
+  if (report.identification) {
+    std::cout << "identification         " << identification_line(report) << "\n";
   }
 }
 

@@ -41,6 +41,7 @@ Command add_plot_command(CLI::App& root);
 Command add_place_command(CLI::App& root);
 Command add_crb_command(CLI::App& root);
 Command add_tre_command(CLI::App& root);
+Command add_ident_command(CLI::App& root);
 
 /// "qmethod" | "svd" | "foam" (already checked by CLI11) to the enum.
 OrientationMethod parse_orientation_method(const std::string& name);

@@ -55,6 +55,7 @@ int main(int argc, char** argv) {
       add_place_command(app),   add_weights_command(app),  add_pose_command(app),
       add_layout_command(app),  add_simulate_command(app), add_experiment_command(app),
       add_plot_command(app),    add_crb_command(app),      add_tre_command(app),
+      add_ident_command(app),
   };
 
   const std::string unknown = unknown_subcommand(app, argc, argv);

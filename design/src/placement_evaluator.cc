@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vantage/analysis/identification.h"
+
 namespace vantage::design::internal {
 
 PlacementEvaluator::PlacementEvaluator(const PlacementProblem& problem, const PlaceOptions& options)
@@ -47,25 +49,12 @@ bool PlacementEvaluator::feasible_with(const std::vector<int>& chosen, int c) co
   }
   const double gap = problem_.min_distance_difference;
   if (!(gap > 0.0)) return true;
-  std::vector<double> old;
-  for (std::size_t i = 0; i < chosen.size(); ++i) {
-    for (std::size_t j = i + 1; j < chosen.size(); ++j) {
-      old.push_back((p.col(chosen[i]) - p.col(chosen[j])).norm());
-    }
+  Eigen::Matrix3Xd markers(3, static_cast<Eigen::Index>(chosen.size()) + 1);
+  for (std::size_t k = 0; k < chosen.size(); ++k) {
+    markers.col(static_cast<Eigen::Index>(k)) = p.col(chosen[k]);
   }
-  std::vector<double> added;
-  for (int s : chosen) added.push_back((p.col(s) - p.col(c)).norm());
-  std::sort(old.begin(), old.end());
-  std::sort(added.begin(), added.end());
-  for (std::size_t k = 1; k < added.size(); ++k) {
-    if (added[k] - added[k - 1] < gap) return false;
-  }
-  for (double d : added) {
-    const auto it = std::lower_bound(old.begin(), old.end(), d);
-    if (it != old.end() && *it - d < gap) return false;
-    if (it != old.begin() && d - *(it - 1) < gap) return false;
-  }
-  return true;
+  markers.col(markers.cols() - 1) = p.col(c);
+  return min_distance_difference(markers).value >= gap;
 }
 
 FamilyValue PlacementEvaluator::family_t(const std::vector<std::vector<int>>& family, double level,

@@ -30,7 +30,7 @@ import numpy.typing as npt
 from . import _vantage
 from ._results import (
     BoundCheck, Certificate, CrbBound, CrbReport, CrbSweepRow, Crosscheck, DesignCoplanarity, DesignDirect, DesignResult,
-    DesignState, DesignStep, DropoutEntry, EstimatorStats, LayoutCoplanarity, LayoutReport,
+    DesignState, DesignStep, DistanceDifference, DropoutEntry, EstimatorStats, Identification, LayoutCoplanarity, LayoutReport,
     LayoutVisibility, LostRegion, Orientation, PaperLmi, PerTrial, PoseAlternative, PoseCamera,
     PoseEstimate, SimulationReport, SimulationVisibility, Solver, Statistic, Swap, TreAtDirection,
     TreExtreme, TreMonteCarlo, TreReport, TreTarget, VisibilityCertificate, VisibilityDropoutEntry, WeightsResult, WeightsSuggestion, Workspace,
@@ -49,7 +49,7 @@ from ._vantage import (
 
 __all__ = [
     "BoundCheck", "Certificate", "CrbBound", "CrbReport", "CrbSweepRow", "Crosscheck", "DesignCoplanarity", "DesignDirect",
-    "DesignResult", "DesignState", "DesignStep", "DropoutEntry", "EstimatorStats", "Layout",
+    "DesignResult", "DesignState", "DesignStep", "DistanceDifference", "DropoutEntry", "EstimatorStats", "Identification", "Layout",
     "LayoutCoplanarity", "LayoutReport", "LayoutVisibility", "LostRegion", "NumericalError", "Orientation", "PaperLmi", "PerTrial",
     "PoseAlternative", "PoseCamera", "PoseEstimate", "SimulationReport", "SimulationVisibility",
     "Solver", "Statistic", "Swap", "TreAtDirection", "TreExtreme", "TreMonteCarlo", "TreReport",

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import copy
 import math
-from typing import Any, Dict, List, Mapping, Optional
+from typing import Any, Dict, List, Mapping, Optional, Tuple
 
 import numpy as np
 import numpy.typing as npt
@@ -168,6 +168,43 @@ class DropoutEntry(_JsonView):
         self.certified: bool = bool(fields["certified"])
 
 
+def _pair(value: Any) -> Optional[Tuple[int, int]]:
+    return None if value is None else (int(value[0]), int(value[1]))
+
+
+class DistanceDifference(_JsonView):
+    """The least difference of two inter-marker distances (docs/math.md §24, Eq. 24.1), with
+    marker ``lost`` removed when it is a dropout entry (None for the whole layout)."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.lost: Optional[int] = int(fields["lost"]) if "lost" in fields else None
+        self.min_distance_difference: float = _float(fields["min_distance_difference"])
+        self.pair_a: Optional[Tuple[int, int]] = _pair(fields["pair_a"])
+        self.pair_b: Optional[Tuple[int, int]] = _pair(fields["pair_b"])
+
+
+class Identification(DistanceDifference):
+    """How a tracker tells the markers apart by their distances, and how far the layout is from
+    its mirror image (docs/math.md §24; point layouts). ``min_distance_difference`` is ART's
+    margin (nan with one pair), ``mirror_rms`` NDI's (0 for a layout equal to its mirror; an
+    upper bound when ``mirror_certified`` is False, with ``mirror_rms_lower`` below it)."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.min_marker_separation: float = _float(fields["min_marker_separation"])
+        self.separation_pair: Optional[Tuple[int, int]] = _pair(fields["separation_pair"])
+        self.mirror_rms: float = _float(fields["mirror_rms"])
+        self.mirror_rms_lower: float = _float(fields["mirror_rms_lower"])
+        self.mirror_certified: bool = bool(fields["mirror_certified"])
+        self.own_mirror: bool = bool(fields["own_mirror"])
+        self.mirror_assignment: IntArray = _ints(fields["mirror_assignment"])
+        self.under_dropout: List[DistanceDifference] = [
+            DistanceDifference(e) for e in fields["under_dropout"]]
+        self.worst_under_dropout: DistanceDifference = DistanceDifference(
+            fields["worst_under_dropout"])
+
+
 class Workspace(_JsonView):
     """The directions analysed: the cap {a : a . axis >= cos(half_angle_deg)}."""
 
@@ -280,6 +317,8 @@ class LayoutReport(_JsonView):
         self.swaps: List[Swap] = [Swap(s) for s in fields["swaps"]]
         self.solver = Solver(fields["solver"])
         self.coplanarity = LayoutCoplanarity(fields["coplanarity"])
+        self.identification: Optional[Identification] = (
+            Identification(fields["identification"]) if "identification" in fields else None)
         self.dropout: Optional[List[DropoutEntry]] = (
             [DropoutEntry(e) for e in fields["dropout"]] if "dropout" in fields else None)
         self.visibility: Optional[LayoutVisibility] = (

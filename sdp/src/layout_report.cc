@@ -89,6 +89,9 @@ bool LayoutReportOptions::is_valid(std::string* why) const {
   if (!visibility.is_valid(&inner)) {
     return vantage::internal::invalid_option(why, "visibility", inner);
   }
+  if (!identification.is_valid(&inner)) {
+    return vantage::internal::invalid_option(why, "identification", inner);
+  }
   return true;
 }
 
@@ -100,6 +103,9 @@ LayoutReport analyze_layout(const Layout& layout, const LayoutReportOptions& opt
   report.analysis = analyze_data(layout, report.data, options.analysis);
   report.ceiling = pbar_ceiling(report.data.vectors.cols());
   report.coplanarity = coplanarity(report.data.vectors, options.coplanarity_threshold);
+  if (layout.mode == LayoutMode::kPoints) {
+    report.identification = identification_margins(layout.entries, options.identification);
+  }
   if (options.dropout) {
     if (options.analysis.progress) options.analysis.progress("dropout");
     report.dropout = dropout_analysis(layout, options.dropout_options);

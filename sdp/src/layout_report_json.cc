@@ -63,6 +63,41 @@ Json dropout(const DropoutAnalysis& dropout) {
   return out;
 }
 
+Json pair(const std::pair<int, int>& p) {
+  if (p.first < 0) return nullptr;
+  return {p.first, p.second};
+}
+
+Json difference(const DistanceDifference& d) {
+  return {{"min_distance_difference", number(d.value)},
+          {"pair_a", pair(d.pair_a)},
+          {"pair_b", pair(d.pair_b)}};
+}
+
+Json dropout_difference(const DropoutDifference& e) {
+  Json out = {{"lost", e.lost}};
+  out.update(difference(e.difference));
+  return out;
+}
+
+// docs/math.md §24; README "vantage analyze" names the fields.
+Json identification(const IdentificationMargins& m) {
+  Json out = difference(m.distance_difference);
+  out["min_marker_separation"] = number(m.separation.value);
+  out["separation_pair"] = pair(m.separation.pair);
+  out["mirror_rms"] = m.mirror.rms;
+  out["mirror_rms_lower"] = m.mirror.rms_lower;
+  out["mirror_certified"] = m.mirror.certified;
+  out["own_mirror"] = m.mirror.own_mirror;
+  out["mirror_assignment"] = m.mirror.assignment;
+  Json entries = Json::array();
+  for (const DropoutDifference& e : m.under_dropout) entries.push_back(dropout_difference(e));
+  out["under_dropout"] = entries;
+  out["worst_under_dropout"] =
+      dropout_difference(m.under_dropout[static_cast<std::size_t>(m.worst_under_dropout)]);
+  return out;
+}
+
 }  // namespace
 
 std::string to_json(const LayoutReport& report) {
@@ -98,6 +133,7 @@ std::string to_json(const LayoutReport& report) {
                         {"normal", list(report.coplanarity.normal)},
                         {"nearly_coplanar", report.coplanarity.nearly_coplanar},
                         {"threshold", report.coplanarity.threshold}};
+  if (report.identification) out["identification"] = identification(*report.identification);
   if (report.dropout) out["dropout"] = dropout(*report.dropout);
   if (report.visibility) out["visibility"] = internal::visibility_json(*report.visibility);
   out["usable"] = report.is_usable();

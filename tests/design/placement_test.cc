@@ -389,28 +389,5 @@ TEST(SampleSurfaceSites, RejectsAMeshWithoutFaces) {
   EXPECT_THAT(message_of([&] { sample_surface_sites(mesh, 10, 0.0, kSeed); }), HasSubstr("body"));
 }
 
-TEST(MinDistanceDifference, EqualsBruteForce) {
-  std::mt19937 engine(kSeed);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const int n = 9;
-  Eigen::Matrix3Xd points(3, n);
-  for (int i = 0; i < n; ++i) points.col(i) = Eigen::Vector3d(u(engine), u(engine), u(engine));
-  double truth = INFINITY;
-  std::vector<double> d;
-  for (int i = 0; i < n; ++i) {
-    for (int j = i + 1; j < n; ++j) d.push_back((points.col(i) - points.col(j)).norm());
-  }
-  for (std::size_t a = 0; a < d.size(); ++a) {
-    for (std::size_t b = a + 1; b < d.size(); ++b) truth = std::min(truth, std::abs(d[a] - d[b]));
-  }
-  const DistanceDifference got = min_distance_difference(points);
-  EXPECT_EQ(got.value, truth);
-  const auto length = [&](std::pair<int, int> p) {
-    return (points.col(p.first) - points.col(p.second)).norm();
-  };
-  EXPECT_EQ(std::abs(length(got.pair_a) - length(got.pair_b)), truth);
-  EXPECT_TRUE(std::isinf(min_distance_difference(points.leftCols(2)).value));
-}
-
 }  // namespace
 }  // namespace vantage::design

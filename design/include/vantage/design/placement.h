@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "vantage/analysis/identification.h"
 #include "vantage/analysis/mesh.h"
 #include "vantage/sdp/visibility.h"
 
@@ -28,9 +29,11 @@ struct PlacementProblem {
   sdp::VisibilityProblem sites;
   /// Sites that are already markers (kept: always chosen, counted in `markers`), distinct.
   std::vector<int> keep;
-  int markers = 0;                       ///< K: the markers of the answer, kept ones included
-  double min_separation = 0.0;           ///< least distance between chosen markers, >= 0
-  double min_distance_difference = 0.0;  ///< least |d_ij - d_kl| of distinct pairs, >= 0
+  int markers = 0;              ///< K: the markers of the answer, kept ones included
+  double min_separation = 0.0;  ///< least distance between chosen markers, >= 0
+  /// Least |d_ij - d_kl| of distinct pairs of chosen markers, >= 0: the chosen sites must have
+  /// vantage::min_distance_difference() >= this (analysis/identification.h, docs/math.md §24).
+  double min_distance_difference = 0.0;
 
   /// Throws InvalidArgument naming the field: "markers" (K above the sites, below
   /// min_visible, below the kept markers), "keep", "min_separation" (also when kept markers
@@ -136,15 +139,5 @@ struct SurfaceSites {
 /// mesh of zero area.
 SurfaceSites sample_surface_sites(const Mesh& mesh, int count, double min_separation,
                                   std::uint64_t seed);
-
-/// min |d_ij - d_kl| over distinct unordered pairs {i, j} != {k, l} of the columns of `points`
-/// (ART's identification rule), with the two pairs (i < j, pair_a before pair_b in the order
-/// (0,1), (0,2), ..., (1,2), ...); +infinity with fewer than two pairs.
-struct DistanceDifference {
-  double value = 0.0;
-  std::pair<int, int> pair_a{-1, -1};
-  std::pair<int, int> pair_b{-1, -1};
-};
-DistanceDifference min_distance_difference(const Eigen::Matrix3Xd& points);
 
 }  // namespace vantage::design

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "vantage/analysis/free_vectors.h"
+#include "vantage/analysis/identification.h"
 #include "vantage/analysis/layout.h"
 #include "vantage/sdp/dropout.h"
 #include "vantage/sdp/layout_analysis.h"
@@ -37,6 +38,8 @@ struct LayoutReportOptions {
   /// The analysis on the body, for a layout with normals (Layout::visibility); its `dropout`
   /// follows `dropout` above.
   VisibilityReportOptions visibility;
+  /// Point mode: the identification margins (docs/math.md §24), their mirror search's budget.
+  IdentificationOptions identification;
 
   /// True when every field is in range; otherwise *why names the field and the constraint.
   bool is_valid(std::string* why = nullptr) const;
@@ -56,6 +59,9 @@ struct LayoutReport {
   /// The layout on its body (docs/math.md §20), for a layout with normals: the worst viewpoint
   /// over the trackable directions of the workspace, the coverage, the dropout under visibility.
   std::optional<VisibilityReport> visibility;
+  /// Point mode: how a tracker tells the markers apart by their distances and how far the layout
+  /// is from its mirror image (docs/math.md §24); informative, not part of is_usable().
+  std::optional<IdentificationMargins> identification;
 
   /// True when the numbers can be relied on: the worst viewpoint is certified and confirmed on
   /// the SDP, the cross-check (when run) agrees, the layout is not degenerate, and the dropout

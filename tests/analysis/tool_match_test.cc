@@ -1,0 +1,210 @@
+// The distance mismatch between tools (docs/math.md §24, Eq. 24.4) against the enumeration of
+// every subset and every injective assignment, its symmetry, mirror images and the budget.
+
+#include "vantage/analysis/tool_match.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <vector>
+
+#include "support/eigen_testing.h"
+#include "support/message_of.h"
+
+namespace vantage {
+namespace {
+
+using ::testing::HasSubstr;
+using testing::kSeed;
+using testing::message_of;
+using testing::random_points;
+using testing::random_rotation;
+
+// A perfect (zero-mismatch) match still differs from 0 by the rounding of the distances.
+constexpr double kZeroMismatch = 1e-12;
+
+double tool_distance(const Eigen::Matrix3Xd& p, int i, int j) {
+  return (p.col(i) - p.col(j)).norm();
+}
+
+double mismatch_of(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b, const std::vector<int>& s,
+                   const std::vector<int>& sigma) {
+  double worst = 0.0;
+  for (std::size_t x = 0; x < s.size(); ++x) {
+    for (std::size_t y = x + 1; y < s.size(); ++y) {
+      worst = std::max(
+          worst, std::abs(tool_distance(a, s[x], s[y]) - tool_distance(b, sigma[x], sigma[y])));
+    }
+  }
+  return worst;
+}
+
+// Every k-subset of A (a bit mask) and every ordered k-tuple of distinct markers of B (every
+// permutation of every k-subset of B); `self` skips sigma equal to the inclusion.
+double brute_mismatch(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b, int k, bool self) {
+  const int na = static_cast<int>(a.cols());
+  const int nb = static_cast<int>(b.cols());
+  double best = std::numeric_limits<double>::infinity();
+  long tried = 0;
+  for (int mask = 0; mask < (1 << na); ++mask) {
+    if (__builtin_popcount(static_cast<unsigned>(mask)) != k) continue;
+    std::vector<int> s;
+    for (int i = 0; i < na; ++i) {
+      if (mask & (1 << i)) s.push_back(i);
+    }
+    for (int image = 0; image < (1 << nb); ++image) {
+      if (__builtin_popcount(static_cast<unsigned>(image)) != k) continue;
+      std::vector<int> sigma;
+      for (int j = 0; j < nb; ++j) {
+        if (image & (1 << j)) sigma.push_back(j);
+      }
+      do {
+        if (self && sigma == s) continue;
+        best = std::min(best, mismatch_of(a, b, s, sigma));
+        ++tried;
+      } while (std::next_permutation(sigma.begin(), sigma.end()));
+    }
+  }
+  EXPECT_GT(tried, 0);
+  return best;
+}
+
+TEST(MatchTools, EqualsEverySubsetAndAssignment) {
+  std::mt19937 rng(kSeed + 10);
+  for (int trial = 0; trial < 6; ++trial) {
+    const int na = 4 + trial % 3;
+    const int nb = 3 + (trial * 2) % 4;
+    const Eigen::Matrix3Xd a = random_points(rng, na, 50.0);
+    const Eigen::Matrix3Xd b = random_points(rng, nb, 50.0);
+    for (int k = 2; k <= std::min(na, nb); ++k) {
+      ToolMatchOptions options;
+      options.min_visible = k;
+      const ToolMatch got = match_tools(a, b, options);
+      EXPECT_TRUE(got.certified);
+      EXPECT_EQ(got.mismatch, brute_mismatch(a, b, k, false)) << "trial " << trial << " k " << k;
+      EXPECT_EQ(got.mismatch_lower, got.mismatch);
+      ASSERT_EQ(got.subset.size(), static_cast<std::size_t>(k));
+      EXPECT_TRUE(std::is_sorted(got.subset.begin(), got.subset.end()));
+      EXPECT_EQ(mismatch_of(a, b, got.subset, got.assignment), got.mismatch);
+      // m(A, B) = m(B, A).
+      EXPECT_EQ(match_tools(b, a, options).mismatch, got.mismatch);
+    }
+  }
+}
+
+TEST(SelfAmbiguity, EqualsEveryNonIdentityAssignment) {
+  std::mt19937 rng(kSeed + 11);
+  for (int n = 3; n <= 6; ++n) {
+    const Eigen::Matrix3Xd a = random_points(rng, n, 50.0);
+    for (int k = 2; k <= n; ++k) {
+      ToolMatchOptions options;
+      options.min_visible = k;
+      const ToolMatch got = self_ambiguity(a, options);
+      EXPECT_EQ(got.mismatch, brute_mismatch(a, a, k, true)) << "n " << n << " k " << k;
+      EXPECT_NE(got.subset, got.assignment);
+      // Two markers always pass for each other (the pair reversed); three or more do not.
+      if (k >= 3) {
+        EXPECT_GT(got.mismatch, 0.0);
+      }
+    }
+  }
+}
+
+TEST(MatchTools, MirrorImageMatchesExactlyAsAReflection) {
+  std::mt19937 rng(kSeed + 12);
+  const Eigen::Matrix3Xd a = random_points(rng, 5, 40.0);
+  // B: A mirrored, turned, moved and relabelled.
+  Eigen::Matrix3Xd mirror = a;
+  mirror.row(0) = -mirror.row(0);
+  mirror = (random_rotation(rng) * mirror).colwise() + Eigen::Vector3d(100.0, -20.0, 5.0);
+  const std::vector<int> labels = {3, 0, 4, 1, 2};
+  Eigen::Matrix3Xd b(3, 5);
+  for (int i = 0; i < 5; ++i) b.col(labels[static_cast<std::size_t>(i)]) = mirror.col(i);
+
+  ToolMatchOptions options;
+  options.min_visible = 4;
+  const ToolMatch four = match_tools(a, b, options);
+  EXPECT_LT(four.mismatch, kZeroMismatch * 40.0);
+  EXPECT_EQ(four.transform, ToolMatch::Transform::kReflection);
+  EXPECT_LT(four.improper_rms, kZeroMismatch * 40.0);
+  EXPECT_GT(four.proper_rms, 1.0);
+  for (std::size_t s = 0; s < four.subset.size(); ++s) {
+    EXPECT_EQ(four.assignment[s], labels[static_cast<std::size_t>(four.subset[s])]);
+  }
+
+  // Three markers are coplanar: a rotation fits as well as a reflection.
+  options.min_visible = 3;
+  const ToolMatch three = match_tools(a, b, options);
+  EXPECT_LT(three.mismatch, kZeroMismatch * 40.0);
+  EXPECT_EQ(three.transform, ToolMatch::Transform::kEither);
+  EXPECT_STREQ(to_string(three.transform), "either");
+
+  // A turned copy matches by a rotation.
+  const Eigen::Matrix3Xd turned = random_rotation(rng) * a;
+  options.min_visible = 4;
+  const ToolMatch rotated = match_tools(a, turned, options);
+  EXPECT_LT(rotated.mismatch, kZeroMismatch * 40.0);
+  EXPECT_EQ(rotated.transform, ToolMatch::Transform::kRotation);
+}
+
+TEST(MatchTools, OutOfBudgetBracketsTheTruth) {
+  std::mt19937 rng(kSeed + 13);
+  const Eigen::Matrix3Xd a = random_points(rng, 7, 50.0);
+  const Eigen::Matrix3Xd b = random_points(rng, 7, 50.0);
+  ToolMatchOptions options;
+  options.min_visible = 4;
+  const double truth = brute_mismatch(a, b, 4, false);
+  options.max_comparisons = 20;
+  const ToolMatch got = match_tools(a, b, options);
+  EXPECT_FALSE(got.certified);
+  EXPECT_GE(got.mismatch, truth);
+  EXPECT_LE(got.mismatch_lower, truth);
+}
+
+TEST(MatchTools, RejectsToolsSmallerThanTheView) {
+  ToolMatchOptions options;
+  options.min_visible = 4;
+  const Eigen::Matrix3Xd three = Eigen::Matrix3Xd::Identity(3, 3);
+  const Eigen::Matrix3Xd four = Eigen::Matrix3Xd::Random(3, 4);
+  EXPECT_THAT(message_of([&] { match_tools(four, three, options); }), HasSubstr("b"));
+  EXPECT_THAT(message_of([&] { self_ambiguity(three, options); }), HasSubstr("a"));
+  options.min_visible = 1;
+  EXPECT_THAT(message_of([&] { match_tools(four, four, options); }),
+              HasSubstr("options.min_visible"));
+}
+
+TEST(MatchToolLibrary, EveryPairOnceEachAsItsOwnSearch) {
+  std::mt19937 rng(kSeed + 14);
+  const std::vector<Eigen::Matrix3Xd> tools = {
+      random_points(rng, 4, 50.0), random_points(rng, 5, 50.0), random_points(rng, 4, 50.0)};
+  ToolMatchOptions options;
+  const ToolLibraryMatches got = match_tool_library(tools, options);
+  ASSERT_EQ(got.pairs.size(), 6u);
+  EXPECT_TRUE(got.certified);
+  double smallest = std::numeric_limits<double>::infinity();
+  std::size_t k = 0;
+  for (int a = 0; a < 3; ++a) {
+    for (int b = a; b < 3; ++b, ++k) {
+      const ToolPairMatch& p = got.pairs[k];
+      EXPECT_EQ(p.a, a);
+      EXPECT_EQ(p.b, b);
+      const double truth = brute_mismatch(tools[static_cast<std::size_t>(a)],
+                                          tools[static_cast<std::size_t>(b)], 3, a == b);
+      EXPECT_EQ(p.match.mismatch, truth) << a << " " << b;
+      smallest = std::min(smallest, truth);
+    }
+  }
+  ASSERT_GE(got.closest, 0);
+  EXPECT_EQ(got.pairs[static_cast<std::size_t>(got.closest)].match.mismatch, smallest);
+  EXPECT_THAT(message_of([] { match_tool_library({}); }), HasSubstr("tools"));
+  options.min_visible = 5;
+  EXPECT_THAT(message_of([&] { match_tool_library(tools, options); }), HasSubstr("tools[0]"));
+}
+
+}  // namespace
+}  // namespace vantage
