@@ -1,6 +1,7 @@
-// `vantage design LAYOUT --add K [--candidates-only] [--margin M] [--direct|--no-direct]
-// [--write OUT.json|OUT.csv] [--overwrite] [--json]`: the inductive augmenter of McInroy et al.
-// (Sec. III.E, text around Fig. 3) done on the global worst viewpoint (docs/math.md §13, §15).
+// `vantage design LAYOUT --add K [--candidates-only] [--margin M] [--min-distance-difference D]
+// [--direct|--no-direct] [--write OUT.json|OUT.csv] [--overwrite] [--json]`: the inductive
+// augmenter of McInroy et al. (Sec. III.E, text around Fig. 3) done on the global worst viewpoint
+// (docs/math.md §13, §15).
 
 #include <sys/stat.h>
 
@@ -17,6 +18,7 @@
 #include "limits.h"
 #include "progress.h"
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/identification.h"
 #include "vantage/design/augment.h"
 #include "vantage/io/layout_formats.h"
 #include "vantage/io/text_file.h"
@@ -48,6 +50,7 @@ struct DesignArgs {
   bool candidates_only = false;
   double margin = design::AugmentOptions{}.margin;
   long search_budget = design::AugmentOptions{}.search_budget;
+  double min_distance_difference = 0.0;
   bool direct = true;
   std::string write;
   bool write_given = false;  // --write appeared, possibly with an empty name
@@ -81,6 +84,22 @@ void check_point_candidates(const std::string& source, const Layout& layout, dou
             std::to_string(d) + "]");
       }
     }
+  }
+}
+
+// --min-distance-difference D > 0 needs marker positions that keep it themselves.
+void check_distance_difference(const DesignArgs& args, const Layout& layout) {
+  const double gap = args.min_distance_difference;
+  if (!(gap > 0.0)) return;
+  if (layout.mode != LayoutMode::kPoints) {
+    bad("--min-distance-difference: needs a layout of points; " + args.file + " has vectors");
+  }
+  const DistanceDifference d = min_distance_difference(layout.entries);
+  if (d.value < gap) {
+    bad("--min-distance-difference: " + args.file + ": its own distances " +
+        layout.entry_name(d.pair_a.first) + "-" + layout.entry_name(d.pair_a.second) + " and " +
+        layout.entry_name(d.pair_b.first) + "-" + layout.entry_name(d.pair_b.second) +
+        " differ by only " + format_number(d.value) + " < " + format_number(gap));
   }
 }
 
@@ -201,6 +220,11 @@ void print_report(const DesignArgs& args, const Layout& layout, const design::Au
               << format_points(r.steps.back().worst.worst_viewpoints) << "\n";
   }
   std::cout << "final p-bar_min " << fixed(r.final_pbar_min, 6) << "\n";
+  if (r.min_distance_difference > 0.0) {
+    std::cout << "min distance difference (Eq. 24.1): "
+              << format_number(min_distance_difference(r.augmented.entries).value)
+              << " (required >= " << format_number(r.min_distance_difference) << ")\n";
+  }
   if (r.direct.status == design::DirectResult::Status::kOk) {
     std::cout << "direct optimiser (" << r.direct.method << ", all " << args.add
               << " at once): p-bar_min " << fixed(r.direct.worst.pbar_min, 6) << " vs greedy "
@@ -225,6 +249,10 @@ int run_design(const DesignArgs& args) {
   if (args.search_budget < 0) {
     bad("--search-budget: must be >= 0, got " + std::to_string(args.search_budget));
   }
+  if (!(args.min_distance_difference >= 0.0) || !std::isfinite(args.min_distance_difference)) {
+    bad("--min-distance-difference: must be a finite number >= 0, got " +
+        format_number(args.min_distance_difference));
+  }
   check_write_target(args);
   const Layout layout = args.input.read(args.file, args.allow_large);
   const long final_count =
@@ -245,6 +273,7 @@ int run_design(const DesignArgs& args) {
         " candidates of " + args.file + " (--candidates-only uses each at most once)");
   }
   check_point_candidates(args.file, layout, args.margin);
+  check_distance_difference(args, layout);
   check_write_format(args, layout);
   std::optional<io::WriteLock> lock;
   if (args.write_given) lock.emplace(args.write);
@@ -259,6 +288,7 @@ int run_design(const DesignArgs& args) {
   options.candidates_only = args.candidates_only;
   options.margin = args.margin;
   options.search_budget = args.search_budget;
+  options.min_distance_difference = args.min_distance_difference;
   options.run_direct = args.direct;
   design::AugmentResult r;
   {
@@ -338,6 +368,11 @@ Command add_design_command(CLI::App& root) {
                   "point mode: the branch and bound's budget per step, in global solves times "
                   "data vectors (about 1 us of CPU each); raise it until the step's search is "
                   "closed; 0: grid and polish only")
+      ->capture_default_str();
+  sub->add_option("--min-distance-difference", args->min_distance_difference,
+                  "point mode: every addition keeps any two inter-marker distances at least D "
+                  "apart (tracker identification, the check of `place`); the layout must keep "
+                  "it itself; 0: no constraint")
       ->capture_default_str();
   sub->add_flag("--direct,!--no-direct", args->direct,
                 "also run (default) or skip the direct optimiser over all K additions at once");

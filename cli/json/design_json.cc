@@ -1,9 +1,11 @@
 #include "design_json.h"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "pose_json.h"
+#include "vantage/analysis/identification.h"
 
 namespace vantage::design_json {
 namespace {
@@ -108,6 +110,12 @@ Json design(const Json& source, const Layout& layout, bool direct_asked,
   }
   out["steps"] = steps;
   out["final_pbar_min"] = r.final_pbar_min;
+  out["min_distance_difference"] = r.min_distance_difference;
+  if (layout.mode == LayoutMode::kPoints) {
+    // Eq. (24.1) of the final markers; null with fewer than two pairs.
+    const double achieved = min_distance_difference(r.augmented.entries).value;
+    out["final_distance_difference"] = std::isfinite(achieved) ? Json(achieved) : Json(nullptr);
+  }
   if (r.direct.status == design::DirectResult::Status::kOk) {
     out["direct"] = direct(r.direct);
   } else if (direct_asked) {

@@ -5,14 +5,42 @@
 
 #include <cmath>
 #include <numeric>
+#include <sstream>
 #include <string>
 
 #include "designer.h"
 #include "direct_search.h"
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/identification.h"
 #include "vantage/analysis/internal/checks.h"
 
 namespace vantage::design {
+namespace {
+
+std::string format_difference(double d) {
+  std::ostringstream out;
+  out << d;
+  return out.str();
+}
+
+// The constraint applies to a point layout whose own markers keep it.
+void check_distance_difference(const Layout& layout, double gap) {
+  if (!(gap > 0.0)) return;
+  if (layout.mode != LayoutMode::kPoints) {
+    vantage::internal::fail("min_distance_difference", "needs a point layout (markers)");
+  }
+  const DistanceDifference d = min_distance_difference(layout.entries);
+  if (d.value < gap) {
+    vantage::internal::fail("min_distance_difference",
+                            "the layout's own distances " + layout.entry_name(d.pair_a.first) +
+                                "-" + layout.entry_name(d.pair_a.second) + " and " +
+                                layout.entry_name(d.pair_b.first) + "-" +
+                                layout.entry_name(d.pair_b.second) + " differ by only " +
+                                format_difference(d.value) + " < " + format_difference(gap));
+  }
+}
+
+}  // namespace
 
 const char* to_string(DirectResult::Status status) {
   return status == DirectResult::Status::kOk ? "ok" : "skipped";
@@ -26,6 +54,8 @@ const char* to_string(AugmentResult::Status status) {
       return "not_certified";
     case AugmentResult::Status::kNoCandidates:
       return "no_candidates";
+    case AugmentResult::Status::kNoFeasibleAddition:
+      return "no_feasible_addition";
   }
   return "unknown";
 }
@@ -56,6 +86,9 @@ bool AugmentOptions::is_valid(std::string* why) const {
   if (!(coplanarity_threshold >= 0.0)) {
     return invalid_option(why, "coplanarity_threshold", "must be >= 0");
   }
+  if (!(min_distance_difference >= 0.0) || !std::isfinite(min_distance_difference)) {
+    return invalid_option(why, "min_distance_difference", "must be finite and >= 0");
+  }
   return true;
 }
 
@@ -65,7 +98,9 @@ AugmentResult augment_layout(const Layout& layout, const AugmentOptions& options
   if (options.candidates_only && layout.candidates.cols() == 0) {
     vantage::internal::fail("candidates", "candidates_only needs a layout with candidates");
   }
+  check_distance_difference(layout, options.min_distance_difference);
   AugmentResult result;
+  result.min_distance_difference = options.min_distance_difference;
   const Eigen::Matrix3Xd initial_vectors = data_vectors(layout).vectors;
   result.initial = evaluate_worst_case(initial_vectors);
   result.global_solves = 1;
@@ -86,11 +121,19 @@ AugmentResult augment_layout(const Layout& layout, const AugmentOptions& options
     }
     internal::Designer designer(current_layout, options);
     bool out_of_candidates = false;
-    AugmentStep st = designer.step(current, &out_of_candidates);
+    bool no_feasible = false;
+    AugmentStep st = designer.step(current, &out_of_candidates, &no_feasible);
     result.global_solves += designer.solves();
     if (out_of_candidates) {
       result.status = AugmentResult::Status::kNoCandidates;
       result.message = "the candidates ran out after " + std::to_string(s) + " step(s)";
+      break;
+    }
+    if (no_feasible) {
+      result.status = AugmentResult::Status::kNoFeasibleAddition;
+      result.message = "no candidate or searched position keeps the distance difference >= " +
+                       format_difference(options.min_distance_difference) + " after " +
+                       std::to_string(s) + " step(s)";
       break;
     }
     if (st.candidate_index >= 0) {
@@ -107,8 +150,7 @@ AugmentResult augment_layout(const Layout& layout, const AugmentOptions& options
   result.final_coplanarity =
       coplanarity(data_vectors(current_layout).vectors, options.coplanarity_threshold);
   result.augmented = current_layout;
-  if (options.run_direct && options.add > 0 &&
-      result.status != AugmentResult::Status::kNoCandidates) {
+  if (options.run_direct && options.add > 0 && result.status == AugmentResult::Status::kOk) {
     if (options.progress) options.progress("direct optimiser");
     // The final layout's search box holds the input's and every greedy addition (each lies in
     // the box of the layout it was added to, which the final markers' box contains).

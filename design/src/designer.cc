@@ -8,6 +8,7 @@
 #include "kill_level.h"
 #include "text.h"
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/identification.h"
 
 namespace vantage::design::internal {
 namespace {
@@ -83,11 +84,27 @@ WorstCase Designer::evaluate_added(const Eigen::Matrix3Xd& added, double stop_ab
   return w;
 }
 
+bool Designer::keeps_distance_difference(const Eigen::Matrix3Xd& markers) const {
+  const double gap = options_.min_distance_difference;
+  return !(gap > 0.0) || min_distance_difference(markers).value >= gap;
+}
+
+bool Designer::feasible(const Eigen::Vector3d& x) const {
+  if (!(options_.min_distance_difference > 0.0)) return true;
+  Eigen::Matrix3Xd markers(3, markers_.cols() + 1);
+  markers << markers_, x;
+  return keeps_distance_difference(markers);
+}
+
 Score Designer::score(const Eigen::Vector3d& x, const WorstCase& current, long* screened,
                       double stop_above, std::vector<Eigen::Vector3d>* viewpoints) {
   Score s;
   Eigen::Matrix3Xd added;
   if (!space_->new_vectors(x, markers_, &added)) return s;
+  if (!feasible(x)) {
+    if (viewpoints != nullptr) *viewpoints = evaluate_added(added).worst_viewpoints;
+    return s;
+  }
   int survivors = 0;
   double margin = std::numeric_limits<double>::infinity();
   for (const Eigen::Vector3d& a : current.worst_viewpoints) {
@@ -156,7 +173,8 @@ std::vector<Designer::Option> Designer::generate(const WorstCase& current, Augme
                                                      : best_t.back() + options_.tie_tolerance;
     const Score s = score(x, current, &st->screened, stop_above);
     options.push_back({x, index, s});
-    if (s.t > stop_above) return;  // the solve stopped above: not exact
+    if (s.t > stop_above) return;     // the solve stopped above: not exact
+    if (!std::isfinite(s.t)) return;  // infeasible: ranks last
     best_t.insert(std::upper_bound(best_t.begin(), best_t.end(), s.t), s.t);
     if (best_t.size() > ranked) best_t.pop_back();
   };
@@ -267,7 +285,7 @@ void Designer::describe(const WorstCase& current, const Option& chosen, AugmentS
   st->note = note.str();
 }
 
-AugmentStep Designer::step(const WorstCase& current, bool* out_of_candidates) {
+AugmentStep Designer::step(const WorstCase& current, bool* out_of_candidates, bool* no_feasible) {
   AugmentStep st;
   hints_ = current.worst_viewpoints;
   current_hints_ = static_cast<int>(hints_.size());
@@ -279,6 +297,11 @@ AugmentStep Designer::step(const WorstCase& current, bool* out_of_candidates) {
     return st;
   }
   const Option chosen = choose(&options, current, &st);
+  if (!feasible(chosen.x)) {
+    // Infeasible options rank last: the best one is infeasible only when all are.
+    *no_feasible = true;
+    return st;
+  }
   commit(chosen);
   describe(current, chosen, &st);
   st.global_solves = solves_ - solves_before;

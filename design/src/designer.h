@@ -60,6 +60,7 @@ class Designer {
   int vector_count() const { return static_cast<int>(vectors_.cols()); }
   const Eigen::Matrix3Xd& vectors() const { return vectors_; }
   const AdditionSpace& space() const { return *space_; }
+  const AugmentOptions& options() const { return options_; }
   long solves() const { return solves_; }
 
   /// The global worst case of `vectors`, counted in solves(). The worst viewpoints of the
@@ -83,9 +84,17 @@ class Designer {
 
   /// One greedy step from `current`, the worst case of layout() (evaluate_worst_case of its
   /// data vectors, as the step reports its own); *out_of_candidates is set (and the step is
-  /// empty) when there is nothing left to add. The step's candidate_index is into layout()'s
-  /// candidates before the step. Call once.
-  AugmentStep step(const WorstCase& current, bool* out_of_candidates);
+  /// empty) when there is nothing left to add, *no_feasible (and the step is empty, the layout
+  /// unchanged) when the best option breaks AugmentOptions::min_distance_difference (then every
+  /// option does). The step's candidate_index is into layout()'s candidates before the step.
+  /// Call once.
+  AugmentStep step(const WorstCase& current, bool* out_of_candidates, bool* no_feasible);
+
+  /// AugmentOptions::min_distance_difference: true when it is 0 or the columns of `markers`
+  /// keep it (vantage::min_distance_difference, docs/math.md §24).
+  bool keeps_distance_difference(const Eigen::Matrix3Xd& markers) const;
+  /// Point mode: keeps_distance_difference() of layout()'s markers with x added.
+  bool feasible(const Eigen::Vector3d& x) const;
 
  private:
   struct Option {
@@ -115,7 +124,9 @@ class Designer {
   // would exceed stop_above need not be exact: the solve may stop with t a value above it (and
   // n_worst = max), which ranks it behind every score with t <= stop_above - tie. With
   // `viewpoints`, the viewpoints where x's t is attained are stored there (the surviving worst
-  // viewpoints when x does not kill them all).
+  // viewpoints when x does not kill them all). An x that is not feasible() has the worst Score
+  // (t = +infinity); with `viewpoints` it is still solved for them (they bound the box search's
+  // cells around x) and the solve counts.
   Score score(const Eigen::Vector3d& x, const WorstCase& current, long* screened,
               double stop_above = std::numeric_limits<double>::infinity(),
               std::vector<Eigen::Vector3d>* viewpoints = nullptr);

@@ -15,9 +15,24 @@
 namespace vantage::design::internal {
 namespace {
 
+// AugmentOptions::min_distance_difference for the base markers and the K positions packed in x
+// (point mode; always true without the constraint).
+bool keeps_distance_difference(const Designer& designer, const Eigen::Matrix3Xd& base_markers,
+                               const std::vector<double>& x) {
+  if (!(designer.options().min_distance_difference > 0.0)) return true;
+  const Eigen::Index k = static_cast<Eigen::Index>(x.size() / 3);
+  Eigen::Matrix3Xd markers(3, base_markers.cols() + k);
+  markers.leftCols(base_markers.cols()) = base_markers;
+  for (Eigen::Index j = 0; j < k; ++j) {
+    markers.col(base_markers.cols() + j) = Eigen::Vector3d(x[3 * j], x[3 * j + 1], x[3 * j + 2]);
+  }
+  return designer.keeps_distance_difference(markers);
+}
+
 #if VANTAGE_WITH_NLOPT
-// The objective value of a degenerate set of additions: t = 1 is the worst any layout can have
-// (p-bar_min = 0), so the optimiser moves away from it.
+// The objective value of a degenerate set of additions, or of one that breaks
+// min_distance_difference: t = 1 is the worst any layout can have (p-bar_min = 0), so the
+// optimiser moves away from it, and it is never kept as the best.
 constexpr double kDegenerateObjective = 1.0;
 
 struct DirectObjective {
@@ -33,7 +48,8 @@ struct DirectObjective {
 double direct_objective(const std::vector<double>& x, std::vector<double>&, void* data) {
   auto* o = static_cast<DirectObjective*>(data);
   if (!o->designer->space().all_new_vectors(*o->base_vectors, *o->base_markers, o->min_separation,
-                                            x, &o->work)) {
+                                            x, &o->work) ||
+      !keeps_distance_difference(*o->designer, *o->base_markers, x)) {
     return kDegenerateObjective;
   }
   const double t =
@@ -91,7 +107,10 @@ DirectResult exhaustive_candidates(const Layout& layout, const AugmentOptions& o
       idx.push_back(c);
       for (int r = 0; r < 3; ++r) x.push_back(layout.candidates(r, c));
     }
-    if (!space.all_new_vectors(base_vectors, layout.entries, min_separation, x, &work)) continue;
+    if (!space.all_new_vectors(base_vectors, layout.entries, min_separation, x, &work) ||
+        !keeps_distance_difference(*designer, layout.entries, x)) {
+      continue;
+    }
     // Only a subset that beats the best so far needs its exact t.
     const double t =
         designer->evaluate_added(work.rightCols(work.cols() - base_vectors.cols()), best).t;
@@ -101,7 +120,7 @@ DirectResult exhaustive_candidates(const Layout& layout, const AugmentOptions& o
     }
   } while (std::prev_permutation(pick.begin(), pick.end()));
   if (best_idx.empty()) {
-    out.message = "not run: every candidate subset is degenerate";
+    out.message = "not run: every candidate subset is degenerate or breaks min_distance_difference";
     return out;
   }
   std::vector<double> x;

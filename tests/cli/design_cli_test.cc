@@ -1,10 +1,13 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <random>
+#include <vector>
 
 #include "support/cli_runner.h"
 #include "support/nlopt_build.h"
@@ -182,6 +185,68 @@ TEST(DesignCli, TheDefaultBoxFindsAtLeastWhatTheMarkersOwnBoxFinds) {
             grown["steps"][0]["t"].get<double>());
 }
 
+// Eq. (24.1) by brute force over every two distinct pairs of the JSON points.
+double brute_distance_difference_cli(const nlohmann::json& points) {
+  std::vector<double> d;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (std::size_t j = i + 1; j < points.size(); ++j) {
+      double s = 0.0;
+      for (int r = 0; r < 3; ++r) {
+        const double e = points[i][r].get<double>() - points[j][r].get<double>();
+        s += e * e;
+      }
+      d.push_back(std::sqrt(s));
+    }
+  }
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t a = 0; a < d.size(); ++a) {
+    for (std::size_t b = 0; b < d.size(); ++b) {
+      if (a != b) best = std::min(best, std::abs(d[a] - d[b]));
+    }
+  }
+  return best;
+}
+
+TEST(DesignCli, MinDistanceDifferenceIsKeptByTheWrittenLayout) {
+  // The drone's own distances differ by 0.0037; its free --add 2 squeezes two closer than 0.002.
+  constexpr double kGap = 0.002;
+  ScratchDir scratch;
+  scratch.write("drone.json", kDrone);
+  const auto free = run_json("design drone.json --add 2 --no-direct --write free.json", scratch);
+  EXPECT_EQ(free["min_distance_difference"].get<double>(), 0.0);
+  const double free_gap = brute_distance_difference_cli(
+      nlohmann::json::parse(testing::read_file(scratch.path("free.json")))["points"]);
+  ASSERT_LT(free_gap, kGap) << "the free run must break the gap for the test to mean anything";
+  EXPECT_NEAR(free["final_distance_difference"].get<double>(), free_gap, 1e-12);
+
+  const auto kept = run_json(
+      "design drone.json --add 2 --no-direct --min-distance-difference 0.002 --write kept.json",
+      scratch);
+  EXPECT_EQ(kept["status"], "ok");
+  EXPECT_EQ(kept["min_distance_difference"].get<double>(), kGap);
+  const double kept_gap = brute_distance_difference_cli(
+      nlohmann::json::parse(testing::read_file(scratch.path("kept.json")))["points"]);
+  EXPECT_GE(kept_gap, kGap);
+  EXPECT_NEAR(kept["final_distance_difference"].get<double>(), kept_gap, 1e-12);
+}
+
+TEST(DesignCli, NoFeasibleAdditionFailsAndWritesNothing) {
+  // A triangle with sides 2.9, 1, 2 in its own box: six distances at most the box's diagonal
+  // (2.92) cannot be 0.8 apart (5 x 0.8 > 2.92), so no fourth marker keeps 0.8.
+  ScratchDir scratch;
+  scratch.write("tri.json", R"({"points": [[0,0,0],[2.9,0,0],[0.932759,0.360363,0]]})");
+  const testing::CliRun run = run_vantage(
+      "design tri.json --add 1 --margin 0 --search-budget 30000 --min-distance-difference 0.8 "
+      "--write out.json --json",
+      scratch);
+  EXPECT_EQ(run.status, 1) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("no_feasible_addition"));
+  EXPECT_FALSE(std::filesystem::exists(scratch.path("out.json")));
+  const auto json = nlohmann::json::parse(run.out);
+  EXPECT_EQ(json["status"], "no_feasible_addition");
+  EXPECT_TRUE(json["steps"].empty());
+}
+
 TEST(DesignCli, LimitsComeFromTheEstimatedTimeNotFromCounts) {
   // 30 markers --add 3 (528 data vectors) was refused at 200 data vectors although it takes a
   // few seconds; its estimate is 7.5 s of the 30 s budget (design/limits.h). --add 20 on the same
@@ -312,6 +377,19 @@ const BadCall kBadCalls[] = {
     {"OverwriteWithoutWrite", kTriadText, "in.json --add 1 --overwrite", "--overwrite"},
     {"WriteIntoMissingDirectory", kTriadText, "in.json --add 1 --write nowhere/out.json",
      "does not exist"},
+    {"NegativeGap", kDrone, "in.json --add 1 --min-distance-difference -0.1 --write out.json",
+     "--min-distance-difference: must be a finite number >= 0"},
+    {"InfiniteGap", kDrone, "in.json --add 1 --min-distance-difference inf --write out.json",
+     "--min-distance-difference"},
+    {"NanGap", kDrone, "in.json --add 1 --min-distance-difference nan --write out.json",
+     "--min-distance-difference"},
+    {"GapNotANumber", kDrone, "in.json --add 1 --min-distance-difference wide --write out.json",
+     "--min-distance-difference"},
+    {"GapOnVectors", kTriadText, "in.json --add 1 --min-distance-difference 0.1 --write out.json",
+     "--min-distance-difference: needs a layout of points"},
+    {"GapTheLayoutBreaks", kDrone,
+     "in.json --add 1 --min-distance-difference 0.01 --write out.json",
+     "--min-distance-difference: in.json: its own distances"},
 };
 
 INSTANTIATE_TEST_SUITE_P(DesignCli, DesignCliBadInput, ::testing::ValuesIn(kBadCalls),

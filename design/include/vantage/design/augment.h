@@ -106,6 +106,15 @@ struct AugmentOptions {
   /// by more than tie_tolerance). false solves every candidate from scratch to its certificate:
   /// the same choices, slower (the reference the tests compare with).
   bool prune_solves = true;
+  /// Point mode: every addition keeps vantage::min_distance_difference() of the markers at or
+  /// above this (ART's identification rule, docs/math.md §24; the check `vantage place` uses),
+  /// in the layout's units, >= 0 and finite (0: no constraint; > 0 needs a point layout that
+  /// keeps it itself). A position that breaks it scores t = +infinity, so no step chooses it
+  /// (the branch and bound's lower bound, on the unconstrained t, stays valid); a step whose
+  /// every option breaks it ends the run (Status::kNoFeasibleAddition). The direct optimiser
+  /// is constrained too: additions that break it score t = 1 and are never kept (docs/math.md
+  /// §18).
+  double min_distance_difference = 0.0;
 
   /// Called with the stage about to run ("step 2/5", "direct optimiser", then "direct optimiser,
   /// start 3/8" per multistart start), e.g. to show progress; empty: nothing is called.
@@ -173,9 +182,14 @@ struct AugmentResult {
     kOk,            ///< every global solve was certified
     kNotCertified,  ///< some global solve's certificate did not close (see message)
     kNoCandidates,  ///< candidates-only and the candidates ran out before K steps
+    /// min_distance_difference > 0 and no candidate or searched position of a step keeps it;
+    /// the steps before are kept
+    kNoFeasibleAddition,
   };
   Status status = Status::kOk;
   std::string message;
+  /// AugmentOptions::min_distance_difference of the run (0: none), echoed for the report.
+  double min_distance_difference = 0.0;
   WorstCase initial;
   int initial_vector_count = 0;
   double initial_ceiling = 1.0;
@@ -191,7 +205,7 @@ struct AugmentResult {
   long global_solves = 0;  ///< total, greedy and direct
 };
 
-/// "ok", "not_certified" or "no_candidates".
+/// "ok", "not_certified", "no_candidates" or "no_feasible_addition".
 const char* to_string(AugmentResult::Status status);
 
 /// Greedy augmentation, K = options.add steps. At each step: the global worst viewpoints a_k of
