@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "support/eigen_testing.h"
+#include "support/sanitized.h"
 #include "vantage/analysis/common.h"
 #include "vantage/io/layout_formats.h"
 #include "vantage/simulate/layout_simulation.h"
@@ -154,9 +155,11 @@ TEST(VisibleViews, EveryDrawnViewIsTrackableAndTheImageHoldsExactlyItsVisibleMar
 }
 
 TEST(VisibleViews, MonteCarloNeverExceedsThePerViewBoundOrTheCertificate) {
+  // 3000 views each (600 under the sanitizers, where every view's brute-force check is slow).
+  const int views = testing::kUnderSanitizer ? 600 : 3000;
   for (const Layout& layout : {box_layout(), satellite_layout()}) {
     LayoutSimulationOptions options;
-    options.monte_carlo.trials = 3000;
+    options.monte_carlo.trials = views;
     options.monte_carlo.seed = testing::kSeed;
     options.monte_carlo.keep_trials = true;
     options.methods = {"affine"};
@@ -166,7 +169,7 @@ TEST(VisibleViews, MonteCarloNeverExceedsThePerViewBoundOrTheCertificate) {
     const VisibilityCheck& check = run.visibility;
     EXPECT_TRUE(check.passed) << layout.name << ": " << check.message;
     EXPECT_TRUE(run.bound.passed) << layout.name << ": " << run.bound.message;
-    ASSERT_EQ(run.visibility_trials.size(), 3000u);
+    ASSERT_EQ(run.visibility_trials.size(), static_cast<std::size_t>(views));
     const bool with_body = layout.visibility->body.has_value();
     for (std::size_t k = 0; k < run.visibility_trials.size(); ++k) {
       const VisibilityTrial& trial = run.visibility_trials[k];
