@@ -185,7 +185,8 @@ def design(layout: LayoutArg = None, *, vectors: Optional[npt.ArrayLike] = None,
            points: Optional[npt.ArrayLike] = None, weights: Optional[npt.ArrayLike] = None,
            candidates: Optional[npt.ArrayLike] = None, add: int = 1,
            candidates_only: bool = False, margin: float = 0.25, direct: bool = True,
-           allow_large: bool = False, format: Optional[str] = None,
+           min_distance_difference: float = 0.0, allow_large: bool = False,
+           format: Optional[str] = None,
            tag_points: Optional[str] = None, bundle: Optional[str] = None) -> DesignResult:
     """Add ``add`` markers or directions where the worst viewpoint is weakest (as ``vantage
     design --json``); the result's ``augmented`` is the new vantage.Layout.
@@ -193,12 +194,16 @@ def design(layout: LayoutArg = None, *, vectors: Optional[npt.ArrayLike] = None,
     layout, vectors, points, weights, format, tag_points, bundle: as vantage.analyze;
     candidates (k x 3): where additions may go. candidates_only: only from the candidates.
     margin: the free search's box around the layout (relative to its size). direct: also run
-    the direct optimiser. allow_large: lift the time budget (README "Limits").
+    the direct optimiser. min_distance_difference: point layouts, every addition keeps the
+    least difference of two inter-marker distances at or above this (ART's identification rule,
+    docs/math.md §24; ``--min-distance-difference``; 0: none); the layout must keep it itself.
+    allow_large: lift the time budget (README "Limits").
     """
     return _design_result(_vantage.design(
         layout, vectors=vectors, points=points, weights=weights, candidates=candidates, add=add,
-        candidates_only=candidates_only, margin=margin, direct=direct, allow_large=allow_large,
-        format=format, tag_points=tag_points, bundle=bundle))
+        candidates_only=candidates_only, margin=margin, direct=direct,
+        min_distance_difference=min_distance_difference, allow_large=allow_large, format=format,
+        tag_points=tag_points, bundle=bundle))
 
 
 @_typed_errors(lambda error: WeightsResult(error.result))

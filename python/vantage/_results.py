@@ -486,6 +486,13 @@ class DesignResult(_JsonView):
             DesignDirect(fields["direct"]) if isinstance(fields.get("direct"), dict) else None)
         self.coplanarity = DesignCoplanarity(fields["coplanarity"])
         self.global_solves: int = int(fields["global_solves"])
+        #: The min_distance_difference= of the run (0: none).
+        self.min_distance_difference: float = _float(fields["min_distance_difference"])
+        #: Point layouts: Eq. (24.1) of the final markers (nan with fewer than two pairs);
+        #: None for direction layouts.
+        self.final_distance_difference: Optional[float] = (
+            _float(fields["final_distance_difference"])
+            if "final_distance_difference" in fields else None)
 
 
 class WeightsSuggestion(_JsonView):

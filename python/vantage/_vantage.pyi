@@ -65,7 +65,8 @@ def analyze(layout: Union[Layout, _Path, None] = None, *, vectors: _Array = None
 def design(layout: Union[Layout, _Path, None] = None, *, vectors: _Array = None,
            points: _Array = None, weights: _Array = None, candidates: _Array = None,
            add: int = 1, candidates_only: bool = False, margin: float = 0.25,
-           direct: bool = True, allow_large: bool = False, format: Optional[str] = None,
+           direct: bool = True, min_distance_difference: float = 0.0,
+           allow_large: bool = False, format: Optional[str] = None,
            tag_points: Optional[str] = None, bundle: Optional[str] = None) -> Dict[str, Any]: ...
 def weights(layout: Union[Layout, _Path, None] = None, *, vectors: _Array = None,
             points: _Array = None, allow_large: bool = False, format: Optional[str] = None,
