@@ -23,14 +23,14 @@ from __future__ import annotations
 
 import functools
 import os
-from typing import Any, Callable, Optional, Sequence, Tuple, TypeVar, Union
+from typing import Any, Callable, Iterable, Optional, Sequence, Tuple, TypeVar, Union
 
 import numpy.typing as npt
 
 from . import _vantage
 from ._results import (
     BoundCheck, Certificate, CrbBound, CrbReport, CrbSweepRow, Crosscheck, DesignCoplanarity, DesignDirect, DesignResult,
-    DesignState, DesignStep, DistanceDifference, DropoutEntry, EstimatorStats, Identification, LayoutCoplanarity, LayoutReport,
+    DesignState, DesignStep, DistanceDifference, DropoutEntry, EstimatorStats, IdentPair, IdentReport, IdentTool, Identification, LayoutCoplanarity, LayoutReport,
     LayoutVisibility, LostRegion, Orientation, PaperLmi, PerTrial, PoseAlternative, PoseCamera,
     PoseEstimate, SimulationReport, SimulationVisibility, Solver, Statistic, Swap, TreAtDirection,
     TreExtreme, TreMonteCarlo, TreReport, TreTarget, VisibilityCertificate, VisibilityDropoutEntry, WeightsResult, WeightsSuggestion, Workspace,
@@ -49,13 +49,14 @@ from ._vantage import (
 
 __all__ = [
     "BoundCheck", "Certificate", "CrbBound", "CrbReport", "CrbSweepRow", "Crosscheck", "DesignCoplanarity", "DesignDirect",
-    "DesignResult", "DesignState", "DesignStep", "DistanceDifference", "DropoutEntry", "EstimatorStats", "Identification", "Layout",
+    "DesignResult", "DesignState", "DesignStep", "DistanceDifference", "DropoutEntry", "EstimatorStats", "IdentPair", "IdentReport",
+    "IdentTool", "Identification", "Layout",
     "LayoutCoplanarity", "LayoutReport", "LayoutVisibility", "LostRegion", "NumericalError", "Orientation", "PaperLmi", "PerTrial",
     "PoseAlternative", "PoseCamera", "PoseEstimate", "SimulationReport", "SimulationVisibility",
     "Solver", "Statistic", "Swap", "TreAtDirection", "TreExtreme", "TreMonteCarlo", "TreReport",
     "TreTarget", "VisibilityCertificate", "VisibilityDropoutEntry",
     "WeightsResult", "WeightsSuggestion", "Workspace", "__version__", "analyze", "board", "crb",
-    "data_vectors", "design", "load_correspondences", "load_layout", "orient",
+    "data_vectors", "design", "ident", "load_correspondences", "load_layout", "orient",
     "pbar_at_viewpoints", "pose", "pose_methods", "save_layout", "simulate", "tre", "weights",
 ]
 
@@ -172,6 +173,25 @@ def tre(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
         layout, points=points, targets=targets, fle_rms=fle_rms, fle_sigma=fle_sigma,
         direction=direction, monte_carlo=monte_carlo, seed=seed, threads=threads, format=format,
         tag_points=tag_points, bundle=bundle))
+
+
+def ident(tools: Iterable[Union[Layout, str, "os.PathLike[str]"]], *, min_visible: int = 3,
+          format: Optional[str] = None, allow_large: bool = False) -> IdentReport:
+    """How close the tools of a library come to each other by their inter-marker distances (as
+    ``vantage ident --json``; docs/math.md §24, Eq. 24.4): for every two tools, and each tool
+    against itself relabelled, the least over views of ``min_visible`` markers of one and
+    injective labellings by the other of the largest inter-marker distance error, the markers
+    that give it and whether it fits as a rotation or only as a reflection.
+
+    tools: vantage.Layout objects (points) or tool files (.json, .csv, Atracsys .ini, NDI .rom),
+    read with format ('auto', 'json', 'csv', 'atracsys', 'ndi') and allow_large as
+    ``--format``, ``--allow-large``; a Layout's ``file`` is None. min_visible: K >= 3, at most
+    every tool's markers.
+
+    Raises ValueError on bad input (its ``field`` 'min_visible' or 'tools').
+    """
+    return IdentReport(_vantage.ident(tools, min_visible=min_visible, format=format,
+                                      allow_large=allow_large))
 
 
 def _design_result(fields: Any) -> DesignResult:
