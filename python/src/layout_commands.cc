@@ -5,6 +5,8 @@
 
 #include <pybind11/stl.h>
 
+#include <cmath>
+
 #include "arrays.h"
 #include "design_json.h"
 #include "layouts.h"
@@ -79,12 +81,18 @@ py::tuple analyze(const py::object& layout_arg, const py::object& vectors, const
 py::object design_layout(const py::object& layout_arg, const py::object& vectors,
                          const py::object& points, const py::object& weights,
                          const py::object& candidates, int add, bool candidates_only, double margin,
-                         bool direct, bool allow_large, const py::object& format,
-                         const py::object& tag_points, const py::object& bundle) {
+                         bool direct, double min_distance_difference, bool allow_large,
+                         const py::object& format, const py::object& tag_points,
+                         const py::object& bundle) {
   std::string source;
   const Layout layout = layout_from_arguments(layout_arg, vectors, points, weights, candidates,
                                               {format, tag_points, bundle, allow_large}, &source);
   if (add < 1) throw InvalidArgument("add: must be >= 1, got " + std::to_string(add));
+  if (!(std::isfinite(min_distance_difference) && min_distance_difference >= 0.0)) {
+    throw InvalidArgument("min_distance_difference",
+                          "must be a finite number >= 0, got " +
+                              py::repr(py::float_(min_distance_difference)).cast<std::string>());
+  }
   check_size(source, [&] {
     const long final_count = layout.mode == LayoutMode::kPoints
                                  ? static_cast<long>(free_vector_count(layout.entries.cols() + add))
@@ -100,10 +108,16 @@ py::object design_layout(const py::object& layout_arg, const py::object& vectors
   options.candidates_only = candidates_only;
   options.margin = margin;
   options.run_direct = direct;
+  options.min_distance_difference = min_distance_difference;
   std::string why;
   if (!options.is_valid(&why)) throw InvalidArgument(why);
-  const design::AugmentResult r =
-      without_gil([&] { return design::augment_layout(layout, options); });
+  const design::AugmentResult r = without_gil([&] {
+    try {
+      return design::augment_layout(layout, options);
+    } catch (const InvalidArgument& e) {
+      throw source.empty() ? e : e.against(source);
+    }
+  });
   const bool ok = r.status == design::AugmentResult::Status::kOk;
   py::object result = result_or_raise(!ok, design::to_string(r.status), r.message,
                                       design_json::design(source_json(source), layout, direct, r));
@@ -144,6 +158,7 @@ void bind_layout_commands(py::module_& module) {
              py::arg("weights") = py::none(), py::arg("candidates") = py::none(),
              py::arg("add") = 1, py::arg("candidates_only") = false,
              py::arg("margin") = design::AugmentOptions{}.margin, py::arg("direct") = true,
+             py::arg("min_distance_difference") = design::AugmentOptions{}.min_distance_difference,
              py::arg("allow_large") = false, py::arg("format") = py::none(),
              py::arg("tag_points") = py::none(), py::arg("bundle") = py::none(),
              "Add `add` markers or directions where the worst viewpoint is weakest (as `vantage "

@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 
 #include "crb_command.h"
+#include "ident_command.h"
 #include "layout_commands.h"
 #include "layouts.h"
 #include "pose_commands.h"
@@ -24,4 +25,5 @@ PYBIND11_MODULE(_vantage, module) {
   vantage::python::bind_simulate_command(module);
   vantage::python::bind_crb_command(module);
   vantage::python::bind_tre_command(module);
+  vantage::python::bind_ident_command(module);
 }

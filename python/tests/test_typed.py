@@ -10,7 +10,8 @@ import pytest
 
 from conftest import CORRESPONDENCES, LAYOUTS, assert_same, cli_error, cli_json, run_cli
 
-PUBLIC_CALLS = ["analyze", "design", "weights", "pose", "orient", "simulate", "tre", "load_layout"]
+PUBLIC_CALLS = [
+    "analyze", "design", "weights", "pose", "orient", "simulate", "tre", "ident", "load_layout"]
 
 # Seeded random unit directions for the size limits (any directions do: the limit counts them).
 SEED = 17
@@ -37,7 +38,7 @@ def test_public_functions_have_real_signatures_and_docstrings(vantage, name):
 
 
 @pytest.mark.parametrize(
-    "name", ["analyze", "design", "weights", "pose", "orient", "simulate", "tre"])
+    "name", ["analyze", "design", "weights", "pose", "orient", "simulate", "tre", "ident"])
 def test_python_defaults_are_the_extensions_defaults(vantage, name):
     python = inspect.signature(getattr(vantage, name)).parameters
     compiled = extension_defaults(getattr(vantage._vantage, name))

@@ -23,14 +23,14 @@ from __future__ import annotations
 
 import functools
 import os
-from typing import Any, Callable, Optional, Sequence, Tuple, TypeVar, Union
+from typing import Any, Callable, Iterable, Optional, Sequence, Tuple, TypeVar, Union
 
 import numpy.typing as npt
 
 from . import _vantage
 from ._results import (
     BoundCheck, Certificate, CrbBound, CrbReport, CrbSweepRow, Crosscheck, DesignCoplanarity, DesignDirect, DesignResult,
-    DesignState, DesignStep, DistanceDifference, DropoutEntry, EstimatorStats, Identification, LayoutCoplanarity, LayoutReport,
+    DesignState, DesignStep, DistanceDifference, DropoutEntry, EstimatorStats, IdentPair, IdentReport, IdentTool, Identification, LayoutCoplanarity, LayoutReport,
     LayoutVisibility, LostRegion, Orientation, PaperLmi, PerTrial, PoseAlternative, PoseCamera,
     PoseEstimate, SimulationReport, SimulationVisibility, Solver, Statistic, Swap, TreAtDirection,
     TreExtreme, TreMonteCarlo, TreReport, TreTarget, VisibilityCertificate, VisibilityDropoutEntry, WeightsResult, WeightsSuggestion, Workspace,
@@ -49,13 +49,14 @@ from ._vantage import (
 
 __all__ = [
     "BoundCheck", "Certificate", "CrbBound", "CrbReport", "CrbSweepRow", "Crosscheck", "DesignCoplanarity", "DesignDirect",
-    "DesignResult", "DesignState", "DesignStep", "DistanceDifference", "DropoutEntry", "EstimatorStats", "Identification", "Layout",
+    "DesignResult", "DesignState", "DesignStep", "DistanceDifference", "DropoutEntry", "EstimatorStats", "IdentPair", "IdentReport",
+    "IdentTool", "Identification", "Layout",
     "LayoutCoplanarity", "LayoutReport", "LayoutVisibility", "LostRegion", "NumericalError", "Orientation", "PaperLmi", "PerTrial",
     "PoseAlternative", "PoseCamera", "PoseEstimate", "SimulationReport", "SimulationVisibility",
     "Solver", "Statistic", "Swap", "TreAtDirection", "TreExtreme", "TreMonteCarlo", "TreReport",
     "TreTarget", "VisibilityCertificate", "VisibilityDropoutEntry",
     "WeightsResult", "WeightsSuggestion", "Workspace", "__version__", "analyze", "board", "crb",
-    "data_vectors", "design", "load_correspondences", "load_layout", "orient",
+    "data_vectors", "design", "ident", "load_correspondences", "load_layout", "orient",
     "pbar_at_viewpoints", "pose", "pose_methods", "save_layout", "simulate", "tre", "weights",
 ]
 
@@ -174,6 +175,25 @@ def tre(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
         tag_points=tag_points, bundle=bundle))
 
 
+def ident(tools: Iterable[Union[Layout, str, "os.PathLike[str]"]], *, min_visible: int = 3,
+          format: Optional[str] = None, allow_large: bool = False) -> IdentReport:
+    """How close the tools of a library come to each other by their inter-marker distances (as
+    ``vantage ident --json``; docs/math.md §24, Eq. 24.4): for every two tools, and each tool
+    against itself relabelled, the least over views of ``min_visible`` markers of one and
+    injective labellings by the other of the largest inter-marker distance error, the markers
+    that give it and whether it fits as a rotation or only as a reflection.
+
+    tools: vantage.Layout objects (points) or tool files (.json, .csv, Atracsys .ini, NDI .rom),
+    read with format ('auto', 'json', 'csv', 'atracsys', 'ndi') and allow_large as
+    ``--format``, ``--allow-large``; a Layout's ``file`` is None. min_visible: K >= 3, at most
+    every tool's markers.
+
+    Raises ValueError on bad input (its ``field`` 'min_visible' or 'tools').
+    """
+    return IdentReport(_vantage.ident(tools, min_visible=min_visible, format=format,
+                                      allow_large=allow_large))
+
+
 def _design_result(fields: Any) -> DesignResult:
     fields = dict(fields)
     augmented = fields.pop("augmented", None)
@@ -185,7 +205,8 @@ def design(layout: LayoutArg = None, *, vectors: Optional[npt.ArrayLike] = None,
            points: Optional[npt.ArrayLike] = None, weights: Optional[npt.ArrayLike] = None,
            candidates: Optional[npt.ArrayLike] = None, add: int = 1,
            candidates_only: bool = False, margin: float = 0.25, direct: bool = True,
-           allow_large: bool = False, format: Optional[str] = None,
+           min_distance_difference: float = 0.0, allow_large: bool = False,
+           format: Optional[str] = None,
            tag_points: Optional[str] = None, bundle: Optional[str] = None) -> DesignResult:
     """Add ``add`` markers or directions where the worst viewpoint is weakest (as ``vantage
     design --json``); the result's ``augmented`` is the new vantage.Layout.
@@ -193,12 +214,16 @@ def design(layout: LayoutArg = None, *, vectors: Optional[npt.ArrayLike] = None,
     layout, vectors, points, weights, format, tag_points, bundle: as vantage.analyze;
     candidates (k x 3): where additions may go. candidates_only: only from the candidates.
     margin: the free search's box around the layout (relative to its size). direct: also run
-    the direct optimiser. allow_large: lift the time budget (README "Limits").
+    the direct optimiser. min_distance_difference: point layouts, every addition keeps the
+    least difference of two inter-marker distances at or above this (ART's identification rule,
+    docs/math.md §24; ``--min-distance-difference``; 0: none); the layout must keep it itself.
+    allow_large: lift the time budget (README "Limits").
     """
     return _design_result(_vantage.design(
         layout, vectors=vectors, points=points, weights=weights, candidates=candidates, add=add,
-        candidates_only=candidates_only, margin=margin, direct=direct, allow_large=allow_large,
-        format=format, tag_points=tag_points, bundle=bundle))
+        candidates_only=candidates_only, margin=margin, direct=direct,
+        min_distance_difference=min_distance_difference, allow_large=allow_large, format=format,
+        tag_points=tag_points, bundle=bundle))
 
 
 @_typed_errors(lambda error: WeightsResult(error.result))

@@ -18,7 +18,8 @@ from ._vantage import Layout
 
 __all__ = [
     "BoundCheck", "Certificate", "Crosscheck", "DesignCoplanarity", "DesignDirect",
-    "DesignResult", "DesignState", "DesignStep", "DropoutEntry", "EstimatorStats",
+    "DesignResult", "DesignState", "DesignStep", "DropoutEntry", "EstimatorStats", "IdentPair",
+    "IdentReport", "IdentTool",
     "LayoutCoplanarity", "LayoutReport", "LayoutVisibility", "LostRegion", "Orientation", "PaperLmi", "PoseAlternative",
     "PerTrial", "PoseCamera", "PoseEstimate", "SimulationReport", "SimulationVisibility",
     "Solver", "Statistic", "Swap", "TreAtDirection", "TreExtreme", "TreMonteCarlo", "TreReport",
@@ -486,6 +487,13 @@ class DesignResult(_JsonView):
             DesignDirect(fields["direct"]) if isinstance(fields.get("direct"), dict) else None)
         self.coplanarity = DesignCoplanarity(fields["coplanarity"])
         self.global_solves: int = int(fields["global_solves"])
+        #: The min_distance_difference= of the run (0: none).
+        self.min_distance_difference: float = _float(fields["min_distance_difference"])
+        #: Point layouts: Eq. (24.1) of the final markers (nan with fewer than two pairs);
+        #: None for direction layouts.
+        self.final_distance_difference: Optional[float] = (
+            _float(fields["final_distance_difference"])
+            if "final_distance_difference" in fields else None)
 
 
 class WeightsSuggestion(_JsonView):
@@ -778,3 +786,58 @@ class TreReport(_JsonView):
         self.targets: List[TreTarget] = [TreTarget(t) for t in fields["targets"]]
         self.fle: Dict[str, Any] = dict(fields["fle"])
         self.model: Dict[str, Any] = dict(fields["model"])
+
+
+# ------------------------------------------------------------------ tool identification (ident)
+
+
+class IdentTool(_JsonView):
+    """One tool of ``vantage ident --json``'s ``tools``: its file (None for a vantage.Layout),
+    name and number of markers."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.file: Optional[str] = _text(fields["file"])
+        self.name: str = str(fields["name"])
+        self.markers: int = int(fields["markers"])
+
+
+class IdentPair(_JsonView):
+    """One pair of tools a <= b (a == b: the tool against itself relabelled; C++
+    vantage::ToolPairMatch): the mismatch of Eq. (24.4), the view ``subset`` of tool a and the
+    markers ``assignment`` of tool b that give it (indices, and names), the best rigid fit
+    ('rotation', 'reflection' or 'either') with the RMS of each, and whether the search ended
+    within its budget (else ``mismatch_lower`` bounds what it left)."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.a: int = int(fields["a"])
+        self.b: int = int(fields["b"])
+        self.self: bool = bool(fields["self"])
+        self.mismatch: float = _float(fields["mismatch"])
+        self.subset: IntArray = _ints(fields["subset"])
+        self.assignment: IntArray = _ints(fields["assignment"])
+        self.subset_names: List[str] = [str(n) for n in fields["subset_names"]]
+        self.assignment_names: List[str] = [str(n) for n in fields["assignment_names"]]
+        self.transform: str = str(fields["transform"])
+        self.proper_rms: float = _float(fields["proper_rms"])
+        self.improper_rms: float = _float(fields["improper_rms"])
+        self.certified: bool = bool(fields["certified"])
+        self.mismatch_lower: float = _float(fields["mismatch_lower"])
+        self.comparisons: int = int(fields["comparisons"])
+
+
+class IdentReport(_JsonView):
+    """vantage.ident (``vantage ident --json``; C++ vantage::ToolLibraryMatches; docs/math.md
+    §24): the tools, every pair (each unordered pair once, self pairs included) and the closest
+    pair, which ``closest`` is (an entry of ``pairs``)."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.min_visible: int = int(fields["min_visible"])
+        self.tools: List[IdentTool] = [IdentTool(t) for t in fields["tools"]]
+        self.pairs: List[IdentPair] = [IdentPair(p) for p in fields["pairs"]]
+        closest = fields["closest"]
+        self.closest: IdentPair = next(
+            p for p in self.pairs if (p.a, p.b) == (closest["a"], closest["b"]))
+        self.certified: bool = bool(fields["certified"])

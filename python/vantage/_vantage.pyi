@@ -2,7 +2,7 @@
 # that return results are wrapped in vantage/__init__.py, which has the typed signatures users
 # call; this stub describes what the extension itself takes and returns.
 import os
-from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -65,7 +65,8 @@ def analyze(layout: Union[Layout, _Path, None] = None, *, vectors: _Array = None
 def design(layout: Union[Layout, _Path, None] = None, *, vectors: _Array = None,
            points: _Array = None, weights: _Array = None, candidates: _Array = None,
            add: int = 1, candidates_only: bool = False, margin: float = 0.25,
-           direct: bool = True, allow_large: bool = False, format: Optional[str] = None,
+           direct: bool = True, min_distance_difference: float = 0.0,
+           allow_large: bool = False, format: Optional[str] = None,
            tag_points: Optional[str] = None, bundle: Optional[str] = None) -> Dict[str, Any]: ...
 def weights(layout: Union[Layout, _Path, None] = None, *, vectors: _Array = None,
             points: _Array = None, allow_large: bool = False, format: Optional[str] = None,
@@ -95,3 +96,5 @@ def simulate(layout: Union[Layout, _Path, None] = None, *, vectors: _Array = Non
              threads: int = 0, per_trial: bool = False, allow_large: bool = False,
              format: Optional[str] = None, tag_points: Optional[str] = None,
              bundle: Optional[str] = None) -> Dict[str, Any]: ...
+def ident(tools: Iterable[Union[Layout, _Path]], *, min_visible: int = 3,
+          format: Optional[str] = None, allow_large: bool = False) -> Dict[str, Any]: ...
