@@ -105,9 +105,9 @@ def test_bad_input_raises_naming_the_keyword(vantage, tmp_path):
 
 
 def test_everything_after_body_is_keyword_only(vantage):
-
     parameters = list(inspect.signature(vantage.place).parameters.values())
     assert parameters[0].name == "body"
     assert parameters[0].kind is inspect.Parameter.POSITIONAL_OR_KEYWORD
     assert all(p.kind is inspect.Parameter.KEYWORD_ONLY for p in parameters[1:])
-    assert parameters[[p.name for p in parameters].index("markers")].default is inspect.Parameter.empty
+    markers = next(p for p in parameters if p.name == "markers")
+    assert markers.default is inspect.Parameter.empty
