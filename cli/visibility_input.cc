@@ -1,41 +1,6 @@
 #include "visibility_input.h"
 
-#include <sstream>
-#include <vector>
-
-#include "vantage/analysis/common.h"
-#include "vantage/analysis/scaling.h"
-#include "vantage/io/mesh_file.h"
-
 namespace vantage::cli {
-namespace {
-
-LayoutWorkspace parse_workspace(const std::string& text) {
-  std::vector<double> values;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    try {
-      std::size_t used = 0;
-      values.push_back(std::stod(item, &used));
-      if (used != item.size()) throw std::invalid_argument(item);
-    } catch (const std::exception&) {
-      throw InvalidArgument("--workspace",
-                            "expected AX,AY,AZ,DEG (four numbers), got \"" + text + "\"");
-    }
-  }
-  if (values.size() != 4) {
-    throw InvalidArgument("--workspace",
-                          "expected AX,AY,AZ,DEG (four numbers), got \"" + text + "\"");
-  }
-  LayoutWorkspace out;
-  out.axis = unit_direction(Eigen::Vector3d(values[0], values[1], values[2]));
-  if (out.axis.isZero()) throw InvalidArgument("--workspace", "the axis has zero length");
-  out.half_angle_deg = values[3];
-  return out;
-}
-
-}  // namespace
 
 void VisibilityInput::add_options(CLI::App* sub) {
   sub->add_option("--normals", normals,
@@ -54,66 +19,6 @@ void VisibilityInput::add_options(CLI::App* sub) {
   sub->add_flag("--seen-whole", seen_whole,
                 "ignore the file's normals, cones, body and workspace: every camera sees every "
                 "marker (the paper's model)");
-}
-
-void VisibilityInput::apply(Layout* layout) const {
-  if (seen_whole) {
-    if (!normals.empty() || cone_deg || min_visible || !body.empty() || !workspace.empty()) {
-      throw InvalidArgument("--seen-whole",
-                            "drops the body: it does not go with --normals, --cone-deg, "
-                            "--min-visible, --body or --workspace");
-    }
-    layout->visibility.reset();
-    layout->workspace.reset();
-    return;
-  }
-  const bool any = !normals.empty() || cone_deg || min_visible || !body.empty();
-  if (any && layout->mode != LayoutMode::kPoints) {
-    throw InvalidArgument(!normals.empty() ? "--normals"
-                          : cone_deg       ? "--cone-deg"
-                          : min_visible    ? "--min-visible"
-                                           : "--body",
-                          "only point layouts have markers on a body");
-  }
-  if (!normals.empty()) {
-    if (!layout->visibility) layout->visibility.emplace();
-    layout->visibility->normals = radial_normals(layout->entries);
-    if (layout->visibility->cone_half_angle_deg.size() != layout->entries.cols()) {
-      layout->visibility->cone_half_angle_deg =
-          Eigen::VectorXd::Constant(layout->entries.cols(), MarkerVisibility::kDefaultConeDeg);
-    }
-  }
-  if ((cone_deg || min_visible || !body.empty()) && !layout->visibility) {
-    throw InvalidArgument(cone_deg      ? "--cone-deg"
-                          : min_visible ? "--min-visible"
-                                        : "--body",
-                          "the layout has no marker normals: give \"normals\" in the file or "
-                          "--normals radial");
-  }
-  if (cone_deg) {
-    if (!(*cone_deg > 0.0 && *cone_deg <= 180.0)) {
-      throw InvalidArgument("--cone-deg", "must be in (0, 180]");
-    }
-    layout->visibility->cone_half_angle_deg.setConstant(layout->entries.cols(), *cone_deg);
-  }
-  if (min_visible) {
-    if (*min_visible < 3 || *min_visible > layout->entries.cols()) {
-      throw InvalidArgument(
-          "--min-visible",
-          "must be in [3, " + std::to_string(layout->entries.cols()) + "] (the layout's markers)");
-    }
-    layout->visibility->min_visible = *min_visible;
-  }
-  if (!body.empty()) {
-    try {
-      layout->visibility->body = io::read_mesh(body);
-    } catch (const InvalidArgument& e) {
-      throw InvalidArgument("--body", e.what());
-    }
-    layout->visibility->body_path = std::filesystem::absolute(body).lexically_normal().string();
-  }
-  if (!workspace.empty()) layout->workspace = parse_workspace(workspace);
-  layout->validate();
 }
 
 }  // namespace vantage::cli

@@ -8,6 +8,7 @@
 #include "ident_command.h"
 #include "layout_commands.h"
 #include "layouts.h"
+#include "place_command.h"
 #include "pose_commands.h"
 #include "results.h"
 #include "simulate_command.h"
@@ -26,4 +27,5 @@ PYBIND11_MODULE(_vantage, module) {
   vantage::python::bind_crb_command(module);
   vantage::python::bind_tre_command(module);
   vantage::python::bind_ident_command(module);
+  vantage::python::bind_place_command(module);
 }

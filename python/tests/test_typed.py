@@ -11,7 +11,8 @@ import pytest
 from conftest import CORRESPONDENCES, LAYOUTS, assert_same, cli_error, cli_json, run_cli
 
 PUBLIC_CALLS = [
-    "analyze", "design", "weights", "pose", "orient", "simulate", "tre", "ident", "load_layout"]
+    "analyze", "design", "weights", "pose", "orient", "simulate", "tre", "ident", "place",
+    "load_layout"]
 
 # Seeded random unit directions for the size limits (any directions do: the limit counts them).
 SEED = 17
@@ -38,7 +39,7 @@ def test_public_functions_have_real_signatures_and_docstrings(vantage, name):
 
 
 @pytest.mark.parametrize(
-    "name", ["analyze", "design", "weights", "pose", "orient", "simulate", "tre", "ident"])
+    "name", ["analyze", "design", "weights", "pose", "orient", "simulate", "tre", "ident", "place"])
 def test_python_defaults_are_the_extensions_defaults(vantage, name):
     python = inspect.signature(getattr(vantage, name)).parameters
     compiled = extension_defaults(getattr(vantage._vantage, name))

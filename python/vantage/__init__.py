@@ -31,7 +31,8 @@ from . import _vantage
 from ._results import (
     BoundCheck, Certificate, CrbBound, CrbReport, CrbSweepRow, Crosscheck, DesignCoplanarity, DesignDirect, DesignResult,
     DesignState, DesignStep, DistanceDifference, DropoutEntry, EstimatorStats, IdentPair, IdentReport, IdentTool, Identification, LayoutCoplanarity, LayoutReport,
-    LayoutVisibility, LostRegion, Orientation, PaperLmi, PerTrial, PoseAlternative, PoseCamera,
+    LayoutVisibility, LostRegion, Orientation, PaperLmi, PerTrial, PlaceBaseline, PlaceReport, PlaceRobust, PlaceStep,
+    PoseAlternative, PoseCamera,
     PoseEstimate, SimulationReport, SimulationVisibility, Solver, Statistic, Swap, TreAtDirection,
     TreExtreme, TreMonteCarlo, TreReport, TreTarget, VisibilityCertificate, VisibilityDropoutEntry, WeightsResult, WeightsSuggestion, Workspace,
 )
@@ -52,12 +53,12 @@ __all__ = [
     "DesignResult", "DesignState", "DesignStep", "DistanceDifference", "DropoutEntry", "EstimatorStats", "IdentPair", "IdentReport",
     "IdentTool", "Identification", "Layout",
     "LayoutCoplanarity", "LayoutReport", "LayoutVisibility", "LostRegion", "NumericalError", "Orientation", "PaperLmi", "PerTrial",
-    "PoseAlternative", "PoseCamera", "PoseEstimate", "SimulationReport", "SimulationVisibility",
+    "PlaceBaseline", "PlaceReport", "PlaceRobust", "PlaceStep", "PoseAlternative", "PoseCamera", "PoseEstimate", "SimulationReport", "SimulationVisibility",
     "Solver", "Statistic", "Swap", "TreAtDirection", "TreExtreme", "TreMonteCarlo", "TreReport",
     "TreTarget", "VisibilityCertificate", "VisibilityDropoutEntry",
     "WeightsResult", "WeightsSuggestion", "Workspace", "__version__", "analyze", "board", "crb",
     "data_vectors", "design", "ident", "load_correspondences", "load_layout", "orient",
-    "pbar_at_viewpoints", "pose", "pose_methods", "save_layout", "simulate", "tre", "weights",
+    "pbar_at_viewpoints", "place", "pose", "pose_methods", "save_layout", "simulate", "tre", "weights",
 ]
 
 #: A layout argument: a vantage.Layout or the path of a layout file (.json, .csv, .yaml/.yml).
@@ -192,6 +193,51 @@ def ident(tools: Iterable[Union[Layout, str, "os.PathLike[str]"]], *, min_visibl
     """
     return IdentReport(_vantage.ident(tools, min_visible=min_visible, format=format,
                                       allow_large=allow_large))
+
+
+def _place_report(fields: Any) -> PlaceReport:
+    fields = dict(fields)
+    layout = fields.pop("layout", None)
+    return PlaceReport(fields, layout)
+
+
+#: A file path argument.
+PathArg = Union[str, "os.PathLike[str]"]
+
+
+@_typed_errors(lambda error: _place_report(error.result))
+def place(body: Optional[PathArg] = None, *, sites: Optional[PathArg] = None, markers: int,
+          candidates: Optional[int] = None, cone_deg: Optional[float] = None,
+          min_visible: Optional[int] = None,
+          workspace: Optional[Tuple[float, float, float, float]] = None,
+          min_separation: Optional[float] = None, keep: Optional[PathArg] = None,
+          robust_dropout: bool = False, min_distance_difference: float = 0.0,
+          seed: Optional[int] = None, threads: Optional[int] = None,
+          random_trials: Optional[int] = None, exhaustive_limit: Optional[int] = None,
+          out: Optional[PathArg] = None, overwrite: bool = False) -> PlaceReport:
+    """Choose ``markers`` (K) marker sites on a body so that every workspace direction is
+    trackable and the certified worst case under visibility is best (as ``vantage place
+    --json``; docs/math.md §21); the result's ``layout`` is the placed vantage.Layout.
+
+    body: a mesh (STL, OBJ, PLY, glTF, ...) to sample ``candidates`` sites on (default 500),
+    or sites: a point layout file with normals (its cones, min_visible, body and workspace
+    apply); exactly one. cone_deg, min_visible, workspace (ax, ay, az, deg): as ``--cone-deg``,
+    ``--min-visible``, ``--workspace``. min_separation (default 0), keep (a layout file of the
+    markers already on the body), robust_dropout, min_distance_difference, seed (1), threads (0:
+    all cores), random_trials (1000), exhaustive_limit (5000): as the CLI's flags. out: write
+    the placed layout (.json) there, all or nothing, only when the placement is complete;
+    overwrite: replace an existing file. None: the CLI's default.
+
+    Raises ValueError on bad input (its ``field`` the keyword, e.g. 'markers', 'body') and
+    NumericalError (its ``result`` the PlaceReport) when the placement leaves a workspace
+    direction untracked or its analysis is not certified.
+    """
+    return _place_report(_vantage.place(
+        body, sites=sites, markers=markers, candidates=candidates, cone_deg=cone_deg,
+        min_visible=min_visible, workspace=workspace, min_separation=min_separation, keep=keep,
+        robust_dropout=robust_dropout, min_distance_difference=min_distance_difference,
+        seed=seed, threads=threads, random_trials=random_trials,
+        exhaustive_limit=exhaustive_limit, out=out, overwrite=overwrite))
 
 
 def _design_result(fields: Any) -> DesignResult:

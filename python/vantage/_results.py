@@ -21,7 +21,7 @@ __all__ = [
     "DesignResult", "DesignState", "DesignStep", "DropoutEntry", "EstimatorStats", "IdentPair",
     "IdentReport", "IdentTool",
     "LayoutCoplanarity", "LayoutReport", "LayoutVisibility", "LostRegion", "Orientation", "PaperLmi", "PoseAlternative",
-    "PerTrial", "PoseCamera", "PoseEstimate", "SimulationReport", "SimulationVisibility",
+    "PerTrial", "PlaceReport", "PlaceRobust", "PlaceStep", "PlaceBaseline", "PoseCamera", "PoseEstimate", "SimulationReport", "SimulationVisibility",
     "Solver", "Statistic", "Swap", "TreAtDirection", "TreExtreme", "TreMonteCarlo", "TreReport",
     "TreTarget", "VisibilityCertificate", "VisibilityDropoutEntry", "WeightsResult",
     "WeightsSuggestion", "Workspace",
@@ -841,3 +841,85 @@ class IdentReport(_JsonView):
         self.closest: IdentPair = next(
             p for p in self.pairs if (p.a, p.b) == (closest["a"], closest["b"]))
         self.certified: bool = bool(fields["certified"])
+
+
+# ------------------------------------------------------------------- marker placement (place)
+
+
+class PlaceStep(_JsonView):
+    """One greedy step of ``vantage place --json``'s ``steps``: k markers after adding site
+    ``added`` (-1 for the kept markers), their coverage and certified p-bar_min."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.k: int = int(fields["k"])
+        self.added: int = int(fields["added"])
+        self.coverage: float = _float(fields["coverage"])
+        self.pbar_min: float = _float(fields["pbar_min"])
+
+
+class PlaceBaseline(_JsonView):
+    """The random baseline: ``trials`` random feasible K-subsets, ``complete`` of them trackable
+    everywhere, the best one's coverage and p-bar_min and the median p-bar_min."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.trials: int = int(fields["trials"])
+        self.complete: int = int(fields["complete"])
+        self.best_coverage: float = _float(fields["best_coverage"])
+        self.best_pbar_min: float = _float(fields["best_pbar_min"])
+        self.median_pbar_min: float = _float(fields["median_pbar_min"])
+
+
+class PlaceRobust(_JsonView):
+    """robust_dropout=True: the worst p-bar_min over the loss of any one chosen marker, that
+    marker (its candidate index, -1 for a kept one, and name) and the coverage then."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.pbar_min: float = _float(fields["pbar_min"])
+        self.worst_lost_marker: int = int(fields["worst_lost_marker"])
+        self.worst_lost_name: str = str(fields["worst_lost_name"])
+        self.coverage: float = _float(fields["coverage"])
+
+
+class PlaceReport(_JsonView):
+    """vantage.place (``vantage place --json``; C++ design::PlacementResult; docs/math.md §21):
+    the chosen candidate indices and kept markers' names, how they were found (``search``
+    'greedy' or 'exhaustive'), the placed layout's analysis on its body (``visibility``, as
+    vantage.analyze), the random baseline and the greedy steps. ``layout`` is the placed
+    vantage.Layout (the CLI's --out file); ``written`` the file it was written to, or None."""
+
+    def __init__(self, fields: Mapping[str, Any], layout: Optional[Layout]) -> None:
+        super().__init__(fields)
+        #: None when the placement failed (NumericalError.result).
+        self.layout: Optional[Layout] = layout
+        self.sites: str = str(fields["sites"])
+        self.status: str = str(fields["status"])
+        self.chosen: IntArray = _ints(fields["chosen"])
+        self.kept: List[str] = [str(k) for k in fields["kept"]]
+        self.n_candidates: int = int(fields["n_candidates"])
+        #: Sampled on a body mesh: the samples drawn; None for a sites file.
+        self.drawn: Optional[int] = int(fields["drawn"]) if "drawn" in fields else None
+        self.markers: int = int(fields["markers"])
+        self.search: str = str(fields["search"])
+        visibility = fields["visibility"]
+        self.visibility: Optional[LayoutVisibility] = (
+            None if visibility is None else LayoutVisibility(visibility))
+        self.coverage: float = _float(fields["coverage"])
+        self.pbar_min: float = _float(fields["pbar_min"])
+        self.random_baseline = PlaceBaseline(fields["random_baseline"])
+        self.steps: List[PlaceStep] = [PlaceStep(s) for s in fields["steps"]]
+        self.robust: Optional[PlaceRobust] = (
+            PlaceRobust(fields["robust"]) if "robust" in fields else None)
+        self.swaps: int = int(fields["swaps"])
+        self.evaluations: int = int(fields["evaluations"])
+        #: search 'exhaustive': the feasible subsets searched; else None.
+        self.subsets: Optional[int] = int(fields["subsets"]) if "subsets" in fields else None
+        covering = fields.get("covering_markers")
+        #: Incomplete placements: the markers greedy by coverage needs to cover the workspace
+        #: (None when it cannot) and what all sites together cover.
+        self.covering_markers: Optional[int] = None if covering is None else int(covering)
+        self.all_sites_coverage: Optional[float] = (
+            _float(fields["all_sites_coverage"]) if "all_sites_coverage" in fields else None)
+        self.written: Optional[str] = _text(fields["written"])

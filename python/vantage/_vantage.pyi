@@ -98,3 +98,12 @@ def simulate(layout: Union[Layout, _Path, None] = None, *, vectors: _Array = Non
              bundle: Optional[str] = None) -> Dict[str, Any]: ...
 def ident(tools: Iterable[Union[Layout, _Path]], *, min_visible: int = 3,
           format: Optional[str] = None, allow_large: bool = False) -> Dict[str, Any]: ...
+def place(body: Optional[_Path] = None, *, sites: Optional[_Path] = None, markers: int,
+          candidates: Optional[int] = None, cone_deg: Optional[float] = None,
+          min_visible: Optional[int] = None,
+          workspace: Optional[Tuple[float, float, float, float]] = None,
+          min_separation: Optional[float] = None, keep: Optional[_Path] = None,
+          robust_dropout: bool = False, min_distance_difference: float = 0.0,
+          seed: Optional[int] = None, threads: Optional[int] = None,
+          random_trials: Optional[int] = None, exhaustive_limit: Optional[int] = None,
+          out: Optional[_Path] = None, overwrite: bool = False) -> Dict[str, Any]: ...

@@ -1,0 +1,366 @@
+#include "place_json.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "vantage/analysis/common.h"
+#include "vantage/io/layout_file.h"
+#include "vantage/io/layout_formats.h"
+#include "vantage/io/mesh_file.h"
+#include "vantage/io/text_file.h"
+#include "vantage/sdp/visibility_model.h"
+
+namespace vantage::place_json {
+namespace {
+
+constexpr int kMaxCandidates = 20000;
+
+[[noreturn]] void place_refuse(const std::string& field, const std::string& message) {
+  throw InvalidArgument(field, message);
+}
+
+// The library's InvalidArgument from data read from `source`, reported against the file.
+template <typename Call>
+auto place_against(const std::string& source, Call&& call) {
+  try {
+    return call();
+  } catch (const InvalidArgument& e) {
+    throw e.against(source);
+  }
+}
+
+bool place_valid_utf8(const std::string& text) {
+  try {
+    static_cast<void>(Json(text).dump());
+  } catch (const Json::type_error&) {
+    return false;
+  }
+  return true;
+}
+
+std::string place_percent(double fraction) {
+  std::ostringstream out;
+  out.precision(4);
+  const double x = 100.0 * fraction;
+  out << (x == 0.0 ? 0.0 : x);  // never "-0", as the CLI's format_number
+  return out.str() + " %";
+}
+
+// The site at exactly the position of kept marker i, or -1.
+int place_site_at(const Layout& sites, const Eigen::Vector3d& p) {
+  for (Eigen::Index j = 0; j < sites.entries.cols(); ++j) {
+    if (sites.entries.col(j) == p) return static_cast<int>(j);
+  }
+  return -1;
+}
+
+// The sites sampled on the body mesh, as a point layout on it.
+Layout place_sampled_sites(const Request& request, int* drawn) {
+  Mesh mesh;
+  try {
+    mesh = io::read_mesh(request.body);
+  } catch (const InvalidArgument& e) {
+    place_refuse("BODY", e.what());
+  }
+  design::SurfaceSites sampled;
+  try {
+    sampled = design::sample_surface_sites(mesh, request.candidates, request.min_separation,
+                                           request.seed);
+  } catch (const InvalidArgument& e) {
+    place_refuse("BODY", request.body + ": " + e.what());
+  }
+  *drawn = sampled.drawn;
+  Layout sites = design::surface_sites_layout(
+      sampled, mesh, std::filesystem::absolute(request.body).lexically_normal().string());
+  sites.name = std::filesystem::path(request.body).stem().string();
+  return sites;
+}
+
+// The kept markers: a kept marker at a site's very position keeps that site; the others are
+// appended to the sites (their normals and cones from their file).
+std::vector<int> place_append_kept(const Request& request, Layout* sites) {
+  if (request.keep.empty()) return {};
+  Layout kept = io::load_layout(request.keep);
+  if (kept.mode != LayoutMode::kPoints || !kept.visibility) {
+    place_refuse("--keep", request.keep +
+                               ": expected points with \"normals\" (the markers already on "
+                               "the body)");
+  }
+  std::vector<int> at_sites;
+  std::vector<Eigen::Index> appended;
+  for (Eigen::Index i = 0; i < kept.entries.cols(); ++i) {
+    const int site = place_site_at(*sites, kept.entries.col(i));
+    if (site >= 0) {
+      at_sites.push_back(site);
+    } else {
+      appended.push_back(i);
+    }
+  }
+  if (appended.size() != static_cast<std::size_t>(kept.entries.cols())) {
+    Layout rest = kept;
+    rest.entries.resize(3, static_cast<Eigen::Index>(appended.size()));
+    rest.visibility->normals.resize(3, rest.entries.cols());
+    rest.visibility->cone_half_angle_deg.resize(rest.entries.cols());
+    rest.names.clear();
+    for (std::size_t k = 0; k < appended.size(); ++k) {
+      const Eigen::Index i = appended[k], to = static_cast<Eigen::Index>(k);
+      rest.entries.col(to) = kept.entries.col(i);
+      rest.visibility->normals.col(to) = kept.visibility->normals.col(i);
+      rest.visibility->cone_half_angle_deg(to) = kept.visibility->cone_half_angle_deg(i);
+      if (!kept.names.empty()) rest.names.push_back(kept.names[static_cast<std::size_t>(i)]);
+    }
+    kept = rest;
+  }
+  std::vector<int> out = at_sites;
+  const Eigen::Index n = sites->entries.cols();
+  const Eigen::Index f = kept.entries.cols();
+  if (f == 0) return out;
+  std::vector<std::string> names;
+  for (Eigen::Index i = 0; i < n; ++i) names.push_back(sites->entry_name(i));
+  for (Eigen::Index i = 0; i < f; ++i) {
+    const std::string name = kept.names.empty() ? "kept" + std::to_string(i + 1) : kept.names[i];
+    if (std::find(names.begin(), names.end(), name) != names.end()) {
+      place_refuse("--keep", request.keep + ": marker name \"" + name + "\" is also a site's name");
+    }
+    names.push_back(name);
+  }
+  MarkerVisibility& v = *sites->visibility;
+  sites->entries.conservativeResize(3, n + f);
+  sites->entries.rightCols(f) = kept.entries;
+  sites->weights = Eigen::VectorXd::Ones(n + f);
+  v.normals.conservativeResize(3, n + f);
+  v.normals.rightCols(f) = kept.visibility->normals;
+  v.cone_half_angle_deg.conservativeResize(n + f);
+  v.cone_half_angle_deg.tail(f) = kept.visibility->cone_half_angle_deg;
+  sites->names = names;
+  place_against(request.keep, [&] { sites->validate(); });
+  for (Eigen::Index i = 0; i < f; ++i) out.push_back(static_cast<int>(n + i));
+  return out;
+}
+
+void place_check_problem(const Request& request, const Layout& sites, std::size_t kept) {
+  const long n = static_cast<long>(sites.entries.cols());
+  const int min_visible = sites.visibility->min_visible;
+  if (request.markers > n) {
+    place_refuse("--markers", std::to_string(request.markers) + " exceeds the " +
+                                  std::to_string(n) + " sites" +
+                                  (kept > 0 ? " and kept markers" : ""));
+  }
+  if (request.markers < min_visible) {
+    place_refuse("--markers", "must be at least min_visible (" + std::to_string(min_visible) +
+                                  "), got " + std::to_string(request.markers));
+  }
+  if (static_cast<long>(kept) > request.markers) {
+    place_refuse("--markers", "the " + std::to_string(kept) + " kept markers exceed " +
+                                  std::to_string(request.markers));
+  }
+  if (request.robust_dropout && request.markers <= min_visible) {
+    place_refuse("--robust-dropout", "needs --markers above min_visible (" +
+                                         std::to_string(min_visible) +
+                                         "): a lost marker leaves too few otherwise");
+  }
+}
+
+// Site s as the JSON names it: its index among the candidates, or -1 for a kept marker.
+int place_candidate_index(int s, int n_candidates) { return s < n_candidates ? s : -1; }
+
+Json place_steps_json(const design::PlacementResult& r) {
+  Json steps = Json::array();
+  for (const design::PlacementStep& s : r.steps) {
+    steps.push_back({{"k", s.k},
+                     {"added", s.added},
+                     {"coverage", s.value.coverage},
+                     {"pbar_min", s.value.pbar_min}});
+  }
+  return steps;
+}
+
+}  // namespace
+
+void check_request(const Request& request) {
+  if (request.body.empty() == request.sites.empty()) {
+    place_refuse("BODY/--sites", "give a body mesh or --sites SITES.json, not both or neither");
+  }
+  if (!request.sites.empty() && request.candidates_given) {
+    place_refuse("--candidates", "samples the body mesh; --sites gives the candidates itself");
+  }
+  if (request.candidates < 1 || request.candidates > kMaxCandidates) {
+    place_refuse("--candidates", "must be in [1, " + std::to_string(kMaxCandidates) + "], got " +
+                                     std::to_string(request.candidates));
+  }
+  if (request.markers < 1) {
+    place_refuse("--markers", "must be >= 1, got " + std::to_string(request.markers));
+  }
+  if (!(request.min_separation >= 0.0) || !std::isfinite(request.min_separation)) {
+    place_refuse("--min-separation", "must be a finite number >= 0");
+  }
+  if (!(request.min_distance_difference >= 0.0) ||
+      !std::isfinite(request.min_distance_difference)) {
+    place_refuse("--min-distance-difference", "must be a finite number >= 0");
+  }
+  if (request.threads < 0) place_refuse("--threads", "must be >= 0 (0: all cores)");
+  if (request.random_trials < 0) place_refuse("--random-trials", "must be >= 0");
+  if (request.exhaustive_limit < 0) place_refuse("--exhaustive-limit", "must be >= 0");
+  if (!(request.certificate_tolerance >= 1e-15 && request.certificate_tolerance <= 1e-3)) {
+    place_refuse("--certificate-tolerance", "must be in [1e-15, 1e-3]");
+  }
+  if (request.out.empty()) return;
+  if (!place_valid_utf8(request.out)) place_refuse("--out", "the file name is not valid UTF-8");
+  try {
+    if (io::layout_write_format(request.out) != io::LayoutFormat::kJson) {
+      place_refuse("--out", request.out +
+                                ": write the placed layout as .json (it keeps normals, body, "
+                                "workspace and the placement record)");
+    }
+    io::check_write_target(request.out, request.overwrite);
+  } catch (const InvalidArgument& e) {
+    place_refuse("--out", e.what());
+  }
+}
+
+Sites candidate_sites(const Request& request,
+                      const std::function<Layout(const std::string&)>& read_sites,
+                      const std::function<void(Layout*)>& apply_visibility) {
+  Sites out;
+  if (!request.sites.empty()) {
+    out.layout = read_sites(request.sites);
+    if (out.layout.mode != LayoutMode::kPoints) {
+      place_refuse("--sites",
+                   request.sites + ": expected a point layout (\"points\" with \"normals\")");
+    }
+    if (!out.layout.visibility) {
+      place_refuse("--sites", request.sites + ": the sites need \"normals\" (or --normals radial)");
+    }
+    out.drawn = static_cast<int>(out.layout.entries.cols());
+  } else {
+    out.layout = place_sampled_sites(request, &out.drawn);
+    apply_visibility(&out.layout);
+  }
+  out.n_candidates = static_cast<int>(out.layout.entries.cols());
+  out.keep = place_append_kept(request, &out.layout);
+  place_check_problem(request, out.layout, out.keep.size());
+  return out;
+}
+
+Outcome place(const Request& request, const Sites& sites,
+              const std::function<void(const std::string&)>& progress) {
+  if (progress) progress("occlusion grid");
+  const sdp::VisibilityModel model = place_against(request.source(), [&] {
+    return sdp::VisibilityModel::of(sites.layout, sdp::VisibilityModel::kDefaultResolutionDeg,
+                                    request.threads);
+  });
+  design::PlacementProblem problem;
+  problem.sites = model.problem();
+  problem.keep = sites.keep;
+  problem.markers = request.markers;
+  problem.min_separation = request.min_separation;
+  problem.min_distance_difference = request.min_distance_difference;
+  design::PlaceOptions options;
+  options.robust_dropout = request.robust_dropout;
+  options.random_trials = request.random_trials;
+  options.exhaustive_limit = request.exhaustive_limit;
+  options.seed = request.seed;
+  options.threads = request.threads;
+  options.search.certificate_tolerance = request.certificate_tolerance;
+  options.progress = progress;
+  Outcome out;
+  try {
+    out.result = design::place_markers(problem, options);
+  } catch (const InvalidArgument& e) {
+    place_refuse(e.field() == "min_separation" ? "--min-separation" : "--markers", e.what());
+  }
+  if (progress) progress("final analysis");
+  out.placed = placed_layout(request, sites.layout, sites.n_candidates, out.result);
+  out.complete = out.result.status == design::PlacementResult::Status::kComplete &&
+                 out.placed.report.visibility && out.placed.report.visibility->worst.certified();
+  return out;
+}
+
+PlacedLayout placed_layout(const Request& request, const Layout& sites, int n_candidates,
+                           const design::PlacementResult& result) {
+  PlacedLayout out;
+  for (Eigen::Index i = 0; i < sites.entries.cols(); ++i) {
+    out.site_names.push_back(design::site_name(sites, static_cast<int>(i)));
+  }
+  design::PlacedLayoutRecord record;
+  record.sites = request.source();
+  record.n_candidates = n_candidates;
+  record.robust_dropout = request.robust_dropout;
+  out.layout = design::placed_layout(sites, result, record);
+  sdp::LayoutReportOptions options;
+  options.visibility.search.certificate_tolerance = request.certificate_tolerance;
+  options.visibility.threads = request.threads;
+  out.report = sdp::analyze_layout(out.layout, options);
+  return out;
+}
+
+std::string failure_message(const design::PlacementResult& result, const PlacedLayout& placed) {
+  if (result.status == design::PlacementResult::Status::kIncomplete) {
+    std::string message = result.message + ": the best covers " +
+                          place_percent(result.value.coverage) + " of the workspace";
+    if (result.covering_markers) {
+      message += "; greedy by coverage covers it with " + std::to_string(*result.covering_markers) +
+                 " markers";
+    } else {
+      message += "; all sites together cover " + place_percent(result.all_sites_coverage);
+    }
+    return message;
+  }
+  const sdp::VisibilityReport& v = *placed.report.visibility;
+  return "the placed layout's analysis is not certified: " + v.message();
+}
+
+Json report(const Request& request, const Sites& sites, const Outcome& outcome, bool written) {
+  const design::PlacementResult& r = outcome.result;
+  const PlacedLayout& placed = outcome.placed;
+  const int n_candidates = sites.n_candidates;
+  Json out;
+  out["sites"] = request.source();
+  out["status"] = design::to_string(r.status);
+  Json chosen = Json::array();
+  Json kept = Json::array();
+  for (int s : r.chosen) {
+    if (s < n_candidates) {
+      chosen.push_back(s);
+    } else {
+      kept.push_back(placed.site_names[static_cast<std::size_t>(s)]);
+    }
+  }
+  out["chosen"] = chosen;
+  out["kept"] = kept;
+  out["n_candidates"] = n_candidates;
+  if (request.sites.empty()) out["drawn"] = sites.drawn;
+  out["markers"] = request.markers;
+  out["search"] = r.search;
+  const Json analysis = Json::parse(sdp::to_json(placed.report));
+  out["visibility"] = analysis.contains("visibility") ? analysis["visibility"] : Json();
+  out["coverage"] = placed.report.visibility->coverage.trackable_fraction;
+  out["pbar_min"] = placed.report.visibility->worst.pbar_min;
+  out["random_baseline"] = {{"trials", r.random_baseline.trials},
+                            {"complete", r.random_baseline.complete},
+                            {"best_coverage", r.random_baseline.best_coverage},
+                            {"best_pbar_min", r.random_baseline.best_pbar_min},
+                            {"median_pbar_min", r.random_baseline.median_pbar_min}};
+  out["steps"] = place_steps_json(r);
+  if (r.robust) {
+    out["robust"] = {
+        {"pbar_min", r.robust->pbar_min},
+        {"worst_lost_marker", place_candidate_index(r.robust->worst_lost_marker, n_candidates)},
+        {"worst_lost_name",
+         placed.site_names[static_cast<std::size_t>(r.robust->worst_lost_marker)]},
+        {"coverage", r.robust->coverage}};
+  }
+  out["swaps"] = r.swaps;
+  out["evaluations"] = r.evaluations;
+  if (r.search == "exhaustive") out["subsets"] = r.subsets;
+  if (r.status == design::PlacementResult::Status::kIncomplete) {
+    out["covering_markers"] = r.covering_markers ? Json(*r.covering_markers) : Json();
+    out["all_sites_coverage"] = r.all_sites_coverage;
+  }
+  out["written"] = written ? Json(request.out) : Json();
+  return out;
+}
+
+}  // namespace vantage::place_json

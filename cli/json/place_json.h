@@ -1,0 +1,98 @@
+#pragma once
+
+// `vantage place` as both front ends run it (README, "vantage place"; docs/math.md §21): the
+// checks of the arguments, the candidate sites (sampled on a mesh or read) with the kept markers,
+// the placement, the placed layout and its analysis, and the JSON object of `vantage place
+// --json`. The `vantage` command and vantage.place() call these, so that the checks and the
+// fields are defined once. Errors name the CLI's flags ("--markers", "BODY/--sites"); Python
+// renames them to its keywords.
+
+#include <cstdint>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "vantage/analysis/layout.h"
+#include "vantage/design/placement.h"
+#include "vantage/design/placement_layout.h"
+#include "vantage/sdp/layout_report.h"
+
+namespace vantage::place_json {
+
+using Json = nlohmann::ordered_json;
+
+/// The arguments of a placement, with the CLI's defaults.
+struct Request {
+  std::string body;   ///< mesh to sample (positional), or empty
+  std::string sites;  ///< --sites file, or empty
+  int candidates = 500;
+  bool candidates_given = false;
+  int markers = 0;
+  std::string out;  ///< the placed layout's file, or empty (Python: not written)
+  double min_separation = 0.0;
+  std::string keep;
+  bool robust_dropout = false;
+  double min_distance_difference = 0.0;
+  std::uint64_t seed = 1;
+  int threads = 0;
+  int random_trials = 1000;
+  long exhaustive_limit = 5000;
+  double certificate_tolerance = sdp::VisibilitySearchOptions{}.certificate_tolerance;
+  bool overwrite = false;
+
+  /// The body mesh or the sites file, as given.
+  const std::string& source() const { return sites.empty() ? body : sites; }
+};
+
+/// Checks the arguments alone, before any file is read (an empty `out` is not checked: the CLI
+/// requires it itself). Throws InvalidArgument naming the flag.
+void check_request(const Request& request);
+
+/// The candidate sites (sampled on the body, or read) and the kept markers appended.
+struct Sites {
+  Layout layout;          ///< the candidates, then the kept markers not at a site
+  int n_candidates = 0;   ///< the leading columns of `layout` that are candidates
+  int drawn = 0;          ///< the samples drawn on the body (the sites' count when read)
+  std::vector<int> keep;  ///< the kept markers' columns
+};
+
+/// Reads the sites file with `read_sites` (the front end's format and visibility options), or
+/// samples the body and applies the visibility options with `apply_visibility`; appends the
+/// kept markers and checks the problem (K against the sites, min_visible, the kept markers).
+Sites candidate_sites(const Request& request,
+                      const std::function<Layout(const std::string&)>& read_sites,
+                      const std::function<void(Layout*)>& apply_visibility);
+
+/// The chosen markers as a layout on the body, and `vantage analyze`'s report of it.
+struct PlacedLayout {
+  Layout layout;
+  sdp::LayoutReport report;
+  std::vector<std::string> site_names;  ///< the name of every site and kept marker
+};
+
+/// A finished placement: complete when every workspace direction is trackable and the placed
+/// layout's analysis is certified (only then is it written).
+struct Outcome {
+  design::PlacementResult result;
+  PlacedLayout placed;
+  bool complete = false;
+};
+
+/// Runs design::place_markers() on the sites and analyses the placed layout; `progress` (or
+/// empty) gets the stages.
+Outcome place(const Request& request, const Sites& sites,
+              const std::function<void(const std::string&)>& progress);
+
+/// The layout of result.chosen (sites first, kept markers last, in index order) with the
+/// visibility block, workspace and placement record, and its analysis.
+PlacedLayout placed_layout(const Request& request, const Layout& sites, int n_candidates,
+                           const design::PlacementResult& result);
+
+/// Why the placement is not written.
+std::string failure_message(const design::PlacementResult& result, const PlacedLayout& placed);
+
+/// The JSON object of `vantage place --json`; "written" is request.out when `written`, else null.
+Json report(const Request& request, const Sites& sites, const Outcome& outcome, bool written);
+
+}  // namespace vantage::place_json

@@ -1,0 +1,147 @@
+// vantage.place (place_command.h).
+
+#include "place_command.h"
+
+#include <pybind11/stl.h>
+
+#include <cstdio>
+#include <optional>
+#include <string>
+
+#include "arrays.h"
+#include "layouts.h"
+#include "place_json.h"
+#include "results.h"
+#include "vantage/analysis/common.h"
+#include "vantage/io/layout_file.h"
+#include "vantage/io/layout_formats.h"
+#include "vantage/io/text_file.h"
+#include "visibility_options.h"
+
+namespace vantage::python {
+
+namespace {
+
+// The keyword of a CLI flag the shared checks name: "--min-separation" -> "min_separation",
+// "BODY" and "BODY/--sites" -> "body", "--sites" -> "sites"; any other field is kept.
+InvalidArgument place_renamed(const InvalidArgument& e) {
+  const std::string& field = e.field();
+  if (field == "BODY" || field == "BODY/--sites") return e.renamed("body", e.index());
+  if (field.rfind("--", 0) != 0) return e;
+  std::string keyword = field.substr(2);
+  for (char& c : keyword) {
+    if (c == '-') c = '_';
+  }
+  return e.renamed(keyword, e.index());
+}
+
+// A file path argument (str or os.PathLike), or "" for None.
+std::string place_path(const py::object& value, const char* field) {
+  if (value.is_none()) return "";
+  if (!py::isinstance<py::str>(value) && !py::hasattr(value, "__fspath__")) {
+    throw InvalidArgument(field, "expected a file path");
+  }
+  return py::module_::import("os").attr("fspath")(value).cast<std::string>();
+}
+
+// workspace=(ax, ay, az, deg) as --workspace's "AX,AY,AZ,DEG" (each number exactly).
+std::string place_workspace(const py::object& workspace) {
+  if (workspace.is_none()) return "";
+  const Eigen::VectorXd w = vector_from_array(workspace, "workspace");
+  if (w.size() != 4 || !w.allFinite()) {
+    throw InvalidArgument("workspace", "expected (ax, ay, az, deg), four finite numbers");
+  }
+  std::string out;
+  for (Eigen::Index i = 0; i < 4; ++i) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.17g", w(i));
+    out += (i > 0 ? "," : "") + std::string(buffer);
+  }
+  return out;
+}
+
+py::object place_run(const place_json::Request& request, const cli::VisibilityOptions& visibility) {
+  place_json::check_request(request);
+  const place_json::Sites sites = place_json::candidate_sites(
+      request,
+      [&](const std::string& path) {
+        std::string source;
+        Layout layout = layout_from_arguments(py::str(path), py::none(), py::none(), py::none(),
+                                              py::none(), ReadArguments{}, &source);
+        visibility.apply(&layout);
+        return layout;
+      },
+      [&](Layout* layout) { visibility.apply(layout); });
+  std::optional<io::WriteLock> lock;
+  if (!request.out.empty()) lock.emplace(request.out);
+  const place_json::Outcome outcome =
+      without_gil([&] { return place_json::place(request, sites, {}); });
+  if (outcome.complete && !request.out.empty()) {
+    io::save_layout(request.out, outcome.placed.layout, request.overwrite);
+  }
+  const Json report =
+      place_json::report(request, sites, outcome, outcome.complete && !request.out.empty());
+  py::object result =
+      result_or_raise(!outcome.complete,
+                      outcome.result.status == design::PlacementResult::Status::kComplete
+                          ? "not_certified"
+                          : design::to_string(outcome.result.status),
+                      place_json::failure_message(outcome.result, outcome.placed), report);
+  result["layout"] = py::cast(outcome.placed.layout);
+  return result;
+}
+
+py::object place(const py::object& body, const py::object& sites, int markers,
+                 const std::optional<int>& candidates, const std::optional<double>& cone_deg,
+                 const std::optional<int>& min_visible, const py::object& workspace,
+                 const std::optional<double>& min_separation, const py::object& keep,
+                 bool robust_dropout, double min_distance_difference,
+                 const std::optional<std::uint64_t>& seed, const std::optional<int>& threads,
+                 const std::optional<int>& random_trials,
+                 const std::optional<long>& exhaustive_limit, const py::object& out,
+                 bool overwrite) {
+  try {
+    place_json::Request request;
+    request.body = place_path(body, "body");
+    request.sites = place_path(sites, "sites");
+    request.candidates_given = candidates.has_value();
+    request.candidates = candidates.value_or(request.candidates);
+    request.markers = markers;
+    request.out = place_path(out, "out");
+    request.min_separation = min_separation.value_or(request.min_separation);
+    request.keep = place_path(keep, "keep");
+    request.robust_dropout = robust_dropout;
+    request.min_distance_difference = min_distance_difference;
+    request.seed = seed.value_or(request.seed);
+    request.threads = threads.value_or(request.threads);
+    request.random_trials = random_trials.value_or(request.random_trials);
+    request.exhaustive_limit = exhaustive_limit.value_or(request.exhaustive_limit);
+    request.overwrite = overwrite;
+    cli::VisibilityOptions visibility;
+    visibility.cone_deg = cone_deg;
+    visibility.min_visible = min_visible;
+    visibility.workspace = place_workspace(workspace);
+    return place_run(request, visibility);
+  } catch (const InvalidArgument& e) {
+    throw place_renamed(e);
+  }
+}
+
+}  // namespace
+
+void bind_place_command(py::module_& module) {
+  module.def("place", &place, py::arg("body") = py::none(), py::kw_only(),
+             py::arg("sites") = py::none(), py::arg("markers"), py::arg("candidates") = py::none(),
+             py::arg("cone_deg") = py::none(), py::arg("min_visible") = py::none(),
+             py::arg("workspace") = py::none(), py::arg("min_separation") = py::none(),
+             py::arg("keep") = py::none(), py::arg("robust_dropout") = false,
+             py::arg("min_distance_difference") = 0.0, py::arg("seed") = py::none(),
+             py::arg("threads") = py::none(), py::arg("random_trials") = py::none(),
+             py::arg("exhaustive_limit") = py::none(), py::arg("out") = py::none(),
+             py::arg("overwrite") = false,
+             "K marker sites on a body mesh or among given sites: every workspace direction "
+             "trackable, then the best certified worst case under visibility (as `vantage place "
+             "--json`; docs/math.md §21).");
+}
+
+}  // namespace vantage::python

@@ -1,0 +1,113 @@
+"""vantage.place: the fields of ``vantage place --json`` (the same checks, placement and JSON
+writer), the placed vantage.Layout, the exhaustive optimum against a brute force over every
+K-subset with vantage.analyze (docs/math.md §21's objective: coverage first, then the certified
+p-bar_min), and bad input naming the keyword."""
+
+import inspect
+import itertools
+import json
+
+import pytest
+
+from conftest import SOURCE, assert_same, cli_json
+
+BODIES = SOURCE / "examples" / "bodies"
+CUBE_SITES = BODIES / "cube_sites.json"
+CAPSULE = BODIES / "capsule.obj"
+
+# Two placements are not told apart closer than the certificate tolerance in t (1e-6 and
+# finer); p-bar_min = sqrt(1 - t^2) near 0.9 moves by about half of that.
+OBJECTIVE_TIE = 1e-6
+
+
+def without_written(fields):
+    fields = dict(fields)
+    fields.pop("written")
+    return fields
+
+
+def test_sites_file_matches_the_cli_field_for_field(vantage, tmp_path):
+    report = vantage.place(sites=str(CUBE_SITES), markers=4, out=tmp_path / "py.json")
+    cli = cli_json("place", "--sites", CUBE_SITES, "--markers", 4, "--out", tmp_path / "cli.json")
+    assert isinstance(report, vantage.PlaceReport)
+    assert_same(without_written(report.to_dict()), without_written(cli))
+    assert report.written == str(tmp_path / "py.json") and report.search == "exhaustive"
+    assert report.drawn is None and report.subsets == cli["subsets"]
+    written = json.loads((tmp_path / "py.json").read_text())
+    assert written["points"] == json.loads((tmp_path / "cli.json").read_text())["points"]
+    # The placed layout: the chosen sites, analysing to the reported numbers.
+    assert isinstance(report.layout, vantage.Layout) and len(report.layout) == 4
+    analysed = vantage.analyze(report.layout)
+    assert analysed.visibility.pbar_min == report.pbar_min
+    assert analysed.visibility.trackable_fraction == report.coverage
+
+
+def test_mesh_matches_the_cli_and_writes_nothing_without_out(vantage, tmp_path):
+    args = dict(markers=10, candidates=60, random_trials=50, seed=3)
+    report = vantage.place(str(CAPSULE), **args)
+    cli = cli_json("place", CAPSULE, "--markers", 10, "--candidates", 60, "--random-trials", 50,
+                   "--seed", 3, "--out", tmp_path / "cli.json")
+    assert_same(without_written(report.to_dict()), without_written(cli))
+    assert report.written is None and cli["written"] == str(tmp_path / "cli.json")
+    assert report.drawn == cli["drawn"] and len(report.steps) == len(cli["steps"])
+    assert list(tmp_path.iterdir()) == [tmp_path / "cli.json"]
+
+
+def small_sites(tmp_path):
+    """Eight of the cube's sites, two on each of the +x and -x faces, one on each other face."""
+    cube = json.loads(CUBE_SITES.read_text())
+    keep = [0, 1, 3, 4, 6, 9, 12, 15]
+    sites = {"name": "eight cube sites", "points": [cube["points"][i] for i in keep],
+             "normals": [cube["normals"][i] for i in keep], "visibility": cube["visibility"]}
+    path = tmp_path / "eight.json"
+    path.write_text(json.dumps(sites))
+    return path, sites
+
+
+def test_exhaustive_optimum_is_the_brute_force_best(vantage, tmp_path):
+    path, sites = small_sites(tmp_path)
+    markers = 4
+    report = vantage.place(sites=path, markers=markers)
+    assert report.search == "exhaustive"
+    best = None
+    for subset in itertools.combinations(range(len(sites["points"])), markers):
+        layout = vantage.Layout(points=[sites["points"][i] for i in subset],
+                                normals=[sites["normals"][i] for i in subset],
+                                visibility=sites["visibility"])
+        try:
+            v = vantage.analyze(layout, crosscheck=False).visibility
+        except vantage.NumericalError as error:
+            v = error.result.visibility
+        value = (v.trackable_fraction, v.pbar_min if v.certificate.certified else 0.0)
+        best = value if best is None or value > best else best
+    assert report.coverage == best[0]
+    assert report.pbar_min == pytest.approx(best[1], abs=OBJECTIVE_TIE)
+
+
+def test_bad_input_raises_naming_the_keyword(vantage, tmp_path):
+    out = tmp_path / "o.json"
+    calls = [
+        ("body", dict(body=str(CAPSULE), sites=str(CUBE_SITES), markers=4)),
+        ("body", dict(markers=4)),
+        ("markers", dict(sites=str(CUBE_SITES), markers=2)),
+        ("markers", dict(sites=str(CUBE_SITES), markers=17)),
+        ("min_separation", dict(sites=str(CUBE_SITES), markers=4, min_separation=-1.0)),
+        ("candidates", dict(sites=str(CUBE_SITES), markers=4, candidates=10)),
+        ("cone_deg", dict(sites=str(CUBE_SITES), markers=4, cone_deg=200.0)),
+        ("workspace", dict(sites=str(CUBE_SITES), markers=4, workspace=(0.0, 0.0, 1.0))),
+        ("out", dict(sites=str(CUBE_SITES), markers=4, out=tmp_path / "none" / "o.json")),
+    ]
+    for field, kwargs in calls:
+        with pytest.raises(ValueError) as error:
+            vantage.place(out=kwargs.pop("out", out), **kwargs)
+        assert error.value.field == field, (field, str(error.value))
+    assert not out.exists() and not (tmp_path / "none").exists()
+
+
+def test_everything_after_body_is_keyword_only(vantage):
+    parameters = list(inspect.signature(vantage.place).parameters.values())
+    assert parameters[0].name == "body"
+    assert parameters[0].kind is inspect.Parameter.POSITIONAL_OR_KEYWORD
+    assert all(p.kind is inspect.Parameter.KEYWORD_ONLY for p in parameters[1:])
+    markers = next(p for p in parameters if p.name == "markers")
+    assert markers.default is inspect.Parameter.empty
