@@ -208,15 +208,17 @@ void check_request(const Request& request) {
   }
   if (request.out.empty()) return;
   if (!place_valid_utf8(request.out)) place_refuse("--out", "the file name is not valid UTF-8");
+  bool json = false;
   try {
-    if (io::layout_write_format(request.out) != io::LayoutFormat::kJson) {
-      place_refuse("--out", request.out +
-                                ": write the placed layout as .json (it keeps normals, body, "
-                                "workspace and the placement record)");
-    }
-    io::check_write_target(request.out, request.overwrite);
+    json = io::layout_write_format(request.out) == io::LayoutFormat::kJson;
+    if (json) io::check_write_target(request.out, request.overwrite);
   } catch (const InvalidArgument& e) {
     place_refuse("--out", e.what());
+  }
+  if (!json) {
+    place_refuse("--out", request.out +
+                              ": write the placed layout as .json (it keeps normals, body, "
+                              "workspace and the placement record)");
   }
 }
 

@@ -144,6 +144,8 @@ TEST(PlaceCli, BadInputGetsOneLineAndWritesNothing) {
       {"--out a directory", nullptr, "--sites sites.json --markers 4 --out adir --overwrite",
        "--out"},
       {"neither body nor sites", nullptr, "--markers 4 --out o.json", "BODY"},
+      {"--out a CSV file (named once)", nullptr, "--sites sites.json --markers 4 --out o.csv",
+       "error: --out: o.csv: write the placed layout as .json"},
   };
   for (const BadCall& call : calls) {
     SCOPED_TRACE(call.name);
