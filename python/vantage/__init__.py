@@ -29,12 +29,15 @@ import numpy.typing as npt
 
 from . import _vantage
 from ._results import (
-    BoundCheck, Certificate, CrbBound, CrbReport, CrbSweepRow, Crosscheck, DesignCoplanarity, DesignDirect, DesignResult,
-    DesignState, DesignStep, DistanceDifference, DropoutEntry, EstimatorStats, IdentPair, IdentReport, IdentTool, Identification, LayoutCoplanarity, LayoutReport,
-    LayoutVisibility, LostRegion, Orientation, PaperLmi, PerTrial, PlaceBaseline, PlaceReport, PlaceRobust, PlaceStep,
-    PoseAlternative, PoseCamera,
-    PoseEstimate, SimulationReport, SimulationVisibility, Solver, Statistic, Swap, TreAtDirection,
-    TreExtreme, TreMonteCarlo, TreReport, TreTarget, VisibilityCertificate, VisibilityDropoutEntry, WeightsResult, WeightsSuggestion, Workspace,
+    BoundCheck, Certificate, Crosscheck, DesignCoplanarity, DesignDirect, DesignResult, DesignState,
+    DesignStep, DistanceDifference, DropoutEntry, EstimatorStats, Identification, LayoutCoplanarity,
+    LayoutReport, LayoutVisibility, LostRegion, Orientation, PaperLmi, PerTrial, PoseAlternative,
+    PoseCamera, PoseEstimate, SimulationReport, SimulationVisibility, Solver, Statistic, Swap,
+    VisibilityCertificate, VisibilityDropoutEntry, WeightsResult, WeightsSuggestion, Workspace,
+)
+from ._tool_results import (
+    CrbBound, CrbReport, CrbSweepRow, IdentPair, IdentReport, IdentTool, PlaceBaseline, PlaceReport,
+    PlaceRobust, PlaceStep, TreAtDirection, TreExtreme, TreMonteCarlo, TreReport, TreTarget,
 )
 from ._vantage import (
     Layout,
