@@ -8,9 +8,9 @@
 #include "canvas.h"
 #include "output_file.h"
 #include "sphere_map_drawing.h"
+#include "sphere_value_cells.h"
 #include "style.h"
 #include "vantage/analysis/common.h"
-#include "vantage/analysis/parallel.h"
 #include "vantage/plot/crb_figures.h"
 #include "vantage/plot/sphere_map.h"
 #include "vantage/plot/viewpoint_map.h"
@@ -31,43 +31,14 @@ constexpr double kMinDecades = 0.1;
 // Count regions smaller than this fraction of a disc carry no number (too small to read).
 constexpr double kLabelledRegionFraction = 0.006;
 
-// The bound at every cell centre of both discs: the picture's cells as SphereSamples (visible
-// counts and flags, for the shared boundary drawing) and rot_rms_deg (NaN: not trackable).
-struct CrbCells {
-  SphereSamples samples;
-  std::array<Eigen::MatrixXd, 2> rot_rms_deg;
-};
-
-CrbCells sample_cells(const sdp::PoseCrbModel& model, int n, int threads) {
-  CrbCells cells;
-  SphereSamples& s = cells.samples;
-  s.samples_per_axis = n;
-  for (int d = 0; d < 2; ++d) {
-    s.visible[d].resize(n, n);
-    s.t[d] = Eigen::MatrixXd::Zero(n, n);
-    s.trackable[d].resize(n, n);
-    s.in_workspace[d].resize(n, n);
-    s.inside[d].resize(n, n);
-    cells.rot_rms_deg[d].resize(n, n);
-  }
-  parallel_blocks(2L * n, threads, [&](long begin, long end) {
-    for (long k = begin; k < end; ++k) {
-      const int d = static_cast<int>(k / n), r = static_cast<int>(k % n);
-      for (int c = 0; c < n; ++c) {
-        const Eigen::Vector3d a = s.direction(d, r, c);
-        const PoseCrbAt at = model.at(a);
-        s.visible[d](r, c) = static_cast<int>(at.visible_markers.size());
-        s.trackable[d](r, c) = at.trackable;
-        s.in_workspace[d](r, c) = model.in_workspace(a);
-        const Eigen::Vector2d xy(SphereSamples::cell_centre(c, n),
-                                 SphereSamples::cell_centre(n - 1 - r, n));
-        s.inside[d](r, c) = xy.squaredNorm() <= 1.0;
-        cells.rot_rms_deg[d](r, c) =
-            at.trackable ? at.rot_rms_deg : std::numeric_limits<double>::quiet_NaN();
-      }
-    }
+// The bound at every cell centre of both discs: the cells, and rot_rms_deg as their value
+// (NaN: not trackable).
+internal::ValueCells sample_cells(const sdp::PoseCrbModel& model, int n, int threads) {
+  return internal::sample_value_cells(n, threads, [&](const Eigen::Vector3d& a) {
+    const PoseCrbAt at = model.at(a);
+    return internal::CellValue{static_cast<int>(at.visible_markers.size()), at.trackable,
+                               model.in_workspace(a), at.rot_rms_deg};
   });
-  return cells;
 }
 
 // The colour scale's decades: from the smallest cell (or the best direction) to the worst.
@@ -76,16 +47,9 @@ struct LogScale {
   double hi = 1.0;
 };
 
-LogScale log_scale(const CrbCells& cells, const PoseCrbMap& map) {
+LogScale log_scale(const internal::ValueCells& cells, const PoseCrbMap& map) {
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
-  for (int d = 0; d < 2; ++d) {
-    for (Eigen::Index k = 0; k < cells.rot_rms_deg[d].size(); ++k) {
-      const double v = cells.rot_rms_deg[d](k);
-      if (std::isnan(v) || !cells.samples.inside[d](k)) continue;
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
-    }
-  }
+  internal::widen_to_cells(cells, &lo, &hi);
   if (map.status == PoseCrbMap::Status::kOk) {
     lo = std::min(lo, map.best.rot_rms_deg);
     hi = std::max(hi, map.worst.rot_rms_deg);
@@ -96,23 +60,10 @@ LogScale log_scale(const CrbCells& cells, const PoseCrbMap& map) {
   return scale;
 }
 
-internal::Raster bound_raster(const CrbCells& cells, int d, const LogScale& scale) {
-  const int n = cells.samples.samples_per_axis;
-  internal::Raster raster;
-  raster.width = raster.height = n;
-  raster.argb.resize(static_cast<std::size_t>(n) * n);
-  for (int r = 0; r < n; ++r) {
-    for (int c = 0; c < n; ++c) {
-      Rgb colour = kOutsideWorkspaceColour;
-      if (cells.samples.trackable[d](r, c)) {
-        colour = value_colour(std::log10(cells.rot_rms_deg[d](r, c)), scale.lo, scale.hi);
-      } else if (cells.samples.in_workspace[d](r, c)) {
-        colour = kUntrackableColour;
-      }
-      raster.argb[static_cast<std::size_t>(r) * n + c] = internal::opaque_argb(colour);
-    }
-  }
-  return raster;
+internal::Raster bound_raster(const internal::ValueCells& cells, int d, const LogScale& scale) {
+  return internal::trackable_raster(cells.samples, d, [&](int r, int c) {
+    return value_colour(std::log10(cells.value[d](r, c)), scale.lo, scale.hi);
+  });
 }
 
 void write_row(internal::CsvWriter& csv, const char* kind, int disc, const PoseCrbAt& at) {
@@ -157,7 +108,8 @@ std::string at_summary(const PoseCrbAt& at) {
          std::to_string(at.visible_markers.size()) + " markers seen";
 }
 
-void draw_legends(Canvas& canvas, const sdp::PoseCrbReport& report, const CrbCells& cells) {
+void draw_legends(Canvas& canvas, const sdp::PoseCrbReport& report,
+                  const internal::ValueCells& cells) {
   using internal::fixed;
   using Entry = Canvas::LegendEntry;
   const double s = internal::page_scale(canvas);
@@ -212,7 +164,7 @@ void draw_extremes(Canvas& canvas, const PoseCrbMap& map) {
                {25, 25, 25}, {255, 255, 255}, 0.85);
 }
 
-void draw_map(Canvas& canvas, const CrbMapData& data, const CrbCells& cells,
+void draw_map(Canvas& canvas, const CrbMapData& data, const internal::ValueCells& cells,
               const FigureOptions& options) {
   const sdp::PoseCrbReport& report = *data.report;
   const sdp::PoseCrbOptions& camera = report.camera;
@@ -253,7 +205,8 @@ void check(const CrbMapData& data) {
 FigureFiles write_crb_map(const CrbMapData& data, const std::filesystem::path& directory,
                           const FigureOptions& options) {
   check(data);
-  const CrbCells cells = sample_cells(*data.model, data.samples_per_axis, options.threads);
+  const internal::ValueCells cells =
+      sample_cells(*data.model, data.samples_per_axis, options.threads);
   const FigureFiles files = figure_files("crb_map", directory, options.format);
   Canvas canvas(files.image, options);
   draw_map(canvas, data, cells, options);

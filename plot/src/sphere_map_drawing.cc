@@ -33,6 +33,26 @@ void select_disc(Canvas& canvas, int d) {
   canvas.pls().wind(-kWindow, kWindow, -kWindow, kWindow);
 }
 
+Raster trackable_raster(const SphereSamples& samples, int d,
+                        const std::function<Rgb(int r, int c)>& trackable_colour) {
+  const int n = samples.samples_per_axis;
+  Raster raster;
+  raster.width = raster.height = n;
+  raster.argb.resize(static_cast<std::size_t>(n) * n);
+  for (int r = 0; r < n; ++r) {
+    for (int c = 0; c < n; ++c) {
+      Rgb colour = kOutsideWorkspaceColour;
+      if (samples.trackable[d](r, c)) {
+        colour = trackable_colour(r, c);
+      } else if (samples.in_workspace[d](r, c)) {
+        colour = kUntrackableColour;
+      }
+      raster.argb[static_cast<std::size_t>(r) * n + c] = opaque_argb(colour);
+    }
+  }
+  return raster;
+}
+
 void paint_disc(Canvas& canvas, int d, const Raster& raster) {
   select_disc(canvas, d);
   canvas.clip_to_unit_disc();

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -58,5 +59,10 @@ void mark_direction(Canvas& canvas, const Eigen::Vector3d& a, double radius_px, 
 inline std::uint32_t opaque_argb(Rgb c) {
   return 0xff000000u | (std::uint32_t{c.r} << 16) | (std::uint32_t{c.g} << 8) | c.b;
 }
+
+/// The raster of disc d of `samples`: a trackable cell (row r, column c) in `trackable_colour(r,
+/// c)`, any other cell of the workspace untrackable grey, the rest the outside-workspace colour.
+Raster trackable_raster(const SphereSamples& samples, int d,
+                        const std::function<Rgb(int r, int c)>& trackable_colour);
 
 }  // namespace vantage::plot::internal

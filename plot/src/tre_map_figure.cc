@@ -8,10 +8,10 @@
 #include "canvas.h"
 #include "output_file.h"
 #include "sphere_map_drawing.h"
+#include "sphere_value_cells.h"
 #include "style.h"
 #include "tre_figure_text.h"
 #include "vantage/analysis/common.h"
-#include "vantage/analysis/parallel.h"
 #include "vantage/plot/sphere_map.h"
 #include "vantage/plot/tre_figures.h"
 #include "vantage/plot/viewpoint_map.h"
@@ -32,43 +32,15 @@ constexpr double kTreMapLabelledFraction = 0.006;
 // map would otherwise divide by zero).
 constexpr double kTreMapMinSpan = 1e-3;
 
-// The picture's cells as SphereSamples (visible counts and flags, for the shared boundary
-// drawing) and the RMS TRE of the first target (NaN: not tracked).
-struct TreMapCells {
-  SphereSamples samples;
-  std::array<Eigen::MatrixXd, 2> rms;
-};
-
-TreMapCells sample_tre_cells(const sdp::TreModel& model, const Eigen::Vector3d& target, int n,
-                             int threads) {
-  TreMapCells cells;
-  SphereSamples& s = cells.samples;
-  s.samples_per_axis = n;
-  for (int d = 0; d < 2; ++d) {
-    s.visible[d].resize(n, n);
-    s.t[d] = Eigen::MatrixXd::Zero(n, n);
-    s.trackable[d].resize(n, n);
-    s.in_workspace[d].resize(n, n);
-    s.inside[d].resize(n, n);
-    cells.rms[d].resize(n, n);
-  }
-  parallel_blocks(2L * n, threads, [&](long begin, long end) {
-    for (long k = begin; k < end; ++k) {
-      const int d = static_cast<int>(k / n), r = static_cast<int>(k % n);
-      for (int c = 0; c < n; ++c) {
-        const Eigen::Vector3d a = s.direction(d, r, c);
-        const TreAtDirection at = model.at(target, a);
-        s.visible[d](r, c) = static_cast<int>(at.visible_markers.size());
-        s.trackable[d](r, c) = at.tracked;
-        s.in_workspace[d](r, c) = model.in_workspace(a);
-        const Eigen::Vector2d xy(SphereSamples::cell_centre(c, n),
-                                 SphereSamples::cell_centre(n - 1 - r, n));
-        s.inside[d](r, c) = xy.squaredNorm() <= 1.0;
-        cells.rms[d](r, c) = at.tracked ? at.rms : std::numeric_limits<double>::quiet_NaN();
-      }
-    }
+// The cells of the picture, and the RMS TRE of the first target as their value (NaN: not
+// tracked).
+internal::ValueCells sample_tre_cells(const sdp::TreModel& model, const Eigen::Vector3d& target,
+                                      int n, int threads) {
+  return internal::sample_value_cells(n, threads, [&](const Eigen::Vector3d& a) {
+    const TreAtDirection at = model.at(target, a);
+    return internal::CellValue{static_cast<int>(at.visible_markers.size()), at.tracked,
+                               model.in_workspace(a), at.rms};
   });
-  return cells;
 }
 
 struct TreMapScale {
@@ -76,16 +48,9 @@ struct TreMapScale {
   double hi = 1.0;
 };
 
-TreMapScale tre_map_scale(const TreMapCells& cells, const sdp::TreExtremes& extremes) {
+TreMapScale tre_map_scale(const internal::ValueCells& cells, const sdp::TreExtremes& extremes) {
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
-  for (int d = 0; d < 2; ++d) {
-    for (Eigen::Index k = 0; k < cells.rms[d].size(); ++k) {
-      const double v = cells.rms[d](k);
-      if (std::isnan(v) || !cells.samples.inside[d](k)) continue;
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
-    }
-  }
+  internal::widen_to_cells(cells, &lo, &hi);
   for (const TreExtreme* e : {&extremes.worst, &extremes.best}) {
     if (e->status == TreExtreme::Status::kUntracked) continue;
     lo = std::min(lo, e->rms);
@@ -95,23 +60,10 @@ TreMapScale tre_map_scale(const TreMapCells& cells, const sdp::TreExtremes& extr
   return {lo, std::max(hi, lo + kTreMapMinSpan * hi)};
 }
 
-internal::Raster tre_raster(const TreMapCells& cells, int d, const TreMapScale& scale) {
-  const int n = cells.samples.samples_per_axis;
-  internal::Raster raster;
-  raster.width = raster.height = n;
-  raster.argb.resize(static_cast<std::size_t>(n) * n);
-  for (int r = 0; r < n; ++r) {
-    for (int c = 0; c < n; ++c) {
-      Rgb colour = kOutsideWorkspaceColour;
-      if (cells.samples.trackable[d](r, c)) {
-        colour = value_colour(cells.rms[d](r, c), scale.lo, scale.hi);
-      } else if (cells.samples.in_workspace[d](r, c)) {
-        colour = kUntrackableColour;
-      }
-      raster.argb[static_cast<std::size_t>(r) * n + c] = internal::opaque_argb(colour);
-    }
-  }
-  return raster;
+internal::Raster tre_raster(const internal::ValueCells& cells, int d, const TreMapScale& scale) {
+  return internal::trackable_raster(cells.samples, d, [&](int r, int c) {
+    return value_colour(cells.value[d](r, c), scale.lo, scale.hi);
+  });
 }
 
 void write_tre_map_row(internal::CsvWriter& csv, const char* kind, int disc,
@@ -161,7 +113,8 @@ std::string tre_extreme_text(const char* what, const TreExtreme& e) {
          (e.closed_form ? "exact" : sdp::to_string(e.status));
 }
 
-void draw_tre_map_legends(Canvas& canvas, const sdp::TreSweeps& sweeps, const TreMapCells& cells) {
+void draw_tre_map_legends(Canvas& canvas, const sdp::TreSweeps& sweeps,
+                          const internal::ValueCells& cells) {
   using Entry = Canvas::LegendEntry;
   const double s = internal::page_scale(canvas);
   const sdp::TreExtremes& x = sweeps.report.targets.front().extremes;
@@ -200,7 +153,7 @@ void draw_tre_map_extremes(Canvas& canvas, const sdp::TreExtremes& x) {
                internal::kSmallSize * s, {25, 25, 25}, {255, 255, 255}, 0.85);
 }
 
-void draw_tre_map(Canvas& canvas, const TreMapData& data, const TreMapCells& cells,
+void draw_tre_map(Canvas& canvas, const TreMapData& data, const internal::ValueCells& cells,
                   const FigureOptions& options) {
   const sdp::TreTargetReport& first = data.sweeps->report.targets.front();
   internal::draw_title(
@@ -244,7 +197,7 @@ void check_tre_map(const TreMapData& data) {
 FigureFiles write_tre_map(const TreMapData& data, const std::filesystem::path& directory,
                           const FigureOptions& options) {
   check_tre_map(data);
-  const TreMapCells cells =
+  const internal::ValueCells cells =
       sample_tre_cells(*data.model, data.sweeps->report.targets.front().target,
                        data.samples_per_axis, options.threads);
   const FigureFiles files = figure_files("tre_map", directory, options.format);

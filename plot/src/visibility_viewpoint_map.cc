@@ -20,22 +20,9 @@ constexpr double kErrorLabelledFraction = 0.006;
 
 // The error of each trackable cell on the value map, grey elsewhere.
 internal::Raster error_raster(const SphereSamples& s, int d, double hi) {
-  const int n = s.samples_per_axis;
-  internal::Raster raster;
-  raster.width = raster.height = n;
-  raster.argb.resize(static_cast<std::size_t>(n) * n);
-  for (int r = 0; r < n; ++r) {
-    for (int c = 0; c < n; ++c) {
-      Rgb colour = kOutsideWorkspaceColour;
-      if (s.trackable[d](r, c)) {
-        colour = value_colour(internal::visibility_error_deg(s.t[d](r, c)), 0.0, hi);
-      } else if (s.in_workspace[d](r, c)) {
-        colour = kUntrackableColour;
-      }
-      raster.argb[static_cast<std::size_t>(r) * n + c] = internal::opaque_argb(colour);
-    }
-  }
-  return raster;
+  return internal::trackable_raster(s, d, [&](int r, int c) {
+    return value_colour(internal::visibility_error_deg(s.t[d](r, c)), 0.0, hi);
+  });
 }
 
 void write_error_csv(const VisibilityMapData& data, const std::filesystem::path& path) {
