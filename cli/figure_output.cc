@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <iostream>
 
 namespace vantage::cli {
 
@@ -51,6 +52,14 @@ Json figure_files_json(const std::vector<plot::FigureFiles>& files) {
     list.push_back({{"name", f.name}, {"image", f.image.string()}, {"csv", f.csv.string()}});
   }
   return list;
+}
+
+void print_figure_files(const std::vector<plot::FigureFiles>& files, plot::Format format) {
+  std::cout << files.size() << " figure" << (files.size() == 1 ? "" : "s") << " written ("
+            << plot::to_string(format) << " + csv):\n";
+  for (const plot::FigureFiles& f : files) {
+    std::cout << "  " << f.image.string() << "\n  " << f.csv.string() << "\n";
+  }
 }
 
 }  // namespace vantage::cli

@@ -2,7 +2,7 @@
 
 // Shared by `vantage plot` and `vantage design --plot`: the checks on a figure directory that
 // run before any work (so that bad input writes nothing), its creation, and the figure list as
-// JSON.
+// JSON and as text.
 
 #include <string>
 #include <vector>
@@ -22,5 +22,8 @@ void create_figure_directory(const std::string& option, const std::string& direc
 
 /// [{"name", "image", "csv"}, ...]
 Json figure_files_json(const std::vector<plot::FigureFiles>& files);
+
+/// "N figures written (png + csv):" and each figure's image and CSV, one per line, on stdout.
+void print_figure_files(const std::vector<plot::FigureFiles>& files, plot::Format format);
 
 }  // namespace vantage::cli

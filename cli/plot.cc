@@ -155,12 +155,8 @@ int run_experiment_plot(const PlotArgs& args) {
     out["figures"] = figure_files_json(files);
     print_json(out);
   } else {
-    std::cout << "vantage plot: experiment " << args.experiment << "\n"
-              << files.size() << " figure" << (files.size() == 1 ? "" : "s") << " written ("
-              << plot::to_string(options.format) << " + csv):\n";
-    for (const plot::FigureFiles& f : files) {
-      std::cout << "  " << f.image.string() << "\n  " << f.csv.string() << "\n";
-    }
+    std::cout << "vantage plot: experiment " << args.experiment << "\n";
+    print_figure_files(files, options.format);
   }
   return kExitOk;
 }
@@ -207,11 +203,7 @@ void print_crb_plot(const PlotArgs& args, const Layout& layout, const plot::CrbF
   } else {
     std::cout << "no sampled direction is trackable\n";
   }
-  std::cout << figures.files.size() << " figures written (" << plot::to_string(options.format)
-            << " + csv):\n";
-  for (const plot::FigureFiles& f : figures.files) {
-    std::cout << "  " << f.image.string() << "\n  " << f.csv.string() << "\n";
-  }
+  print_figure_files(figures.files, options.format);
 }
 
 // `vantage plot LAYOUT --crb --distance D --focal F --noise-px S`: crb_map and crb_sweep.
@@ -284,11 +276,7 @@ void print_tre_plot(const PlotArgs& args, const Layout& layout, const plot::TreF
   } else {
     std::cout << "no line of sight tracks the tool\n";
   }
-  std::cout << figures.files.size() << " figures written (" << plot::to_string(options.format)
-            << " + csv):\n";
-  for (const plot::FigureFiles& f : figures.files) {
-    std::cout << "  " << f.image.string() << "\n  " << f.csv.string() << "\n";
-  }
+  print_figure_files(figures.files, options.format);
 }
 
 // `vantage plot LAYOUT --tre --target X,Y,Z (--fle-rms F | --fle-sigma SP,SD)`: tre_tip_axis,
@@ -420,11 +408,7 @@ int run_plot(const PlotArgs& args) {
                 << " deg, trackable " << format_number(100.0 * *figures.trackable_fraction, 4)
                 << " %\n";
     }
-    std::cout << figures.files.size() << " figure" << (figures.files.size() == 1 ? "" : "s")
-              << " written (" << plot::to_string(options.figure.format) << " + csv):\n";
-    for (const plot::FigureFiles& f : figures.files) {
-      std::cout << "  " << f.image.string() << "\n  " << f.csv.string() << "\n";
-    }
+    print_figure_files(figures.files, options.figure.format);
   }
   if (!certified) {
     std::cerr << "vantage: warning: " << figures.message << std::endl;
