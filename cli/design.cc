@@ -3,8 +3,6 @@
 // augmenter of McInroy et al. (Sec. III.E, text around Fig. 3) done on the global worst viewpoint
 // (docs/math.md §13, §15).
 
-#include <sys/stat.h>
-
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -111,10 +109,7 @@ void check_write_target(const DesignArgs& args) {
   if (!is_valid_utf8(args.write)) {
     bad("--write: the file name is not valid UTF-8 (the report could not name it)");
   }
-  struct stat out = {};
-  struct stat in = {};
-  if (!args.overwrite && ::stat(args.write.c_str(), &out) == 0 &&
-      ::stat(args.file.c_str(), &in) == 0 && out.st_dev == in.st_dev && out.st_ino == in.st_ino) {
+  if (!args.overwrite && io::same_file(args.write, args.file)) {
     bad("--write: " + args.write + " is the input layout; refusing to overwrite it without " +
         "--overwrite");
   }

@@ -1,7 +1,8 @@
 // `vantage simulate LAYOUT --trials N [--camera affine|pinhole] [--noise-px S | --snr-db X]
 // [--noise gaussian|uniform] [--range R] [--focal F] [--principal-point U V] [--offset X Y]
 // [--viewpoint worst|random|AX,AY,AZ] [--methods a,b] [--seed S] [--threads T] [--shard K/N]
-// [--per-trial] [--csv FILE] [--json] [--quiet]` and `vantage simulate --merge A.json B.json ...`:
+// [--per-trial] [--csv FILE [--overwrite]] [--json] [--quiet]` and
+// `vantage simulate --merge A.json B.json ...`:
 // Monte Carlo runs of every applicable estimator on one layout, the bound check of Eq. (26) and
 // Eq. (30) (affine camera), and the exact merge of sharded runs.
 
@@ -45,6 +46,7 @@ struct SimulateArgs {
   std::string shard;
   bool per_trial = false;
   std::string csv;
+  bool overwrite = false;
   bool json = false;
   bool quiet = false;
   std::vector<std::string> merge;
@@ -166,10 +168,21 @@ std::string csv_rows(const std::vector<std::string>& names, long trial,
 }
 
 /// The --csv file, checked before the run and written all or nothing as the trials stream by.
-std::unique_ptr<io::AtomicTextFile> open_csv(const std::string& path) {
+/// An existing file is replaced only with --overwrite, and never when it is one of the run's own
+/// inputs (the layout or a --merge shard): trial rows are no replacement for either.
+std::unique_ptr<io::AtomicTextFile> open_csv(const SimulateArgs& args) {
+  const std::string& path = args.csv;
   if (path.empty()) return nullptr;
+  std::vector<std::string> inputs = args.merge;
+  inputs.push_back(args.file);
+  for (const std::string& input : inputs) {
+    if (!input.empty() && io::same_file(path, input)) {
+      throw InvalidArgument("--csv: " + path + " is an input of this run (" + input +
+                            "); refusing to replace it with the trial rows");
+    }
+  }
   try {
-    auto file = std::make_unique<io::AtomicTextFile>(path, true);
+    auto file = std::make_unique<io::AtomicTextFile>(path, args.overwrite);
     file->write(kCsvHeader);
     return file;
   } catch (const InvalidArgument& e) {
@@ -389,7 +402,7 @@ Report merge_files(const std::vector<std::string>& files, bool allow_large) {
 int run_simulate(const SimulateArgs& args) {
   check_args(args);
   const bool merging = !args.merge.empty();
-  const std::unique_ptr<io::AtomicTextFile> csv = open_csv(args.csv);
+  const std::unique_ptr<io::AtomicTextFile> csv = open_csv(args);
   Report report;
   try {
     report = merging ? merge_files(args.merge, args.allow_large) : run_layout(args, csv.get());
@@ -472,7 +485,10 @@ Command add_simulate_command(CLI::App& root) {
                   "run the K-th of N deterministic slices of the trials (K/N); the JSON carries "
                   "the per-trial values for --merge");
   sub->add_flag("--per-trial", args->per_trial, "include the per-trial values in the JSON");
-  sub->add_option("--csv", args->csv, "write one row per trial and estimator to FILE");
+  sub->add_option("--csv", args->csv,
+                  "write one row per trial and estimator to FILE (a new file, or an existing "
+                  "one with --overwrite)");
+  sub->add_flag("--overwrite", args->overwrite, "replace --csv if it exists");
   sub->add_option("--merge", args->merge, "merge the JSON outputs of --shard runs")
       ->expected(1, -1);
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");

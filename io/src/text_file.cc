@@ -167,6 +167,13 @@ void check_write_target(const std::string& path, bool overwrite) {
   }
 }
 
+bool same_file(const std::string& a, const std::string& b) {
+  struct stat first {};
+  struct stat second {};
+  return ::stat(a.c_str(), &first) == 0 && ::stat(b.c_str(), &second) == 0 &&
+         first.st_dev == second.st_dev && first.st_ino == second.st_ino;
+}
+
 AtomicTextFile::AtomicTextFile(const std::string& path, bool overwrite)
     : path_(path), overwrite_(overwrite) {
   check_write_target(path, overwrite);

@@ -94,6 +94,46 @@ TEST(WriteTargetsCli, RegularFileIsStillReplaced) {
   }
 }
 
+// Issue 36, item 1: `simulate k14.csv --trials 10 --csv k14.csv` replaced the layout with trial
+// rows. --csv follows the write rule (a new name, or an existing regular file with --overwrite)
+// and never replaces one of the run's own inputs, with --overwrite or without.
+TEST(WriteTargetsCli, SimulateCsvReplacesNothingUnasked) {
+  ScratchDir scratch;
+  const std::string layout = "x,y,z\n0,0,0\n1,0,0\n0,1,0\n0,0,1\n";
+  scratch.write("k4.csv", layout);
+  scratch.write("old.csv", "old");
+  const std::string simulate = "simulate k4.csv --trials 10 --seed 3 --quiet";
+
+  expect_bad_input(run_vantage(simulate + " --csv old.csv", scratch),
+                   "--csv: old.csv: exists already");
+  EXPECT_EQ(testing::read_file(scratch.path("old.csv")), "old");
+  for (const char* overwrite : {"", " --overwrite"}) {
+    expect_bad_input(run_vantage(simulate + " --csv k4.csv" + overwrite, scratch),
+                     "--csv: k4.csv is an input of this run");
+    // The same file by another name is the same input.
+    expect_bad_input(run_vantage(simulate + " --csv ./k4.csv" + overwrite, scratch),
+                     "is an input of this run");
+    EXPECT_EQ(testing::read_file(scratch.path("k4.csv")), layout);
+  }
+
+  const testing::CliRun run = run_vantage(simulate + " --csv old.csv --overwrite", scratch);
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_THAT(testing::read_file(scratch.path("old.csv")), HasSubstr("trial,"));
+}
+
+// A shard file given to --merge is an input too.
+TEST(WriteTargetsCli, SimulateMergeCsvKeepsItsShards) {
+  ScratchDir scratch;
+  scratch.write("in.json", kTriadText);
+  const testing::CliRun shard =
+      run_vantage("simulate in.json --trials 20 --shard 1/1 --json --quiet", scratch);
+  ASSERT_EQ(shard.status, 0) << shard.err;
+  scratch.write("shard.json", shard.out);
+  expect_bad_input(run_vantage("simulate --merge shard.json --csv shard.json --overwrite", scratch),
+                   "--csv: shard.json is an input of this run");
+  EXPECT_EQ(testing::read_file(scratch.path("shard.json")), shard.out);
+}
+
 // A tmpfs of 64 KiB, filled: where vantage must fail to write. Needs root and a kernel that lets
 // this process mount; otherwise the test is skipped with the reason printed.
 class FullDisk {

@@ -84,6 +84,11 @@ class AtomicTextFile {
 /// and is writable. Throws InvalidArgument "<path>: <problem>".
 void check_write_target(const std::string& path, bool overwrite);
 
+/// True when `a` and `b` name the same existing file (the same device and inode, through any
+/// link or spelling of the path); false when either does not exist. A command checks it before
+/// it writes, so that its output never replaces one of its own inputs unasked.
+bool same_file(const std::string& a, const std::string& b);
+
 /// An exclusive advisory lock (flock) on `path`'s lock file (".<name>.lock" beside it), held
 /// for the object's lifetime, so that a second run writing the same target fails at once
 /// instead of after its whole computation. The lock file is removed on release.
