@@ -99,7 +99,7 @@ TEST(WriteTargetsCli, RegularFileIsStillReplaced) {
 // and never replaces one of the run's own inputs, with --overwrite or without.
 TEST(WriteTargetsCli, SimulateCsvReplacesNothingUnasked) {
   ScratchDir scratch;
-  const std::string layout = "x,y,z\n0,0,0\n1,0,0\n0,1,0\n0,0,1\n";
+  const std::string layout = "name,x,y,z\nm0,0,0,0\nm1,1,0,0\nm2,0,1,0\nm3,0,0,1\n";
   scratch.write("k4.csv", layout);
   scratch.write("old.csv", "old");
   const std::string simulate = "simulate k4.csv --trials 10 --seed 3 --quiet";
