@@ -6,16 +6,16 @@
 #include <benchmark/benchmark.h>
 
 #include "ellipsoid_layout.h"
-#include "vantage/sdp/pose_crb.h"
-#include "vantage/sdp/visibility.h"
-#include "vantage/sdp/visibility_model.h"
+#include "vantage/camera/pose_crb.h"
+#include "vantage/visibility/visibility.h"
+#include "vantage/visibility/visibility_model.h"
 
 namespace {
 
 constexpr int kDirections = 10000;
 
-vantage::sdp::PoseCrbOptions bench_camera() {
-  vantage::sdp::PoseCrbOptions o;
+vantage::camera::PoseCrbOptions bench_camera() {
+  vantage::camera::PoseCrbOptions o;
   o.distance = 8.0;
   o.focal_length = 900.0;
   o.noise_px = 0.3;
@@ -27,10 +27,11 @@ vantage::sdp::PoseCrbOptions bench_camera() {
 void BM_CrbMapBaseline(benchmark::State& state) {
   const vantage::Layout layout =
       vantage_bench::ellipsoid_layout(static_cast<int>(state.range(0)), false);
-  const vantage::sdp::VisibilityModel model = vantage::sdp::VisibilityModel::of(layout);
+  const vantage::visibility::VisibilityModel model =
+      vantage::visibility::VisibilityModel::of(layout);
   for (auto _ : state) {
-    const vantage::sdp::VisibilityCoverage c =
-        vantage::sdp::visibility_coverage(model.problem(), kDirections);
+    const vantage::visibility::VisibilityCoverage c =
+        vantage::visibility::visibility_coverage(model.problem(), kDirections);
     benchmark::DoNotOptimize(c.trackable_fraction);
   }
 }
@@ -39,10 +40,10 @@ void BM_CrbMapBaseline(benchmark::State& state) {
 void BM_CrbMap(benchmark::State& state) {
   const vantage::Layout layout =
       vantage_bench::ellipsoid_layout(static_cast<int>(state.range(0)), false);
-  const vantage::sdp::PoseCrbModel model(layout, bench_camera());
+  const vantage::camera::PoseCrbModel model(layout, bench_camera());
   double worst = 0.0;
   for (auto _ : state) {
-    const vantage::sdp::PoseCrbMap map = vantage::sdp::pose_crb_map(model);
+    const vantage::camera::PoseCrbMap map = vantage::camera::pose_crb_map(model);
     benchmark::DoNotOptimize(map.worst.rot_rms_deg);
     worst = map.worst.rot_rms_deg;
   }
@@ -53,9 +54,9 @@ void BM_CrbMap(benchmark::State& state) {
 void BM_CrbMapMesh(benchmark::State& state) {
   const vantage::Layout layout =
       vantage_bench::ellipsoid_layout(static_cast<int>(state.range(0)), true);
-  const vantage::sdp::PoseCrbModel model(layout, bench_camera());
+  const vantage::camera::PoseCrbModel model(layout, bench_camera());
   for (auto _ : state) {
-    const vantage::sdp::PoseCrbMap map = vantage::sdp::pose_crb_map(model);
+    const vantage::camera::PoseCrbMap map = vantage::camera::pose_crb_map(model);
     benchmark::DoNotOptimize(map.worst.rot_rms_deg);
   }
 }

@@ -9,28 +9,28 @@
 
 #include "ellipsoid_layout.h"
 #include "vantage/design/placement.h"
-#include "vantage/sdp/visibility.h"
-#include "vantage/sdp/visibility_model.h"
+#include "vantage/visibility/visibility.h"
+#include "vantage/visibility/visibility_model.h"
 
 namespace {
 
 using vantage_bench::ellipsoid_layout;
 namespace design = vantage::design;
-namespace sdp = vantage::sdp;
+namespace visibility = vantage::visibility;
 
 constexpr double kConeDeg = 80.0;
 constexpr int kRandomTrials = 100;
 
 struct Sites {
   vantage::Layout layout;
-  sdp::VisibilityModel model;
+  visibility::VisibilityModel model;
   design::PlacementProblem problem;
 };
 
 Sites sites(int n, bool with_body, int markers) {
   vantage::Layout layout = ellipsoid_layout(n, with_body);
   layout.visibility->cone_half_angle_deg.setConstant(kConeDeg);
-  Sites out{layout, sdp::VisibilityModel::of(layout), {}};
+  Sites out{layout, visibility::VisibilityModel::of(layout), {}};
   out.problem.sites = out.model.problem();
   out.problem.markers = markers;
   return out;
@@ -46,7 +46,7 @@ design::PlaceOptions options() {
 void BM_Place_OneSearch(benchmark::State& state) {
   const Sites s = sites(static_cast<int>(state.range(0)), true, static_cast<int>(state.range(1)));
   const design::PlacementResult answer = design::place_markers(s.problem, options());
-  sdp::VisibilityProblem problem = s.problem.sites;
+  visibility::VisibilityProblem problem = s.problem.sites;
   const Eigen::Index k = static_cast<Eigen::Index>(answer.chosen.size());
   problem.points.resize(3, k);
   problem.normals.resize(3, k);
@@ -59,7 +59,7 @@ void BM_Place_OneSearch(benchmark::State& state) {
     problem.occlusion_markers.push_back(s.problem.sites.occlusion_marker(site));
   }
   for (auto _ : state) {
-    const sdp::VisibilityWorstViewpoint w = sdp::visibility_worst_viewpoint(problem);
+    const visibility::VisibilityWorstViewpoint w = visibility::visibility_worst_viewpoint(problem);
     benchmark::DoNotOptimize(w.t);
   }
 }

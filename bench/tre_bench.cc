@@ -7,16 +7,16 @@
 #include <cmath>
 
 #include "vantage/analysis/target_registration.h"
-#include "vantage/sdp/tre_search.h"
-#include "vantage/sdp/visibility.h"
+#include "vantage/tracker/tre_search.h"
+#include "vantage/visibility/visibility.h"
 
 namespace {
 
 // Ten markers on a dome of radius 40 mm (golden-angle spiral over the upper 3/4 of the sphere),
 // facing outward with 75-degree cones, at least 4 visible; the tip 150 mm below.
-vantage::sdp::VisibilityProblem tre_bench_tool() {
+vantage::visibility::VisibilityProblem tre_bench_tool() {
   constexpr int kMarkers = 10;
-  vantage::sdp::VisibilityProblem problem;
+  vantage::visibility::VisibilityProblem problem;
   problem.points.resize(3, kMarkers);
   problem.normals.resize(3, kMarkers);
   for (int i = 0; i < kMarkers; ++i) {
@@ -36,10 +36,11 @@ const Eigen::Vector3d kTip(0.0, 0.0, -150.0);
 const vantage::FleModel kNdiFle{0.0995, 0.2985};
 
 void BM_Tre_AtDirection(benchmark::State& state) {
-  const vantage::sdp::VisibilityProblem problem = tre_bench_tool();
+  const vantage::visibility::VisibilityProblem problem = tre_bench_tool();
   const Eigen::Vector3d a = Eigen::Vector3d(0.2, 0.3, 0.9).normalized();
   for (auto _ : state) {
-    const vantage::sdp::DirectionVisibility seen = vantage::sdp::direction_visibility(problem, a);
+    const vantage::visibility::DirectionVisibility seen =
+        vantage::visibility::direction_visibility(problem, a);
     benchmark::DoNotOptimize(
         vantage::tre_covariance(problem.points, seen.visible, kTip, kNdiFle, a));
   }
@@ -47,11 +48,11 @@ void BM_Tre_AtDirection(benchmark::State& state) {
 BENCHMARK(BM_Tre_AtDirection)->Unit(benchmark::kMicrosecond);
 
 void BM_Tre_Worst(benchmark::State& state) {
-  const vantage::sdp::VisibilityProblem problem = tre_bench_tool();
+  const vantage::visibility::VisibilityProblem problem = tre_bench_tool();
   long patches = 0;
   bool certified = true;
   for (auto _ : state) {
-    const vantage::sdp::TreExtremes e = vantage::sdp::tre_extremes(problem, kTip, kNdiFle);
+    const vantage::tracker::TreExtremes e = vantage::tracker::tre_extremes(problem, kTip, kNdiFle);
     patches = e.worst.patches + e.best.patches;
     certified = certified && e.worst.certified() && e.best.certified();
     benchmark::DoNotOptimize(e);
@@ -62,9 +63,10 @@ void BM_Tre_Worst(benchmark::State& state) {
 BENCHMARK(BM_Tre_Worst)->Unit(benchmark::kMillisecond);
 
 void BM_Tre_MonteCarlo(benchmark::State& state) {
-  const vantage::sdp::VisibilityProblem problem = tre_bench_tool();
+  const vantage::visibility::VisibilityProblem problem = tre_bench_tool();
   const Eigen::Vector3d a = Eigen::Vector3d(0.2, 0.3, 0.9).normalized();
-  const vantage::sdp::DirectionVisibility seen = vantage::sdp::direction_visibility(problem, a);
+  const vantage::visibility::DirectionVisibility seen =
+      vantage::visibility::direction_visibility(problem, a);
   for (auto _ : state) {
     benchmark::DoNotOptimize(
         vantage::tre_monte_carlo(problem.points, seen.visible, kTip, kNdiFle, a, 100000, 1, 1));

@@ -12,9 +12,9 @@
 #include "ellipsoid_layout.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/layout.h"
-#include "vantage/sdp/visibility.h"
-#include "vantage/sdp/visibility_model.h"
 #include "vantage/sdp/worst_viewpoint.h"
+#include "vantage/visibility/visibility.h"
+#include "vantage/visibility/visibility_model.h"
 
 namespace {
 
@@ -34,12 +34,13 @@ void BM_WorstViewpoint_VisibilityBaseline(benchmark::State& state) {
 // Cone model: the certified worst viewpoint over the trackable directions.
 void BM_WorstViewpoint_Visibility(benchmark::State& state) {
   const vantage::Layout layout = ellipsoid_layout(static_cast<int>(state.range(0)), false);
-  const vantage::sdp::VisibilityModel model = vantage::sdp::VisibilityModel::of(layout);
+  const vantage::visibility::VisibilityModel model =
+      vantage::visibility::VisibilityModel::of(layout);
   long patches = 0;
   bool certified = false;
   for (auto _ : state) {
-    const vantage::sdp::VisibilityWorstViewpoint w =
-        vantage::sdp::visibility_worst_viewpoint(model.problem());
+    const vantage::visibility::VisibilityWorstViewpoint w =
+        vantage::visibility::visibility_worst_viewpoint(model.problem());
     benchmark::DoNotOptimize(w.t);
     patches = w.patches;
     certified = w.certified();
@@ -55,9 +56,10 @@ void BM_WorstViewpoint_VisibilityMesh(benchmark::State& state) {
   long patches = 0;
   bool certified = false;
   for (auto _ : state) {
-    const vantage::sdp::VisibilityModel model = vantage::sdp::VisibilityModel::of(layout);
-    const vantage::sdp::VisibilityWorstViewpoint w =
-        vantage::sdp::visibility_worst_viewpoint(model.problem());
+    const vantage::visibility::VisibilityModel model =
+        vantage::visibility::VisibilityModel::of(layout);
+    const vantage::visibility::VisibilityWorstViewpoint w =
+        vantage::visibility::visibility_worst_viewpoint(model.problem());
     benchmark::DoNotOptimize(w.t);
     patches = w.patches;
     certified = w.certified();

@@ -16,7 +16,7 @@
 #include "vantage/analysis/identification.h"
 #include "vantage/analysis/layout.h"
 #include "vantage/io/layout_file.h"
-#include "vantage/sdp/layout_report.h"
+#include "vantage/report/layout_report.h"
 
 namespace vantage::cli {
 
@@ -51,7 +51,7 @@ std::vector<long> by_decreasing_error(const Eigen::VectorXd& errors) {
   return order;
 }
 
-void print_vectors(const sdp::LayoutReport& report, bool verbose) {
+void print_vectors(const report::LayoutReport& report, bool verbose) {
   const sdp::LayoutAnalysis& r = report.analysis;
   const long m = report.data.vectors.cols();
   const bool all = verbose || m <= kShownVectors + 2;
@@ -70,7 +70,7 @@ void print_vectors(const sdp::LayoutReport& report, bool verbose) {
   }
 }
 
-void print_swaps(const sdp::LayoutReport& report) {
+void print_swaps(const report::LayoutReport& report) {
   const sdp::LayoutAnalysis& r = report.analysis;
   const long m = report.data.vectors.cols();
   const bool all_zero = std::all_of(r.swaps.begin(), r.swaps.end(), [](const SwapError& s) {
@@ -106,11 +106,11 @@ std::string paper_lmi_line(const sdp::LayoutAnalysis& r) {
   return std::string(sdp::to_string(r.paper_lmi.status)) + ": the SDP gave no solution";
 }
 
-std::string pair_label(const sdp::LayoutReport& report, const std::pair<int, int>& p) {
+std::string pair_label(const report::LayoutReport& report, const std::pair<int, int>& p) {
   return report.entry_label(p.first) + "-" + report.entry_label(p.second);
 }
 
-std::string difference_text(const sdp::LayoutReport& report, const DistanceDifference& d) {
+std::string difference_text(const report::LayoutReport& report, const DistanceDifference& d) {
   if (!std::isfinite(d.value)) return "none (one pair)";
   return format_number(d.value, 4) + " (" + pair_label(report, d.pair_a) + " vs " +
          pair_label(report, d.pair_b) + ")";
@@ -118,7 +118,7 @@ std::string difference_text(const sdp::LayoutReport& report, const DistanceDiffe
 
 // One line: docs/math.md §24 (ART's distance rule, the closest markers, NDI's mirror rule, the
 // worst single loss).
-std::string identification_line(const sdp::LayoutReport& report) {
+std::string identification_line(const report::LayoutReport& report) {
   const IdentificationMargins& m = *report.identification;
   const DropoutDifference& worst = m.under_dropout[static_cast<std::size_t>(m.worst_under_dropout)];
   std::string mirror = m.mirror.own_mirror ? "0 (its own mirror)" : format_number(m.mirror.rms, 4);
@@ -132,7 +132,7 @@ std::string identification_line(const sdp::LayoutReport& report) {
          report.entry_label(worst.lost);
 }
 
-void print_report(const AnalyzeArgs& args, const sdp::LayoutReport& report) {
+void print_report(const AnalyzeArgs& args, const report::LayoutReport& report) {
   const Layout& layout = report.layout;
   const sdp::LayoutAnalysis& r = report.analysis;
   std::cout << "vantage analyze: " << (layout.name.empty() ? args.file : layout.name) << "\n"
@@ -161,31 +161,31 @@ void print_report(const AnalyzeArgs& args, const sdp::LayoutReport& report) {
   }
 }
 
-void print_dropout(const sdp::LayoutReport& report) {
-  const sdp::DropoutAnalysis& dropout = *report.dropout;
+void print_dropout(const report::LayoutReport& report) {
+  const report::DropoutAnalysis& dropout = *report.dropout;
   std::cout << "\ndropout: the layout without one "
             << (report.layout.mode == LayoutMode::kPoints ? "marker" : "vector")
             << ", most harmful first (pbar_min, max worst-case error):\n";
   for (int k : dropout.by_harm) {
-    const sdp::DropoutEntry& e = dropout.entries[k];
+    const report::DropoutEntry& e = dropout.entries[k];
     std::cout << "  without " << report.entry_label(e.index) << "  pbar_min "
               << format_number(e.pbar_min, 6) << "  "
               << format_number(e.max_worst_case_error_deg, 6) << " deg"
               << (e.certified ? "" : "  (NOT certified)") << "\n";
   }
   if (!report.visibility || report.visibility->dropout.empty()) return;
-  const sdp::VisibilityReport& v = *report.visibility;
+  const visibility::VisibilityReport& v = *report.visibility;
   std::cout << "\ndropout on its body, most harmful first (max worst-case error, trackable):\n";
   for (int k : v.dropout_by_harm) {
-    const sdp::VisibilityDropoutEntry& e = v.dropout[static_cast<std::size_t>(k)];
+    const visibility::VisibilityDropoutEntry& e = v.dropout[static_cast<std::size_t>(k)];
     std::cout << "  without " << report.entry_label(e.lost) << "  ";
-    if (e.status == sdp::VisibilityWorstViewpoint::Status::kUntrackable) {
+    if (e.status == visibility::VisibilityWorstViewpoint::Status::kUntrackable) {
       std::cout << "untrackable";
     } else {
       std::cout << format_number(e.max_worst_case_error_deg, 6) << " deg";
     }
     std::cout << "  trackable " << format_number(100.0 * e.trackable_fraction, 4) << " %"
-              << (e.status == sdp::VisibilityWorstViewpoint::Status::kNotCertified
+              << (e.status == visibility::VisibilityWorstViewpoint::Status::kNotCertified
                       ? "  (NOT certified)"
                       : "")
               << "\n";
@@ -193,8 +193,8 @@ void print_dropout(const sdp::LayoutReport& report) {
 }
 
 // Markers far from the body's surface: the mesh may not be their body (or not in their units).
-std::string off_body_warning(const sdp::LayoutReport& report) {
-  const sdp::VisibilityReport& v = *report.visibility;
+std::string off_body_warning(const report::LayoutReport& report) {
+  const visibility::VisibilityReport& v = *report.visibility;
   std::string names;
   double farthest = 0.0;
   for (int i : v.off_body) {
@@ -205,7 +205,7 @@ std::string off_body_warning(const sdp::LayoutReport& report) {
          " marker(s) lie off the "
          "body's surface (" +
          names + "; the farthest " + format_number(farthest, 4) + " away, more than " +
-         format_number(100 * sdp::VisibilityReport::kOffSurface, 2) +
+         format_number(100 * visibility::VisibilityReport::kOffSurface, 2) +
          " % of the body's size): is the mesh the markers' body, in their units and frame?";
 }
 
@@ -218,23 +218,23 @@ int run_analyze(const AnalyzeArgs& args) {
     check_limit(args.file + ": data vectors with --dropout", data_vector_count(layout),
                 kMaxDropoutVectors, "analyze --dropout", args.allow_large);
   }
-  sdp::LayoutReportOptions options;
+  report::LayoutReportOptions options;
   options.pair_weighting = args.pair_weighting == "arithmetic" ? PairWeighting::kArithmeticMean
                                                                : PairWeighting::kGeometricMean;
   options.analysis.swap_count = args.swaps;
   options.analysis.run_crosscheck = args.crosscheck;
   options.dropout = args.dropout;
-  sdp::LayoutReport report;
+  report::LayoutReport report;
   {
     Progress progress("analyze", !args.json && !args.quiet);  // cleared before the report
     options.analysis.progress = progress.callback();
-    report = against_source(args.file, [&] { return sdp::analyze_layout(layout, options); });
+    report = against_source(args.file, [&] { return report::analyze_layout(layout, options); });
   }
   if (report.visibility && !report.visibility->off_body.empty()) {
     std::cerr << "vantage: warning: " << off_body_warning(report) << std::endl;
   }
   if (args.json) {
-    std::cout << sdp::to_json(report) << std::endl;
+    std::cout << report::to_json(report) << std::endl;
   } else {
     print_report(args, report);
     if (report.dropout) print_dropout(report);

@@ -15,8 +15,8 @@
 #include "layout_input.h"
 #include "limits.h"
 #include "vantage/analysis/common.h"
-#include "vantage/sdp/pose_crb.h"
-#include "vantage/sdp/pose_crb_tags.h"
+#include "vantage/camera/pose_crb.h"
+#include "vantage/camera/pose_crb_tags.h"
 
 namespace vantage::cli {
 
@@ -28,12 +28,12 @@ struct CrbArgs {
   CrbCameraArgs camera;
   std::string direction;
   bool sweep_tags = false;
-  sdp::TagSweepOptions tags;
+  camera::TagSweepOptions tags;
   bool json = false;
   bool allow_large = false;
 };
 
-std::string bound_line(const sdp::PoseCrbAt& at) {
+std::string bound_line(const camera::PoseCrbAt& at) {
   if (!at.trackable) {
     return format_vector(at.direction, 4) + "  not trackable (" +
            std::to_string(at.visible_markers.size()) + " visible markers)";
@@ -43,8 +43,8 @@ std::string bound_line(const sdp::PoseCrbAt& at) {
          std::to_string(at.visible_markers.size()) + " visible markers)";
 }
 
-void print_report(const std::string& name, const sdp::PoseCrbReport& r) {
-  const sdp::PoseCrbMap& map = r.map;
+void print_report(const std::string& name, const camera::PoseCrbReport& r) {
+  const camera::PoseCrbMap& map = r.map;
   std::cout << "vantage crb: " << name << "\n"
             << "  pinhole camera at distance " << format_number(r.camera.distance) << " from the "
             << "markers' centroid, f = " << format_number(r.camera.focal_length) << " px, noise "
@@ -53,7 +53,7 @@ void print_report(const std::string& name, const sdp::PoseCrbReport& r) {
             << "; " << map.samples.size() << " directions sampled, trackable fraction "
             << format_number(map.trackable_fraction, 4) << "\n\n";
   if (r.at_direction) std::cout << "at direction     " << bound_line(*r.at_direction) << "\n";
-  if (map.status != sdp::PoseCrbMap::Status::kOk) {
+  if (map.status != camera::PoseCrbMap::Status::kOk) {
     std::cout << "no sampled direction is trackable\n";
   } else {
     std::cout << "worst direction  " << bound_line(map.worst) << "\n"
@@ -68,9 +68,9 @@ void print_report(const std::string& name, const sdp::PoseCrbReport& r) {
   }
   std::cout << "affine bound     " << format_number(r.affine_bound_deg, 4)
             << " deg (arccos pbar_min, the worst-case error of the affine camera)\n";
-  for (const sdp::PoseCrbSweepRow& row : r.sweep_distance) {
+  for (const camera::PoseCrbSweepRow& row : r.sweep_distance) {
     std::cout << "  D " << format_number(row.distance, 4);
-    if (row.status != sdp::PoseCrbMap::Status::kOk) {
+    if (row.status != camera::PoseCrbMap::Status::kOk) {
       std::cout << "  not trackable\n";
       continue;
     }
@@ -86,23 +86,23 @@ std::string cell(const std::string& text, int width) {
   return std::string(std::max(0, width - static_cast<int>(text.size())), ' ') + text;
 }
 
-void print_tag_sweep(const std::vector<sdp::TagFace>& faces,
-                     const std::vector<sdp::TagSweepRow>& rows) {
+void print_tag_sweep(const std::vector<camera::TagFace>& faces,
+                     const std::vector<camera::TagSweepRow>& rows) {
   double largest = 0.0;
-  for (const sdp::TagFace& face : faces) largest = std::max(largest, face.extent);
+  for (const camera::TagFace& face : faces) largest = std::max(largest, face.extent);
   std::cout << "\nhow many tags, and how big: " << faces.size() << " face(s) of fixed extent "
             << "(largest " << format_number(largest, 4) << "), k x k tags on each, of side fill x "
             << "extent / k\n"
             << "   k  tags  fill  tag size  tag px   median rot_rms  median trans   p95 rot_rms  "
                "worst rot_rms\n";
   bool small = false;
-  for (const sdp::TagSweepRow& row : rows) {
-    const bool too_small = row.tag_pixels < sdp::TagSweepRow::kMinDetectablePixels;
+  for (const camera::TagSweepRow& row : rows) {
+    const bool too_small = row.tag_pixels < camera::TagSweepRow::kMinDetectablePixels;
     small = small || too_small;
     std::cout << cell(std::to_string(row.per_side), 4) << cell(std::to_string(row.tags), 6)
               << cell(format_number(row.fill, 3), 6) << cell(format_number(row.tag_size, 4), 10)
               << cell(format_number(row.tag_pixels, 3) + (too_small ? "*" : " "), 8);
-    if (row.status != sdp::PoseCrbMap::Status::kOk) {
+    if (row.status != camera::PoseCrbMap::Status::kOk) {
       std::cout << "   not trackable\n";
       continue;
     }
@@ -112,7 +112,7 @@ void print_tag_sweep(const std::vector<sdp::TagFace>& faces,
               << cell(format_number(row.worst.rot_rms_deg, 4) + " deg", 15) << "\n";
   }
   if (small) {
-    std::cout << "   * under " << format_number(sdp::TagSweepRow::kMinDetectablePixels)
+    std::cout << "   * under " << format_number(camera::TagSweepRow::kMinDetectablePixels)
               << " px across head-on: such a tag may not be decoded at this distance (the "
                  "bound assumes it is)\n";
   }
@@ -122,19 +122,19 @@ int run_crb(const CrbArgs& args) {
   const Layout layout = args.input.read(args.file, args.allow_large);
   std::optional<Eigen::Vector3d> direction;
   if (!args.direction.empty()) direction = parse_direction(args.direction, "--direction");
-  const std::optional<sdp::PoseCrbSweep> sweep = args.camera.sweep();
-  sdp::PoseCrbReport report;
+  const std::optional<camera::PoseCrbSweep> sweep = args.camera.sweep();
+  camera::PoseCrbReport report;
   try {
-    report = sdp::pose_crb_report(layout, args.camera.options(), direction, sweep);
+    report = camera::pose_crb_report(layout, args.camera.options(), direction, sweep);
   } catch (const InvalidArgument& e) {
     throw crb_option_error(e, args.file);
   }
-  std::vector<sdp::TagFace> faces;
-  std::vector<sdp::TagSweepRow> tag_rows;
+  std::vector<camera::TagFace> faces;
+  std::vector<camera::TagSweepRow> tag_rows;
   if (args.sweep_tags) {
     try {
-      faces = sdp::tag_faces(layout);
-      tag_rows = sdp::pose_crb_tag_sweep(layout, args.camera.options(), args.tags);
+      faces = camera::tag_faces(layout);
+      tag_rows = camera::pose_crb_tag_sweep(layout, args.camera.options(), args.tags);
     } catch (const InvalidArgument& e) {
       if (e.field() == "names" || e.field() == "points") throw e.against(args.file);
       if (e.field() == "sweep_tags.per_side") throw e.renamed("--tags-per-side", std::nullopt);

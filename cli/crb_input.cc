@@ -23,8 +23,8 @@ void CrbCameraArgs::add_options(CLI::App* sub, bool required) {
       ->capture_default_str();
 }
 
-sdp::PoseCrbOptions CrbCameraArgs::options() const {
-  sdp::PoseCrbOptions options;
+camera::PoseCrbOptions CrbCameraArgs::options() const {
+  camera::PoseCrbOptions options;
   options.distance = distance;
   options.focal_length = focal;
   options.noise_px = noise_px;
@@ -34,7 +34,7 @@ sdp::PoseCrbOptions CrbCameraArgs::options() const {
   return options;
 }
 
-std::optional<sdp::PoseCrbSweep> CrbCameraArgs::sweep() const {
+std::optional<camera::PoseCrbSweep> CrbCameraArgs::sweep() const {
   if (sweep_distance.empty()) return std::nullopt;
   return parse_sweep(sweep_distance);
 }
@@ -51,9 +51,9 @@ Eigen::Vector3d parse_direction(const std::string& text, const std::string& opti
   return a.normalized();
 }
 
-sdp::PoseCrbSweep parse_sweep(const std::string& text) {
+camera::PoseCrbSweep parse_sweep(const std::string& text) {
   std::istringstream in(text);
-  sdp::PoseCrbSweep sweep;
+  camera::PoseCrbSweep sweep;
   char colon1 = 0, colon2 = 0;
   if (!(in >> sweep.from >> colon1 >> sweep.to >> colon2 >> sweep.count) || colon1 != ':' ||
       colon2 != ':' || !(in >> std::ws).eof()) {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "vantage/analysis/common.h"
-#include "vantage/sdp/pose_crb.h"
+#include "vantage/camera/pose_crb.h"
 
 namespace vantage::cli {
 
@@ -29,16 +29,16 @@ struct CrbCameraArgs {
   /// Adds the options to `sub`; `required` makes the first three required by CLI11.
   void add_options(CLI::App* sub, bool required);
   /// The library's options from the typed ones.
-  sdp::PoseCrbOptions options() const;
+  camera::PoseCrbOptions options() const;
   /// The typed --sweep-distance, or nothing when not given.
-  std::optional<sdp::PoseCrbSweep> sweep() const;
+  std::optional<camera::PoseCrbSweep> sweep() const;
 };
 
 /// "AX,AY,AZ" as typed to a unit vector; InvalidArgument naming `option` otherwise.
 Eigen::Vector3d parse_direction(const std::string& text, const std::string& option);
 
 /// "D1:D2:N" as typed; InvalidArgument naming --sweep-distance otherwise.
-sdp::PoseCrbSweep parse_sweep(const std::string& text);
+camera::PoseCrbSweep parse_sweep(const std::string& text);
 
 /// The library's field names ("distance", "focal_length", ...) as the command's options; any
 /// other error is the layout file's.

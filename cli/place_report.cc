@@ -19,7 +19,7 @@ std::string percent(double fraction) { return format_number(100.0 * fraction, 4)
 void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
                         const design::PlacementResult& r, const PlacedLayout& placed,
                         bool written) {
-  const sdp::VisibilityReport& v = *placed.report.visibility;
+  const visibility::VisibilityReport& v = *placed.report.visibility;
   std::cout << "vantage place: " << args.markers << " markers on "
             << (args.sites.empty() ? args.body : args.sites) << "\n  " << n_candidates
             << " candidate sites";
@@ -34,7 +34,7 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
                 << (s.added >= 0 ? placed.site_names[static_cast<std::size_t>(s.added)]
                                  : std::string("(kept)"))
                 << "  " << percent(s.value.coverage) << "  ";
-      if (s.value.status == sdp::VisibilityWorstViewpoint::Status::kUntrackable) {
+      if (s.value.status == visibility::VisibilityWorstViewpoint::Status::kUntrackable) {
         std::cout << "untrackable\n";
       } else {
         std::cout << format_number(s.value.pbar_min, 6) << "  "
@@ -57,7 +57,7 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
             << "  p-bar_min       " << format_number(v.worst.pbar_min, 6) << "\n"
             << "  worst error     " << format_number(v.max_worst_case_error_deg, 6) << " deg at "
             << format_vector(v.worst.viewpoint) << "\n"
-            << "  certificate     " << sdp::to_string(v.worst.status) << " (t in ["
+            << "  certificate     " << visibility::to_string(v.worst.status) << " (t in ["
             << format_number(v.worst.t_lower, 9) << ", " << format_number(v.worst.t_upper, 9)
             << "])\n";
   if (r.robust) {

@@ -181,8 +181,8 @@ void check_crb_options(const PlotArgs& args) {
 
 void print_crb_plot(const PlotArgs& args, const Layout& layout, const plot::CrbFigures& figures,
                     const plot::FigureOptions& options) {
-  const sdp::PoseCrbMap& map = figures.report.map;
-  const bool ok = map.status == sdp::PoseCrbMap::Status::kOk;
+  const camera::PoseCrbMap& map = figures.report.map;
+  const bool ok = map.status == camera::PoseCrbMap::Status::kOk;
   if (args.json) {
     Json out;
     out["layout"] = args.file;
@@ -190,7 +190,7 @@ void print_crb_plot(const PlotArgs& args, const Layout& layout, const plot::CrbF
     out["out"] = args.out;
     out["format"] = plot::to_string(options.format);
     out["size"] = {options.width, options.height};
-    out["status"] = sdp::to_string(map.status);
+    out["status"] = camera::to_string(map.status);
     if (ok) out["worst_rot_rms_deg"] = map.worst.rot_rms_deg;
     out["figures"] = figure_files_json(figures.files);
     print_json(out);
@@ -253,8 +253,8 @@ void check_tre_options(const PlotArgs& args) {
 
 void print_tre_plot(const PlotArgs& args, const Layout& layout, const plot::TreFigures& figures,
                     const plot::FigureOptions& options) {
-  const sdp::TreExtremes& x = figures.sweeps.report.targets.front().extremes;
-  const bool tracked = x.worst.status != sdp::TreExtreme::Status::kUntracked;
+  const tracker::TreExtremes& x = figures.sweeps.report.targets.front().extremes;
+  const bool tracked = x.worst.status != tracker::TreExtreme::Status::kUntracked;
   if (args.json) {
     Json out;
     out["layout"] = args.file;
@@ -287,7 +287,7 @@ int run_tre_plot(const PlotArgs& args) {
   options.figure.title = args.title;
   parse_size(args.size, options.figure);
   const std::vector<Eigen::Vector3d> targets = args.target.parsed_targets();
-  sdp::TreOptions tre;
+  tracker::TreOptions tre;
   tre.fle = args.target.parsed_fle();
   tre.direction = args.target.parsed_direction();
   if (args.radius_option->count() > 0) {
@@ -364,12 +364,12 @@ int run_plot(const PlotArgs& args) {
   }
   create_figure_directory("--out", args.out);
 
-  sdp::LayoutReportOptions report_options;
+  report::LayoutReportOptions report_options;
   report_options.dropout =
       plot::needs_dropout(options, design != nullptr, on_body, layout.placement.has_value());
   report_options.dropout_options.threads = options.figure.threads;
-  const sdp::LayoutReport report =
-      against_source(args.file, [&] { return sdp::analyze_layout(layout, report_options); });
+  const report::LayoutReport report =
+      against_source(args.file, [&] { return report::analyze_layout(layout, report_options); });
   plot::LayoutFigures figures;
   try {
     figures = plot::write_layout_figures(report, args.out, options, design.get());

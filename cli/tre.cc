@@ -14,7 +14,7 @@
 #include "tre_input.h"
 #include "tre_json.h"
 #include "vantage/analysis/common.h"
-#include "vantage/sdp/tre_report.h"
+#include "vantage/tracker/tre_report.h"
 
 namespace vantage::cli {
 
@@ -37,23 +37,23 @@ std::string markers_text(const std::vector<int>& visible) {
   return out;
 }
 
-std::string extreme_line(const sdp::TreExtreme& e) {
-  if (e.status == sdp::TreExtreme::Status::kUntracked) return "no tracked direction";
+std::string extreme_line(const tracker::TreExtreme& e) {
+  if (e.status == tracker::TreExtreme::Status::kUntracked) return "no tracked direction";
   std::string line = format_number(e.rms, 5) + "  at " + format_vector(e.direction, 4) + "  (" +
                      std::to_string(e.visible_markers.size()) +
                      " markers: " + markers_text(e.visible_markers) + ")  ";
   if (e.closed_form) return line + "exact (eigenvector of M)";
-  return line + sdp::to_string(e.status) + ", bound " + format_number(e.rms_bound, 7);
+  return line + tracker::to_string(e.status) + ", bound " + format_number(e.rms_bound, 7);
 }
 
-void print_target(const sdp::TreTargetReport& t) {
+void print_target(const tracker::TreTargetReport& t) {
   std::cout << "target " << format_vector(t.target, 6) << "\n";
   if (t.rms_isotropic) {
     std::cout << "  RMS TRE, every marker (Fitzpatrick 1998)  "
               << format_number(*t.rms_isotropic, 5) << "\n";
   }
   if (t.at_direction) {
-    const sdp::TreAtDirection& at = *t.at_direction;
+    const tracker::TreAtDirection& at = *t.at_direction;
     std::cout << "  at line of sight " << format_vector(at.direction, 4) << "  ";
     if (!at.tracked) {
       std::cout << "not tracked (" << at.visible_markers.size() << " visible markers)\n";
@@ -74,7 +74,7 @@ void print_target(const sdp::TreTargetReport& t) {
   }
 }
 
-void print_report(const std::string& name, const sdp::TreReport& r) {
+void print_report(const std::string& name, const tracker::TreReport& r) {
   std::cout << "vantage tre: " << name << "\n  " << r.markers << " markers, tracked with at least "
             << r.min_visible << " visible; visibility "
             << (r.with_body ? "cone+mesh" : (r.with_normals ? "cone" : "none (all seen)"))
@@ -89,12 +89,12 @@ void print_report(const std::string& name, const sdp::TreReport& r) {
   std::cout << "; registration: least squares, no scale (q-method); first order (docs/math.md "
                "§23)\n  RMS TRE in the layout's units; directions are lines of sight from the "
                "tool toward the tracker, tool frame\n\n";
-  for (const sdp::TreTargetReport& t : r.targets) print_target(t);
+  for (const tracker::TreTargetReport& t : r.targets) print_target(t);
 }
 
 int run_tre(const TreArgs& args) {
   const std::vector<Eigen::Vector3d> targets = args.target.parsed_targets();
-  sdp::TreOptions options;
+  tracker::TreOptions options;
   options.fle = args.target.parsed_fle();
   options.direction = args.target.parsed_direction();
   if (args.monte_carlo != 0 && args.monte_carlo < 1000) {
@@ -105,8 +105,8 @@ int run_tre(const TreArgs& args) {
   options.seed = args.seed;
   options.threads = args.threads;
   const Layout layout = args.input.read(args.file, args.allow_large);
-  const sdp::TreReport report =
-      against_source(args.file, [&] { return sdp::tre_report(layout, targets, options); });
+  const tracker::TreReport report =
+      against_source(args.file, [&] { return tracker::tre_report(layout, targets, options); });
   if (args.json) {
     print_json(tre_json::report(report));
   } else {

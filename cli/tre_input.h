@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "vantage/analysis/common.h"
-#include "vantage/sdp/tre_report.h"
+#include "vantage/tracker/tre_report.h"
 
 namespace vantage::cli {
 

@@ -14,7 +14,7 @@ Json vector3(const Eigen::Vector3d& v) { return Json::array({v.x(), v.y(), v.z()
 
 }  // namespace
 
-Json at_direction(const sdp::PoseCrbAt& at, bool with_covariance) {
+Json at_direction(const camera::PoseCrbAt& at, bool with_covariance) {
   Json out = Json::object();
   out["direction"] = vector3(at.direction);
   out["trackable"] = at.trackable;
@@ -34,7 +34,7 @@ Json at_direction(const sdp::PoseCrbAt& at, bool with_covariance) {
   return out;
 }
 
-Json report(const sdp::PoseCrbReport& r) {
+Json report(const camera::PoseCrbReport& r) {
   Json out = Json::object();
   out["camera"] = {
       {"model", "pinhole"},
@@ -45,8 +45,8 @@ Json report(const sdp::PoseCrbReport& r) {
   out["markers"] = r.markers;
   out["visibility"] = r.with_body ? "cone+mesh" : "cone";
   if (r.at_direction) out["at_direction"] = at_direction(*r.at_direction, true);
-  const bool ok = r.map.status == sdp::PoseCrbMap::Status::kOk;
-  out["status"] = sdp::to_string(r.map.status);
+  const bool ok = r.map.status == camera::PoseCrbMap::Status::kOk;
+  out["status"] = camera::to_string(r.map.status);
   out["worst"] = ok ? at_direction(r.map.worst, false) : Json(nullptr);
   out["best"] = ok ? at_direction(r.map.best, false) : Json(nullptr);
   out["trackable_fraction"] = r.map.trackable_fraction;
@@ -59,8 +59,8 @@ Json report(const sdp::PoseCrbReport& r) {
   out["samples"] = static_cast<int>(r.map.samples.size());
   if (!r.sweep_distance.empty()) {
     Json rows = Json::array();
-    for (const sdp::PoseCrbSweepRow& row : r.sweep_distance) {
-      const bool row_ok = row.status == sdp::PoseCrbMap::Status::kOk;
+    for (const camera::PoseCrbSweepRow& row : r.sweep_distance) {
+      const bool row_ok = row.status == camera::PoseCrbMap::Status::kOk;
       rows.push_back({{"distance", row.distance},
                       {"trackable_fraction", row.trackable_fraction},
                       {"worst", row_ok ? at_direction(row.worst, false) : Json(nullptr)},
@@ -71,10 +71,11 @@ Json report(const sdp::PoseCrbReport& r) {
   return out;
 }
 
-Json tag_sweep(const std::vector<sdp::TagFace>& faces, const std::vector<sdp::TagSweepRow>& rows) {
+Json tag_sweep(const std::vector<camera::TagFace>& faces,
+               const std::vector<camera::TagSweepRow>& rows) {
   Json out = Json::object();
   Json face_list = Json::array();
-  for (const sdp::TagFace& face : faces) {
+  for (const camera::TagFace& face : faces) {
     face_list.push_back({{"centre", vector3(face.centre)},
                          {"normal", vector3(face.normal)},
                          {"extent", face.extent},
@@ -82,14 +83,14 @@ Json tag_sweep(const std::vector<sdp::TagFace>& faces, const std::vector<sdp::Ta
   }
   out["faces"] = face_list;
   Json row_list = Json::array();
-  for (const sdp::TagSweepRow& row : rows) {
-    const bool ok = row.status == sdp::PoseCrbMap::Status::kOk;
+  for (const camera::TagSweepRow& row : rows) {
+    const bool ok = row.status == camera::PoseCrbMap::Status::kOk;
     row_list.push_back({{"tags_per_side", row.per_side},
                         {"tags", row.tags},
                         {"fill", row.fill},
                         {"tag_size", row.tag_size},
                         {"tag_pixels", row.tag_pixels},
-                        {"status", sdp::to_string(row.status)},
+                        {"status", camera::to_string(row.status)},
                         {"trackable_fraction", row.trackable_fraction},
                         {"worst", ok ? at_direction(row.worst, false) : Json(nullptr)},
                         {"median", ok ? at_direction(row.median, false) : Json(nullptr)},

@@ -10,7 +10,7 @@
 #include "vantage/io/layout_formats.h"
 #include "vantage/io/mesh_file.h"
 #include "vantage/io/text_file.h"
-#include "vantage/sdp/visibility_model.h"
+#include "vantage/visibility/visibility_model.h"
 
 namespace vantage::place_json {
 namespace {
@@ -249,9 +249,9 @@ Sites candidate_sites(const Request& request,
 Outcome place(const Request& request, const Sites& sites,
               const std::function<void(const std::string&)>& progress) {
   if (progress) progress("occlusion grid");
-  const sdp::VisibilityModel model = place_against(request.source(), [&] {
-    return sdp::VisibilityModel::of(sites.layout, sdp::VisibilityModel::kDefaultResolutionDeg,
-                                    request.threads);
+  const visibility::VisibilityModel model = place_against(request.source(), [&] {
+    return visibility::VisibilityModel::of(
+        sites.layout, visibility::VisibilityModel::kDefaultResolutionDeg, request.threads);
   });
   design::PlacementProblem problem;
   problem.sites = model.problem();
@@ -291,10 +291,10 @@ PlacedLayout placed_layout(const Request& request, const Layout& sites, int n_ca
   record.n_candidates = n_candidates;
   record.robust_dropout = request.robust_dropout;
   out.layout = design::placed_layout(sites, result, record);
-  sdp::LayoutReportOptions options;
+  report::LayoutReportOptions options;
   options.visibility.search.certificate_tolerance = request.certificate_tolerance;
   options.visibility.threads = request.threads;
-  out.report = sdp::analyze_layout(out.layout, options);
+  out.report = report::analyze_layout(out.layout, options);
   return out;
 }
 
@@ -310,7 +310,7 @@ std::string failure_message(const design::PlacementResult& result, const PlacedL
     }
     return message;
   }
-  const sdp::VisibilityReport& v = *placed.report.visibility;
+  const visibility::VisibilityReport& v = *placed.report.visibility;
   return "the placed layout's analysis is not certified: " + v.message();
 }
 
@@ -336,7 +336,7 @@ Json report(const Request& request, const Sites& sites, const Outcome& outcome, 
   if (request.sites.empty()) out["drawn"] = sites.drawn;
   out["markers"] = request.markers;
   out["search"] = r.search;
-  const Json analysis = Json::parse(sdp::to_json(placed.report));
+  const Json analysis = Json::parse(report::to_json(placed.report));
   out["visibility"] = analysis.contains("visibility") ? analysis["visibility"] : Json();
   out["coverage"] = placed.report.visibility->coverage.trackable_fraction;
   out["pbar_min"] = placed.report.visibility->worst.pbar_min;

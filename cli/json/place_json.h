@@ -16,7 +16,7 @@
 #include "vantage/analysis/layout.h"
 #include "vantage/design/placement.h"
 #include "vantage/design/placement_layout.h"
-#include "vantage/sdp/layout_report.h"
+#include "vantage/report/layout_report.h"
 
 namespace vantage::place_json {
 
@@ -38,7 +38,7 @@ struct Request {
   int threads = 0;
   int random_trials = 1000;
   long exhaustive_limit = 5000;
-  double certificate_tolerance = sdp::VisibilitySearchOptions{}.certificate_tolerance;
+  double certificate_tolerance = visibility::VisibilitySearchOptions{}.certificate_tolerance;
   bool overwrite = false;
 
   /// The body mesh or the sites file, as given.
@@ -67,7 +67,7 @@ Sites candidate_sites(const Request& request,
 /// The chosen markers as a layout on the body, and `vantage analyze`'s report of it.
 struct PlacedLayout {
   Layout layout;
-  sdp::LayoutReport report;
+  report::LayoutReport report;
   std::vector<std::string> site_names;  ///< the name of every site and kept marker
 };
 

@@ -11,7 +11,7 @@ Json tre_matrix3(const Eigen::Matrix3d& m) {
   return rows;
 }
 
-Json at_direction(const sdp::TreAtDirection& at) {
+Json at_direction(const tracker::TreAtDirection& at) {
   Json out;
   out["direction"] = tre_vector3(at.direction);
   out["tracked"] = at.tracked;
@@ -23,23 +23,23 @@ Json at_direction(const sdp::TreAtDirection& at) {
 
 }  // namespace
 
-Json extreme(const sdp::TreExtreme& e) {
+Json extreme(const tracker::TreExtreme& e) {
   Json out;
-  const bool tracked = e.status != sdp::TreExtreme::Status::kUntracked;
+  const bool tracked = e.status != tracker::TreExtreme::Status::kUntracked;
   out["direction"] = tracked ? tre_vector3(e.direction) : Json(nullptr);
   out["rms"] = tracked ? Json(e.rms) : Json(nullptr);
   out["visible_markers"] = e.visible_markers;
   out["certified"] = e.certified();
-  out["status"] = sdp::to_string(e.status);
+  out["status"] = tracker::to_string(e.status);
   out["rms_bound"] = tracked ? Json(e.rms_bound) : Json(nullptr);
   out["patches"] = e.patches;
   out["closed_form"] = e.closed_form;
   return out;
 }
 
-Json report(const sdp::TreReport& r) {
+Json report(const tracker::TreReport& r) {
   Json targets = Json::array();
-  for (const sdp::TreTargetReport& t : r.targets) {
+  for (const tracker::TreTargetReport& t : r.targets) {
     Json entry;
     entry["target"] = tre_vector3(t.target);
     if (t.rms_isotropic) entry["rms_isotropic"] = *t.rms_isotropic;

@@ -6,9 +6,9 @@
 
 namespace vantage::design::internal {
 
-SiteCoverage::SiteCoverage(const sdp::VisibilityProblem& sites, int lattice_samples)
+SiteCoverage::SiteCoverage(const visibility::VisibilityProblem& sites, int lattice_samples)
     : min_visible_(sites.min_visible) {
-  const Eigen::Matrix3Xd lattice = sdp::fibonacci_directions(lattice_samples);
+  const Eigen::Matrix3Xd lattice = visibility::fibonacci_directions(lattice_samples);
   std::vector<Eigen::Index> inside;
   for (Eigen::Index k = 0; k < lattice.cols(); ++k) {
     const Eigen::Vector3d d = lattice.col(k);

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "vantage/sdp/visibility.h"
+#include "vantage/visibility/visibility.h"
 
 namespace vantage::design::internal {
 
@@ -25,10 +25,10 @@ struct CoverageKey {
 };
 
 /// One bit per site and lattice direction of the workspace: the site's cone holds the direction
-/// and its occlusion grid has it clear (the test of sdp::direction_visibility()).
+/// and its occlusion grid has it clear (the test of visibility::direction_visibility()).
 class SiteCoverage {
  public:
-  SiteCoverage(const sdp::VisibilityProblem& sites, int lattice_samples);
+  SiteCoverage(const visibility::VisibilityProblem& sites, int lattice_samples);
 
   int directions() const { return directions_; }
   int min_visible() const { return min_visible_; }

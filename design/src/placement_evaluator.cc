@@ -12,9 +12,9 @@ namespace vantage::design::internal {
 PlacementEvaluator::PlacementEvaluator(const PlacementProblem& problem, const PlaceOptions& options)
     : problem_(problem), options_(options) {}
 
-sdp::VisibilityProblem PlacementEvaluator::subproblem(const std::vector<int>& chosen) const {
-  const sdp::VisibilityProblem& all = problem_.sites;
-  sdp::VisibilityProblem out;
+visibility::VisibilityProblem PlacementEvaluator::subproblem(const std::vector<int>& chosen) const {
+  const visibility::VisibilityProblem& all = problem_.sites;
+  visibility::VisibilityProblem out;
   const Eigen::Index n = static_cast<Eigen::Index>(chosen.size());
   out.points.resize(3, n);
   out.normals.resize(3, n);
@@ -61,17 +61,17 @@ FamilyValue PlacementEvaluator::family_t(const std::vector<std::vector<int>>& fa
                                          const std::vector<Eigen::Vector3d>& witnesses,
                                          double tolerance) const {
   FamilyValue out;
-  std::vector<sdp::VisibilityProblem> problems;
+  std::vector<visibility::VisibilityProblem> problems;
   problems.reserve(family.size());
   for (const std::vector<int>& member : family) problems.push_back(subproblem(member));
   // A trackable witness at or above the level is an attained value: the family cannot beat it.
   for (const Eigen::Vector3d& w : witnesses) {
-    for (const sdp::VisibilityProblem& p : problems) {
-      const sdp::DirectionVisibility seen = sdp::direction_visibility(p, w);
+    for (const visibility::VisibilityProblem& p : problems) {
+      const visibility::DirectionVisibility seen = visibility::direction_visibility(p, w);
       if (seen.trackable && seen.t >= level) return out;
     }
   }
-  sdp::VisibilitySearchOptions search = options_.search;
+  visibility::VisibilitySearchOptions search = options_.search;
   search.stop_above = level;
   if (tolerance > 0.0) search.certificate_tolerance = tolerance;
   out.t_upper = -1.0;
@@ -79,13 +79,13 @@ FamilyValue PlacementEvaluator::family_t(const std::vector<std::vector<int>>& fa
     // A member with fewer markers than a direction must see tracks nothing (robust_dropout's
     // losses early in the greedy): no search, t = 1.
     const bool too_few = problems[m].points.cols() < problems[m].min_visible;
-    sdp::VisibilityWorstViewpoint r;
-    r.status = sdp::VisibilityWorstViewpoint::Status::kUntrackable;
+    visibility::VisibilityWorstViewpoint r;
+    r.status = visibility::VisibilityWorstViewpoint::Status::kUntrackable;
     if (!too_few) {
-      r = sdp::visibility_worst_viewpoint(problems[m], search);
+      r = visibility::visibility_worst_viewpoint(problems[m], search);
       ++out.searches;
     }
-    const bool untrackable = r.status == sdp::VisibilityWorstViewpoint::Status::kUntrackable;
+    const bool untrackable = r.status == visibility::VisibilityWorstViewpoint::Status::kUntrackable;
     if (!untrackable) out.witnesses.push_back(r.viewpoint);
     const double t = untrackable ? 1.0 : r.t_upper;
     if (t >= level || (!untrackable && r.t_lower >= level)) {

@@ -16,10 +16,10 @@ struct FamilyValue {
   bool below = false;    ///< every member's t_upper is below the level (then the fields hold)
   double t_upper = 1.0;  ///< the largest t_upper of the members (1 for an untrackable member)
   int worst_member = -1;
-  sdp::VisibilityWorstViewpoint::Status status =
-      sdp::VisibilityWorstViewpoint::Status::kUntrackable;  ///< of the worst member
-  std::vector<Eigen::Vector3d> witnesses;                   ///< worst viewpoints the searches found
-  int searches = 0;                                         ///< certified searches run
+  visibility::VisibilityWorstViewpoint::Status status =
+      visibility::VisibilityWorstViewpoint::Status::kUntrackable;  ///< of the worst member
+  std::vector<Eigen::Vector3d> witnesses;  ///< worst viewpoints the searches found
+  int searches = 0;                        ///< certified searches run
 };
 
 class PlacementEvaluator {
@@ -27,7 +27,7 @@ class PlacementEvaluator {
   PlacementEvaluator(const PlacementProblem& problem, const PlaceOptions& options);
 
   /// The visibility problem of the chosen sites (their grid markers remapped).
-  sdp::VisibilityProblem subproblem(const std::vector<int>& chosen) const;
+  visibility::VisibilityProblem subproblem(const std::vector<int>& chosen) const;
 
   /// The separation and distance-difference constraints hold for `chosen`.
   bool feasible(const std::vector<int>& chosen) const;

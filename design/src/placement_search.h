@@ -21,8 +21,8 @@ struct Scored {
   CoverageKey robust_cover;  ///< robust_dropout only
   double t = 1.0;
   int worst_lost = -1;  ///< robust_dropout: the site whose loss gives t
-  sdp::VisibilityWorstViewpoint::Status status =
-      sdp::VisibilityWorstViewpoint::Status::kUntrackable;
+  visibility::VisibilityWorstViewpoint::Status status =
+      visibility::VisibilityWorstViewpoint::Status::kUntrackable;
 };
 
 class PlacementSearch {

@@ -19,9 +19,9 @@
 namespace vantage::plot {
 namespace {
 
+using camera::PoseCrbAt;
+using camera::PoseCrbMap;
 using internal::Canvas;
-using sdp::PoseCrbAt;
-using sdp::PoseCrbMap;
 
 // The best direction's marker: white, apart from the red worst and from every viridis colour.
 constexpr Rgb kBestColour{255, 255, 255};
@@ -33,7 +33,7 @@ constexpr double kLabelledRegionFraction = 0.006;
 
 // The bound at every cell centre of both discs: the cells, and rot_rms_deg as their value
 // (NaN: not trackable).
-internal::ValueCells sample_cells(const sdp::PoseCrbModel& model, int n, int threads) {
+internal::ValueCells sample_cells(const camera::PoseCrbModel& model, int n, int threads) {
   return internal::sample_value_cells(n, threads, [&](const Eigen::Vector3d& a) {
     const PoseCrbAt at = model.at(a);
     return internal::CellValue{static_cast<int>(at.visible_markers.size()), at.trackable,
@@ -108,7 +108,7 @@ std::string at_summary(const PoseCrbAt& at) {
          std::to_string(at.visible_markers.size()) + " markers seen";
 }
 
-void draw_legends(Canvas& canvas, const sdp::PoseCrbReport& report,
+void draw_legends(Canvas& canvas, const camera::PoseCrbReport& report,
                   const internal::ValueCells& cells) {
   using internal::fixed;
   using Entry = Canvas::LegendEntry;
@@ -166,8 +166,8 @@ void draw_extremes(Canvas& canvas, const PoseCrbMap& map) {
 
 void draw_map(Canvas& canvas, const CrbMapData& data, const internal::ValueCells& cells,
               const FigureOptions& options) {
-  const sdp::PoseCrbReport& report = *data.report;
-  const sdp::PoseCrbOptions& camera = report.camera;
+  const camera::PoseCrbReport& report = *data.report;
+  const camera::PoseCrbOptions& camera = report.camera;
   internal::draw_title(
       canvas,
       internal::figure_title(options,

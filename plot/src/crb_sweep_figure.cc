@@ -14,9 +14,9 @@
 namespace vantage::plot {
 namespace {
 
+using camera::PoseCrbMap;
+using camera::PoseCrbSweepRow;
 using internal::Canvas;
-using sdp::PoseCrbMap;
-using sdp::PoseCrbSweepRow;
 
 constexpr Rgb kMedianColour{31, 120, 180};  // blue: the median direction
 // Smallest value a log axis shows (a bound is never this small at a real distance).
@@ -25,7 +25,7 @@ constexpr double kMarkerPx = 3.5;
 // The two panels (page fractions): side by side under the title.
 constexpr internal::Viewport kPanels[2] = {{0.08, 0.39, 0.12, 0.70}, {0.585, 0.39, 0.12, 0.70}};
 
-void write_direction(internal::CsvWriter& csv, const sdp::PoseCrbAt& at, bool ok) {
+void write_direction(internal::CsvWriter& csv, const camera::PoseCrbAt& at, bool ok) {
   if (ok) {
     csv << at.direction.x() << at.direction.y() << at.direction.z() << at.rot_rms_deg
         << at.trans_rms;
@@ -41,7 +41,7 @@ void write_csv(const std::vector<PoseCrbSweepRow>& rows, const std::filesystem::
                           "median_rot_rms_deg,median_trans_rms");
   for (const PoseCrbSweepRow& row : rows) {
     const bool ok = row.status == PoseCrbMap::Status::kOk;
-    csv << row.distance << sdp::to_string(row.status) << row.trackable_fraction;
+    csv << row.distance << camera::to_string(row.status) << row.trackable_fraction;
     write_direction(csv, row.worst, ok);
     write_direction(csv, row.median, ok);
     csv.end_row();
@@ -59,7 +59,7 @@ Series series(const std::vector<PoseCrbSweepRow>& rows, int which, int quantity)
   Series s;
   for (const PoseCrbSweepRow& row : rows) {
     if (row.status != PoseCrbMap::Status::kOk) continue;
-    const sdp::PoseCrbAt& at = which == 0 ? row.worst : row.median;
+    const camera::PoseCrbAt& at = which == 0 ? row.worst : row.median;
     s.x.push_back(row.distance);
     s.ly.push_back(internal::log_clamped(quantity == 0 ? at.rot_rms_deg : at.trans_rms, kSmallest));
   }
@@ -112,9 +112,9 @@ void draw_panel(Canvas& canvas, const std::vector<PoseCrbSweepRow>& rows, int qu
   canvas.legend(lx, ly, legend, internal::kSmallSize * s);
 }
 
-void draw_figure(Canvas& canvas, const std::string& name, const sdp::PoseCrbReport& report,
+void draw_figure(Canvas& canvas, const std::string& name, const camera::PoseCrbReport& report,
                  const FigureOptions& options) {
-  const sdp::PoseCrbOptions& camera = report.camera;
+  const camera::PoseCrbOptions& camera = report.camera;
   internal::draw_title(canvas,
                        internal::figure_title(options, "Pose Cramér–Rao bound against distance: " +
                                                            internal::layout_label(name)),
@@ -139,7 +139,7 @@ void draw_figure(Canvas& canvas, const std::string& name, const sdp::PoseCrbRepo
 
 }  // namespace
 
-FigureFiles write_crb_sweep(const std::string& layout_name, const sdp::PoseCrbReport& report,
+FigureFiles write_crb_sweep(const std::string& layout_name, const camera::PoseCrbReport& report,
                             const std::filesystem::path& directory, const FigureOptions& options) {
   if (report.sweep_distance.size() < 2) {
     throw InvalidArgument("sweep_distance", "needs at least 2 distances, got " +
@@ -153,16 +153,16 @@ FigureFiles write_crb_sweep(const std::string& layout_name, const sdp::PoseCrbRe
   return files;
 }
 
-sdp::PoseCrbSweep default_crb_sweep(double distance, double radius) {
+camera::PoseCrbSweep default_crb_sweep(double distance, double radius) {
   return {std::max(0.5 * distance, 1.1 * radius), 2.0 * distance, kDefaultSweepCount};
 }
 
-CrbFigures crb_figures(const Layout& layout, const sdp::PoseCrbOptions& camera,
+CrbFigures crb_figures(const Layout& layout, const camera::PoseCrbOptions& camera,
                        const CrbFiguresOptions& options) {
   CrbFigures out;
   out.layout_name = layout.name;
-  out.model = std::make_shared<const sdp::PoseCrbModel>(layout, camera);
-  out.report = sdp::pose_crb_report(
+  out.model = std::make_shared<const camera::PoseCrbModel>(layout, camera);
+  out.report = camera::pose_crb_report(
       layout, camera, std::nullopt,
       options.sweep ? *options.sweep : default_crb_sweep(camera.distance, out.model->radius()));
   return out;

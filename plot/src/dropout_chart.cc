@@ -41,7 +41,7 @@ void write_csv(const DropoutChartData& data, const std::filesystem::path& path) 
                           "worst_y,worst_z,certified");
   long rank = 1;
   for (int k : data.dropout.by_harm) {
-    const sdp::DropoutEntry& e = data.dropout.entries[k];
+    const report::DropoutEntry& e = data.dropout.entries[k];
     csv << entry_label(data.mode, e.index) << static_cast<long>(e.index) << rank++
         << static_cast<long>(e.n_vectors) << e.pbar_min << e.max_worst_case_error_deg
         << e.worst_viewpoint.x() << e.worst_viewpoint.y() << e.worst_viewpoint.z()
@@ -67,7 +67,7 @@ void draw_chart(Canvas& canvas, const DropoutChartData& data, const FigureOption
           " lost (certified global worst viewpoint each time), most harmful first");
 
   double top = data.intact_max_error_deg;
-  for (const sdp::DropoutEntry& e : entries) top = std::max(top, e.max_worst_case_error_deg);
+  for (const report::DropoutEntry& e : entries) top = std::max(top, e.max_worst_case_error_deg);
   top = std::min(90.0, std::max(1.0, top * 1.3));
   const double worst_error = entries[data.dropout.by_harm.front()].max_worst_case_error_deg;
 
@@ -81,7 +81,7 @@ void draw_chart(Canvas& canvas, const DropoutChartData& data, const FigureOption
 
   const double half = std::min(0.38, 0.5 - 0.5 / (n + 1.0));
   for (std::size_t slot = 0; slot < n; ++slot) {
-    const sdp::DropoutEntry& e = entries[data.dropout.by_harm[slot]];
+    const report::DropoutEntry& e = entries[data.dropout.by_harm[slot]];
     const double x = slot + 1.0;
     const double h = e.max_worst_case_error_deg;
     const bool most_harmful = std::abs(h - worst_error) <= kHarmTieDeg;

@@ -12,7 +12,7 @@
 #include "vantage/plot/viewpoint_map.h"
 #include "vantage/plot/visibility_dropout_chart.h"
 #include "vantage/plot/visibility_maps.h"
-#include "vantage/sdp/visibility_model.h"
+#include "vantage/visibility/visibility_model.h"
 
 namespace vantage::plot {
 namespace {
@@ -29,8 +29,8 @@ bool applies(const char* name, bool has_design, bool has_visibility, bool has_pl
          (has_placement || n != "placement");
 }
 
-FigureFiles write_placement(const sdp::LayoutReport& report, const std::filesystem::path& directory,
-                            const FigureOptions& options) {
+FigureFiles write_placement(const report::LayoutReport& report,
+                            const std::filesystem::path& directory, const FigureOptions& options) {
   const Layout& layout = report.layout;
   PlacementFigureData data;
   data.layout_name = layout.name;
@@ -43,8 +43,9 @@ FigureFiles write_placement(const sdp::LayoutReport& report, const std::filesyst
     data.normals = Eigen::Matrix3Xd::Zero(3, layout.entries.cols());
   }
   if (report.visibility) {
-    const sdp::VisibilityWorstViewpoint& worst = report.visibility->worst;
-    const bool trackable = worst.status != sdp::VisibilityWorstViewpoint::Status::kUntrackable;
+    const visibility::VisibilityWorstViewpoint& worst = report.visibility->worst;
+    const bool trackable =
+        worst.status != visibility::VisibilityWorstViewpoint::Status::kUntrackable;
     data.pbar_min = trackable ? worst.pbar_min : 0.0;
     data.coverage = report.visibility->coverage.trackable_fraction;
   }
@@ -52,10 +53,10 @@ FigureFiles write_placement(const sdp::LayoutReport& report, const std::filesyst
 }
 
 // The seen-whole dropout error of each marker, when the report has it.
-std::vector<double> seen_whole_dropout(const sdp::LayoutReport& report) {
+std::vector<double> seen_whole_dropout(const report::LayoutReport& report) {
   if (!report.dropout) return {};
   std::vector<double> out(static_cast<std::size_t>(report.layout.entries.cols()), -1.0);
-  for (const sdp::DropoutEntry& e : report.dropout->entries) {
+  for (const report::DropoutEntry& e : report.dropout->entries) {
     if (e.index >= 0 && static_cast<std::size_t>(e.index) < out.size()) {
       out[static_cast<std::size_t>(e.index)] = e.max_worst_case_error_deg;
     }
@@ -64,16 +65,17 @@ std::vector<double> seen_whole_dropout(const sdp::LayoutReport& report) {
 }
 
 // The figures of a layout on its body that need its visibility at every direction.
-void write_body_maps(const sdp::LayoutReport& report, const std::filesystem::path& directory,
+void write_body_maps(const report::LayoutReport& report, const std::filesystem::path& directory,
                      const LayoutFiguresOptions& options, const std::vector<std::string>& names,
                      std::vector<FigureFiles>* files) {
   const bool map = wants(names, "viewpoint_map"), count = wants(names, "visibility");
   if (!map && !count) return;
-  const sdp::VisibilityReport& visibility = *report.visibility;
-  const sdp::VisibilityModel model = sdp::VisibilityModel::of(
-      report.layout,
-      visibility.occlusion_resolution_deg.value_or(sdp::VisibilityModel::kDefaultResolutionDeg),
-      options.figure.threads);
+  const visibility::VisibilityReport& visibility = *report.visibility;
+  const visibility::VisibilityModel model =
+      visibility::VisibilityModel::of(report.layout,
+                                      visibility.occlusion_resolution_deg.value_or(
+                                          visibility::VisibilityModel::kDefaultResolutionDeg),
+                                      options.figure.threads);
   const SphereSamples samples = sample_sphere(model, options.map_samples, options.figure.threads);
   VisibilityMapData data;
   data.layout_name = report.layout.name;
@@ -151,7 +153,7 @@ bool needs_dropout(const LayoutFiguresOptions& options, bool has_design, bool ha
   return wants(selected_figures(options, has_design, has_visibility, has_placement), "dropout");
 }
 
-LayoutFigures write_layout_figures(const sdp::LayoutReport& report,
+LayoutFigures write_layout_figures(const report::LayoutReport& report,
                                    const std::filesystem::path& directory,
                                    const LayoutFiguresOptions& options, const DesignCurve* design) {
   std::string why;
@@ -223,10 +225,10 @@ LayoutFigures write_layout_figures(const sdp::LayoutReport& report,
     vectors.paper_lmi_viewpoint = r.paper_lmi.viewpoint;
     vectors.paper_lmi_pbar = r.paper_lmi.pbar_at;
     if (on_body) {
-      const sdp::VisibilityReport& v = *report.visibility;
+      const visibility::VisibilityReport& v = *report.visibility;
       vectors.normals = layout.visibility->normals;
       if (layout.visibility->body) vectors.body = &*layout.visibility->body;
-      if (v.worst.status != sdp::VisibilityWorstViewpoint::Status::kUntrackable) {
+      if (v.worst.status != visibility::VisibilityWorstViewpoint::Status::kUntrackable) {
         vectors.body_worst_viewpoint = v.worst.viewpoint;
         vectors.body_visible_markers = v.worst.visible_markers;
         vectors.body_max_error_deg = v.max_worst_case_error_deg;

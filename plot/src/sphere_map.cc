@@ -42,7 +42,8 @@ double SphereSamples::trackable_fraction() const {
   return workspace == 0 ? 0.0 : static_cast<double>(trackable_cells) / workspace;
 }
 
-SphereSamples sample_sphere(const sdp::VisibilityModel& model, int samples_per_axis, int threads) {
+SphereSamples sample_sphere(const visibility::VisibilityModel& model, int samples_per_axis,
+                            int threads) {
   if (samples_per_axis < kMinMapSamples || samples_per_axis > kMaxMapSamples) {
     throw InvalidArgument("sample_sphere: samples_per_axis must be in [" +
                           std::to_string(kMinMapSamples) + ", " + std::to_string(kMaxMapSamples) +
@@ -65,7 +66,7 @@ SphereSamples sample_sphere(const sdp::VisibilityModel& model, int samples_per_a
       const int d = static_cast<int>(k / n), r = static_cast<int>(k % n);
       for (int c = 0; c < n; ++c) {
         const Eigen::Vector3d a = s.direction(d, r, c);
-        const sdp::DirectionVisibility v = model.at(a);
+        const visibility::DirectionVisibility v = model.at(a);
         s.visible[d](r, c) = static_cast<int>(v.visible.size());
         s.t[d](r, c) = v.t;
         s.trackable[d](r, c) = v.trackable ? 1 : 0;

@@ -44,14 +44,14 @@ std::string tre_vector_text(const Eigen::Vector3d& v, int decimals) {
   return "(" + shown(v.x()) + ", " + shown(v.y()) + ", " + shown(v.z()) + ")";
 }
 
-std::string tre_curve_text(const sdp::TreCurve& curve) {
+std::string tre_curve_text(const tracker::TreCurve& curve) {
   const std::string what = curve.label == "direction" ? "--direction" : curve.label;
   std::string text = what + " line of sight " + tre_vector_text(curve.direction, 3);
   if (!curve.tracked) return text + ": not tracked";
   return text + ", " + std::to_string(curve.visible_markers.size()) + " markers";
 }
 
-void write_tre_direction(CsvWriter& csv, const sdp::TreCurve* curve, int markers) {
+void write_tre_direction(CsvWriter& csv, const tracker::TreCurve* curve, int markers) {
   if (curve == nullptr) {
     csv << ""
         << ""

@@ -10,7 +10,7 @@
 #include "output_file.h"
 #include "vantage/analysis/target_registration.h"
 #include "vantage/plot/colormap.h"
-#include "vantage/sdp/tre_sweeps.h"
+#include "vantage/tracker/tre_sweeps.h"
 
 namespace vantage::plot::internal {
 
@@ -34,10 +34,10 @@ std::string tre_vector_text(const Eigen::Vector3d& v, int decimals);
 std::string tre_number_text(double x);
 
 /// "worst line of sight (0, 0, 1), 4 markers": a curve's legend text.
-std::string tre_curve_text(const sdp::TreCurve& curve);
+std::string tre_curve_text(const tracker::TreCurve& curve);
 
 /// The direction's three columns and the visible count of a CSV row; empty direction columns
 /// and `markers` for the isotropic formula (curve null).
-void write_tre_direction(CsvWriter& csv, const sdp::TreCurve* curve, int markers);
+void write_tre_direction(CsvWriter& csv, const tracker::TreCurve* curve, int markers);
 
 }  // namespace vantage::plot::internal

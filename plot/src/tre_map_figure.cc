@@ -21,8 +21,8 @@ namespace vantage::plot {
 namespace {
 
 using internal::Canvas;
-using sdp::TreAtDirection;
-using sdp::TreExtreme;
+using tracker::TreAtDirection;
+using tracker::TreExtreme;
 
 // The best direction's marker: white, apart from the red worst and from every viridis colour.
 constexpr Rgb kTreMapBestColour{255, 255, 255};
@@ -34,7 +34,7 @@ constexpr double kTreMapMinSpan = 1e-3;
 
 // The cells of the picture, and the RMS TRE of the first target as their value (NaN: not
 // tracked).
-internal::ValueCells sample_tre_cells(const sdp::TreModel& model, const Eigen::Vector3d& target,
+internal::ValueCells sample_tre_cells(const tracker::TreModel& model, const Eigen::Vector3d& target,
                                       int n, int threads) {
   return internal::sample_value_cells(n, threads, [&](const Eigen::Vector3d& a) {
     const TreAtDirection at = model.at(target, a);
@@ -48,7 +48,7 @@ struct TreMapScale {
   double hi = 1.0;
 };
 
-TreMapScale tre_map_scale(const internal::ValueCells& cells, const sdp::TreExtremes& extremes) {
+TreMapScale tre_map_scale(const internal::ValueCells& cells, const tracker::TreExtremes& extremes) {
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
   internal::widen_to_cells(cells, &lo, &hi);
   for (const TreExtreme* e : {&extremes.worst, &extremes.best}) {
@@ -80,7 +80,7 @@ void write_tre_map_row(internal::CsvWriter& csv, const char* kind, int disc,
 
 void write_tre_map_csv(const TreMapData& data, const std::filesystem::path& path) {
   internal::CsvWriter csv(path, "kind,disc,x,y,z,visible,tracked,rms");
-  const sdp::TreTargetReport& first = data.sweeps->report.targets.front();
+  const tracker::TreTargetReport& first = data.sweeps->report.targets.front();
   const std::pair<const char*, const TreExtreme*> extremes[] = {{"worst", &first.extremes.worst},
                                                                 {"best", &first.extremes.best}};
   for (const auto& [kind, e] : extremes) {
@@ -110,14 +110,14 @@ std::string tre_extreme_text(const char* what, const TreExtreme& e) {
   return std::string(what) + " line of sight " + internal::tre_vector_text(e.direction, 3) +
          ": RMS " + internal::tre_number_text(e.rms) + ", " +
          std::to_string(e.visible_markers.size()) + " markers, " +
-         (e.closed_form ? "exact" : sdp::to_string(e.status));
+         (e.closed_form ? "exact" : tracker::to_string(e.status));
 }
 
-void draw_tre_map_legends(Canvas& canvas, const sdp::TreSweeps& sweeps,
+void draw_tre_map_legends(Canvas& canvas, const tracker::TreSweeps& sweeps,
                           const internal::ValueCells& cells) {
   using Entry = Canvas::LegendEntry;
   const double s = internal::page_scale(canvas);
-  const sdp::TreExtremes& x = sweeps.report.targets.front().extremes;
+  const tracker::TreExtremes& x = sweeps.report.targets.front().extremes;
   std::vector<Entry> left;
   if (x.worst.status == TreExtreme::Status::kUntracked) {
     left.push_back(Entry::text_only("no line of sight tracks the tool"));
@@ -139,7 +139,7 @@ void draw_tre_map_legends(Canvas& canvas, const sdp::TreSweeps& sweeps,
   canvas.legend(0.98, 0.2, right, internal::kSmallSize * s, 1.0);
 }
 
-void draw_tre_map_extremes(Canvas& canvas, const sdp::TreExtremes& x) {
+void draw_tre_map_extremes(Canvas& canvas, const tracker::TreExtremes& x) {
   if (x.worst.status == TreExtreme::Status::kUntracked) return;
   const double s = internal::page_scale(canvas);
   internal::mark_direction(canvas, x.best.direction, 6.0 * s, kTreMapBestColour,
@@ -155,7 +155,7 @@ void draw_tre_map_extremes(Canvas& canvas, const sdp::TreExtremes& x) {
 
 void draw_tre_map(Canvas& canvas, const TreMapData& data, const internal::ValueCells& cells,
                   const FigureOptions& options) {
-  const sdp::TreTargetReport& first = data.sweeps->report.targets.front();
+  const tracker::TreTargetReport& first = data.sweeps->report.targets.front();
   internal::draw_title(
       canvas,
       internal::figure_title(
@@ -209,15 +209,15 @@ FigureFiles write_tre_map(const TreMapData& data, const std::filesystem::path& d
 }
 
 TreFigures tre_figures(const Layout& layout, const std::vector<Eigen::Vector3d>& targets,
-                       const sdp::TreOptions& tre, const TreFiguresOptions& options) {
+                       const tracker::TreOptions& tre, const TreFiguresOptions& options) {
   TreFigures out;
   out.layout_name = layout.name;
   TreMapData grids;
   grids.samples_per_axis = options.samples_per_axis;
   grids.csv_samples_per_axis = options.csv_samples_per_axis;
   check_tre_map_grids(grids);
-  out.model = std::make_shared<const sdp::TreModel>(layout, tre.fle);
-  out.sweeps = sdp::tre_sweeps(*out.model, targets, tre, options.sweep);
+  out.model = std::make_shared<const tracker::TreModel>(layout, tre.fle);
+  out.sweeps = tracker::tre_sweeps(*out.model, targets, tre, options.sweep);
   return out;
 }
 

@@ -16,8 +16,8 @@ namespace vantage::plot {
 namespace {
 
 using internal::Canvas;
-using sdp::TreCurve;
-using sdp::TrePolarSweep;
+using tracker::TreCurve;
+using tracker::TrePolarSweep;
 
 // The three panels' boxes (page fractions x0, x1; all share y0, y1 in pixels made square).
 constexpr double kPolarLeft[3] = {0.02, 0.345, 0.67};
@@ -34,7 +34,7 @@ constexpr Rgb kPolarAxisColours[3] = {{228, 26, 28}, {51, 160, 44}, {31, 120, 18
 // The strip under the polar panels: RMS against the angle, all three axes (page fractions).
 constexpr internal::Viewport kPolarStrip{0.09, 0.87, 0.075, 0.17};
 
-void write_polar_csv(const sdp::TreSweeps& sweeps, const std::filesystem::path& path) {
+void write_polar_csv(const tracker::TreSweeps& sweeps, const std::filesystem::path& path) {
   internal::CsvWriter csv(path,
                           "series,axis,direction_x,direction_y,direction_z,visible,angle_deg,"
                           "target_x,target_y,target_z,rms");
@@ -109,7 +109,7 @@ void draw_polar_grid(Canvas& canvas, int axis, double outer, double step) {
 }
 
 // The first target's angle about `axis` when it lies on the circle.
-bool polar_first_target_angle(const sdp::TreSweeps& sweeps, int axis, double* angle) {
+bool polar_first_target_angle(const tracker::TreSweeps& sweeps, int axis, double* angle) {
   const TrePolarSweep& polar = sweeps.polar;
   const Eigen::Vector3d offset = sweeps.report.targets.front().target - polar.centroid;
   if (std::abs(offset[axis]) > kPolarOnCircle * polar.radius ||
@@ -120,7 +120,7 @@ bool polar_first_target_angle(const sdp::TreSweeps& sweeps, int axis, double* an
   return true;
 }
 
-void draw_polar_panel(Canvas& canvas, const sdp::TreSweeps& sweeps, int axis, double outer,
+void draw_polar_panel(Canvas& canvas, const tracker::TreSweeps& sweeps, int axis, double outer,
                       double step) {
   const double s = internal::page_scale(canvas);
   const TrePolarSweep& polar = sweeps.polar;
@@ -208,7 +208,7 @@ void draw_polar_strip(Canvas& canvas, const TrePolarSweep& polar, double outer, 
   canvas.legend(lx, ly, legend, internal::kSmallSize * s);
 }
 
-void draw_polar_legend(Canvas& canvas, const sdp::TreSweeps& sweeps) {
+void draw_polar_legend(Canvas& canvas, const tracker::TreSweeps& sweeps) {
   using Entry = Canvas::LegendEntry;
   const double s = internal::page_scale(canvas);
   const TrePolarSweep& polar = sweeps.polar;
@@ -238,7 +238,7 @@ void draw_polar_legend(Canvas& canvas, const sdp::TreSweeps& sweeps) {
   canvas.legend(0.03, 0.395, legend, internal::kSmallSize * s);
 }
 
-void draw_polar_figure(Canvas& canvas, const std::string& name, const sdp::TreSweeps& sweeps,
+void draw_polar_figure(Canvas& canvas, const std::string& name, const tracker::TreSweeps& sweeps,
                        const FigureOptions& options) {
   const TrePolarSweep& polar = sweeps.polar;
   internal::draw_title(
@@ -263,7 +263,7 @@ void draw_polar_figure(Canvas& canvas, const std::string& name, const sdp::TreSw
 
 }  // namespace
 
-FigureFiles write_tre_polar(const std::string& layout_name, const sdp::TreSweeps& sweeps,
+FigureFiles write_tre_polar(const std::string& layout_name, const tracker::TreSweeps& sweeps,
                             const std::filesystem::path& directory, const FigureOptions& options) {
   const FigureFiles files = figure_files("tre_polar", directory, options.format);
   Canvas canvas(files.image, options);

@@ -15,8 +15,8 @@ namespace vantage::plot {
 namespace {
 
 using internal::Canvas;
-using sdp::TreCurve;
-using sdp::TreTipAxisSweep;
+using tracker::TreCurve;
+using tracker::TreTipAxisSweep;
 
 // The plot area (page fractions) under the two title lines.
 constexpr internal::Viewport kTipAxisPanel{0.09, 0.87, 0.11, 0.72};
@@ -24,7 +24,7 @@ constexpr internal::Viewport kTipAxisPanel{0.09, 0.87, 0.11, 0.72};
 constexpr double kTipAxisHeadroom = 0.08;
 constexpr double kTipAxisMarkerPx = 4.5;
 
-void write_tip_axis_csv(const sdp::TreSweeps& sweeps, const std::filesystem::path& path) {
+void write_tip_axis_csv(const tracker::TreSweeps& sweeps, const std::filesystem::path& path) {
   internal::CsvWriter csv(path,
                           "series,direction_x,direction_y,direction_z,visible,distance,target_x,"
                           "target_y,target_z,rms");
@@ -116,7 +116,7 @@ void draw_tip_axis_panel(Canvas& canvas, const TreTipAxisSweep& tip) {
 
 }  // namespace
 
-FigureFiles write_tre_tip_axis(const std::string& layout_name, const sdp::TreSweeps& sweeps,
+FigureFiles write_tre_tip_axis(const std::string& layout_name, const tracker::TreSweeps& sweeps,
                                const std::filesystem::path& directory,
                                const FigureOptions& options) {
   const FigureFiles files = figure_files("tre_tip_axis", directory, options.format);

@@ -70,7 +70,7 @@ void write_count_csv(const VisibilityMapData& data, const std::filesystem::path&
   internal::CsvWriter csv(path, "disc,x,y,z,visible,trackable,in_workspace,markers");
   const auto& workspace = data.model->problem().workspace;
   internal::for_each_csv_cell(
-      data, [&](int d, const Eigen::Vector3d& a, const sdp::DirectionVisibility& v) {
+      data, [&](int d, const Eigen::Vector3d& a, const visibility::DirectionVisibility& v) {
         std::string markers;
         for (int i : v.visible) markers += (markers.empty() ? "" : " ") + std::to_string(i);
         const bool inside = !workspace || a.dot(workspace->axis) >= workspace->cos_half_angle;
@@ -85,7 +85,7 @@ void draw_legend(Canvas& canvas, const VisibilityMapData& data, const SphereSamp
   using internal::fixed;
   using Entry = Canvas::LegendEntry;
   const double s = internal::page_scale(canvas);
-  const sdp::VisibilityReport& report = *data.report;
+  const visibility::VisibilityReport& report = *data.report;
   std::vector<Entry> left{Entry::line("trackable boundary (" + std::to_string(report.min_visible) +
                                           " markers seen, not in a line)",
                                       {255, 255, 255}, 2.0 * s),
@@ -95,7 +95,7 @@ void draw_legend(Canvas& canvas, const VisibilityMapData& data, const SphereSamp
     left.push_back(
         Entry::marker("outside the workspace", kOutsideWorkspaceColour, Canvas::Shape::kSquare));
   }
-  if (report.worst.status != sdp::VisibilityWorstViewpoint::Status::kUntrackable) {
+  if (report.worst.status != visibility::VisibilityWorstViewpoint::Status::kUntrackable) {
     left.push_back(Entry::marker("worst viewpoint: " + internal::worst_summary(report),
                                  kWorstViewpointColour));
   }
@@ -125,8 +125,8 @@ void draw_figure(Canvas& canvas, const VisibilityMapData& data, const SphereSamp
   internal::draw_trackable_boundary(canvas, samples);
   for (int d = 0; d < 2; ++d) internal::draw_disc_frame(canvas, d);
   internal::label_count_regions(canvas, samples, kCountLabelledFraction);
-  const sdp::VisibilityReport& report = *data.report;
-  if (report.worst.status != sdp::VisibilityWorstViewpoint::Status::kUntrackable) {
+  const visibility::VisibilityReport& report = *data.report;
+  if (report.worst.status != visibility::VisibilityWorstViewpoint::Status::kUntrackable) {
     const double s = internal::page_scale(canvas);
     for (const Eigen::Vector3d& a : report.worst.viewpoints) {
       internal::mark_direction(canvas, a, 5.0 * s, kWorstViewpointColour);

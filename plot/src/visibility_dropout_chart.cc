@@ -12,7 +12,7 @@ namespace vantage::plot {
 namespace {
 
 using internal::Canvas;
-using Status = sdp::VisibilityWorstViewpoint::Status;
+using Status = visibility::VisibilityWorstViewpoint::Status;
 
 // Bars up to this count carry their p-bar_min as text.
 constexpr std::size_t kMaxAnnotatedBars = 24;
@@ -57,10 +57,10 @@ void write_csv(const VisibilityDropoutChartData& data, const std::filesystem::pa
   internal::CsvWriter csv(path,
                           "entry,index,rank,status,pbar_min,max_worst_case_error_deg,"
                           "trackable_fraction,seen_whole_error_deg");
-  const sdp::VisibilityReport& report = *data.report;
+  const visibility::VisibilityReport& report = *data.report;
   long rank = 1;
   for (int k : report.dropout_by_harm) {
-    const sdp::VisibilityDropoutEntry& e = report.dropout[static_cast<std::size_t>(k)];
+    const visibility::VisibilityDropoutEntry& e = report.dropout[static_cast<std::size_t>(k)];
     csv << entry_label(e.lost) << static_cast<long>(e.lost) << rank++ << to_string(e.status)
         << e.pbar_min << e.max_worst_case_error_deg << e.trackable_fraction;
     const double whole = seen_whole(data, e.lost);
@@ -92,10 +92,10 @@ void dashed_level(Canvas& canvas, double x0, double x1, double y) {
 void draw_error_panel(Canvas& canvas, const VisibilityDropoutChartData& data, double half) {
   using internal::fixed;
   const double s = internal::page_scale(canvas);
-  const sdp::VisibilityReport& report = *data.report;
+  const visibility::VisibilityReport& report = *data.report;
   const std::size_t n = report.dropout.size();
   double top = report.max_worst_case_error_deg;
-  for (const sdp::VisibilityDropoutEntry& e : report.dropout) {
+  for (const visibility::VisibilityDropoutEntry& e : report.dropout) {
     top = std::max(top, e.max_worst_case_error_deg);
   }
   // The legend takes the panel's top third: the bars stay below it.
@@ -111,7 +111,7 @@ void draw_error_panel(Canvas& canvas, const VisibilityDropoutChartData& data, do
   pls.box("", 0.0, 0, "g", 0.0, 0);
   const double text = internal::kSmallSize * s * (n > 14 ? 0.8 : 1.0);
   for (std::size_t slot = 0; slot < n; ++slot) {
-    const sdp::VisibilityDropoutEntry& e =
+    const visibility::VisibilityDropoutEntry& e =
         report.dropout[static_cast<std::size_t>(report.dropout_by_harm[slot])];
     const double x = slot + 1.0;
     const bool untrackable = e.status == Status::kUntrackable;
@@ -136,10 +136,10 @@ void draw_error_panel(Canvas& canvas, const VisibilityDropoutChartData& data, do
 
 void draw_trackable_panel(Canvas& canvas, const VisibilityDropoutChartData& data, double half) {
   const double s = internal::page_scale(canvas);
-  const sdp::VisibilityReport& report = *data.report;
+  const visibility::VisibilityReport& report = *data.report;
   const std::size_t n = report.dropout.size();
   double lowest = report.coverage.trackable_fraction;
-  for (const sdp::VisibilityDropoutEntry& e : report.dropout) {
+  for (const visibility::VisibilityDropoutEntry& e : report.dropout) {
     lowest = std::min(lowest, e.trackable_fraction);
   }
   const double lo = std::max(0.0, 10.0 * std::floor(10.0 * lowest - 0.5));
@@ -152,7 +152,7 @@ void draw_trackable_panel(Canvas& canvas, const VisibilityDropoutChartData& data
   pls.box("", 0.0, 0, "g", 0.0, 0);
   const std::size_t label_every = std::max<std::size_t>(1, n / 40 + 1);
   for (std::size_t slot = 0; slot < n; ++slot) {
-    const sdp::VisibilityDropoutEntry& e =
+    const visibility::VisibilityDropoutEntry& e =
         report.dropout[static_cast<std::size_t>(report.dropout_by_harm[slot])];
     const double x = slot + 1.0;
     const double h = std::max(lo, 100.0 * e.trackable_fraction);
@@ -177,7 +177,7 @@ void draw_chart(Canvas& canvas, const VisibilityDropoutChartData& data,
                 const FigureOptions& options) {
   using internal::fixed;
   const double s = internal::page_scale(canvas);
-  const sdp::VisibilityReport& report = *data.report;
+  const visibility::VisibilityReport& report = *data.report;
   internal::draw_title(
       canvas,
       internal::figure_title(options,

@@ -33,9 +33,9 @@ const SphereSamples& picture_samples(const VisibilityMapData& data, const Figure
   return **owned;
 }
 
-void for_each_csv_cell(
-    const VisibilityMapData& data,
-    const std::function<void(int, const Eigen::Vector3d&, const sdp::DirectionVisibility&)>& cell) {
+void for_each_csv_cell(const VisibilityMapData& data,
+                       const std::function<void(int, const Eigen::Vector3d&,
+                                                const visibility::DirectionVisibility&)>& cell) {
   const int n = std::min(data.csv_samples_per_axis, data.samples_per_axis);
   for (int d = 0; d < 2; ++d) {
     for (int r = 0; r < n; ++r) {
@@ -54,7 +54,7 @@ double visibility_error_deg(double t) {
   return kDegreesPerRadian * std::asin(std::clamp(t, 0.0, 1.0));
 }
 
-std::string worst_summary(const sdp::VisibilityReport& report) {
+std::string worst_summary(const visibility::VisibilityReport& report) {
   const std::size_t seen = report.worst.visible_markers.size();
   return "error " + fixed(report.max_worst_case_error_deg, 2) + "° (p̄_min " +
          fixed(report.worst.pbar_min, 4) + "), " + std::to_string(seen) + " marker" +

@@ -21,14 +21,14 @@ const SphereSamples& picture_samples(const VisibilityMapData& data, const Figure
 
 /// Calls cell(disc, a, visibility) for every cell inside either disc of the CSV's grid, disc 0
 /// first, row by row from the top.
-void for_each_csv_cell(
-    const VisibilityMapData& data,
-    const std::function<void(int, const Eigen::Vector3d&, const sdp::DirectionVisibility&)>& cell);
+void for_each_csv_cell(const VisibilityMapData& data,
+                       const std::function<void(int, const Eigen::Vector3d&,
+                                                const visibility::DirectionVisibility&)>& cell);
 
 /// asin t in degrees (t clamped to [0, 1]).
 double visibility_error_deg(double t);
 
 /// The worst viewpoint's line of the legends: "error 25.90° (p̄_min 0.8995), 7 markers seen".
-std::string worst_summary(const sdp::VisibilityReport& report);
+std::string worst_summary(const visibility::VisibilityReport& report);
 
 }  // namespace vantage::plot::internal

@@ -28,7 +28,7 @@ internal::Raster error_raster(const SphereSamples& s, int d, double hi) {
 void write_error_csv(const VisibilityMapData& data, const std::filesystem::path& path) {
   internal::CsvWriter csv(path, "disc,x,y,z,visible,trackable,pbar,max_error_deg");
   internal::for_each_csv_cell(
-      data, [&](int d, const Eigen::Vector3d& a, const sdp::DirectionVisibility& v) {
+      data, [&](int d, const Eigen::Vector3d& a, const visibility::DirectionVisibility& v) {
         csv << d << a.x() << a.y() << a.z() << static_cast<long>(v.visible.size())
             << (v.trackable ? 1 : 0);
         if (v.trackable) {
@@ -48,10 +48,10 @@ void draw_legends(Canvas& canvas, const VisibilityMapData& data, const SphereSam
   using internal::fixed;
   using Entry = Canvas::LegendEntry;
   const double s = internal::page_scale(canvas);
-  const sdp::VisibilityReport& report = *data.report;
+  const visibility::VisibilityReport& report = *data.report;
   const std::size_t ties = report.worst.viewpoints.size();
   std::vector<Entry> left;
-  if (report.worst.status == sdp::VisibilityWorstViewpoint::Status::kUntrackable) {
+  if (report.worst.status == visibility::VisibilityWorstViewpoint::Status::kUntrackable) {
     left.push_back(Entry::text_only("no direction of the workspace is trackable"));
   } else {
     left.push_back(
@@ -89,8 +89,8 @@ void draw_legends(Canvas& canvas, const VisibilityMapData& data, const SphereSam
   canvas.legend(0.98, 0.215, right, internal::kSmallSize * s, 1.0);
 }
 
-void draw_worst(Canvas& canvas, const sdp::VisibilityReport& report) {
-  if (report.worst.status == sdp::VisibilityWorstViewpoint::Status::kUntrackable) return;
+void draw_worst(Canvas& canvas, const visibility::VisibilityReport& report) {
+  if (report.worst.status == visibility::VisibilityWorstViewpoint::Status::kUntrackable) return;
   const double s = internal::page_scale(canvas);
   for (const Eigen::Vector3d& a : report.worst.viewpoints) {
     internal::mark_direction(canvas, a, 6.5 * s, kWorstViewpointColour);
@@ -103,7 +103,7 @@ void draw_worst(Canvas& canvas, const sdp::VisibilityReport& report) {
 
 void draw_map(Canvas& canvas, const VisibilityMapData& data, const SphereSamples& samples,
               const FigureOptions& options) {
-  const sdp::VisibilityReport& report = *data.report;
+  const visibility::VisibilityReport& report = *data.report;
   internal::draw_title(
       canvas,
       internal::figure_title(

@@ -11,7 +11,7 @@
 #include "layouts.h"
 #include "results.h"
 #include "vantage/analysis/common.h"
-#include "vantage/sdp/pose_crb.h"
+#include "vantage/camera/pose_crb.h"
 
 namespace vantage::python {
 
@@ -26,7 +26,7 @@ py::object crb(const py::object& layout_arg, const py::object& points, double di
   const Layout layout =
       layout_from_arguments(layout_arg, py::none(), points, py::none(), py::none(),
                             {format, tag_points, bundle, false}, &source);
-  sdp::PoseCrbOptions options;
+  camera::PoseCrbOptions options;
   options.distance = distance;
   options.focal_length = focal;
   options.noise_px = noise_px;
@@ -43,14 +43,14 @@ py::object crb(const py::object& layout_arg, const py::object& points, double di
     if (d.size() != 3) throw InvalidArgument("direction", "expected [ax, ay, az]");
     a = Eigen::Vector3d(d);
   }
-  std::optional<sdp::PoseCrbSweep> sweep;
+  std::optional<camera::PoseCrbSweep> sweep;
   if (!sweep_distance.is_none()) {
     const auto t = sweep_distance.cast<std::tuple<double, double, int>>();
-    sweep = sdp::PoseCrbSweep{std::get<0>(t), std::get<1>(t), std::get<2>(t)};
+    sweep = camera::PoseCrbSweep{std::get<0>(t), std::get<1>(t), std::get<2>(t)};
   }
-  const sdp::PoseCrbReport report = without_gil([&] {
+  const camera::PoseCrbReport report = without_gil([&] {
     try {
-      return sdp::pose_crb_report(layout, options, a, sweep);
+      return camera::pose_crb_report(layout, options, a, sweep);
     } catch (const InvalidArgument& e) {
       throw source.empty() || e.field() != "vectors" ? e : e.against(source);
     }

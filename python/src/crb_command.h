@@ -1,6 +1,6 @@
 #pragma once
 
-// vantage.crb: the pose CRB report of sdp::pose_crb_report(), as the fields of `vantage crb
+// vantage.crb: the pose CRB report of camera::pose_crb_report(), as the fields of `vantage crb
 // --json`.
 
 #include <pybind11/pybind11.h>

@@ -16,7 +16,7 @@
 #include "vantage/design/augment.h"
 #include "vantage/design/limits.h"
 #include "vantage/design/weights.h"
-#include "vantage/sdp/layout_report.h"
+#include "vantage/report/layout_report.h"
 
 namespace vantage::python {
 
@@ -58,14 +58,14 @@ py::tuple analyze(const py::object& layout_arg, const py::object& vectors, const
                           design::kMaxDropoutVectors, "analyze", allow_large, kPythonWords);
     }
   });
-  sdp::LayoutReportOptions options;
+  report::LayoutReportOptions options;
   options.dropout = dropout;
   options.pair_weighting = pair_weighting == "arithmetic" ? PairWeighting::kArithmeticMean
                                                           : PairWeighting::kGeometricMean;
   options.analysis.swap_count = swaps;
   options.analysis.run_crosscheck = crosscheck;
-  const sdp::LayoutReport report =
-      without_gil([&] { return sdp::analyze_layout(layout, options); });
+  const report::LayoutReport report =
+      without_gil([&] { return report::analyze_layout(layout, options); });
   const sdp::LayoutAnalysis& r = report.analysis;
   const bool certified = r.solver.status == sdp::WorstViewpoint::Status::kCertified;
   const std::string status = r.degenerate        ? "degenerate"
@@ -74,7 +74,7 @@ py::tuple analyze(const py::object& layout_arg, const py::object& vectors, const
                                                  : "crosscheck_disagrees";
   const std::string brief = report.brief_report();
   return py::make_tuple(result_or_raise(!report.is_usable(), status, report.message(),
-                                        Json::parse(sdp::to_json(report)), brief),
+                                        Json::parse(report::to_json(report)), brief),
                         brief);
 }
 

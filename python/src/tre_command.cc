@@ -13,7 +13,7 @@
 #include "results.h"
 #include "tre_json.h"
 #include "vantage/analysis/common.h"
-#include "vantage/sdp/tre_report.h"
+#include "vantage/tracker/tre_report.h"
 
 namespace vantage::python {
 
@@ -72,7 +72,7 @@ py::object tre(const py::object& layout_arg, const py::object& points, const py:
       layout_from_arguments(layout_arg, py::none(), points, py::none(), py::none(),
                             {format, tag_points, bundle, false}, &source);
   const std::vector<Eigen::Vector3d> target_list = tre_targets(targets);
-  sdp::TreOptions options;
+  tracker::TreOptions options;
   options.fle = tre_fle(fle_rms, fle_sigma);
   if (!direction.is_none()) {
     const Eigen::VectorXd d = vector_from_array(direction, "direction");
@@ -88,9 +88,9 @@ py::object tre(const py::object& layout_arg, const py::object& points, const py:
   options.monte_carlo_trials = monte_carlo;
   options.seed = seed;
   options.threads = threads;
-  const sdp::TreReport report = without_gil([&] {
+  const tracker::TreReport report = without_gil([&] {
     try {
-      return sdp::tre_report(layout, target_list, options);
+      return tracker::tre_report(layout, target_list, options);
     } catch (const InvalidArgument& e) {
       throw source.empty() || e.field() != "points" ? e : e.against(source);
     }

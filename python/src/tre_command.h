@@ -1,6 +1,6 @@
 #pragma once
 
-// vantage.tre: the target registration error report of sdp::tre_report(), as the fields of
+// vantage.tre: the target registration error report of tracker::tre_report(), as the fields of
 // `vantage tre --json`.
 
 #include <pybind11/pybind11.h>

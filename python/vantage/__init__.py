@@ -1,7 +1,7 @@
 """vantage: evaluate and design fiducial layouts for pose from a single affine image.
 
 Bindings over the C++ libraries: vantage.analyze calls the library's one layout report
-(sdp::analyze_layout), vantage.pose its one pose front door (estimate_pose). Every function
+(report::analyze_layout), vantage.pose its one pose front door (estimate_pose). Every function
 returns a typed result (vantage.LayoutReport, vantage.PoseEstimate, ...) whose attributes are
 the fields of the matching ``vantage`` subcommand's ``--json`` output, vectors and matrices as
 numpy arrays; ``to_dict()`` is that JSON object.

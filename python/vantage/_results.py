@@ -289,7 +289,7 @@ class LayoutVisibility(_JsonView):
 
 
 class LayoutReport(_JsonView):
-    """The report of one layout (``vantage analyze --json``; C++ sdp::LayoutReport).
+    """The report of one layout (``vantage analyze --json``; C++ report::LayoutReport).
 
     ``repr()`` is the library's brief report; ``usable`` says whether the numbers can be relied
     on and ``message`` (None when usable) says why not.

@@ -27,7 +27,7 @@ def _optional_float(value: Any) -> Optional[float]:
 
 class CrbBound(_JsonView):
     """The pose CRB at one viewing direction (``vantage crb --json``'s ``worst``, ``best``,
-    ``at_direction``; C++ sdp::PoseCrbAt). rot_rms_deg and trans_rms are None when the direction
+    ``at_direction``; C++ camera::PoseCrbAt). rot_rms_deg and trans_rms are None when the direction
     is not trackable; ``covariance`` (6 x 6, ROS order x, y, z, rx, ry, rz, camera frame) only
     for ``at_direction``.
     """
@@ -59,7 +59,7 @@ class CrbSweepRow(_JsonView):
 
 class CrbReport(_JsonView):
     """The pose Cramér–Rao bound over every viewpoint (``vantage crb --json``; C++
-    sdp::PoseCrbReport; docs/math.md §22)."""
+    camera::PoseCrbReport; docs/math.md §22)."""
 
     def __init__(self, fields: Mapping[str, Any]) -> None:
         super().__init__(fields)
@@ -84,7 +84,7 @@ class CrbReport(_JsonView):
 
 class TreExtreme(_JsonView):
     """The worst or best RMS TRE over the tracked lines of sight (``vantage tre --json``'s
-    ``worst``, ``best``; C++ sdp::TreExtreme). direction and rms are nan when no line of sight
+    ``worst``, ``best``; C++ tracker::TreExtreme). direction and rms are nan when no line of sight
     is tracked (status 'untracked'); rms_bound is the proven bound, certified when every patch
     closed."""
 
@@ -102,7 +102,7 @@ class TreExtreme(_JsonView):
 
 
 class TreAtDirection(_JsonView):
-    """The TRE at the given line of sight (``at_direction``; C++ sdp::TreAtDirection): rms (nan
+    """The TRE at the given line of sight (``at_direction``; C++ tracker::TreAtDirection): rms (nan
     when not tracked) and its 3 x 3 covariance in the tool frame (None when not tracked)."""
 
     def __init__(self, fields: Mapping[str, Any]) -> None:
@@ -130,7 +130,7 @@ class TreMonteCarlo(_JsonView):
 
 
 class TreTarget(_JsonView):
-    """One target's TRE (an entry of ``targets``; C++ sdp::TreTargetReport)."""
+    """One target's TRE (an entry of ``targets``; C++ tracker::TreTargetReport)."""
 
     def __init__(self, fields: Mapping[str, Any]) -> None:
         super().__init__(fields)
@@ -146,7 +146,7 @@ class TreTarget(_JsonView):
 
 class TreReport(_JsonView):
     """The target registration error of a tool on a 3-D tracker (``vantage tre --json``; C++
-    sdp::TreReport; docs/math.md §23): per target, Fitzpatrick's isotropic RMS, the TRE at a line
+    tracker::TreReport; docs/math.md §23): per target, Fitzpatrick's isotropic RMS, the TRE at a line
     of sight, the certified worst and best over the tracked lines of sight, Monte Carlo."""
 
     def __init__(self, fields: Mapping[str, Any]) -> None:

@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include "min_norm_point.h"
 #include "vantage/analysis/common.h"
+#include "vantage/sdp/internal/min_norm_point.h"
 #include "vantage/sdp/worst_viewpoint.h"
 
 namespace vantage::sdp {

@@ -6,8 +6,8 @@
 #include <limits>
 #include <numeric>
 
-#include "min_norm_point.h"
 #include "vantage/analysis/parallel.h"
+#include "vantage/sdp/internal/min_norm_point.h"
 
 namespace vantage::sdp::internal {
 namespace {

@@ -6,11 +6,11 @@
 #include <sstream>
 #include <string>
 
-#include "message_parts.h"
 #include "narrowest_cone.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/error_bounds.h"
 #include "vantage/analysis/scaling.h"
+#include "vantage/sdp/internal/message_parts.h"
 
 namespace vantage::sdp {
 

@@ -1,4 +1,4 @@
-#include "min_norm_point.h"
+#include "vantage/sdp/internal/min_norm_point.h"
 
 #include <Eigen/Dense>
 #include <algorithm>

@@ -6,10 +6,10 @@
 #include <sstream>
 
 #include "global_search.h"
-#include "message_parts.h"
-#include "min_norm_point.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/scaling.h"
+#include "vantage/sdp/internal/message_parts.h"
+#include "vantage/sdp/internal/min_norm_point.h"
 
 namespace vantage::sdp {
 namespace {

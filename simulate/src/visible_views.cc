@@ -21,15 +21,15 @@ std::string percent(double fraction) {
   return s.str();
 }
 
-VisibilitySetup make_setup(const Layout& layout, const sdp::VisibilityModel& model) {
-  const sdp::VisibilityProblem& problem = model.problem();
+VisibilitySetup make_setup(const Layout& layout, const visibility::VisibilityModel& model) {
+  const visibility::VisibilityProblem& problem = model.problem();
   VisibilitySetup setup;
   setup.with_body = model.has_body();
   setup.min_visible = problem.min_visible;
   setup.workspace = layout.workspace;
   setup.occlusion_resolution_deg = model.resolution_deg();
-  const sdp::VisibilityCoverage coverage =
-      sdp::visibility_coverage(problem, VisibleViews::kCoverageSamples);
+  const visibility::VisibilityCoverage coverage =
+      visibility::visibility_coverage(problem, VisibleViews::kCoverageSamples);
   setup.trackable_fraction = coverage.trackable_fraction;
   setup.coverage_samples = coverage.samples;
   const std::string sees = "no direction of the workspace sees " +
@@ -45,8 +45,9 @@ VisibilitySetup make_setup(const Layout& layout, const sdp::VisibilityModel& mod
                                             percent(VisibleViews::kMinTrackableFraction) +
                                             "): too few directions to draw random views from");
   }
-  const sdp::VisibilityWorstViewpoint worst = sdp::visibility_worst_viewpoint(problem);
-  if (worst.status == sdp::VisibilityWorstViewpoint::Status::kUntrackable) {
+  const visibility::VisibilityWorstViewpoint worst =
+      visibility::visibility_worst_viewpoint(problem);
+  if (worst.status == visibility::VisibilityWorstViewpoint::Status::kUntrackable) {
     throw InvalidArgument("visibility", sees + ": there is no view to simulate");
   }
   if (!worst.certified()) {
@@ -88,7 +89,7 @@ double pair_t(const Eigen::Matrix3Xd& points, const std::vector<int>& visible,
 }  // namespace
 
 VisibleViews::VisibleViews(const Layout& layout)
-    : model_(sdp::VisibilityModel::of(layout)),
+    : model_(visibility::VisibilityModel::of(layout)),
       camera_(layout),
       setup_(make_setup(layout, model_)) {}
 

@@ -28,10 +28,10 @@ constexpr double kSameLattice = 1e-12;
 constexpr int kLattice = 4000;
 
 // n sites on the unit sphere (seeded), radial normals, every cone `cone_deg`.
-sdp::VisibilityProblem sphere_sites(int n, double cone_deg, unsigned seed) {
+visibility::VisibilityProblem sphere_sites(int n, double cone_deg, unsigned seed) {
   std::mt19937 engine(seed);
   std::normal_distribution<double> gauss;
-  sdp::VisibilityProblem out;
+  visibility::VisibilityProblem out;
   out.points.resize(3, n);
   for (int i = 0; i < n; ++i) {
     Eigen::Vector3d v(gauss(engine), gauss(engine), gauss(engine));
@@ -42,8 +42,9 @@ sdp::VisibilityProblem sphere_sites(int n, double cone_deg, unsigned seed) {
   return out;
 }
 
-sdp::VisibilityProblem subset(const sdp::VisibilityProblem& all, const std::vector<int>& chosen) {
-  sdp::VisibilityProblem out = all;
+visibility::VisibilityProblem subset(const visibility::VisibilityProblem& all,
+                                     const std::vector<int>& chosen) {
+  visibility::VisibilityProblem out = all;
   const Eigen::Index n = static_cast<Eigen::Index>(chosen.size());
   out.points.resize(3, n);
   out.normals.resize(3, n);
@@ -65,11 +66,11 @@ struct Truth {
 // Every K-subset, scored by sdp's own coverage and certified search (not place's code): first
 // at a coarse tolerance, then again at kTruthTolerance for the subsets that may be optimal
 // (t_lower at or below the least t_upper).
-Truth enumerate(const sdp::VisibilityProblem& all, int k) {
+Truth enumerate(const visibility::VisibilityProblem& all, int k) {
   struct Candidate {
     std::vector<int> chosen;
     double coverage;
-    sdp::VisibilityWorstViewpoint coarse;
+    visibility::VisibilityWorstViewpoint coarse;
   };
   std::vector<Candidate> candidates;
   const int n = static_cast<int>(all.points.cols());
@@ -77,10 +78,10 @@ Truth enumerate(const sdp::VisibilityProblem& all, int k) {
   for (int i = 0; i < k; ++i) idx[static_cast<std::size_t>(i)] = i;
   double top = -1.0;
   while (true) {
-    const sdp::VisibilityProblem p = subset(all, idx);
-    const double coverage = sdp::visibility_coverage(p, kLattice).trackable_fraction;
+    const visibility::VisibilityProblem p = subset(all, idx);
+    const double coverage = visibility::visibility_coverage(p, kLattice).trackable_fraction;
     top = std::max(top, coverage);
-    candidates.push_back({idx, coverage, sdp::visibility_worst_viewpoint(p)});
+    candidates.push_back({idx, coverage, visibility::visibility_worst_viewpoint(p)});
     int i = k - 1;
     while (i >= 0 && idx[static_cast<std::size_t>(i)] == n - k + i) --i;
     if (i < 0) break;
@@ -88,22 +89,22 @@ Truth enumerate(const sdp::VisibilityProblem& all, int k) {
     for (int j = i + 1; j < k; ++j)
       idx[static_cast<std::size_t>(j)] = idx[static_cast<std::size_t>(j - 1)] + 1;
   }
-  using Status = sdp::VisibilityWorstViewpoint::Status;
+  using Status = visibility::VisibilityWorstViewpoint::Status;
   double least_upper = 1.0;
   for (const Candidate& c : candidates) {
     if (c.coverage > top - kSameLattice && c.coarse.status == Status::kCertified) {
       least_upper = std::min(least_upper, c.coarse.t_upper);
     }
   }
-  sdp::VisibilitySearchOptions tight;
+  visibility::VisibilitySearchOptions tight;
   tight.certificate_tolerance = kTruthTolerance;
   Truth best;
   best.coverage = top;
   for (const Candidate& c : candidates) {
     if (c.coverage < top - kSameLattice || c.coarse.status == Status::kUntrackable) continue;
     if (c.coarse.status == Status::kCertified && c.coarse.t_lower > least_upper) continue;
-    const sdp::VisibilityWorstViewpoint w =
-        sdp::visibility_worst_viewpoint(subset(all, c.chosen), tight);
+    const visibility::VisibilityWorstViewpoint w =
+        visibility::visibility_worst_viewpoint(subset(all, c.chosen), tight);
     if (w.t_upper < best.t) {
       best.t = w.t_upper;
       best.chosen = c.chosen;
@@ -123,7 +124,7 @@ PlaceOptions small_options(double tolerance = 1e-7) {
 
 struct Instance {
   const char* name;
-  sdp::VisibilityProblem sites;
+  visibility::VisibilityProblem sites;
 };
 
 struct Solved {
@@ -138,7 +139,8 @@ const std::vector<Solved>& small_instances() {
     std::vector<Instance> cases;
     cases.push_back({"whole sphere, 150 deg cones", sphere_sites(10, 150.0, kSeed)});
     Instance cone{"workspace cone of 50 deg, 120 deg cones", sphere_sites(10, 120.0, kSeed + 1)};
-    cone.sites.workspace = sdp::Workspace{Eigen::Vector3d::UnitZ(), std::cos(50.0 * kPi / 180.0)};
+    cone.sites.workspace =
+        visibility::Workspace{Eigen::Vector3d::UnitZ(), std::cos(50.0 * kPi / 180.0)};
     cases.push_back(cone);
     std::vector<Solved> out;
     for (const Instance& c : cases) out.push_back({c, enumerate(c.sites, 4)});
@@ -256,14 +258,14 @@ TEST(PlaceMarkers, RobustValueIsTheWorstSingleLoss) {
   options.robust_dropout = true;
   const PlacementResult result = place_markers(problem, options);
   ASSERT_TRUE(result.robust.has_value());
-  sdp::VisibilitySearchOptions tight;
+  visibility::VisibilitySearchOptions tight;
   tight.certificate_tolerance = kTruthTolerance;
   double worst_t = 0.0;
   for (std::size_t m = 0; m < result.chosen.size(); ++m) {
     std::vector<int> rest = result.chosen;
     rest.erase(rest.begin() + static_cast<long>(m));
-    const sdp::VisibilityWorstViewpoint w =
-        sdp::visibility_worst_viewpoint(subset(problem.sites, rest), tight);
+    const visibility::VisibilityWorstViewpoint w =
+        visibility::visibility_worst_viewpoint(subset(problem.sites, rest), tight);
     worst_t = std::max(worst_t, w.t_upper);
   }
   // place certifies at the default 1e-7 in t; at these t, p-bar moves by less than 1e-6.

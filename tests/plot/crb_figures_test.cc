@@ -39,8 +39,8 @@ Layout cube_layout() {
   return io::load_layout(std::string(VANTAGE_SOURCE_DIR) + "/examples/layouts/apriltag_cube.yaml");
 }
 
-sdp::PoseCrbOptions cube_camera() {
-  sdp::PoseCrbOptions camera;
+camera::PoseCrbOptions cube_camera() {
+  camera::PoseCrbOptions camera;
   camera.distance = 2.0;
   camera.focal_length = 900.0;
   camera.noise_px = 0.3;
@@ -52,11 +52,11 @@ CrbFiguresOptions small_figures() {
   CrbFiguresOptions options;
   options.samples_per_axis = kPictureSamples;
   options.csv_samples_per_axis = kCsvSamples;
-  options.sweep = sdp::PoseCrbSweep{1.5, 3.0, 3};
+  options.sweep = camera::PoseCrbSweep{1.5, 3.0, 3};
   return options;
 }
 
-void expect_row(const Csv& csv, std::size_t row, const sdp::PoseCrbAt& at) {
+void expect_row(const Csv& csv, std::size_t row, const camera::PoseCrbAt& at) {
   EXPECT_NEAR(csv.number(row, "x"), at.direction.x(), kRounding);
   EXPECT_NEAR(csv.number(row, "y"), at.direction.y(), kRounding);
   EXPECT_NEAR(csv.number(row, "z"), at.direction.z(), kRounding);
@@ -78,7 +78,7 @@ TEST(CrbFigures, MapCsvHoldsTheBoundOfEveryCellAndTheReportsExtremes) {
   write_crb_figures(figures, small_figures(), dir.path());
   ASSERT_EQ(figures.files.size(), 2u);
   EXPECT_EQ(figures.files[0].name, "crb_map");
-  ASSERT_EQ(figures.report.map.status, sdp::PoseCrbMap::Status::kOk);
+  ASSERT_EQ(figures.report.map.status, camera::PoseCrbMap::Status::kOk);
 
   const Csv csv = read_csv(figures.files[0].csv);
   ASSERT_GE(csv.rows.size(), 2u);
@@ -87,7 +87,7 @@ TEST(CrbFigures, MapCsvHoldsTheBoundOfEveryCellAndTheReportsExtremes) {
   EXPECT_EQ(csv.text(1, "kind"), "best");
   expect_row(csv, 1, figures.report.map.best);
 
-  const sdp::PoseCrbModel apart(layout, cube_camera());
+  const camera::PoseCrbModel apart(layout, cube_camera());
   std::size_t row = 2;
   int trackable = 0;
   for (int d = 0; d < 2; ++d) {
@@ -99,7 +99,7 @@ TEST(CrbFigures, MapCsvHoldsTheBoundOfEveryCellAndTheReportsExtremes) {
         ASSERT_LT(row, csv.rows.size());
         EXPECT_EQ(csv.text(row, "kind"), "cell");
         EXPECT_EQ(csv.number(row, "disc"), d);
-        const sdp::PoseCrbAt at = apart.at(direction_from_sphere_map(d, xy));
+        const camera::PoseCrbAt at = apart.at(direction_from_sphere_map(d, xy));
         expect_row(csv, row, at);
         trackable += at.trackable ? 1 : 0;
         ++row;
@@ -124,8 +124,9 @@ TEST(CrbFigures, SweepCsvIsTheLibrarysDistanceSweep) {
   write_crb_figures(figures, small_figures(), dir.path());
   EXPECT_EQ(figures.files[1].name, "crb_sweep");
   const Csv csv = read_csv(figures.files[1].csv);
-  const sdp::PoseCrbModel apart(layout, cube_camera());
-  const std::vector<sdp::PoseCrbSweepRow> rows = sdp::pose_crb_distance_sweep(apart, 1.5, 3.0, 3);
+  const camera::PoseCrbModel apart(layout, cube_camera());
+  const std::vector<camera::PoseCrbSweepRow> rows =
+      camera::pose_crb_distance_sweep(apart, 1.5, 3.0, 3);
   ASSERT_EQ(csv.rows.size(), rows.size());
   for (std::size_t k = 0; k < rows.size(); ++k) {
     EXPECT_NEAR(csv.number(k, "distance"), rows[k].distance, kRounding);
@@ -144,11 +145,11 @@ TEST(CrbFigures, SweepCsvIsTheLibrarysDistanceSweep) {
 }
 
 TEST(CrbFigures, DefaultSweepSpansHalfToTwiceTheDistanceAboveTheRadius) {
-  const sdp::PoseCrbSweep wide = default_crb_sweep(4.0, 1.0);
+  const camera::PoseCrbSweep wide = default_crb_sweep(4.0, 1.0);
   EXPECT_EQ(wide.from, 2.0);
   EXPECT_EQ(wide.to, 8.0);
   EXPECT_EQ(wide.count, kDefaultSweepCount);
-  const sdp::PoseCrbSweep close = default_crb_sweep(1.2, 1.0);
+  const camera::PoseCrbSweep close = default_crb_sweep(1.2, 1.0);
   EXPECT_NEAR(close.from, 1.1, kRounding);
   EXPECT_LT(close.from, close.to);
 }
@@ -178,17 +179,17 @@ TEST(CrbFigures, BadOptionsNameTheFieldAndWriteNothing) {
   EXPECT_EQ(field_of([&] { write_crb_map(data, dir.path()); }), "csv_samples_per_axis");
   data.model = nullptr;
   EXPECT_EQ(field_of([&] { write_crb_map(data, dir.path()); }), "model");
-  sdp::PoseCrbReport one_row = figures.report;
+  camera::PoseCrbReport one_row = figures.report;
   one_row.sweep_distance.resize(1);
   EXPECT_EQ(field_of([&] { write_crb_sweep("cube", one_row, dir.path()); }), "sweep_distance");
-  sdp::PoseCrbOptions camera = cube_camera();
+  camera::PoseCrbOptions camera = cube_camera();
   camera.distance = 0.0;
   EXPECT_EQ(field_of([&] { crb_figures(layout, camera, small_figures()); }), "distance");
   camera = cube_camera();
   camera.noise_px = -1.0;
   EXPECT_EQ(field_of([&] { crb_figures(layout, camera, small_figures()); }), "noise_px");
   CrbFiguresOptions backwards = small_figures();
-  backwards.sweep = sdp::PoseCrbSweep{3.0, 1.5, 3};
+  backwards.sweep = camera::PoseCrbSweep{3.0, 1.5, 3};
   EXPECT_EQ(field_of([&] { crb_figures(layout, cube_camera(), backwards); }), "sweep_distance");
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
 }

@@ -85,7 +85,7 @@ class CsvTruth : public ::testing::TestWithParam<const char*> {
   Layout layout_;
   DataVectors data_;
   sdp::LayoutAnalysis analysis_;
-  sdp::LayoutReport report_;
+  report::LayoutReport report_;
   DesignCurve design_;
   LayoutFigures figures_;
 };

@@ -17,7 +17,7 @@
 
 #include "vantage/io/layout_file.h"
 #include "vantage/plot/design_curve.h"
-#include "vantage/sdp/layout_report.h"
+#include "vantage/report/layout_report.h"
 
 namespace vantage::plot::testing {
 
@@ -94,10 +94,10 @@ class TempDir {
 /// A design curve with fixed numbers: Z = I (m = 3, 0.8165) grown by two directions.
 /// The report the figures are drawn from, with the dropout analysis the dropout figure needs
 /// (what `vantage plot` computes).
-inline sdp::LayoutReport report_of(const Layout& layout) {
-  sdp::LayoutReportOptions options;
+inline report::LayoutReport report_of(const Layout& layout) {
+  report::LayoutReportOptions options;
   options.dropout = true;
-  return sdp::analyze_layout(layout, options);
+  return report::analyze_layout(layout, options);
 }
 
 inline DesignCurve example_design_curve() {

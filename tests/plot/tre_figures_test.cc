@@ -39,8 +39,8 @@ Layout tre_fig_ndi_like() {
   return io::load_layout(std::string(VANTAGE_SOURCE_DIR) + "/examples/tools/ndi_like.json");
 }
 
-sdp::TreOptions tre_fig_ndi_fle() {
-  sdp::TreOptions options;
+tracker::TreOptions tre_fig_ndi_fle() {
+  tracker::TreOptions options;
   options.fle = FleModel{0.0995, 0.2985};
   return options;
 }
@@ -63,7 +63,7 @@ TEST(TreFigures, MapCsvHoldsTheRmsOfEveryCellUnderTheCertifiedWorst) {
   EXPECT_EQ(figures.files[0].name, "tre_tip_axis");
   EXPECT_EQ(figures.files[1].name, "tre_polar");
   EXPECT_EQ(figures.files[2].name, "tre_map");
-  const sdp::TreExtremes& x = figures.sweeps.report.targets.front().extremes;
+  const tracker::TreExtremes& x = figures.sweeps.report.targets.front().extremes;
   ASSERT_TRUE(x.worst.certified());
 
   const Csv csv = read_csv(figures.files[2].csv);
@@ -73,7 +73,7 @@ TEST(TreFigures, MapCsvHoldsTheRmsOfEveryCellUnderTheCertifiedWorst) {
   EXPECT_EQ(csv.text(1, "kind"), "best");
   EXPECT_NEAR(csv.number(1, "rms"), x.best.rms, kTreFigureRounding * x.best.rms);
 
-  const sdp::TreModel apart(layout, tre_fig_ndi_fle().fle);
+  const tracker::TreModel apart(layout, tre_fig_ndi_fle().fle);
   std::size_t row = 2;
   int tracked = 0;
   for (int d = 0; d < 2; ++d) {
@@ -85,7 +85,8 @@ TEST(TreFigures, MapCsvHoldsTheRmsOfEveryCellUnderTheCertifiedWorst) {
         ASSERT_LT(row, csv.rows.size());
         EXPECT_EQ(csv.text(row, "kind"), "cell");
         EXPECT_EQ(csv.number(row, "disc"), d);
-        const sdp::TreAtDirection at = apart.at(kTreFigureTip, direction_from_sphere_map(d, xy));
+        const tracker::TreAtDirection at =
+            apart.at(kTreFigureTip, direction_from_sphere_map(d, xy));
         EXPECT_EQ(csv.number(row, "visible"), static_cast<double>(at.visible_markers.size()));
         EXPECT_EQ(csv.text(row, "tracked"), at.tracked ? "1" : "0");
         if (at.tracked) {
@@ -117,16 +118,16 @@ TEST(TreFigures, MapCsvHoldsTheRmsOfEveryCellUnderTheCertifiedWorst) {
 TEST(TreFigures, TipAxisAndPolarCsvAreTheLibrarysSweeps) {
   const Layout layout = tre_fig_ndi_like();
   TempDir dir("tresweeps");
-  sdp::TreOptions options = tre_fig_ndi_fle();
+  tracker::TreOptions options = tre_fig_ndi_fle();
   options.direction = Eigen::Vector3d(0.3, 0.0, 1.0);
   TreFigures figures = tre_figures(layout, {kTreFigureTip}, options, small_tre_figures());
   write_tre_figures(figures, small_tre_figures(), dir.path());
-  const sdp::TreModel apart(layout, options.fle);
-  const sdp::TreSweeps sweeps = sdp::tre_sweeps(apart, {kTreFigureTip}, options);
+  const tracker::TreModel apart(layout, options.fle);
+  const tracker::TreSweeps sweeps = tracker::tre_sweeps(apart, {kTreFigureTip}, options);
 
   const Csv tip = read_csv(figures.files[0].csv);
   std::size_t row = 0;
-  for (const sdp::TreCurve& curve : sweeps.tip_axis.curves) {
+  for (const tracker::TreCurve& curve : sweeps.tip_axis.curves) {
     ASSERT_TRUE(curve.tracked);
     for (std::size_t k = 0; k < curve.rms.size(); ++k, ++row) {
       ASSERT_LT(row, tip.rows.size());
@@ -143,7 +144,7 @@ TEST(TreFigures, TipAxisAndPolarCsvAreTheLibrarysSweeps) {
   row = 0;
   const char* axes[] = {"x", "y", "z"};
   for (int axis = 0; axis < 3; ++axis) {
-    const sdp::TreCurve& curve = sweeps.polar.curves[static_cast<std::size_t>(axis)];
+    const tracker::TreCurve& curve = sweeps.polar.curves[static_cast<std::size_t>(axis)];
     for (std::size_t k = 0; k < curve.rms.size(); ++k, ++row) {
       ASSERT_LT(row, polar.rows.size());
       EXPECT_EQ(polar.text(row, "axis"), axes[axis]);
@@ -195,7 +196,7 @@ TEST(TreFigures, BadDataNamesTheFieldAndWritesNothing) {
                                       small_tre_figures());
                         }),
                         "target"));
-  sdp::TreOptions zero = tre_fig_ndi_fle();
+  tracker::TreOptions zero = tre_fig_ndi_fle();
   zero.fle = FleModel{0.0, 0.0};
   EXPECT_TRUE(tre_names(
       tre_message_of([&] { tre_figures(layout, {kTreFigureTip}, zero, small_tre_figures()); }),

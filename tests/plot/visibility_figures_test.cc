@@ -27,7 +27,7 @@
 #include "vantage/plot/sphere_map.h"
 #include "vantage/plot/viewpoint_map.h"
 #include "vantage/plot/visibility_maps.h"
-#include "vantage/sdp/visibility_model.h"
+#include "vantage/visibility/visibility_model.h"
 
 namespace vantage::plot {
 namespace {
@@ -120,7 +120,7 @@ TEST(SphereMap, EveryDirectionRoundTripsOnItsDiscAndTheDiscsAreEqualArea) {
   EXPECT_GT(sphere_map_from_direction(Eigen::Vector3d(0.0, 0.6, -0.8)).xy.y(), 0.0);
   // Equal area: the cells whose direction has |z| >= 1/2 (two caps, half the sphere) are half the
   // cells inside the discs.
-  const sdp::VisibilityModel model = sdp::VisibilityModel::of(box_cones_only());
+  const visibility::VisibilityModel model = visibility::VisibilityModel::of(box_cones_only());
   const SphereSamples s = sample_sphere(model, 400, 0);
   long cap = 0;
   for (int d = 0; d < 2; ++d) {
@@ -135,7 +135,7 @@ TEST(SphereMap, EveryDirectionRoundTripsOnItsDiscAndTheDiscsAreEqualArea) {
 }
 
 TEST(SphereMap, SamplesDoNotDependOnTheThreadCount) {
-  const sdp::VisibilityModel model = sdp::VisibilityModel::of(satellite());
+  const visibility::VisibilityModel model = visibility::VisibilityModel::of(satellite());
   const SphereSamples one = sample_sphere(model, 64, 1), three = sample_sphere(model, 64, 3);
   for (int d = 0; d < 2; ++d) {
     EXPECT_EQ(one.visible[d], three.visible[d]);
@@ -201,7 +201,7 @@ class BodyFigures : public ::testing::TestWithParam<const char*> {
   }
   TempDir dir_{"body"};
   Layout layout_;
-  sdp::LayoutReport report_;
+  report::LayoutReport report_;
 };
 
 TEST_P(BodyFigures, EveryFigureIsWrittenAndTheVisibilityFigureIsIncluded) {
@@ -233,7 +233,7 @@ TEST_P(BodyFigures, TheMapsGreyIsTheUntrackablePartOfTheSphere) {
   RecordProperty("untrackable_fraction", std::to_string(lost));
   EXPECT_NEAR(share, lost, kPixelTolerance);
   // The map's own cells, equal-area, give the same fraction.
-  const sdp::VisibilityModel model = sdp::VisibilityModel::of(layout_);
+  const visibility::VisibilityModel model = visibility::VisibilityModel::of(layout_);
   EXPECT_NEAR(sample_sphere(model, 400, 0).trackable_fraction(), 1.0 - lost, kCoverageTolerance);
   // The CSV's rows (equal-area cells) too, and each row's trackable flag has its error.
   const Csv csv = read_csv(figures.files[0].csv);
@@ -282,12 +282,12 @@ class ConeModelFigures : public ::testing::Test {
   }
   TempDir dir_{"cones"};
   Layout layout_;
-  sdp::LayoutReport report_;
+  report::LayoutReport report_;
 };
 
 TEST_F(ConeModelFigures, MapRowsAreTheConeModelAndNeverBeatTheCertificate) {
   const Csv map = csv("viewpoint_map");
-  const sdp::VisibilityWorstViewpoint& worst = report_.visibility->worst;
+  const visibility::VisibilityWorstViewpoint& worst = report_.visibility->worst;
   ASSERT_TRUE(worst.certified());
   double largest = 0.0;
   for (std::size_t r = 0; r < map.rows.size(); ++r) {
@@ -343,7 +343,7 @@ TEST_F(ConeModelFigures, DropoutRowsAreTheLayoutWithoutEachMarkerOnItsBody) {
       reduced.visibility->cone_half_angle_deg(j++) = layout_.visibility->cone_half_angle_deg(i);
     }
     if (r < 3) {  // three of them: each is a certified search of its own
-      const sdp::VisibilityReport direct = sdp::analyze_visibility(reduced);
+      const visibility::VisibilityReport direct = visibility::analyze_visibility(reduced);
       EXPECT_NEAR(error, direct.max_worst_case_error_deg, kDegreesPerRadian * kCertified)
           << "marker " << k;
       EXPECT_EQ(dropout.number(r, "trackable_fraction"), direct.coverage.trackable_fraction);
@@ -370,7 +370,7 @@ TEST(LayoutWithoutNormals, KeepsTheHemisphereMapAndHasNoVisibilityFigure) {
   options.only = {"visibility"};
   EXPECT_THROW(selected_figures(options, false, false), InvalidArgument);
   TempDir dir("plain");
-  const sdp::LayoutReport report = testing::report_of(layout);
+  const report::LayoutReport report = testing::report_of(layout);
   EXPECT_THROW(write_layout_figures(report, dir.path(), options), InvalidArgument);
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
   options.only = {"viewpoint_map", "vectors"};
@@ -386,10 +386,10 @@ TEST(BodyMaps, MissingModelOrReportThrowsAndWritesNothing) {
   TempDir dir("badmap");
   VisibilityMapData data;
   EXPECT_THROW(write_visibility_viewpoint_map(data, dir.path()), InvalidArgument);
-  const sdp::VisibilityModel model = sdp::VisibilityModel::of(box_cones_only());
+  const visibility::VisibilityModel model = visibility::VisibilityModel::of(box_cones_only());
   data.model = &model;
   EXPECT_THROW(write_visibility_figure(data, dir.path()), InvalidArgument);
-  const sdp::VisibilityReport report = sdp::analyze_visibility(box_cones_only());
+  const visibility::VisibilityReport report = visibility::analyze_visibility(box_cones_only());
   data.report = &report;
   data.samples_per_axis = kMaxMapSamples + 1;
   EXPECT_THROW(write_visibility_figure(data, dir.path()), InvalidArgument);

@@ -8,8 +8,8 @@
 
 #include "support/eigen_testing.h"
 #include "vantage/design/placement.h"
-#include "vantage/sdp/visibility_model.h"
 #include "vantage/viewer/viewer_session.h"
+#include "vantage/visibility/visibility_model.h"
 
 namespace vantage::viewer {
 namespace {
@@ -77,7 +77,7 @@ design::PlacementResult direct_placement(const Layout& layout, const PlaceSettin
   sites.visibility->normals = sampled.normals;
   sites.visibility->cone_half_angle_deg =
       Eigen::VectorXd::Constant(sampled.points.cols(), kConeDeg);
-  const sdp::VisibilityModel model = sdp::VisibilityModel::of(sites);
+  const visibility::VisibilityModel model = visibility::VisibilityModel::of(sites);
   design::PlacementProblem problem;
   problem.sites = model.problem();
   problem.markers = settings.markers;

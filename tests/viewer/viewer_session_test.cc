@@ -13,7 +13,7 @@
 #include "vantage/io/layout_file.h"
 #include "vantage/io/layout_formats.h"
 #include "vantage/sdp/layout_analysis.h"
-#include "vantage/sdp/visibility_report.h"
+#include "vantage/visibility/visibility_report.h"
 #include "viewer/viewer_runner.h"
 
 namespace vantage::viewer {
@@ -234,19 +234,19 @@ TEST(ViewerSession, ConeEditIsReanalysedThroughTheWorkerAsAnalyze) {
   ViewerSession session = open_on_body();
   ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
   ASSERT_TRUE(session.analysis()->visibility);
-  const sdp::VisibilityReport before = *session.analysis()->visibility;
+  const visibility::VisibilityReport before = *session.analysis()->visibility;
   const std::uint64_t revision = session.document().revision();
   ASSERT_TRUE(session.set_cone_half_angle_deg(60.0));
   EXPECT_EQ(session.document().revision(), revision + 1);
   EXPECT_FALSE(session.analysis_current()) << "the edit asks for a new analysis";
   ASSERT_TRUE(session.wait_until_current(kAnalysisWait));
   ASSERT_EQ(session.analysis()->error, "");
-  const sdp::VisibilityReport& after = *session.analysis()->visibility;
+  const visibility::VisibilityReport& after = *session.analysis()->visibility;
 
   // What `vantage analyze --cone-deg 60` computes: the file with every cone set to 60 degrees.
   Layout edited = io::load_layout(kLayouts + "satellite.json");
   edited.visibility->cone_half_angle_deg.setConstant(60.0);
-  const sdp::VisibilityReport want = sdp::analyze_visibility(edited);
+  const visibility::VisibilityReport want = visibility::analyze_visibility(edited);
   EXPECT_NEAR(after.worst.t, want.worst.t, kSameRun);
   EXPECT_NEAR(after.worst.t_upper, want.worst.t_upper, kSameRun);
   EXPECT_EQ(after.worst.visible_markers, want.worst.visible_markers);

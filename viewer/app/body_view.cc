@@ -195,7 +195,7 @@ void draw_body_inset(const ViewerSession& session, const OrbitCamera& camera,
                      const Viewport& viewport, const Eigen::Vector3d& a, InsetViewpoint which) {
   const Layout& layout = session.layout();
   const bool points = layout.mode == LayoutMode::kPoints;
-  const sdp::VisibilityModel* model = session.visibility();
+  const visibility::VisibilityModel* model = session.visibility();
   std::optional<VisibilityReadout> seen;
   if (model != nullptr) seen = read_visibility(*model, a);
   const Mesh* mesh =

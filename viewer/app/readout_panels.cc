@@ -48,8 +48,8 @@ std::optional<Eigen::Vector3d> Panels::shown_viewpoint(
     return session.pinned_viewpoint;
   }
   if (session.analysis() && session.analysis()->error.empty()) {
-    const std::optional<sdp::VisibilityReport>& body = session.analysis()->visibility;
-    if (body && body->worst.status != sdp::VisibilityWorstViewpoint::Status::kUntrackable) {
+    const std::optional<visibility::VisibilityReport>& body = session.analysis()->visibility;
+    if (body && body->worst.status != visibility::VisibilityWorstViewpoint::Status::kUntrackable) {
       *what = "the worst viewpoint on the body (hover the sphere)";
       return body->worst.viewpoint;
     }

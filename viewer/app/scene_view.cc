@@ -78,7 +78,7 @@ struct Painter {
 };
 
 // The visibility report of the current analysis, when the layout has normals and it is current.
-const sdp::VisibilityReport* current_visibility(const ViewerSession& session) {
+const visibility::VisibilityReport* current_visibility(const ViewerSession& session) {
   if (!session.analysis_current() || !session.analysis()->error.empty()) return nullptr;
   return session.analysis()->visibility ? &*session.analysis()->visibility : nullptr;
 }
@@ -87,9 +87,9 @@ const sdp::VisibilityReport* current_visibility(const ViewerSession& session) {
 // body), or the largest shaded value while the analysis runs.
 double colour_range_deg(const ViewerSession& session) {
   if (const VisibilityShading* vis = session.visibility_shading()) {
-    const sdp::VisibilityReport* report = current_visibility(session);
+    const visibility::VisibilityReport* report = current_visibility(session);
     if (report != nullptr &&
-        report->worst.status != sdp::VisibilityWorstViewpoint::Status::kUntrackable) {
+        report->worst.status != visibility::VisibilityWorstViewpoint::Status::kUntrackable) {
       return report->max_worst_case_error_deg;
     }
     double top = 0.0;
@@ -221,7 +221,7 @@ void draw_analysis(const Painter& paint, const ViewerSession& session) {
   const ImU32 red = to_imgui(plot::kWorstViewpointColour, alpha);
   const ImU32 magenta = to_imgui(plot::kPaperLmiColour, alpha);
   draw_viewpoint_axis(paint, report.paper_lmi.viewpoint, magenta, true, "paper LMI");
-  const std::optional<sdp::VisibilityReport>& body = session.analysis()->visibility;
+  const std::optional<visibility::VisibilityReport>& body = session.analysis()->visibility;
   if (!body) {
     for (std::size_t k = 0; k < report.worst_viewpoints.size(); ++k) {
       paint.great_circle(report.worst_viewpoints[k], red, 2.0f);
@@ -239,7 +239,7 @@ void draw_analysis(const Painter& paint, const ViewerSession& session) {
     }
     if (k == 0) paint.label(report.worst_viewpoints[k], "worst seen whole", red, true);
   }
-  if (body->worst.status == sdp::VisibilityWorstViewpoint::Status::kUntrackable) return;
+  if (body->worst.status == visibility::VisibilityWorstViewpoint::Status::kUntrackable) return;
   for (std::size_t k = 0; k < body->worst.viewpoints.size(); ++k) {
     const Eigen::Vector3d& a = body->worst.viewpoints[k];
     paint.segment(a, kAxisLength * a, red, 2.5f);

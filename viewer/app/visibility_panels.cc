@@ -27,8 +27,8 @@ std::string names_of(const Layout& layout, const std::vector<int>& markers) {
 }  // namespace
 
 void Panels::visibility_summary(const AnalysisSnapshot& snapshot) {
-  const sdp::VisibilityReport& v = *snapshot.visibility;
-  const sdp::VisibilityWorstViewpoint& w = v.worst;
+  const visibility::VisibilityReport& v = *snapshot.visibility;
+  const visibility::VisibilityWorstViewpoint& w = v.worst;
   char model[96];
   if (v.occlusion_resolution_deg) {
     std::snprintf(model, sizeof model, "cone+mesh, occlusion sampled at %.2f\u00b0",
@@ -40,7 +40,7 @@ void Panels::visibility_summary(const AnalysisSnapshot& snapshot) {
   ImGui::TextWrapped("on the body (%s; min_visible %d%s):", model, v.min_visible,
                      v.workspace ? "; in the workspace" : "");
   ImGui::PopStyleColor();
-  if (w.status == sdp::VisibilityWorstViewpoint::Status::kUntrackable) {
+  if (w.status == visibility::VisibilityWorstViewpoint::Status::kUntrackable) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
     ImGui::TextWrapped("no direction can track the body: %s", w.message.c_str());
     ImGui::PopStyleColor();

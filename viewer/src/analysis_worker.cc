@@ -18,7 +18,7 @@ AnalysisSnapshot analyze_layout(const Layout& layout, std::uint64_t revision) {
   snapshot.revision = revision;
   snapshot.layout = layout;
   try {
-    static_cast<sdp::LayoutReport&>(snapshot) = sdp::analyze_layout(layout);
+    static_cast<report::LayoutReport&>(snapshot) = report::analyze_layout(layout);
   } catch (const std::exception& e) {
     snapshot.error = e.what();
   }

@@ -6,12 +6,12 @@
 
 #include "vantage/analysis/common.h"
 #include "vantage/design/placement_layout.h"
-#include "vantage/sdp/visibility_model.h"
+#include "vantage/visibility/visibility_model.h"
 
 namespace vantage::viewer {
 namespace {
 
-design::PlacementProblem placement_problem(const sdp::VisibilityModel& model,
+design::PlacementProblem placement_problem(const visibility::VisibilityModel& model,
                                            const PlaceSettings& settings) {
   design::PlacementProblem problem;
   problem.sites = model.problem();
@@ -63,8 +63,8 @@ PlaceOutcome place_on_body(const Layout& layout, std::uint64_t revision,
     const Layout sites = body_sites(layout, settings);
     outcome.n_candidates = static_cast<int>(sites.entries.cols());
     if (progress) progress("occlusion grid");
-    const sdp::VisibilityModel model = sdp::VisibilityModel::of(
-        sites, sdp::VisibilityModel::kDefaultResolutionDeg, settings.threads);
+    const visibility::VisibilityModel model = visibility::VisibilityModel::of(
+        sites, visibility::VisibilityModel::kDefaultResolutionDeg, settings.threads);
     const design::PlacementProblem problem = placement_problem(model, settings);
     design::PlaceOptions options = place_options(settings);
     options.progress = progress;

@@ -21,7 +21,7 @@ void ViewerSession::changed() {
     // The document holds only valid layouts, so the model builds; a failure to cast the body's
     // rays is reported and leaves the sphere shaded as seen whole.
     try {
-      visibility_ = sdp::VisibilityModel::of(document_.layout());
+      visibility_ = visibility::VisibilityModel::of(document_.layout());
       visibility_shading_ = shade_visibility(*visibility_, shading_.vertices);
     } catch (const std::exception& e) {
       visibility_.reset();
@@ -276,7 +276,7 @@ bool ViewerSession::apply_view(ViewPreset preset) {
       if (!analysis_ || !analysis_->error.empty()) return false;
       if (preset == ViewPreset::kWorst && analysis_->visibility &&
           analysis_->visibility->worst.status !=
-              sdp::VisibilityWorstViewpoint::Status::kUntrackable) {
+              visibility::VisibilityWorstViewpoint::Status::kUntrackable) {
         camera.look_along(analysis_->visibility->worst.viewpoint);  // signed: the camera's side
         return true;
       }

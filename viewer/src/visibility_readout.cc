@@ -13,7 +13,7 @@ double error_of_t_deg(double t) {
   return kDegreesPerRadian * std::atan2(t, std::sqrt(std::max(0.0, (1.0 - t) * (1.0 + t))));
 }
 
-ViewpointState state_of(const sdp::VisibilityProblem& problem, const Eigen::Vector3d& a,
+ViewpointState state_of(const visibility::VisibilityProblem& problem, const Eigen::Vector3d& a,
                         bool trackable) {
   if (trackable) return ViewpointState::kTrackable;
   if (problem.workspace && a.dot(problem.workspace->axis) < problem.workspace->cos_half_angle) {
@@ -24,14 +24,15 @@ ViewpointState state_of(const sdp::VisibilityProblem& problem, const Eigen::Vect
 
 }  // namespace
 
-VisibilityReadout read_visibility(const sdp::VisibilityModel& model, const Eigen::Vector3d& a) {
+VisibilityReadout read_visibility(const visibility::VisibilityModel& model,
+                                  const Eigen::Vector3d& a) {
   const double norm = a.norm();
   if (!(norm > 0.0) || !std::isfinite(norm)) {
     throw InvalidArgument("viewpoint", "must be a non-zero finite direction");
   }
   VisibilityReadout readout;
   readout.viewpoint = a / norm;
-  const sdp::DirectionVisibility seen = model.at(readout.viewpoint);
+  const visibility::DirectionVisibility seen = model.at(readout.viewpoint);
   readout.visible = seen.visible;
   std::size_t next = 0;
   for (int i = 0; i < static_cast<int>(model.problem().points.cols()); ++i) {
@@ -47,14 +48,14 @@ VisibilityReadout read_visibility(const sdp::VisibilityModel& model, const Eigen
   return readout;
 }
 
-VisibilityShading shade_visibility(const sdp::VisibilityModel& model,
+VisibilityShading shade_visibility(const visibility::VisibilityModel& model,
                                    const Eigen::Matrix3Xd& vertices) {
   VisibilityShading shading;
   shading.error_deg.resize(vertices.cols());
   shading.states.resize(static_cast<std::size_t>(vertices.cols()));
   for (Eigen::Index v = 0; v < vertices.cols(); ++v) {
     const Eigen::Vector3d a = vertices.col(v);
-    const sdp::DirectionVisibility seen = model.at(a);
+    const visibility::DirectionVisibility seen = model.at(a);
     const ViewpointState state = state_of(model.problem(), a, seen.trackable);
     shading.states[static_cast<std::size_t>(v)] = state;
     shading.error_deg(v) = state == ViewpointState::kTrackable ? error_of_t_deg(seen.t) : 90.0;

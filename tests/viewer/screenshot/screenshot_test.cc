@@ -2,8 +2,8 @@
 // checks the PNG it writes: its size, that it is not one colour, and that the worst-viewpoint red
 // is drawn where the projection of each visible global worst viewpoint falls. The worst
 // viewpoints come from sdp::analyze_vectors run here, independently of the viewer; for markers on
-// a body (docs/math.md §20) they are the signed worst viewpoints of sdp::analyze_visibility, and a
-// lost direction facing the camera must be drawn grey. Skipped, with the reason printed, only
+// a body (docs/math.md §20) they are the signed worst viewpoints of visibility::analyze_visibility,
+// and a lost direction facing the camera must be drawn grey. Skipped, with the reason printed, only
 // when no X server can be started.
 
 #include <gtest/gtest.h>
@@ -24,9 +24,9 @@
 #include "vantage/io/layout_formats.h"
 #include "vantage/plot/colormap.h"
 #include "vantage/sdp/layout_analysis.h"
-#include "vantage/sdp/visibility_model.h"
-#include "vantage/sdp/visibility_report.h"
 #include "vantage/viewer/camera.h"
+#include "vantage/visibility/visibility_model.h"
+#include "vantage/visibility/visibility_report.h"
 #include "viewer/viewer_runner.h"
 
 namespace vantage::testing {
@@ -77,7 +77,7 @@ template <typename PixelAt>
 void check_lost_is_grey(const Layout& layout, const DataVectors& data,
                         const viewer::OrbitCamera& camera, const viewer::Viewport& viewport,
                         PixelAt at) {
-  const sdp::VisibilityModel model = sdp::VisibilityModel::of(layout);
+  const visibility::VisibilityModel model = visibility::VisibilityModel::of(layout);
   auto lost_around = [&](const Eigen::Vector3d& a) {
     if (model.at(a).trackable) return false;
     const Eigen::Vector3d u = a.unitOrthogonal();
@@ -171,7 +171,7 @@ void check_screenshot(const std::string& file) {
       sdp::analyze_vectors(data.vectors, data.weights).worst_viewpoints;
   std::vector<double> signs = {1.0, -1.0};
   if (read.visibility) {
-    worst = sdp::analyze_visibility(read).worst.viewpoints;
+    worst = visibility::analyze_visibility(read).worst.viewpoints;
     signs = {1.0};  // a camera on that side of the body
   }
   const viewer::OrbitCamera camera;  // --view iso is the default camera

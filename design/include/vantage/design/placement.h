@@ -19,14 +19,14 @@
 
 #include "vantage/analysis/identification.h"
 #include "vantage/analysis/mesh.h"
-#include "vantage/sdp/visibility.h"
+#include "vantage/visibility/visibility.h"
 
 namespace vantage::design {
 
 /// Candidate sites on a body: the markers of a VisibilityProblem (points, unit normals, cone
 /// cosines, min_visible, workspace, and the occlusion grid of every site, or null).
 struct PlacementProblem {
-  sdp::VisibilityProblem sites;
+  visibility::VisibilityProblem sites;
   /// Sites that are already markers (kept: always chosen, counted in `markers`), distinct.
   std::vector<int> keep;
   int markers = 0;              ///< K: the markers of the answer, kept ones included
@@ -45,7 +45,7 @@ struct PlacementProblem {
 struct PlaceOptions {
   /// The certified analysis of each subset (docs/math.md §20); its certificate_tolerance is the
   /// resolution at which two placements are told apart.
-  sdp::VisibilitySearchOptions search;
+  visibility::VisibilitySearchOptions search;
   int coverage_samples = 20000;  ///< whole-sphere Fibonacci lattice of the coverage, >= 100
   bool robust_dropout = false;   ///< objective 3 of docs/math.md §21
   /// Search every feasible subset when there are at most this many K-subsets of the free
@@ -67,8 +67,8 @@ struct PlacementValue {
   /// sqrt(1 - t_upper^2).
   double t_upper = 1.0;
   double pbar_min = 0.0;
-  sdp::VisibilityWorstViewpoint::Status status =
-      sdp::VisibilityWorstViewpoint::Status::kUntrackable;
+  visibility::VisibilityWorstViewpoint::Status status =
+      visibility::VisibilityWorstViewpoint::Status::kUntrackable;
 };
 
 /// The placement after greedy step k (k markers chosen).

@@ -1,7 +1,7 @@
 #pragma once
 
 /// The figures of the pose Cramér–Rao bound of a pinhole camera over the viewpoint sphere
-/// (docs/math.md §22; `vantage crb`), drawn from the one library call sdp::pose_crb_report():
+/// (docs/math.md §22; `vantage crb`), drawn from the one library call camera::pose_crb_report():
 ///
 /// - `crb_map`: every viewing direction a of the two equal-area discs of sphere_map.h shaded by
 ///   the bound rot_rms_deg at a (PoseCrbModel::at), on a logarithmic colour scale (the bound
@@ -18,16 +18,16 @@
 #include <vector>
 
 #include "vantage/analysis/layout.h"
+#include "vantage/camera/pose_crb.h"
 #include "vantage/plot/figure.h"
-#include "vantage/sdp/pose_crb.h"
 
 namespace vantage::plot {
 
 /// What the CRB map draws.
 struct CrbMapData {
   std::string layout_name;
-  const sdp::PoseCrbModel* model = nullptr;    ///< the camera and markers (required)
-  const sdp::PoseCrbReport* report = nullptr;  ///< pose_crb_report() of the same (required)
+  const camera::PoseCrbModel* model = nullptr;    ///< the camera and markers (required)
+  const camera::PoseCrbReport* report = nullptr;  ///< pose_crb_report() of the same (required)
   /// N of the picture's cells per disc axis, in [kMinMapSamples, kMaxMapSamples].
   int samples_per_axis = 300;
   /// N of the CSV's cells, in [kMinMapSamples, kMaxMapSamples]; the CSV uses
@@ -51,14 +51,14 @@ FigureFiles write_crb_map(const CrbMapData& data, const std::filesystem::path& d
 /// median_y,median_z,median_rot_rms_deg,median_trans_rms: one row per report.sweep_distance row,
 /// the direction and bound columns empty where the status is not "ok". Throws InvalidArgument
 /// "sweep_distance" when the report has fewer than 2 sweep rows, RenderError as above.
-FigureFiles write_crb_sweep(const std::string& layout_name, const sdp::PoseCrbReport& report,
+FigureFiles write_crb_sweep(const std::string& layout_name, const camera::PoseCrbReport& report,
                             const std::filesystem::path& directory,
                             const FigureOptions& options = {});
 
 /// The distance sweep of the figures when none is asked: N = kDefaultSweepCount distances from
 /// max(D / 2, 1.1 r) to 2 D, D the camera distance and r the layout's radius about its centroid
 /// (D > r, so the range is never empty).
-sdp::PoseCrbSweep default_crb_sweep(double distance, double radius);
+camera::PoseCrbSweep default_crb_sweep(double distance, double radius);
 inline constexpr int kDefaultSweepCount = 8;
 
 /// Options of write_crb_figures().
@@ -67,21 +67,22 @@ struct CrbFiguresOptions {
   int samples_per_axis = 300;      ///< the map's picture, as CrbMapData
   int csv_samples_per_axis = 100;  ///< the map's CSV, as CrbMapData
   /// The distance sweep; default_crb_sweep() of the camera when empty.
-  std::optional<sdp::PoseCrbSweep> sweep;
+  std::optional<camera::PoseCrbSweep> sweep;
 };
 
 /// What the figures draw (the model, the report) and the files written.
 struct CrbFigures {
   std::string layout_name;
-  std::shared_ptr<const sdp::PoseCrbModel> model;
-  sdp::PoseCrbReport report;
+  std::shared_ptr<const camera::PoseCrbModel> model;
+  camera::PoseCrbReport report;
   std::vector<FigureFiles> files;  ///< crb_map, then crb_sweep (after write_crb_figures())
 };
 
-/// The front door of `vantage plot --crb`, first half: the model and sdp::pose_crb_report(layout,
-/// camera, no direction, the sweep); nothing is written. Throws what those throw (the camera's
-/// and the sweep's InvalidArgument name their field: "distance", ..., "sweep_distance").
-CrbFigures crb_figures(const Layout& layout, const sdp::PoseCrbOptions& camera,
+/// The front door of `vantage plot --crb`, first half: the model and
+/// camera::pose_crb_report(layout, camera, no direction, the sweep); nothing is written. Throws
+/// what those throw (the camera's and the sweep's InvalidArgument name their field: "distance",
+/// ..., "sweep_distance").
+CrbFigures crb_figures(const Layout& layout, const camera::PoseCrbOptions& camera,
                        const CrbFiguresOptions& options);
 
 /// Second half: write_crb_map() and write_crb_sweep() of `figures` into `directory`, appending

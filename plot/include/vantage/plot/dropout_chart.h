@@ -1,7 +1,7 @@
 #pragma once
 
 /// Figure `dropout`: markers get occluded. For each marker (point mode) or vector (direction
-/// mode), the worst-case error of the layout without it (sdp::dropout_analysis, certified global
+/// mode), the worst-case error of the layout without it (report::dropout_analysis, certified global
 /// analysis each time), as bars sorted by harm, with the intact layout as a reference line.
 
 #include <filesystem>
@@ -9,7 +9,7 @@
 
 #include "vantage/analysis/layout.h"
 #include "vantage/plot/figure.h"
-#include "vantage/sdp/dropout.h"
+#include "vantage/report/dropout.h"
 
 namespace vantage::plot {
 
@@ -19,7 +19,7 @@ struct DropoutChartData {
   LayoutMode mode = LayoutMode::kPoints;  ///< bars are labelled p<k> (markers) or v<k> (vectors)
   double intact_pbar_min = 1.0;           ///< of the whole layout
   double intact_max_error_deg = 0.0;      ///< of the whole layout (Eq. 30, as analyze reports)
-  sdp::DropoutAnalysis dropout;
+  report::DropoutAnalysis dropout;
 };
 
 /// Writes dropout.<ext> and dropout.csv into `directory`. CSV columns

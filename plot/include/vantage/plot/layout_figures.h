@@ -1,6 +1,6 @@
 #pragma once
 
-/// All figures of one layout in one call, drawn from its report (sdp::analyze_layout(), the
+/// All figures of one layout in one call, drawn from its report (report::analyze_layout(), the
 /// report `vantage analyze` prints): the figures compute no analysis of their own. This is what
 /// `vantage plot` and `make figures` run.
 
@@ -13,7 +13,7 @@
 #include "vantage/analysis/layout.h"
 #include "vantage/plot/design_curve.h"
 #include "vantage/plot/figure.h"
-#include "vantage/sdp/layout_report.h"
+#include "vantage/report/layout_report.h"
 
 namespace vantage::plot {
 
@@ -67,7 +67,7 @@ std::vector<std::string> selected_figures(const LayoutFiguresOptions& options, b
                                           bool has_visibility = false, bool has_placement = false);
 
 /// True when the figures `options` select need the report's dropout analysis (the dropout
-/// figure): run sdp::analyze_layout() with LayoutReportOptions::dropout then.
+/// figure): run report::analyze_layout() with LayoutReportOptions::dropout then.
 bool needs_dropout(const LayoutFiguresOptions& options, bool has_design,
                    bool has_visibility = false, bool has_placement = false);
 
@@ -76,7 +76,7 @@ bool needs_dropout(const LayoutFiguresOptions& options, bool has_design,
 /// dropout figure without the report's dropout analysis, or a visibility figure for a layout
 /// without normals; RenderError when drawing or writing
 /// fails.
-LayoutFigures write_layout_figures(const sdp::LayoutReport& report,
+LayoutFigures write_layout_figures(const report::LayoutReport& report,
                                    const std::filesystem::path& directory,
                                    const LayoutFiguresOptions& options,
                                    const DesignCurve* design = nullptr);

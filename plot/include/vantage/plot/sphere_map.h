@@ -2,7 +2,7 @@
 
 /// The whole sphere of signed viewing directions (docs/math.md §20: with visibility a and -a see
 /// different markers) on two Lambert azimuthal equal-area discs side by side, and what the
-/// markers' visibility (sdp::VisibilityModel::at) gives at the centre of every cell of them.
+/// markers' visibility (visibility::VisibilityModel::at) gives at the centre of every cell of them.
 ///
 /// Disc 0 holds a_z >= 0 seen from outside above (+z): (X, Y) = (a_x, a_y) / sqrt(1 + a_z), +x
 /// right, +y up, as the viewpoint map of a layout seen whole. Disc 1 holds a_z < 0 seen from
@@ -13,7 +13,7 @@
 #include <Eigen/Core>
 #include <array>
 
-#include "vantage/sdp/visibility_model.h"
+#include "vantage/visibility/visibility_model.h"
 
 namespace vantage::plot {
 
@@ -56,7 +56,7 @@ struct SphereSamples {
 /// Samples model.at() on both discs, rows split over `threads` threads (0 = all cores); the
 /// result does not depend on the thread count. Throws InvalidArgument for samples_per_axis
 /// outside [kMinMapSamples, kMaxMapSamples] (viewpoint_map.h).
-SphereSamples sample_sphere(const sdp::VisibilityModel& model, int samples_per_axis,
+SphereSamples sample_sphere(const visibility::VisibilityModel& model, int samples_per_axis,
                             int threads = 0);
 
 }  // namespace vantage::plot

@@ -2,7 +2,7 @@
 
 /// The figures of the target registration error of a tool on a 3-D tracker (docs/math.md §23,
 /// "Sweeps and figures"; `vantage plot LAYOUT --tre`), drawn from the one library call
-/// sdp::tre_sweeps() and, for the map, sdp::TreModel::at():
+/// tracker::tre_sweeps() and, for the map, tracker::TreModel::at():
 ///
 /// - `tre_tip_axis`: RMS TRE against the distance s from the markers' centroid along the tip axis
 ///   (through the first target), at the first target's worst and best line of sight and at
@@ -23,7 +23,7 @@
 
 #include "vantage/analysis/layout.h"
 #include "vantage/plot/figure.h"
-#include "vantage/sdp/tre_sweeps.h"
+#include "vantage/tracker/tre_sweeps.h"
 
 namespace vantage::plot {
 
@@ -32,22 +32,22 @@ namespace vantage::plot {
 /// per distance of each tracked curve (series "worst", "best", "direction"), then of series
 /// "isotropic" (Eq. 23.3, every marker; direction empty, visible the marker count) when the FLE
 /// is isotropic. Throws RenderError when drawing or writing fails.
-FigureFiles write_tre_tip_axis(const std::string& layout_name, const sdp::TreSweeps& sweeps,
+FigureFiles write_tre_tip_axis(const std::string& layout_name, const tracker::TreSweeps& sweeps,
                                const std::filesystem::path& directory,
                                const FigureOptions& options = {});
 
 /// Writes tre_polar.<ext> and tre_polar.csv into `directory`. CSV columns series,axis,
 /// direction_x,direction_y,direction_z,visible,angle_deg,target_x,target_y,target_z,rms: series
 /// "worst" for axis x, y, z (when tracked), then "isotropic" likewise (isotropic FLE only).
-FigureFiles write_tre_polar(const std::string& layout_name, const sdp::TreSweeps& sweeps,
+FigureFiles write_tre_polar(const std::string& layout_name, const tracker::TreSweeps& sweeps,
                             const std::filesystem::path& directory,
                             const FigureOptions& options = {});
 
 /// What the TRE map draws.
 struct TreMapData {
   std::string layout_name;
-  const sdp::TreModel* model = nullptr;    ///< the markers, visibility and FLE (required)
-  const sdp::TreSweeps* sweeps = nullptr;  ///< tre_sweeps() of the same model (required)
+  const tracker::TreModel* model = nullptr;    ///< the markers, visibility and FLE (required)
+  const tracker::TreSweeps* sweeps = nullptr;  ///< tre_sweeps() of the same model (required)
   /// N of the picture's cells per disc axis, in [kMinMapSamples, kMaxMapSamples].
   int samples_per_axis = 300;
   /// N of the CSV's cells, in [kMinMapSamples, kMaxMapSamples]; the CSV uses
@@ -67,7 +67,7 @@ FigureFiles write_tre_map(const TreMapData& data, const std::filesystem::path& d
 /// Options of tre_figures() and write_tre_figures().
 struct TreFiguresOptions {
   FigureOptions figure;
-  sdp::TreSweepOptions sweep;
+  tracker::TreSweepOptions sweep;
   int samples_per_axis = 300;      ///< the map's picture, as TreMapData
   int csv_samples_per_axis = 100;  ///< the map's CSV, as TreMapData
 };
@@ -75,16 +75,16 @@ struct TreFiguresOptions {
 /// What the figures draw and the files written.
 struct TreFigures {
   std::string layout_name;
-  std::shared_ptr<const sdp::TreModel> model;
-  sdp::TreSweeps sweeps;
+  std::shared_ptr<const tracker::TreModel> model;
+  tracker::TreSweeps sweeps;
   std::vector<FigureFiles> files;  ///< tre_tip_axis, tre_polar, tre_map (after writing)
 };
 
 /// The front door of `vantage plot --tre`, first half: the model of (layout, tre.fle) and
-/// sdp::tre_sweeps(); nothing is written. Throws what those throw (InvalidArgument naming
+/// tracker::tre_sweeps(); nothing is written. Throws what those throw (InvalidArgument naming
 /// "target", "fle.sigma_perp", "radius", ... or the layout's field).
 TreFigures tre_figures(const Layout& layout, const std::vector<Eigen::Vector3d>& targets,
-                       const sdp::TreOptions& tre, const TreFiguresOptions& options);
+                       const tracker::TreOptions& tre, const TreFiguresOptions& options);
 
 /// Second half: the three figures of `figures` into `directory`, appended to figures.files.
 void write_tre_figures(TreFigures& figures, const TreFiguresOptions& options,

@@ -3,7 +3,7 @@
 /// Figure `dropout` of a layout on its body (docs/math.md §20): which marker, if lost, costs the
 /// most. For each marker, the certified worst-case error with the markers visible from each
 /// direction of the layout without it (bars, most harmful first, as
-/// sdp::VisibilityReport::dropout_by_harm orders them), and the trackable fraction it leaves
+/// visibility::VisibilityReport::dropout_by_harm orders them), and the trackable fraction it leaves
 /// (a second panel), each against the intact layout; the same error seen whole (every marker
 /// from everywhere) beside each bar when the report has it.
 
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "vantage/plot/figure.h"
-#include "vantage/sdp/visibility_report.h"
+#include "vantage/visibility/visibility_report.h"
 
 namespace vantage::plot {
 
@@ -20,7 +20,7 @@ namespace vantage::plot {
 struct VisibilityDropoutChartData {
   std::string layout_name;
   /// The layout on its body, with its dropout (VisibilityReportOptions::dropout).
-  const sdp::VisibilityReport* report = nullptr;
+  const visibility::VisibilityReport* report = nullptr;
   /// By marker: the worst-case error seen whole without it (degrees), or empty.
   std::vector<double> seen_whole_error_deg;
 };

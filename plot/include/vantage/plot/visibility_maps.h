@@ -2,7 +2,7 @@
 
 /// The whole-sphere figures of a layout on its body (docs/math.md §20), drawn on the two
 /// equal-area discs of sphere_map.h from the visibility at each direction
-/// (sdp::VisibilityModel::at) and the certified answer of the report:
+/// (visibility::VisibilityModel::at) and the certified answer of the report:
 ///
 /// - `viewpoint_map` (for a layout with normals): each trackable direction a shaded by its
 ///   worst-case error asin t(a) with the markers visible from a, untrackable directions grey,
@@ -17,8 +17,8 @@
 #include "vantage/plot/colormap.h"
 #include "vantage/plot/figure.h"
 #include "vantage/plot/sphere_map.h"
-#include "vantage/sdp/visibility_model.h"
-#include "vantage/sdp/visibility_report.h"
+#include "vantage/visibility/visibility_model.h"
+#include "vantage/visibility/visibility_report.h"
 
 namespace vantage::plot {
 
@@ -37,8 +37,8 @@ DiscPlacement sphere_map_disc_placement(int disc, int width, int height);
 /// What the whole-sphere figures draw.
 struct VisibilityMapData {
   std::string layout_name;
-  const sdp::VisibilityModel* model = nullptr;    ///< the layout's visibility (required)
-  const sdp::VisibilityReport* report = nullptr;  ///< its certified answer (required)
+  const visibility::VisibilityModel* model = nullptr;    ///< the layout's visibility (required)
+  const visibility::VisibilityReport* report = nullptr;  ///< its certified answer (required)
   /// The worst-case error of the layout seen whole (every marker from everywhere), degrees,
   /// for comparison in the legend; negative: not shown.
   double seen_whole_max_error_deg = -1.0;

@@ -20,11 +20,11 @@
 #include <vector>
 
 #include "vantage/analysis/layout.h"
-#include "vantage/sdp/camera_visibility.h"
-#include "vantage/sdp/visibility.h"
-#include "vantage/sdp/visibility_model.h"
 #include "vantage/simulate/random.h"
 #include "vantage/simulate/scene.h"
+#include "vantage/visibility/camera_visibility.h"
+#include "vantage/visibility/visibility.h"
+#include "vantage/visibility/visibility_model.h"
 
 namespace vantage::simulate {
 
@@ -36,7 +36,7 @@ struct VisibilitySetup {
   std::optional<double> occlusion_resolution_deg;  ///< with a body
   double trackable_fraction = 0.0;                 ///< of the workspace (Fibonacci estimate)
   int coverage_samples = 0;                        ///< lattice directions in the workspace
-  /// The certified worst viewpoint under visibility (sdp::visibility_worst_viewpoint).
+  /// The certified worst viewpoint under visibility (visibility::visibility_worst_viewpoint).
   Eigen::Vector3d worst_viewpoint = Eigen::Vector3d::UnitZ();
   std::vector<int> worst_visible;  ///< markers visible from worst_viewpoint
   double t_lower = 0.0;
@@ -51,7 +51,7 @@ struct VisibilitySetup {
 /// One drawn view.
 struct VisibleView {
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  ///< a: unit, body -> camera
-  sdp::DirectionVisibility visibility;                   ///< what a sees (trackable)
+  visibility::DirectionVisibility visibility;            ///< what a sees (trackable)
   long draws = 0;  ///< directions drawn for this view (0: a fixed direction)
 };
 
@@ -86,7 +86,7 @@ class VisibleViews {
   /// taken as it is and scenes() checks its centre.
   void look_from(const Eigen::Vector3d& a, const std::string& field, bool by_direction = true);
 
-  const sdp::VisibilityModel& model() const { return model_; }
+  const visibility::VisibilityModel& model() const { return model_; }
   const VisibilitySetup& setup() const { return setup_; }
 
   /// A trackable view (the file comment), drawn from `random`. Throws std::runtime_error after
@@ -99,10 +99,10 @@ class VisibleViews {
   /// layout's markers. The roll is the same in both scenes; the whole scene's noise is its own.
   /// For the affine camera (at infinity) the visible markers are those of direction a. For the
   /// pinhole camera they are those of its centre c = -R^T p, each marker by its own line of
-  /// sight (sdp::CameraVisibility, docs/math.md §22): its direction is drawn uniformly on the
-  /// workspace and drawn again (up to kMaxDraws times) while the centre sees fewer than
-  /// max(3, min_visible) markers or only collinear ones; a fixed view whose centre does so
-  /// throws InvalidArgument naming "scene.viewpoint".
+  /// sight (visibility::CameraVisibility, docs/math.md §22): its direction is drawn uniformly on
+  /// the workspace and drawn again (up to kMaxDraws times) while the centre sees fewer than max(3,
+  /// min_visible) markers or only collinear ones; a fixed view whose centre does so throws
+  /// InvalidArgument naming "scene.viewpoint".
   VisibleScenes scenes(const Eigen::Matrix3Xd& points, const LayoutSceneOptions& options,
                        TrialRandom& random) const;
 
@@ -110,8 +110,8 @@ class VisibleViews {
   Eigen::Vector3d uniform_direction(TrialRandom& random) const;
   bool trackable_set(const Eigen::Matrix3Xd& points, const std::vector<int>& visible) const;
 
-  sdp::VisibilityModel model_;
-  sdp::CameraVisibility camera_;
+  visibility::VisibilityModel model_;
+  visibility::CameraVisibility camera_;
   VisibilitySetup setup_;
   std::optional<Eigen::Vector3d> fixed_;
 };

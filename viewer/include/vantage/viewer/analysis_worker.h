@@ -2,7 +2,7 @@
 
 /// The viewer's global analysis, off the UI thread.
 ///
-/// The viewer computes nothing itself: analyze_layout() calls sdp::analyze_layout() — the same
+/// The viewer computes nothing itself: analyze_layout() calls report::analyze_layout() — the same
 /// call as `vantage analyze` — augment_once() calls design::augment_layout for one greedy
 /// step, and place_on_body() calls design::place_markers on the body. AnalysisWorker runs
 /// them on one background thread. Each request carries the document revision it was made for;
@@ -19,14 +19,14 @@
 
 #include "vantage/analysis/layout.h"
 #include "vantage/design/augment.h"
-#include "vantage/sdp/layout_report.h"
+#include "vantage/report/layout_report.h"
 #include "vantage/viewer/body_placement.h"
 
 namespace vantage::viewer {
 
 /// Everything the viewer shows about one revision of the layout: the report `vantage analyze`
-/// prints (sdp::analyze_layout()), with the revision it belongs to.
-struct AnalysisSnapshot : sdp::LayoutReport {
+/// prints (report::analyze_layout()), with the revision it belongs to.
+struct AnalysisSnapshot : report::LayoutReport {
   std::uint64_t revision = 0;
   double seconds = 0.0;  ///< wall time of the whole analysis
   std::string error;     ///< non-empty when the analysis threw (then only layout is set)

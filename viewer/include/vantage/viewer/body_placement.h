@@ -44,8 +44,8 @@ bool is_on_body(const Layout& layout);
 /// min_visible, body and workspace. Throws InvalidArgument when the layout is not on a body.
 Layout body_sites(const Layout& layout, const PlaceSettings& settings);
 
-/// Synchronous placement: body_sites(), their occlusion grid (sdp::VisibilityModel::of at its
-/// default resolution, as `vantage place`), design::place_markers, and for a complete result
+/// Synchronous placement: body_sites(), their occlusion grid (visibility::VisibilityModel::of at
+/// its default resolution, as `vantage place`), design::place_markers, and for a complete result
 /// the placed layout. `progress` (or empty) gets each stage. Never throws: errors go to
 /// PlaceOutcome::error.
 PlaceOutcome place_on_body(const Layout& layout, std::uint64_t revision,

@@ -48,7 +48,9 @@ class ViewerSession {
   /// The visibility model of the current layout (its normals, cones, min_visible, workspace and
   /// body mesh, the occlusion grid cast at the report's default resolution), or null for a
   /// layout without normals. Rebuilt on every change.
-  const sdp::VisibilityModel* visibility() const { return visibility_ ? &*visibility_ : nullptr; }
+  const visibility::VisibilityModel* visibility() const {
+    return visibility_ ? &*visibility_ : nullptr;
+  }
   /// The sphere's vertices (shading().vertices) under visibility, or null without normals.
   const VisibilityShading* visibility_shading() const {
     return visibility_shading_ ? &*visibility_shading_ : nullptr;
@@ -131,7 +133,7 @@ class ViewerSession {
   LayoutDocument document_;
   DataVectors data_;
   SphereShading shading_;
-  std::optional<sdp::VisibilityModel> visibility_;
+  std::optional<visibility::VisibilityModel> visibility_;
   std::optional<VisibilityShading> visibility_shading_;
   std::optional<AnalysisSnapshot> analysis_;
   bool augment_requested_ = false;

@@ -2,7 +2,7 @@
 
 /// What the viewer shows of markers on a body (docs/math.md §20): the markers a viewpoint sees,
 /// the error they leave, and which viewpoints of the sphere are lost. Thin wrappers over
-/// sdp::VisibilityModel::at (the exact visibility: cone test and occlusion grid).
+/// visibility::VisibilityModel::at (the exact visibility: cone test and occlusion grid).
 ///
 /// A viewpoint a is a unit vector in the object frame from the body toward the camera: the point
 /// of the viewer's sphere under the mouse is the camera's place, so a is that point itself (not
@@ -11,7 +11,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "vantage/sdp/visibility_model.h"
+#include "vantage/visibility/visibility_model.h"
 
 namespace vantage::viewer {
 
@@ -37,7 +37,8 @@ struct VisibilityReadout {
 
 /// The readout at unit viewpoint a (finite, non-zero; normalised here). Throws InvalidArgument
 /// for a zero or non-finite a.
-VisibilityReadout read_visibility(const sdp::VisibilityModel& model, const Eigen::Vector3d& a);
+VisibilityReadout read_visibility(const visibility::VisibilityModel& model,
+                                  const Eigen::Vector3d& a);
 
 /// The sphere of viewpoints under visibility: at each vertex (unit vectors, 3 x v) the error
 /// asin t(a) with the markers visible from it, and its state.
@@ -47,7 +48,7 @@ struct VisibilityShading {
   int trackable_vertices = 0;          ///< vertices whose state is kTrackable
 };
 
-VisibilityShading shade_visibility(const sdp::VisibilityModel& model,
+VisibilityShading shade_visibility(const visibility::VisibilityModel& model,
                                    const Eigen::Matrix3Xd& vertices);
 
 }  // namespace vantage::viewer

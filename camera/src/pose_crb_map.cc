@@ -1,0 +1,202 @@
+// The pose CRB over the viewpoint sphere (docs/math.md §22, "Sampling"): Fibonacci directions,
+// the worst and best refined by compass search, percentiles, the sliver probe, distance sweeps.
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "vantage/analysis/common.h"
+#include "vantage/analysis/parallel.h"
+#include "vantage/camera/pose_crb.h"
+
+namespace vantage::camera {
+
+namespace crb_sampling {
+
+// Compass search stops when its step (radians) is below this: 1e-5 rad is 0.6 arcsec, far
+// below any visibility or noise scale.
+constexpr double kRefineMinStep = 1e-5;
+// Steps of the sliver probe along each cut: fine up to kSliverWidthDeg, then coarse.
+constexpr double kSliverFineStepDeg = 0.02;
+constexpr double kSliverCoarseStepDeg = 0.25;
+
+Eigen::Matrix3Xd fibonacci_sphere(int count) {
+  Eigen::Matrix3Xd out(3, count);
+  const double golden = kPi * (3.0 - std::sqrt(5.0));
+  for (int k = 0; k < count; ++k) {
+    const double z = 1.0 - (2.0 * k + 1.0) / count;
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    out.col(k) << r * std::cos(golden * k), r * std::sin(golden * k), z;
+  }
+  return out;
+}
+
+// Two unit vectors spanning the tangent plane at a.
+void tangent_basis(const Eigen::Vector3d& a, Eigen::Vector3d* u, Eigen::Vector3d* v) {
+  Eigen::Index k = 0;
+  a.cwiseAbs().minCoeff(&k);
+  *u = a.cross(Eigen::Vector3d::Unit(k)).normalized();
+  *v = a.cross(*u);
+}
+
+// The point at angle `angle` (radians) from a along tangent direction t.
+Eigen::Vector3d along(const Eigen::Vector3d& a, const Eigen::Vector3d& t, double angle) {
+  return (std::cos(angle) * a + std::sin(angle) * t).normalized();
+}
+
+// Compass search on the sphere for the largest (sign +1) or smallest (sign -1) rot_rms_deg among
+// trackable directions, from `start`, first step `step` radians.
+PoseCrbAt refine(const PoseCrbModel& model, double distance, const PoseCrbAt& start, double step,
+                 double sign) {
+  PoseCrbAt best = start;
+  while (step > kRefineMinStep) {
+    Eigen::Vector3d u, v;
+    tangent_basis(best.direction, &u, &v);
+    bool moved = false;
+    for (const Eigen::Vector3d& t : {u, v, Eigen::Vector3d(-u), Eigen::Vector3d(-v)}) {
+      PoseCrbAt next = model.at(along(best.direction, t, step), distance);
+      if (next.trackable && sign * next.rot_rms_deg > sign * best.rot_rms_deg) {
+        best = std::move(next);
+        moved = true;
+        break;
+      }
+    }
+    if (!moved) step *= 0.5;
+  }
+  return best;
+}
+
+// How far (degrees) from the worst direction along t the bound stays >= half of it.
+double half_bound_reach_deg(const PoseCrbModel& model, double distance, const PoseCrbAt& worst,
+                            const Eigen::Vector3d& t) {
+  const double half = 0.5 * worst.rot_rms_deg;
+  double reached = 0.0;
+  for (double deg = kSliverFineStepDeg; deg <= PoseCrbMap::kMaxSliverProbeDeg + 1e-12;
+       deg += deg < PoseCrbMap::kSliverWidthDeg ? kSliverFineStepDeg : kSliverCoarseStepDeg) {
+    const PoseCrbAt at = model.at(along(worst.direction, t, deg / kDegreesPerRadian), distance);
+    if (!at.trackable || at.rot_rms_deg < half) break;
+    reached = deg;
+  }
+  return reached;
+}
+
+// The narrowest of four cuts (0, 45, 90, 135 degrees in the tangent plane) through the worst.
+double worst_region_width_deg(const PoseCrbModel& model, double distance, const PoseCrbAt& worst) {
+  Eigen::Vector3d u, v;
+  tangent_basis(worst.direction, &u, &v);
+  double narrowest = 2.0 * PoseCrbMap::kMaxSliverProbeDeg;
+  for (int k = 0; k < 4; ++k) {
+    const double phi = k * kPi / 4.0;
+    const Eigen::Vector3d t = std::cos(phi) * u + std::sin(phi) * v;
+    const double width = half_bound_reach_deg(model, distance, worst, t) +
+                         half_bound_reach_deg(model, distance, worst, -t);
+    narrowest = std::min(narrowest, width);
+  }
+  return narrowest;
+}
+
+// The q-quantile (0 <= q <= 1) of sorted values: the nearest-rank value.
+double nearest_rank(const std::vector<double>& sorted, double q) {
+  const auto n = static_cast<double>(sorted.size());
+  const auto rank = static_cast<std::size_t>(std::max(1.0, std::ceil(q * n)));
+  return sorted[std::min(sorted.size(), rank) - 1];
+}
+
+// Indices of the trackable samples, by rot_rms_deg increasing (ties by index).
+std::vector<int> trackable_by_bound(const std::vector<PoseCrbAt>& samples) {
+  std::vector<int> order;
+  for (int k = 0; k < static_cast<int>(samples.size()); ++k) {
+    if (samples[k].trackable) order.push_back(k);
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return samples[a].rot_rms_deg < samples[b].rot_rms_deg; });
+  return order;
+}
+
+std::vector<PoseCrbAt> sample_workspace(const PoseCrbModel& model, double distance) {
+  const Eigen::Matrix3Xd all = fibonacci_sphere(model.options().samples);
+  std::vector<int> inside;
+  for (int k = 0; k < static_cast<int>(all.cols()); ++k) {
+    if (model.in_workspace(all.col(k))) inside.push_back(k);
+  }
+  std::vector<PoseCrbAt> samples(inside.size());
+  parallel_blocks(static_cast<long>(inside.size()), model.options().threads,
+                  [&](long begin, long end) {
+                    for (long k = begin; k < end; ++k) {
+                      samples[k] = model.at(all.col(inside[k]), distance);
+                    }
+                  });
+  return samples;
+}
+
+// The best of the refinements from the `starts` extreme samples of `order` (sign +1: from the
+// largest, -1: from the smallest).
+PoseCrbAt refined_extreme(const PoseCrbModel& model, double distance,
+                          const std::vector<PoseCrbAt>& samples, const std::vector<int>& order,
+                          double sign, double step) {
+  const int starts = std::min<int>(model.options().refine_starts, static_cast<int>(order.size()));
+  PoseCrbAt best;
+  for (int s = 0; s < starts; ++s) {
+    const int k = sign > 0 ? order[order.size() - 1 - s] : order[s];
+    PoseCrbAt refined = refine(model, distance, samples[k], step, sign);
+    if (s == 0 || sign * refined.rot_rms_deg > sign * best.rot_rms_deg) best = std::move(refined);
+  }
+  return best;
+}
+
+}  // namespace crb_sampling
+
+const char* to_string(PoseCrbMap::Status status) {
+  return status == PoseCrbMap::Status::kOk ? "ok" : "untrackable";
+}
+
+PoseCrbMap pose_crb_map(const PoseCrbModel& model) {
+  return pose_crb_map(model, model.options().distance);
+}
+
+PoseCrbMap pose_crb_map(const PoseCrbModel& model, double distance) {
+  using namespace crb_sampling;
+  PoseCrbMap map;
+  map.samples = sample_workspace(model, distance);
+  const std::vector<int> order = trackable_by_bound(map.samples);
+  if (map.samples.empty() || order.empty()) return map;
+  map.status = PoseCrbMap::Status::kOk;
+  map.trackable_fraction =
+      static_cast<double>(order.size()) / static_cast<double>(map.samples.size());
+  std::vector<double> sorted(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = map.samples[order[k]].rot_rms_deg;
+  map.percentiles = {nearest_rank(sorted, 0.50), nearest_rank(sorted, 0.95),
+                     nearest_rank(sorted, 0.99)};
+  const double spacing = std::sqrt(4.0 * kPi / model.options().samples);
+  map.worst = refined_extreme(model, distance, map.samples, order, +1.0, spacing);
+  map.best = refined_extreme(model, distance, map.samples, order, -1.0, spacing);
+  map.worst_region_width_deg = worst_region_width_deg(model, distance, map.worst);
+  map.sliver = map.worst_region_width_deg < PoseCrbMap::kSliverWidthDeg;
+  return map;
+}
+
+std::vector<PoseCrbSweepRow> pose_crb_distance_sweep(const PoseCrbModel& model, double d1,
+                                                     double d2, int count) {
+  if (count < 2 || !(d1 < d2) || !std::isfinite(d2) || !(d1 > model.radius())) {
+    throw InvalidArgument("sweep_distance", "needs D1 < D2, both above the layout's radius " +
+                                                std::to_string(model.radius()) + ", and N >= 2");
+  }
+  std::vector<PoseCrbSweepRow> rows;
+  for (int k = 0; k < count; ++k) {
+    PoseCrbSweepRow row;
+    row.distance = d1 + k * (d2 - d1) / (count - 1);
+    PoseCrbMap map = pose_crb_map(model, row.distance);
+    row.status = map.status;
+    row.trackable_fraction = map.trackable_fraction;
+    if (map.status == PoseCrbMap::Status::kOk) {
+      row.worst = map.worst;
+      const std::vector<int> order = crb_sampling::trackable_by_bound(map.samples);
+      row.median = map.samples[order[(order.size() - 1) / 2]];
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+}  // namespace vantage::camera

@@ -1,0 +1,122 @@
+// The worst and best TRE over the tracked directions (docs/math.md §23): certified, attained at a
+// tracked direction with the reported visible set, and never beaten by a dense lattice of
+// directions with exact visibility; with and without normals, and the branch and bound against
+// the closed form.
+
+#include "vantage/tracker/tre_search.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+
+#include "vantage/analysis/target_registration.h"
+#include "vantage/visibility/visibility.h"
+
+namespace vantage::tracker {
+namespace {
+
+// Attained values are recomputed from the same formula: a few roundings.
+constexpr double kRecompute = 1e-12;
+// The search's default relative tolerance on the RMS, plus rounding.
+constexpr double kCertificate = 1e-6 + 1e-12;
+constexpr int kLattice = 40000;
+
+visibility::VisibilityProblem five_marker_tool() {
+  visibility::VisibilityProblem problem;
+  problem.points.resize(3, 5);
+  problem.points << 40, -20, -20, 0, 10, 0, 35, -35, 0, 10, 0, 10, 10, 45, -30;
+  const Eigen::Vector3d centroid = problem.points.rowwise().mean();
+  problem.normals = (problem.points.colwise() - centroid).colwise().normalized();
+  problem.cos_cone = Eigen::VectorXd::Constant(5, std::cos(75.0 * M_PI / 180.0));
+  problem.cos_cone(4) = std::cos(100.0 * M_PI / 180.0);
+  problem.min_visible = 3;
+  return problem;
+}
+
+visibility::VisibilityProblem seen_whole(const Eigen::Matrix3Xd& points) {
+  visibility::VisibilityProblem problem;
+  problem.points = points;
+  problem.normals = Eigen::Matrix3Xd::Zero(3, points.cols());
+  problem.normals.row(2).setOnes();
+  problem.cos_cone = Eigen::VectorXd::Constant(points.cols(), -1.0);
+  return problem;
+}
+
+double rms_at(const visibility::VisibilityProblem& problem, const Eigen::Vector3d& target,
+              const FleModel& fle, const Eigen::Vector3d& a, bool* tracked,
+              std::vector<int>* visible = nullptr) {
+  const visibility::DirectionVisibility seen = visibility::direction_visibility(problem, a);
+  *tracked = seen.trackable;
+  if (visible != nullptr) *visible = seen.visible;
+  if (!seen.trackable) return 0.0;
+  return std::sqrt(tre_covariance(problem.points, seen.visible, target, fle, a).trace());
+}
+
+void expect_extremes_hold(const visibility::VisibilityProblem& problem,
+                          const Eigen::Vector3d& target, const FleModel& fle,
+                          const TreExtremes& e) {
+  ASSERT_TRUE(e.worst.certified());
+  ASSERT_TRUE(e.best.certified());
+  for (const TreExtreme* x : {&e.worst, &e.best}) {
+    bool tracked = false;
+    std::vector<int> visible;
+    const double rms = rms_at(problem, target, fle, x->direction, &tracked, &visible);
+    EXPECT_TRUE(tracked);
+    EXPECT_EQ(visible, x->visible_markers);
+    EXPECT_NEAR(rms, x->rms, kRecompute * rms);
+  }
+  const Eigen::Matrix3Xd lattice = visibility::fibonacci_directions(kLattice);
+  int tracked_count = 0;
+  for (Eigen::Index k = 0; k < lattice.cols(); ++k) {
+    bool tracked = false;
+    const double rms = rms_at(problem, target, fle, lattice.col(k), &tracked);
+    if (!tracked) continue;
+    ++tracked_count;
+    EXPECT_LE(rms, e.worst.rms_bound * (1.0 + kRecompute));
+    EXPECT_GE(rms, e.best.rms_bound * (1.0 - kRecompute));
+  }
+  EXPECT_GT(tracked_count, kLattice / 10);  // the loop ran on a real share of the sphere
+  EXPECT_LE(e.worst.rms_bound, e.worst.rms * (1.0 + kCertificate));
+  EXPECT_GE(e.best.rms_bound, e.best.rms * (1.0 - kCertificate));
+}
+
+TEST(TreSearch, WorstAndBestWithNormalsHoldOnADenseLattice) {
+  const visibility::VisibilityProblem problem = five_marker_tool();
+  for (const FleModel& fle :
+       {FleModel{0.0995, 0.2985}, FleModel{0.3, 0.1}, FleModel::isotropic(0.25)}) {
+    const Eigen::Vector3d target(0.0, 0.0, -120.0);
+    const TreExtremes e = tre_extremes(problem, target, fle);
+    EXPECT_FALSE(e.worst.closed_form);
+    expect_extremes_hold(problem, target, fle, e);
+  }
+}
+
+TEST(TreSearch, WithoutNormalsTheWorstIsTheTopEigenvector) {
+  const visibility::VisibilityProblem problem = seen_whole(five_marker_tool().points);
+  const FleModel fle{0.0995, 0.2985};
+  const Eigen::Vector3d target(5.0, 0.0, -150.0);
+  const TreExtremes e = tre_extremes(problem, target, fle);
+  EXPECT_TRUE(e.worst.closed_form);
+  expect_extremes_hold(problem, target, fle, e);
+  // The branch and bound on (nearly) the same sphere reaches the closed form's values.
+  visibility::VisibilityProblem capped = problem;
+  capped.workspace = visibility::Workspace{Eigen::Vector3d::UnitZ(), -1.0 + 1e-12};
+  const TreExtremes searched = tre_extremes(capped, target, fle);
+  EXPECT_FALSE(searched.worst.closed_form);
+  ASSERT_TRUE(searched.worst.certified());
+  EXPECT_NEAR(searched.worst.rms, e.worst.rms, kCertificate * e.worst.rms);
+  EXPECT_NEAR(searched.best.rms, e.best.rms, kCertificate * e.best.rms);
+}
+
+TEST(TreSearch, NoTrackedDirectionIsUntracked) {
+  visibility::VisibilityProblem problem = five_marker_tool();
+  problem.min_visible = 5;
+  problem.cos_cone.setConstant(std::cos(20.0 * M_PI / 180.0));
+  const TreExtremes e = tre_extremes(problem, Eigen::Vector3d::Zero(), FleModel{0.1, 0.3});
+  EXPECT_EQ(e.worst.status, TreExtreme::Status::kUntracked);
+  EXPECT_EQ(e.best.status, TreExtreme::Status::kUntracked);
+}
+
+}  // namespace
+}  // namespace vantage::tracker

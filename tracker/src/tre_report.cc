@@ -1,0 +1,144 @@
+#include "vantage/tracker/tre_report.h"
+
+#include <cmath>
+
+#include "vantage/analysis/common.h"
+
+namespace vantage::tracker {
+namespace {
+
+constexpr long kTreMinTrials = 1000;
+
+void check_tre_targets(const std::vector<Eigen::Vector3d>& targets) {
+  if (targets.empty()) throw InvalidArgument("target", "give at least one target");
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    if (!targets[i].allFinite()) {
+      throw InvalidArgument("target", static_cast<long>(i), "must be finite");
+    }
+  }
+}
+
+}  // namespace
+
+bool TreOptions::is_valid(std::string* why) const {
+  std::string inner;
+  if (!fle.is_valid(&inner)) {
+    if (why != nullptr) *why = "fle." + inner;
+    return false;
+  }
+  if (direction && !(direction->allFinite() && direction->norm() > 0.0)) {
+    if (why != nullptr) *why = "direction: must be finite and non-zero";
+    return false;
+  }
+  if (monte_carlo_trials != 0 && monte_carlo_trials < kTreMinTrials) {
+    if (why != nullptr) *why = "monte_carlo_trials: must be 0 or >= 1000";
+    return false;
+  }
+  if (threads < 0) {
+    if (why != nullptr) *why = "threads: must be >= 0";
+    return false;
+  }
+  return search.is_valid(why);
+}
+
+visibility::VisibilityProblem tre_visibility_problem(const Layout& layout) {
+  if (layout.visibility) return visibility::VisibilityModel::of(layout).problem();
+  visibility::VisibilityProblem problem;
+  problem.points = layout.entries;
+  const Eigen::Index n = layout.entries.cols();
+  problem.normals = Eigen::Matrix3Xd::Zero(3, n);
+  problem.normals.row(2).setOnes();
+  problem.cos_cone = Eigen::VectorXd::Constant(n, -1.0);
+  problem.min_visible = 3;
+  if (layout.workspace) {
+    problem.workspace = visibility::Workspace{
+        layout.workspace->axis, std::cos(layout.workspace->half_angle_deg * M_PI / 180.0)};
+    if (layout.workspace->half_angle_deg >= 180.0) problem.workspace.reset();
+  }
+  return problem;
+}
+
+TreModel::TreModel(const Layout& layout, const FleModel& fle) : fle_(fle) {
+  if (layout.mode != LayoutMode::kPoints) {
+    throw InvalidArgument("points", "the TRE needs a layout of marker points, not vectors");
+  }
+  std::string why;
+  if (!fle.is_valid(&why)) throw InvalidArgument("fle." + why);
+  layout.validate();
+  if (layout.visibility) {
+    visibility_ = visibility::VisibilityModel::of(layout);
+    problem_ = visibility_->problem();
+  } else {
+    problem_ = tre_visibility_problem(layout);
+  }
+}
+
+bool TreModel::in_workspace(const Eigen::Vector3d& a) const {
+  return !problem_.workspace ||
+         a.dot(problem_.workspace->axis) >= problem_.workspace->cos_half_angle;
+}
+
+TreAtDirection TreModel::at(const Eigen::Vector3d& target_tool, const Eigen::Vector3d& a) const {
+  TreAtDirection at;
+  at.direction = a;
+  const visibility::DirectionVisibility seen = visibility::direction_visibility(problem_, a);
+  at.visible_markers = seen.visible;
+  if (!seen.trackable) return at;
+  at.covariance = tre_covariance(problem_.points, seen.visible, target_tool, fle_, a);
+  at.tracked = true;
+  at.rms = std::sqrt(at.covariance.trace());
+  return at;
+}
+
+TreReport tre_report(const Layout& layout, const std::vector<Eigen::Vector3d>& targets,
+                     const TreOptions& options) {
+  if (layout.mode != LayoutMode::kPoints) {
+    throw InvalidArgument("points", "the TRE needs a layout of marker points, not vectors");
+  }
+  check_tre_targets(targets);
+  std::string why;
+  if (!options.is_valid(&why)) throw InvalidArgument(why);
+  return tre_report(TreModel(layout, options.fle), targets, options);
+}
+
+TreReport tre_report(const TreModel& model, const std::vector<Eigen::Vector3d>& targets,
+                     const TreOptions& given) {
+  TreOptions options = given;
+  options.fle = model.fle();
+  check_tre_targets(targets);
+  std::string why;
+  if (!options.is_valid(&why)) throw InvalidArgument(why);
+  const visibility::VisibilityProblem& problem = model.problem();
+  TreReport report;
+  report.fle = options.fle;
+  report.markers = static_cast<int>(problem.points.cols());
+  report.min_visible = problem.min_visible;
+  report.with_normals = model.with_normals();
+  report.with_body = model.with_body();
+  for (const Eigen::Vector3d& target : targets) {
+    TreTargetReport t;
+    t.target = target;
+    if (options.fle.from_rms) {
+      t.rms_isotropic = tre_rms_isotropic(problem.points, target, options.fle.rms());
+    }
+    if (options.direction) {
+      t.at_direction = model.at(target, options.direction->normalized());
+    }
+    t.extremes = tre_extremes(problem, target, options.fle, options.search);
+    if (options.monte_carlo_trials > 0) {
+      const bool at_given = t.at_direction && t.at_direction->tracked;
+      const Eigen::Vector3d a = at_given ? t.at_direction->direction : t.extremes.worst.direction;
+      const std::vector<int>& visible =
+          at_given ? t.at_direction->visible_markers : t.extremes.worst.visible_markers;
+      if (at_given || t.extremes.worst.status != TreExtreme::Status::kUntracked) {
+        t.monte_carlo_direction = a;
+        t.monte_carlo = tre_monte_carlo(problem.points, visible, target, options.fle, a,
+                                        options.monte_carlo_trials, options.seed, options.threads);
+      }
+    }
+    report.targets.push_back(std::move(t));
+  }
+  return report;
+}
+
+}  // namespace vantage::tracker

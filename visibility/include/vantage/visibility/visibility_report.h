@@ -1,0 +1,76 @@
+#pragma once
+
+/// The visibility part of a layout report (docs/math.md §20): the worst viewpoint over the
+/// trackable directions of the workspace, the coverage, and which marker costs most when lost.
+/// report::analyze_layout() (layout_report.h) fills it for every layout with normals.
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vantage/analysis/layout.h"
+#include "vantage/analysis/marker_visibility.h"
+#include "vantage/analysis/occlusion_grid.h"
+#include "vantage/visibility/visibility.h"
+
+namespace vantage::visibility {
+
+/// Options of the visibility analysis.
+struct VisibilityReportOptions {
+  VisibilitySearchOptions search;
+  /// Occlusion grid cell size with a body, degrees, in [0.45, 30] (docs/math.md §20).
+  double occlusion_resolution_deg = 1.0;
+  int coverage_samples = 20000;  ///< Fibonacci directions of the coverage estimate, >= 100
+  bool dropout = false;          ///< also analyse the layout without each marker
+  int threads = 0;               ///< ray casting and dropout threads, >= 0 (0: all cores)
+
+  bool is_valid(std::string* why = nullptr) const;
+};
+
+/// The layout without one marker, under visibility.
+struct VisibilityDropoutEntry {
+  int lost = 0;  ///< the marker removed
+  VisibilityWorstViewpoint::Status status = VisibilityWorstViewpoint::Status::kNotCertified;
+  double t = 0.0;
+  double pbar_min = 1.0;
+  double max_worst_case_error_deg = 0.0;  ///< asin t, degrees (90 when untrackable)
+  double trackable_fraction = 0.0;
+};
+
+/// What a layout on its body promises.
+struct VisibilityReport {
+  bool with_body = false;  ///< "cone+mesh" (occlusion by the body) or "cone"
+  int min_visible = 3;
+  std::optional<LayoutWorkspace> workspace;
+  VisibilityWorstViewpoint worst;
+  double max_worst_case_error_deg = 90.0;  ///< asin t of the worst viewpoint, degrees
+  VisibilityCoverage coverage;
+  std::optional<double> occlusion_resolution_deg;  ///< with a body
+  /// With a body: each marker's distance to the mesh surface, and the markers farther than
+  /// kOffSurface of the mesh's size (a warning: the mesh may not be the markers' body).
+  std::vector<double> distance_to_body;
+  std::vector<int> off_body;
+  std::vector<VisibilityDropoutEntry> dropout;  ///< by marker, when asked
+  /// Markers by decreasing harm when lost: largest worst-case error, then smallest trackable
+  /// fraction, then index.
+  std::vector<int> dropout_by_harm;
+
+  /// A marker farther from the mesh than this fraction of the mesh's size is reported.
+  static constexpr double kOffSurface = 0.01;
+
+  /// Certified (or, with dropout, every entry certified or untrackable).
+  bool is_usable() const;
+  std::string message() const;
+};
+
+/// The visibility problem of a point layout with visibility (points, unit normals, cone
+/// cosines, min_visible, workspace) over an optional occlusion grid.
+VisibilityProblem visibility_problem(const Layout& layout, const OcclusionGrid* occlusion);
+
+/// The analysis of docs/math.md §20 for a point layout with visibility. Throws InvalidArgument
+/// for a layout without visibility or bad options.
+VisibilityReport analyze_visibility(const Layout& layout,
+                                    const VisibilityReportOptions& options = {});
+
+}  // namespace vantage::visibility

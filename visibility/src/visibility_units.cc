@@ -1,0 +1,205 @@
+#include "visibility_units.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "vantage/analysis/common.h"
+
+namespace vantage::visibility::internal {
+namespace {
+
+// Without a certain marker, the greedy bound pairs every unit with the others; beyond this many
+// units the patch (a large one) keeps its other bounds and is split.
+constexpr int kMaxFreeUnits = 48;
+// Up to this many mixed units, the bound takes the best of every choice of units (exact).
+constexpr int kMaxEnumeratedUnits = 12;
+// Two cones' hidden sides count as apart only this far (radians) beyond touching.
+constexpr double kApartMargin = 1e-12;
+
+// Open caps about -n of radius pi - theta, apart when their centres are at least the sum of the
+// radii apart. Opposite normals are decided exactly (n.a < c1 and n.a > -c2 never both hold
+// when c1 <= -c2).
+bool hidden_sides_apart(const Eigen::Vector3d& n1, double c1, const Eigen::Vector3d& n2,
+                        double c2) {
+  if (n1 == -n2) return c1 + c2 <= 0.0;
+  const double between = std::atan2(n1.cross(n2).norm(), n1.dot(n2));
+  const double t1 = std::acos(std::clamp(c1, -1.0, 1.0));
+  const double t2 = std::acos(std::clamp(c2, -1.0, 1.0));
+  return between >= 2.0 * kPi - t1 - t2 + kApartMargin;
+}
+
+// The mixed markers of a patch in units; unit index 0 stands for the certain markers.
+struct Units {
+  int certain = 0;
+  std::vector<int> of;     // per marker: its unit (1..), 0 when certain, -1 when hidden
+  std::vector<int> size;   // per unit (index 0 unused)
+  std::vector<int> klass;  // per unit: its cone class when at its cone's edge, else -1
+  int count() const { return static_cast<int>(size.size()) - 1; }
+};
+
+Units group(const ConeClasses& classes, const std::vector<Seen>& seen) {
+  const int n = static_cast<int>(seen.size());
+  Units u;
+  u.of.assign(static_cast<std::size_t>(n), -1);
+  u.size = {0};
+  u.klass = {-1};
+  std::vector<int> class_unit(static_cast<std::size_t>(n), -1);
+  for (int i = 0; i < n; ++i) {
+    if (seen[i] == Seen::kVisible) {
+      ++u.certain;
+      u.of[i] = 0;
+    }
+    if (!is_mixed(seen[i])) continue;
+    int& shared = class_unit[static_cast<std::size_t>(classes.of(i))];
+    if (seen[i] == Seen::kConeEdge && shared >= 0) {
+      u.of[i] = shared;
+    } else {
+      u.of[i] = static_cast<int>(u.size.size());
+      u.size.push_back(0);
+      u.klass.push_back(seen[i] == Seen::kConeEdge ? classes.of(i) : -1);
+      if (seen[i] == Seen::kConeEdge) shared = u.of[i];
+    }
+    ++u.size[static_cast<std::size_t>(u.of[i])];
+  }
+  return u;
+}
+
+// w(x, y): the least pair bound between units x and y (x == y: within x), 1 without pairs.
+class Weights {
+ public:
+  Weights(const Units& units, const PatchMarkers& patch) : side_(units.count() + 1) {
+    w_.assign(static_cast<std::size_t>(side_) * side_, 1.0);
+    for (int k : patch.pairs) {
+      const auto [i, j] = patch.pair_of[static_cast<std::size_t>(k)];
+      const int x = units.of[i], y = units.of[j];
+      if (x == 0 && y == 0) continue;  // bound 2's pairs
+      const double b =
+          sin_plus(std::abs(patch.centre.dot(patch.u.col(k))), patch.cos_r, patch.sin_r);
+      double& wxy = at(x, y);
+      wxy = std::min(wxy, b);
+      at(y, x) = wxy;
+    }
+  }
+  double operator()(int x, int y) const { return w_[index(x, y)]; }
+
+ private:
+  std::size_t index(int x, int y) const {
+    return static_cast<std::size_t>(x) * static_cast<std::size_t>(side_) +
+           static_cast<std::size_t>(y);
+  }
+  double& at(int x, int y) { return w_[index(x, y)]; }
+  int side_;
+  std::vector<double> w_;
+};
+
+// Every choice of units holding `need` markers and one of each pair in `apart`: the least pair
+// bound among the certain markers' pairs with them and their own pairs, at its best. A choice
+// that is enough stops growing, since more units only add pairs.
+double best_choice(const Units& units, const Weights& w, int need,
+                   const std::vector<std::pair<int, int>>& apart) {
+  const int side = units.count() + 1;
+  std::vector<int> chosen;
+  std::vector<char> in(static_cast<std::size_t>(side), 0);
+  auto covers = [&] {
+    for (const auto& [x, y] : apart) {
+      if (!in[x] && !in[y]) return false;
+    }
+    return true;
+  };
+  double best = 0.0;
+  std::function<void(int, int, double)> choose = [&](int next, int size, double value) {
+    if (value <= best) return;
+    if (size >= need && covers()) {
+      best = value;
+      return;
+    }
+    for (int x = next; x < side; ++x) {
+      double with = std::min({value, w(0, x), w(x, x)});
+      for (int y : chosen) with = std::min(with, w(x, y));
+      chosen.push_back(x);
+      in[x] = 1;
+      choose(x + 1, size + units.size[static_cast<std::size_t>(x)], with);
+      in[x] = 0;
+      chosen.pop_back();
+    }
+  };
+  choose(1, 0, 1.0);
+  return best;
+}
+
+// Many units (a large patch): the best units by w(anchor, U) and w(U, U) until `size` more
+// markers are seen. Any choice of units that large holds a unit at most this.
+double threshold(const Units& units, const Weights& w, int anchor, int size) {
+  std::vector<std::pair<double, int>> by_value;
+  for (int x = 1; x <= units.count(); ++x) {
+    if (x != anchor) {
+      by_value.emplace_back(std::min(w(anchor, x), w(x, x)),
+                            units.size[static_cast<std::size_t>(x)]);
+    }
+  }
+  std::sort(by_value.begin(), by_value.end(), std::greater<>());
+  int taken = 0;
+  for (const auto& [value, count] : by_value) {
+    taken += count;
+    if (taken >= size) return value;
+  }
+  return 0.0;  // too few markers: pruned before (fewer than min_visible can be seen)
+}
+
+}  // namespace
+
+double sin_plus(double s, double cos_r, double sin_r) {
+  if (s >= cos_r) return 1.0;
+  return s * cos_r + std::sqrt(std::max(0.0, 1.0 - s * s)) * sin_r;
+}
+
+ConeClasses::ConeClasses(const Eigen::Matrix3Xd& normals, const Eigen::VectorXd& cos_cone) {
+  const auto n = static_cast<int>(normals.cols());
+  class_.resize(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    class_[i] = i;
+    for (int j = 0; j < i; ++j) {
+      if (normals.col(j) == normals.col(i) && cos_cone(j) == cos_cone(i)) {
+        class_[i] = class_[j];
+        break;
+      }
+    }
+  }
+  apart_.assign(static_cast<std::size_t>(n) * n, 0);
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      apart_[static_cast<std::size_t>(class_[i]) * n + class_[j]] =
+          hidden_sides_apart(normals.col(i), cos_cone(i), normals.col(j), cos_cone(j));
+    }
+  }
+}
+
+double needed_mixed_bound(const ConeClasses& classes, int min_visible, const PatchMarkers& patch) {
+  const Units units = group(classes, patch.seen);
+  const int need = min_visible - units.certain;
+  const int count = units.count();
+  std::vector<std::pair<int, int>> apart;
+  for (int x = 1; x <= count && count <= kMaxEnumeratedUnits; ++x) {
+    for (int y = x + 1; y <= count; ++y) {
+      const int a = units.klass[static_cast<std::size_t>(x)];
+      const int b = units.klass[static_cast<std::size_t>(y)];
+      if (a >= 0 && b >= 0 && classes.hidden_apart(a, b)) apart.emplace_back(x, y);
+    }
+  }
+  if (need <= 0 && (apart.empty() || count > kMaxEnumeratedUnits)) return 1.0;
+  if (units.certain == 0 && count > std::max(kMaxFreeUnits, kMaxEnumeratedUnits)) return 1.0;
+  const Weights w(units, patch);
+  if (count <= kMaxEnumeratedUnits) return best_choice(units, w, need, apart);
+  if (units.certain > 0) return threshold(units, w, 0, need);
+  // No certain marker: some unit U is seen; the rest follows as above, U's pairs included.
+  double best = 0.0;
+  for (int x = 1; x <= count; ++x) {
+    const int rest = min_visible - units.size[static_cast<std::size_t>(x)];
+    best = std::max(best, rest <= 0 ? w(x, x) : std::min(w(x, x), threshold(units, w, x, rest)));
+  }
+  return best;
+}
+
+}  // namespace vantage::visibility::internal

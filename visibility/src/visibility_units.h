@@ -1,0 +1,54 @@
+#pragma once
+
+// Bound 2' of docs/math.md §20: on a patch where too few markers are certainly visible, the best
+// that any possible choice of mixed markers allows. Mixed markers come in units, seen whole or
+// not at all (markers of one normal and one cone at that cone's edge); where two units' hidden
+// sides do not meet, every direction sees one of them.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace vantage::visibility::internal {
+
+/// A marker on a patch: certainly visible, certainly hidden, mixed, or mixed only at the edge
+/// of its cone (clear of the body on the whole patch).
+enum class Seen : std::uint8_t { kVisible, kHidden, kMixed, kConeEdge };
+
+inline bool is_mixed(Seen s) { return s == Seen::kMixed || s == Seen::kConeEdge; }
+
+/// sin(min(pi/2, asin s + r)) for s = |c.u| at a patch's centre and its radius r (cos r, sin r):
+/// the largest |a.u| on the patch (§14).
+double sin_plus(double s, double cos_r, double sin_r);
+
+/// The markers' cone classes (one normal and one cone, bit for bit) and which classes' hidden
+/// sides {a : n.a < cos theta} do not meet.
+class ConeClasses {
+ public:
+  ConeClasses(const Eigen::Matrix3Xd& normals, const Eigen::VectorXd& cos_cone);
+  int of(int marker) const { return class_[static_cast<std::size_t>(marker)]; }
+  bool hidden_apart(int a, int b) const {
+    return apart_[static_cast<std::size_t>(a) * class_.size() + static_cast<std::size_t>(b)] != 0;
+  }
+
+ private:
+  std::vector<int> class_;
+  std::vector<char> apart_;
+};
+
+/// What bound 2' reads on one patch.
+struct PatchMarkers {
+  const std::vector<Seen>& seen;                    ///< per marker
+  const std::vector<std::pair<int, int>>& pair_of;  ///< markers (i, j) of each pair index
+  const Eigen::Matrix3Xd& u;                        ///< unit free vector of each pair index
+  const std::vector<int>& pairs;  ///< pairs of markers not hidden (others count as 1)
+  Eigen::Vector3d centre;
+  double cos_r = 1.0;
+  double sin_r = 0.0;
+};
+
+/// Bound 2' on t over the trackable directions of the patch (1 when it does not apply).
+double needed_mixed_bound(const ConeClasses& classes, int min_visible, const PatchMarkers& patch);
+
+}  // namespace vantage::visibility::internal
