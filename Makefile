@@ -131,7 +131,7 @@ fuzz: deps
 	  -print_final_stats=1 $(FUZZ_DIR)/corpus-formats examples/layouts examples/tools
 
 format:
-	find analysis body sdp visibility report tracker camera design cli io plot simulate viewer \
+	find analysis body sdp visibility report tracker camera design commands cli io plot simulate viewer \
 	  examples tests bench fuzz python \
 	  \( -name '*.h' -o -name '*.cc' \) 2>/dev/null | xargs clang-format -i
 

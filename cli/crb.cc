@@ -11,12 +11,12 @@
 
 #include "command.h"
 #include "crb_input.h"
-#include "crb_json.h"
 #include "layout_input.h"
 #include "limits.h"
 #include "vantage/analysis/common.h"
 #include "vantage/camera/pose_crb.h"
 #include "vantage/camera/pose_crb_tags.h"
+#include "vantage/commands/crb_json.h"
 
 namespace vantage::cli {
 

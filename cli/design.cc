@@ -11,12 +11,12 @@
 #include <sstream>
 
 #include "command.h"
-#include "design_json.h"
 #include "layout_input.h"
 #include "limits.h"
 #include "progress.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/identification.h"
+#include "vantage/commands/design_json.h"
 #include "vantage/design/augment.h"
 #include "vantage/io/layout_formats.h"
 #include "vantage/io/text_file.h"

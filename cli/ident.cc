@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "command.h"
-#include "ident_json.h"
 #include "limits.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/layout.h"
 #include "vantage/analysis/tool_match.h"
+#include "vantage/commands/ident_json.h"
 #include "vantage/io/layout_formats.h"
 
 namespace vantage::cli {

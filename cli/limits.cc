@@ -4,7 +4,7 @@ namespace vantage::cli {
 
 namespace {
 
-const design::LimitWords kCommandLine{"`vantage ", "`", "--allow-large"};
+const commands::LimitWords kCommandLine{"`vantage ", "`", "--allow-large"};
 
 }  // namespace
 
@@ -16,12 +16,12 @@ void add_allow_large_flag(CLI::App* sub, bool& flag) {
 
 void check_limit(const std::string& what, long count, long limit, const std::string& command,
                  bool allow_large) {
-  design::check_limit(what, count, limit, command, allow_large, kCommandLine);
+  commands::check_limit(what, count, limit, command, allow_large, kCommandLine);
 }
 
 void check_time_limit(const std::string& what, double seconds, double limit,
                       const std::string& command, bool allow_large) {
-  design::check_time_limit(what, seconds, limit, command, allow_large, kCommandLine);
+  commands::check_time_limit(what, seconds, limit, command, allow_large, kCommandLine);
 }
 
 }  // namespace vantage::cli

@@ -3,7 +3,7 @@
 // The bounds every `vantage` subcommand checks before any work (README "Limits"): one line on
 // stderr naming the bound and exit status 2; --allow-large lifts the soft bounds for a user who
 // wants to wait (and has the memory), the hard bounds stay. The bounds themselves live once in
-// vantage/design/limits.h (the Python package checks the same ones); this file words them for
+// vantage/commands/limits.h (the Python package checks the same ones); this file words them for
 // the command line.
 
 #include <CLI/CLI.hpp>
@@ -11,7 +11,7 @@
 #include <string>
 
 #include "vantage/analysis/layout.h"
-#include "vantage/design/limits.h"
+#include "vantage/commands/limits.h"
 #include "vantage/io/text_file.h"
 
 namespace vantage::cli {
@@ -20,18 +20,18 @@ namespace vantage::cli {
 constexpr std::size_t kMaxFileBytes = io::kMaxFileBytes;
 constexpr std::size_t kMaxFileBytesAllowLarge = io::kMaxFileBytesAllowLarge;
 
-using design::data_vector_count;
-using design::estimated_design_seconds;
-using design::kDesignDirectionSecondsPerVector;
-using design::kDesignPointSecondsPerVector;
-using design::kDesignPointStepSeconds;
-using design::kDesignSecondsPerSolveVector;
-using design::kMaxAnalyzeVectors;
-using design::kMaxDesignSeconds;
-using design::kMaxDropoutVectors;
-using design::kMaxPerTrialTrials;
-using design::kMaxTrials;
-using design::kMaxWeightsEntries;
+using commands::data_vector_count;
+using commands::estimated_design_seconds;
+using commands::kDesignDirectionSecondsPerVector;
+using commands::kDesignPointSecondsPerVector;
+using commands::kDesignPointStepSeconds;
+using commands::kDesignSecondsPerSolveVector;
+using commands::kMaxAnalyzeVectors;
+using commands::kMaxDesignSeconds;
+using commands::kMaxDropoutVectors;
+using commands::kMaxPerTrialTrials;
+using commands::kMaxTrials;
+using commands::kMaxWeightsEntries;
 
 /// Adds --allow-large to `sub`, storing into `flag`.
 void add_allow_large_flag(CLI::App* sub, bool& flag);

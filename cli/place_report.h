@@ -1,11 +1,11 @@
 #pragma once
 
 // `vantage place`: its arguments and its text report (the JSON report and the placement itself:
-// json/place_json.h) (README, "vantage place"; docs/math.md §21).
+// vantage/commands/place_json.h) (README, "vantage place"; docs/math.md §21).
 
 #include "command.h"
 #include "layout_input.h"
-#include "place_json.h"
+#include "vantage/commands/place_json.h"
 
 namespace vantage::cli {
 

@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "command.h"
-#include "pose_json.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/estimate_pose.h"
 #include "vantage/analysis/layout.h"
 #include "vantage/analysis/pose_method.h"
+#include "vantage/commands/pose_json.h"
 #include "vantage/io/correspondence_file.h"
 
 namespace vantage::cli {

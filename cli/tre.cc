@@ -12,8 +12,8 @@
 #include "layout_input.h"
 #include "limits.h"
 #include "tre_input.h"
-#include "tre_json.h"
 #include "vantage/analysis/common.h"
+#include "vantage/commands/tre_json.h"
 #include "vantage/tracker/tre_report.h"
 
 namespace vantage::cli {

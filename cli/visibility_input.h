@@ -1,15 +1,16 @@
 #pragma once
 
-// The options that put a layout on its body (VisibilityOptions, json/visibility_options.h) as
-// flags of a subcommand; LayoutInput registers and applies them.
+// The options that put a layout on its body (VisibilityOptions,
+// vantage/commands/visibility_options.h) as flags of a subcommand; LayoutInput registers and
+// applies them.
 
 #include <CLI/CLI.hpp>
 
-#include "visibility_options.h"
+#include "vantage/commands/visibility_options.h"
 
 namespace vantage::cli {
 
-struct VisibilityInput : VisibilityOptions {
+struct VisibilityInput : commands::VisibilityOptions {
   void add_options(CLI::App* sub);
 };
 

@@ -6,9 +6,9 @@
 #include <memory>
 
 #include "command.h"
-#include "design_json.h"
 #include "layout_input.h"
 #include "limits.h"
+#include "vantage/commands/design_json.h"
 #include "vantage/design/weights.h"
 #include "vantage/io/layout_file.h"
 

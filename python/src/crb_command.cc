@@ -7,11 +7,11 @@
 #include <optional>
 
 #include "arrays.h"
-#include "crb_json.h"
 #include "layouts.h"
 #include "results.h"
 #include "vantage/analysis/common.h"
 #include "vantage/camera/pose_crb.h"
+#include "vantage/commands/crb_json.h"
 
 namespace vantage::python {
 

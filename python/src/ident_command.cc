@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "ident_json.h"
 #include "layouts.h"
 #include "results.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/tool_match.h"
+#include "vantage/commands/ident_json.h"
 
 namespace vantage::python {
 

@@ -8,13 +8,13 @@
 #include <cmath>
 
 #include "arrays.h"
-#include "design_json.h"
 #include "layouts.h"
 #include "results.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/free_vectors.h"
+#include "vantage/commands/design_json.h"
+#include "vantage/commands/limits.h"
 #include "vantage/design/augment.h"
-#include "vantage/design/limits.h"
 #include "vantage/design/weights.h"
 #include "vantage/report/layout_report.h"
 
@@ -22,7 +22,7 @@ namespace vantage::python {
 
 namespace {
 
-/// Runs a size check (vantage/design/limits.h); its error names the file it read, if any, as
+/// Runs a size check (vantage/commands/limits.h); its error names the file it read, if any, as
 /// the error's source (ValueError.source), the bound as its field.
 template <typename Check>
 void check_size(const std::string& source, Check&& check) {
@@ -51,11 +51,11 @@ py::tuple analyze(const py::object& layout_arg, const py::object& vectors, const
   const Layout layout = layout_from_arguments(layout_arg, vectors, points, weights, py::none(),
                                               {format, tag_points, bundle, allow_large}, &source);
   check_size(source, [&] {
-    design::check_limit("data vectors", design::data_vector_count(layout),
-                        design::kMaxAnalyzeVectors, "analyze", allow_large, kPythonWords);
+    commands::check_limit("data vectors", commands::data_vector_count(layout),
+                          commands::kMaxAnalyzeVectors, "analyze", allow_large, kPythonWords);
     if (dropout) {
-      design::check_limit("data vectors with dropout=True", design::data_vector_count(layout),
-                          design::kMaxDropoutVectors, "analyze", allow_large, kPythonWords);
+      commands::check_limit("data vectors with dropout=True", commands::data_vector_count(layout),
+                            commands::kMaxDropoutVectors, "analyze", allow_large, kPythonWords);
     }
   });
   report::LayoutReportOptions options;
@@ -97,11 +97,11 @@ py::object design_layout(const py::object& layout_arg, const py::object& vectors
     const long final_count = layout.mode == LayoutMode::kPoints
                                  ? static_cast<long>(free_vector_count(layout.entries.cols() + add))
                                  : static_cast<long>(layout.entries.cols()) + add;
-    design::check_time_limit(
+    commands::check_time_limit(
         "add=" + std::to_string(add) + " on " + std::to_string(final_count) + " data vectors",
-        design::estimated_design_seconds(layout, add, candidates_only,
-                                         design::AugmentOptions{}.search_budget),
-        design::kMaxDesignSeconds, "design", allow_large, kPythonWords);
+        commands::estimated_design_seconds(layout, add, candidates_only,
+                                           design::AugmentOptions{}.search_budget),
+        commands::kMaxDesignSeconds, "design", allow_large, kPythonWords);
   });
   design::AugmentOptions options;
   options.add = add;
@@ -132,8 +132,8 @@ py::object layout_weights(const py::object& layout_arg, const py::object& vector
   const Layout layout = layout_from_arguments(layout_arg, vectors, points, py::none(), py::none(),
                                               {format, tag_points, bundle, allow_large}, &source);
   check_size(source, [&] {
-    design::check_limit(layout.entries_field(), layout.entries.cols(), design::kMaxWeightsEntries,
-                        "weights", allow_large, kPythonWords);
+    commands::check_limit(layout.entries_field(), layout.entries.cols(),
+                          commands::kMaxWeightsEntries, "weights", allow_large, kPythonWords);
   });
   const design::Weights w = without_gil([&] { return design::layout_weights(layout); });
   const Json out = design_json::weights(source_json(source), layout, w);

@@ -10,13 +10,13 @@
 
 #include "arrays.h"
 #include "layouts.h"
-#include "place_json.h"
 #include "results.h"
 #include "vantage/analysis/common.h"
+#include "vantage/commands/place_json.h"
+#include "vantage/commands/visibility_options.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/io/layout_formats.h"
 #include "vantage/io/text_file.h"
-#include "visibility_options.h"
 
 namespace vantage::python {
 
@@ -60,7 +60,8 @@ std::string place_workspace(const py::object& workspace) {
   return out;
 }
 
-py::object place_run(const place_json::Request& request, const cli::VisibilityOptions& visibility) {
+py::object place_run(const place_json::Request& request,
+                     const commands::VisibilityOptions& visibility) {
   place_json::check_request(request);
   const place_json::Sites sites = place_json::candidate_sites(
       request,
@@ -117,7 +118,7 @@ py::object place(const py::object& body, const py::object& sites, int markers,
     request.random_trials = random_trials.value_or(request.random_trials);
     request.exhaustive_limit = exhaustive_limit.value_or(request.exhaustive_limit);
     request.overwrite = overwrite;
-    cli::VisibilityOptions visibility;
+    commands::VisibilityOptions visibility;
     visibility.cone_deg = cone_deg;
     visibility.min_visible = min_visible;
     visibility.workspace = place_workspace(workspace);

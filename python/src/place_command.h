@@ -3,7 +3,7 @@
 // vantage.place: K marker sites on a body (a mesh's surface, or given sites with normals), every
 // workspace direction trackable and the certified worst case under visibility best
 // (design::place_markers(), docs/math.md §21), as the fields of `vantage place --json`: the same
-// checks, placement and JSON writer as the CLI (cli/json/place_json.h).
+// checks, placement and JSON writer as the CLI (commands/include/vantage/commands/place_json.h).
 
 #include <pybind11/pybind11.h>
 

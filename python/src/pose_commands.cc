@@ -1,7 +1,7 @@
 // vantage.pose and vantage.orient: the estimators behind `vantage pose` and `vantage orient`,
 // returning the fields of their --json output. vantage.pose goes through estimate_pose(), the
 // front door `vantage pose` and `vantage simulate` use, and its object is the command's own
-// conversion (cli/json/pose_json.h).
+// conversion (commands/include/vantage/commands/pose_json.h).
 
 #include "pose_commands.h"
 
@@ -10,12 +10,12 @@
 #include <cmath>
 
 #include "arrays.h"
-#include "pose_json.h"
 #include "results.h"
 #include "vantage/analysis/absolute_orientation.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/estimate_pose.h"
 #include "vantage/analysis/pose_method.h"
+#include "vantage/commands/pose_json.h"
 #include "vantage/io/correspondence_file.h"
 
 namespace vantage::python {

@@ -31,7 +31,7 @@ py::object to_python(const Json& value) {
   }
 }
 
-const design::LimitWords kPythonWords{"vantage.", "()", "allow_large=True"};
+const commands::LimitWords kPythonWords{"vantage.", "()", "allow_large=True"};
 
 py::object result_or_raise(bool failed, const std::string& status, const std::string& message,
                            const Json& result, const std::string& text) {

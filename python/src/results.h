@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "vantage/design/limits.h"
+#include "vantage/commands/limits.h"
 
 namespace vantage::python {
 
@@ -45,9 +45,9 @@ class NumericalFailure : public std::runtime_error {
 py::object result_or_raise(bool failed, const std::string& status, const std::string& message,
                            const Json& result, const std::string& text = "");
 
-/// How the size limits (vantage/design/limits.h) word Python's calls: "vantage.analyze()",
+/// How the size limits (vantage/commands/limits.h) word Python's calls: "vantage.analyze()",
 /// "allow_large=True lifts it".
-extern const design::LimitWords kPythonWords;
+extern const commands::LimitWords kPythonWords;
 
 /// Defines vantage.NumericalError (a RuntimeError) in `module` and translates NumericalFailure;
 /// translates InvalidArgument into ValueError with the attributes field, index, problem and

@@ -11,7 +11,7 @@
 #include "layouts.h"
 #include "results.h"
 #include "vantage/analysis/common.h"
-#include "vantage/design/limits.h"
+#include "vantage/commands/limits.h"
 #include "vantage/simulate/layout_simulation.h"
 
 namespace vantage::python {
@@ -30,10 +30,11 @@ py::object simulate_layout(const py::object& layout_arg, const py::object& vecto
   const Layout layout = layout_from_arguments(layout_arg, vectors, points, py::none(), py::none(),
                                               {format, tag_points, bundle, allow_large}, &source);
   if (trials < 1) throw InvalidArgument("trials", "must be >= 1");
-  design::check_limit("trials", trials, design::kMaxTrials, "simulate", allow_large, kPythonWords);
+  commands::check_limit("trials", trials, commands::kMaxTrials, "simulate", allow_large,
+                        kPythonWords);
   if (per_trial) {
-    design::check_limit("trials with per_trial=True", trials, design::kMaxPerTrialTrials,
-                        "simulate", allow_large, kPythonWords);
+    commands::check_limit("trials with per_trial=True", trials, commands::kMaxPerTrialTrials,
+                          "simulate", allow_large, kPythonWords);
   }
   simulate::LayoutSimulationOptions options;
   simulate::LayoutSceneOptions& scene = options.scene;

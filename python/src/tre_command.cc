@@ -11,8 +11,8 @@
 #include "arrays.h"
 #include "layouts.h"
 #include "results.h"
-#include "tre_json.h"
 #include "vantage/analysis/common.h"
+#include "vantage/commands/tre_json.h"
 #include "vantage/tracker/tre_report.h"
 
 namespace vantage::python {

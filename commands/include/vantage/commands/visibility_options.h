@@ -10,7 +10,7 @@
 
 #include "vantage/analysis/layout.h"
 
-namespace vantage::cli {
+namespace vantage::commands {
 
 struct VisibilityOptions {
   std::string normals;  ///< "" (the file's) or "radial"
@@ -25,4 +25,4 @@ struct VisibilityOptions {
   void apply(Layout* layout) const;
 };
 
-}  // namespace vantage::cli
+}  // namespace vantage::commands

@@ -1,6 +1,6 @@
 // The JSON object of `vantage ident --json` (ident_json.h).
 
-#include "ident_json.h"
+#include "vantage/commands/ident_json.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "pose_json.h"
+#include "vantage/commands/pose_json.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "vantage/design/limits.h"
+#include "vantage/commands/limits.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -7,7 +7,7 @@
 #include "vantage/analysis/free_vectors.h"
 #include "vantage/design/augment.h"
 
-namespace vantage::design {
+namespace vantage::commands {
 
 void check_limit(const std::string& what, long count, long limit, const std::string& command,
                  bool allow_large, const LimitWords& words) {
@@ -22,7 +22,7 @@ double estimated_design_seconds(const Layout& layout, int add, bool candidates_o
   const bool points = layout.mode == LayoutMode::kPoints;
   const double m = points ? static_cast<double>(free_vector_count(layout.entries.cols() + add))
                           : static_cast<double>(layout.entries.cols()) + add;
-  const long extra_budget = search_budget - AugmentOptions{}.search_budget;
+  const long extra_budget = search_budget - design::AugmentOptions{}.search_budget;
   const double step =
       points && !candidates_only
           ? kDesignPointStepSeconds +
@@ -49,4 +49,4 @@ long data_vector_count(const Layout& layout) {
   return static_cast<long>(layout.mode == LayoutMode::kPoints ? free_vector_count(n) : n);
 }
 
-}  // namespace vantage::design
+}  // namespace vantage::commands

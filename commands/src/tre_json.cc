@@ -1,4 +1,4 @@
-#include "tre_json.h"
+#include "vantage/commands/tre_json.h"
 
 namespace vantage::tre_json {
 namespace {

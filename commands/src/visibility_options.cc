@@ -1,4 +1,4 @@
-#include "visibility_options.h"
+#include "vantage/commands/visibility_options.h"
 
 #include <filesystem>
 #include <sstream>
@@ -8,7 +8,7 @@
 #include "vantage/analysis/scaling.h"
 #include "vantage/io/mesh_file.h"
 
-namespace vantage::cli {
+namespace vantage::commands {
 namespace {
 
 LayoutWorkspace visibility_parse_workspace(const std::string& text) {
@@ -98,4 +98,4 @@ void VisibilityOptions::apply(Layout* layout) const {
   layout->validate();
 }
 
-}  // namespace vantage::cli
+}  // namespace vantage::commands

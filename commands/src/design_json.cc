@@ -1,11 +1,11 @@
-#include "design_json.h"
+#include "vantage/commands/design_json.h"
 
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include "pose_json.h"
 #include "vantage/analysis/identification.h"
+#include "vantage/commands/pose_json.h"
 
 namespace vantage::design_json {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "vantage/analysis/layout.h"
 
-namespace vantage::design {
+namespace vantage::commands {
 
 // Every bound below is set from a time budget, measured on this 2-core machine (RelWithDebInfo,
 // `/usr/bin/time`, user CPU; the machine is shared, load average 9-12 during the runs, so wall
@@ -86,4 +86,4 @@ double estimated_design_seconds(const Layout& layout, int add, bool candidates_o
 void check_time_limit(const std::string& what, double seconds, double limit,
                       const std::string& command, bool allow_large, const LimitWords& words);
 
-}  // namespace vantage::design
+}  // namespace vantage::commands

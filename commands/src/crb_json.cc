@@ -1,6 +1,6 @@
 // The JSON of the pose CRB report (crb_json.h).
 
-#include "crb_json.h"
+#include "vantage/commands/crb_json.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "place_json.h"
+#include "vantage/commands/place_json.h"
 
 #include <algorithm>
 #include <cmath>
