@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "vantage/analysis/common.h"
 #include "vantage/analysis/target_registration.h"
 #include "vantage/tracker/tre_search.h"
 #include "vantage/visibility/visibility.h"
@@ -27,7 +28,7 @@ vantage::visibility::VisibilityProblem tre_bench_tool() {
     problem.normals.col(i) = n;
     problem.points.col(i) = 40.0 * n;
   }
-  problem.cos_cone = Eigen::VectorXd::Constant(kMarkers, std::cos(75.0 * M_PI / 180.0));
+  problem.cos_cone = Eigen::VectorXd::Constant(kMarkers, std::cos(75.0 * vantage::kPi / 180.0));
   problem.min_visible = 4;
   return problem;
 }

@@ -10,6 +10,7 @@
 #include "output_file.h"
 #include "style.h"
 #include "tre_figure_text.h"
+#include "vantage/analysis/common.h"
 #include "vantage/plot/tre_figures.h"
 
 namespace vantage::plot {
@@ -86,13 +87,13 @@ void draw_polar_grid(Canvas& canvas, int axis, double outer, double step) {
   pls.width(0.8 * s);
   for (double ring = step; ring <= outer * (1.0 + 1e-9); ring += step) {
     pls.arc(0.0, 0.0, ring, ring, 0.0, 360.0, 0.0, false);
-    const double t = 75.0 * M_PI / 180.0;
+    const double t = 75.0 * kPi / 180.0;
     canvas.label(ring * std::cos(t), ring * std::sin(t), internal::tre_number_text(ring), 2 * s,
                  0.0, 0.0, internal::kSmallSize * 0.9 * s, {110, 110, 110});
   }
   const char* names[3][2] = {{"+y", "+z"}, {"+z", "+x"}, {"+x", "+y"}};
   for (int deg = 0; deg < 360; deg += 30) {
-    const double t = deg * M_PI / 180.0;
+    const double t = deg * kPi / 180.0;
     pls.col0(internal::kPenGrid);
     pls.join(0.0, 0.0, outer * std::cos(t), outer * std::sin(t));
     // e_j's name beside 90 degrees, where the label has room above the rim.
@@ -133,7 +134,7 @@ void draw_polar_panel(Canvas& canvas, const tracker::TreSweeps& sweeps, int axis
                0.0, -4 * s, 0.5, internal::kLabelSize * s, {25, 25, 25});
   auto xy = [&](const std::vector<double>& rms, std::vector<double>& x, std::vector<double>& y) {
     for (std::size_t k = 0; k < rms.size(); ++k) {
-      const double t = polar.angle_deg[k] * M_PI / 180.0;
+      const double t = polar.angle_deg[k] * kPi / 180.0;
       x.push_back(rms[k] * std::cos(t));
       y.push_back(rms[k] * std::sin(t));
     }

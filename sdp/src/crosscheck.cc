@@ -146,7 +146,7 @@ Eigen::Vector3d polish(const Eigen::Matrix3Xd& n, const Eigen::Vector3d& start) 
 // least kMinSamples, and at most max_sample_products / m (and kMaxSamples).
 int automatic_samples(long m, double t_reference, const CrossCheckOptions& options) {
   const double radius = std::asin(std::clamp(t_reference, kMinRadius, 1.0));
-  const double wanted = kSpacingsPerRadius * kSpacingsPerRadius * 2.0 * M_PI / (radius * radius);
+  const double wanted = kSpacingsPerRadius * kSpacingsPerRadius * 2.0 * kPi / (radius * radius);
   const double by_work = options.max_sample_products / static_cast<double>(m);
   const double count =
       std::min({std::ceil(std::max(wanted, kMinSamples)), std::floor(by_work), kMaxSamples});
@@ -155,7 +155,7 @@ int automatic_samples(long m, double t_reference, const CrossCheckOptions& optio
 
 // Fibonacci points on the upper hemisphere.
 Eigen::Matrix3Xd fibonacci_hemisphere(int samples) {
-  const double golden_angle = M_PI * (3.0 - std::sqrt(5.0));
+  const double golden_angle = kPi * (3.0 - std::sqrt(5.0));
   Eigen::Matrix3Xd directions(3, samples);
   for (int k = 0; k < samples; ++k) {
     const double z = 1.0 - (k + 0.5) / samples;
@@ -268,7 +268,7 @@ CrossCheck crosscheck_worst_viewpoint(const Eigen::Matrix3Xd& vectors,
   result.method = "nlopt_multistart_cobyla";
   result.t = -1.0;
   result.samples = samples;
-  result.sample_spacing = std::sqrt(2.0 * M_PI / samples);
+  result.sample_spacing = std::sqrt(2.0 * kPi / samples);
   result.samples_cover_cells = result.sample_spacing < std::asin(std::clamp(t_reference, 0.0, 1.0));
   auto consider = [&](const Eigen::Vector3d& a, double value) {
     if (value > result.t) {

@@ -3,6 +3,7 @@
 // checked against a numeric fit over rotations).
 
 #include "vantage/analysis/identification.h"
+#include "vantage/analysis/common.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -80,7 +81,7 @@ double numeric_improper_rms(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& y
     return (R * cx - cy).colwise().squaredNorm().sum();
   };
   double best = std::numeric_limits<double>::infinity();
-  std::uniform_real_distribution<double> u(-M_PI, M_PI);
+  std::uniform_real_distribution<double> u(-kPi, kPi);
   for (int start = 0; start < 8; ++start) {
     std::vector<Eigen::Vector3d> simplex(4, Eigen::Vector3d(u(rng), u(rng), u(rng)));
     for (int k = 0; k < 3; ++k) simplex[k + 1](k) += 0.5;

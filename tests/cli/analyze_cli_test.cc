@@ -68,7 +68,7 @@ TEST(AnalyzeCli, CrossCheckSaysWhetherItsSamplesCoverTheCells) {
   const auto triad = analyze_json(layout("triad"), scratch)["crosscheck"];
   EXPECT_TRUE(triad["samples_cover_cells"].get<bool>());
   EXPECT_EQ(triad["samples"], 20000);
-  EXPECT_NEAR(triad["sample_spacing_rad"].get<double>(), std::sqrt(2.0 * M_PI / 20000), kRounding);
+  EXPECT_NEAR(triad["sample_spacing_rad"].get<double>(), std::sqrt(2.0 * kPi / 20000), kRounding);
   std::mt19937 rng(20261126);
   std::normal_distribution<double> gauss;
   nlohmann::json many;

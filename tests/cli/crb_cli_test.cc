@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli_runner.h"
+#include "vantage/analysis/common.h"
 
 namespace vantage {
 namespace {
@@ -48,7 +49,7 @@ TEST(CrbCli, JsonHasTheIssuesFields) {
   ASSERT_EQ(c.size(), 6u);
   double rot_trace = 0.0;
   for (int k = 3; k < 6; ++k) rot_trace += c[k][k].get<double>();
-  EXPECT_NEAR(std::sqrt(rot_trace) * 180.0 / M_PI, j["at_direction"]["rot_rms_deg"].get<double>(),
+  EXPECT_NEAR(std::sqrt(rot_trace) * 180.0 / kPi, j["at_direction"]["rot_rms_deg"].get<double>(),
               kTraceRounding * j["at_direction"]["rot_rms_deg"].get<double>());
   EXPECT_GE(j["worst"]["rot_rms_deg"].get<double>(), j["percentiles"]["p99"].get<double>());
   EXPECT_LE(j["best"]["rot_rms_deg"].get<double>(), j["percentiles"]["p50"].get<double>());

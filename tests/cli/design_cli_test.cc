@@ -11,6 +11,7 @@
 
 #include "support/cli_runner.h"
 #include "support/nlopt_build.h"
+#include "vantage/analysis/common.h"
 
 namespace vantage {
 namespace {
@@ -25,7 +26,6 @@ const std::string kFan = kLayouts + "coplanar_fan.json";
 const std::string kNote3 = kLayouts + "note3_four_vectors.json";
 const std::string kSatellite = kLayouts + "satellite.json";
 
-constexpr double kPi = 3.14159265358979323846;
 // p-bar_min of Z = I (docs/math.md §12): sqrt(2/3).
 const double kTriadPbar = std::sqrt(2.0 / 3.0);
 // The global solver certifies t to 1e-9 and JSON carries doubles exactly (17 digits), so the

@@ -35,7 +35,7 @@ constexpr double kIterativeTolerance = 1e-8;
 Matrix rotation(double degrees, Vector axis) {
   const double norm = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
   for (double& a : axis) a /= norm;
-  const double t = degrees * 3.14159265358979323846 / 180.0;
+  const double t = degrees * kPi / 180.0;
   const double c = std::cos(t), s = std::sin(t), v = 1.0 - c;
   const auto [x, y, z] = axis;
   return {{{c + x * x * v, x * y * v - z * s, x * z * v + y * s},

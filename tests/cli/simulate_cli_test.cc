@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "support/cli_runner.h"
+#include "vantage/analysis/common.h"
 
 namespace vantage {
 namespace {
@@ -19,7 +20,6 @@ constexpr double kPaperDigits = 1e-4;
 constexpr double kAtWorstViewpoint = 1e-6;
 // The bound is asin of the certified upper t: the measured ratio exceeds 1 by rounding only.
 constexpr double kRatioRounding = 1e-9;
-constexpr double kPi = 3.14159265358979323846;
 
 using ::testing::HasSubstr;
 using testing::run_vantage;

@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "support/cli_runner.h"
+#include "vantage/analysis/common.h"
 #include "vantage/analysis/target_registration.h"
 
 namespace vantage {
@@ -129,7 +130,7 @@ TEST(TrePlotCli, WritesThreeFiguresWhoseNumbersAreTheLibrarysTre) {
   EXPECT_EQ(polar.size(), 3u * 361u);
   for (std::size_t k = 0; k < polar.size(); k += kTrePlotStride) {
     const int about = polar[k].at("axis")[0] - 'x';
-    const double t = tre_csv_number(polar[k], "angle_deg") * M_PI / 180.0;
+    const double t = tre_csv_number(polar[k], "angle_deg") * kPi / 180.0;
     Eigen::Vector3d r = centroid;
     r[(about + 1) % 3] += 150.0 * std::cos(t);
     r[(about + 2) % 3] += 150.0 * std::sin(t);

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli_runner.h"
+#include "vantage/analysis/common.h"
 
 namespace vantage {
 namespace {
@@ -89,7 +90,7 @@ TEST(VisibilityCli, OverridesReachTheReport) {
   const nlohmann::json& a = v["worst_viewpoint"];
   const double cos_to_axis =
       (a[0].get<double>() + a[1].get<double>() + a[2].get<double>()) / std::sqrt(3.0);
-  EXPECT_GE(cos_to_axis, std::cos(30.0 * M_PI / 180.0) - 1e-12);
+  EXPECT_GE(cos_to_axis, std::cos(30.0 * kPi / 180.0) - 1e-12);
   // --normals radial replaces the file's normals by the directions from the centroid.
   const nlohmann::json radial = testing::run_json("analyze corner.json --normals radial", scratch);
   EXPECT_TRUE(radial.contains("visibility"));

@@ -436,7 +436,7 @@ Eigen::Matrix3Xd narrow_cone(std::mt19937& rng, int m, double radius) {
   Eigen::Matrix3Xd z(3, m);
   for (int i = 0; i < m; ++i) {
     const double angle = radius * std::sqrt(unit(rng));
-    const double phi = 2.0 * M_PI * unit(rng);
+    const double phi = 2.0 * kPi * unit(rng);
     z.col(i) = std::cos(angle) * axis + std::sin(angle) * (std::cos(phi) * e1 + std::sin(phi) * e2);
   }
   return z;

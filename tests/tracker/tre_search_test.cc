@@ -4,6 +4,7 @@
 // the closed form.
 
 #include "vantage/tracker/tre_search.h"
+#include "vantage/analysis/common.h"
 
 #include <gtest/gtest.h>
 
@@ -28,8 +29,8 @@ visibility::VisibilityProblem five_marker_tool() {
   problem.points << 40, -20, -20, 0, 10, 0, 35, -35, 0, 10, 0, 10, 10, 45, -30;
   const Eigen::Vector3d centroid = problem.points.rowwise().mean();
   problem.normals = (problem.points.colwise() - centroid).colwise().normalized();
-  problem.cos_cone = Eigen::VectorXd::Constant(5, std::cos(75.0 * M_PI / 180.0));
-  problem.cos_cone(4) = std::cos(100.0 * M_PI / 180.0);
+  problem.cos_cone = Eigen::VectorXd::Constant(5, std::cos(75.0 * kPi / 180.0));
+  problem.cos_cone(4) = std::cos(100.0 * kPi / 180.0);
   problem.min_visible = 3;
   return problem;
 }
@@ -112,7 +113,7 @@ TEST(TreSearch, WithoutNormalsTheWorstIsTheTopEigenvector) {
 TEST(TreSearch, NoTrackedDirectionIsUntracked) {
   visibility::VisibilityProblem problem = five_marker_tool();
   problem.min_visible = 5;
-  problem.cos_cone.setConstant(std::cos(20.0 * M_PI / 180.0));
+  problem.cos_cone.setConstant(std::cos(20.0 * kPi / 180.0));
   const TreExtremes e = tre_extremes(problem, Eigen::Vector3d::Zero(), FleModel{0.1, 0.3});
   EXPECT_EQ(e.worst.status, TreExtreme::Status::kUntracked);
   EXPECT_EQ(e.best.status, TreExtreme::Status::kUntracked);

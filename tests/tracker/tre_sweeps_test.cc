@@ -5,6 +5,7 @@
 // close; bad options name their field.
 
 #include "vantage/tracker/tre_sweeps.h"
+#include "vantage/analysis/common.h"
 
 #include <gtest/gtest.h>
 
@@ -147,7 +148,7 @@ TEST(TreSweeps, PolarCirclesAboutEachAxisAtTheWorstDirection) {
     ASSERT_EQ(curve.rms.size(), polar.angle_deg.size());
     const int i = (axis + 1) % 3, j = (axis + 2) % 3;
     for (std::size_t k = 0; k < polar.angle_deg.size(); ++k) {
-      const double t = polar.angle_deg[k] * M_PI / 180.0;
+      const double t = polar.angle_deg[k] * kPi / 180.0;
       Eigen::Vector3d r = g;
       r[i] += radius * std::cos(t);
       r[j] += radius * std::sin(t);

@@ -52,7 +52,7 @@ visibility::VisibilityProblem tre_visibility_problem(const Layout& layout) {
   problem.min_visible = 3;
   if (layout.workspace) {
     problem.workspace = visibility::Workspace{
-        layout.workspace->axis, std::cos(layout.workspace->half_angle_deg * M_PI / 180.0)};
+        layout.workspace->axis, std::cos(layout.workspace->half_angle_deg * kPi / 180.0)};
     if (layout.workspace->half_angle_deg >= 180.0) problem.workspace.reset();
   }
   return problem;

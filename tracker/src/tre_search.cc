@@ -250,7 +250,7 @@ class TreSearch {
   TreSearchOptions options_;
   int n_;
   std::vector<double> cone_angle_;
-  double workspace_angle_ = M_PI;
+  double workspace_angle_ = kPi;
   std::priority_queue<Patch> open_;
   std::unordered_map<std::uint64_t, TreObjective> cache_;
   long patches_ = 0;

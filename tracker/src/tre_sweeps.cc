@@ -75,7 +75,7 @@ bool TreSweepOptions::is_valid(std::string* why) const {
 }
 
 Eigen::Vector3d TrePolarSweep::target(int axis, std::size_t k) const {
-  const double t = angle_deg[k] * M_PI / 180.0;
+  const double t = angle_deg[k] * kPi / 180.0;
   const Eigen::Vector3d e_i = Eigen::Vector3d::Unit((axis + 1) % 3);
   const Eigen::Vector3d e_j = Eigen::Vector3d::Unit((axis + 2) % 3);
   return centroid + radius * (std::cos(t) * e_i + std::sin(t) * e_j);

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include "vantage/analysis/common.h"
 #include "vantage/analysis/mesh.h"
 #include "vantage/analysis/occlusion_grid.h"
 
@@ -16,7 +17,7 @@ namespace vantage::body {
 struct OcclusionOptions {
   /// Largest angular size of a grid cell, radians, in [0.45 deg, 30 deg] (the grid is the
   /// resolution of the occlusion test).
-  double resolution = 1.0 * 3.14159265358979323846 / 180.0;
+  double resolution = 1.0 * kPi / 180.0;
   int threads = 0;  ///< ray casting threads, >= 0 (0 = all cores)
 
   bool is_valid(std::string* why = nullptr) const;
