@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "vantage/analysis/common.h"
-#include "vantage/analysis/target_registration.h"
+#include "vantage/tracker/target_registration.h"
 #include "vantage/tracker/tre_search.h"
 #include "vantage/visibility/visibility.h"
 
@@ -34,7 +34,7 @@ vantage::visibility::VisibilityProblem tre_bench_tool() {
 }
 
 const Eigen::Vector3d kTip(0.0, 0.0, -150.0);
-const vantage::FleModel kNdiFle{0.0995, 0.2985};
+const vantage::tracker::FleModel kNdiFle{0.0995, 0.2985};
 
 void BM_Tre_AtDirection(benchmark::State& state) {
   const vantage::visibility::VisibilityProblem problem = tre_bench_tool();
@@ -43,7 +43,7 @@ void BM_Tre_AtDirection(benchmark::State& state) {
     const vantage::visibility::DirectionVisibility seen =
         vantage::visibility::direction_visibility(problem, a);
     benchmark::DoNotOptimize(
-        vantage::tre_covariance(problem.points, seen.visible, kTip, kNdiFle, a));
+        vantage::tracker::tre_covariance(problem.points, seen.visible, kTip, kNdiFle, a));
   }
 }
 BENCHMARK(BM_Tre_AtDirection)->Unit(benchmark::kMicrosecond);
@@ -69,8 +69,8 @@ void BM_Tre_MonteCarlo(benchmark::State& state) {
   const vantage::visibility::DirectionVisibility seen =
       vantage::visibility::direction_visibility(problem, a);
   for (auto _ : state) {
-    benchmark::DoNotOptimize(
-        vantage::tre_monte_carlo(problem.points, seen.visible, kTip, kNdiFle, a, 100000, 1, 1));
+    benchmark::DoNotOptimize(vantage::tracker::tre_monte_carlo(problem.points, seen.visible, kTip,
+                                                               kNdiFle, a, 100000, 1, 1));
   }
 }
 BENCHMARK(BM_Tre_MonteCarlo)->Unit(benchmark::kMillisecond);

@@ -13,10 +13,10 @@
 #include "limits.h"
 #include "progress.h"
 #include "vantage/analysis/common.h"
-#include "vantage/analysis/identification.h"
 #include "vantage/analysis/layout.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/report/layout_report.h"
+#include "vantage/tracker/identification.h"
 
 namespace vantage::cli {
 
@@ -110,7 +110,8 @@ std::string pair_label(const report::LayoutReport& report, const std::pair<int, 
   return report.entry_label(p.first) + "-" + report.entry_label(p.second);
 }
 
-std::string difference_text(const report::LayoutReport& report, const DistanceDifference& d) {
+std::string difference_text(const report::LayoutReport& report,
+                            const tracker::DistanceDifference& d) {
   if (!std::isfinite(d.value)) return "none (one pair)";
   return format_number(d.value, 4) + " (" + pair_label(report, d.pair_a) + " vs " +
          pair_label(report, d.pair_b) + ")";
@@ -119,8 +120,9 @@ std::string difference_text(const report::LayoutReport& report, const DistanceDi
 // One line: docs/math.md §24 (ART's distance rule, the closest markers, NDI's mirror rule, the
 // worst single loss).
 std::string identification_line(const report::LayoutReport& report) {
-  const IdentificationMargins& m = *report.identification;
-  const DropoutDifference& worst = m.under_dropout[static_cast<std::size_t>(m.worst_under_dropout)];
+  const tracker::IdentificationMargins& m = *report.identification;
+  const tracker::DropoutDifference& worst =
+      m.under_dropout[static_cast<std::size_t>(m.worst_under_dropout)];
   std::string mirror = m.mirror.own_mirror ? "0 (its own mirror)" : format_number(m.mirror.rms, 4);
   if (!m.mirror.certified && !m.mirror.own_mirror) {
     mirror = "in [" + format_number(m.mirror.rms_lower, 4) + ", " + format_number(m.mirror.rms, 4) +

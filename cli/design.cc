@@ -15,11 +15,11 @@
 #include "limits.h"
 #include "progress.h"
 #include "vantage/analysis/common.h"
-#include "vantage/analysis/identification.h"
 #include "vantage/commands/design_json.h"
 #include "vantage/design/augment.h"
 #include "vantage/io/layout_formats.h"
 #include "vantage/io/text_file.h"
+#include "vantage/tracker/identification.h"
 
 #if VANTAGE_WITH_PLOT
 #include "figure_output.h"
@@ -92,7 +92,7 @@ void check_distance_difference(const DesignArgs& args, const Layout& layout) {
   if (layout.mode != LayoutMode::kPoints) {
     bad("--min-distance-difference: needs a layout of points; " + args.file + " has vectors");
   }
-  const DistanceDifference d = min_distance_difference(layout.entries);
+  const tracker::DistanceDifference d = tracker::min_distance_difference(layout.entries);
   if (d.value < gap) {
     bad("--min-distance-difference: " + args.file + ": its own distances " +
         layout.entry_name(d.pair_a.first) + "-" + layout.entry_name(d.pair_a.second) + " and " +
@@ -217,7 +217,7 @@ void print_report(const DesignArgs& args, const Layout& layout, const design::Au
   std::cout << "final p-bar_min " << fixed(r.final_pbar_min, 6) << "\n";
   if (r.min_distance_difference > 0.0) {
     std::cout << "min distance difference (Eq. 24.1): "
-              << format_number(min_distance_difference(r.augmented.entries).value)
+              << format_number(tracker::min_distance_difference(r.augmented.entries).value)
               << " (required >= " << format_number(r.min_distance_difference) << ")\n";
   }
   if (r.direct.status == design::DirectResult::Status::kOk) {

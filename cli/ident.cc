@@ -13,9 +13,9 @@
 #include "limits.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/layout.h"
-#include "vantage/analysis/tool_match.h"
 #include "vantage/commands/ident_json.h"
 #include "vantage/io/layout_formats.h"
+#include "vantage/tracker/tool_match.h"
 
 namespace vantage::cli {
 
@@ -69,8 +69,8 @@ std::string tool_label(const std::vector<Layout>& tools, const std::vector<std::
   return tool.name.empty() ? files[static_cast<std::size_t>(t)] : tool.name;
 }
 
-void print_pair(const ToolPairMatch& p, const std::vector<Layout>& tools) {
-  const ToolMatch& m = p.match;
+void print_pair(const tracker::ToolPairMatch& p, const std::vector<Layout>& tools) {
+  const tracker::ToolMatch& m = p.match;
   const Layout& a = tools[static_cast<std::size_t>(p.a)];
   const Layout& b = tools[static_cast<std::size_t>(p.b)];
   std::cout << "  " << p.a << " vs " << p.b << (p.a == p.b ? " (self)" : "       ") << "  "
@@ -81,7 +81,7 @@ void print_pair(const ToolPairMatch& p, const std::vector<Layout>& tools) {
             << ", reflection " << format_number(m.improper_rms, 4) << ")\n";
 }
 
-void print_report(const ToolLibraryMatches& r, const std::vector<Layout>& tools,
+void print_report(const tracker::ToolLibraryMatches& r, const std::vector<Layout>& tools,
                   const std::vector<std::string>& files) {
   std::cout << "vantage ident: " << tools.size() << " tool" << (tools.size() == 1 ? "" : "s")
             << ", views of " << r.min_visible
@@ -94,8 +94,8 @@ void print_report(const ToolLibraryMatches& r, const std::vector<Layout>& tools,
               << tools[t].entries.cols() << " markers, " << files[t] << ")\n";
   }
   std::cout << "\npairs: mismatch, markers of the first -> markers of the second, best fit\n";
-  for (const ToolPairMatch& p : r.pairs) print_pair(p, tools);
-  const ToolPairMatch& closest = r.pairs[static_cast<std::size_t>(r.closest)];
+  for (const tracker::ToolPairMatch& p : r.pairs) print_pair(p, tools);
+  const tracker::ToolPairMatch& closest = r.pairs[static_cast<std::size_t>(r.closest)];
   std::cout << "\nclosest  " << closest.a << " vs " << closest.b << ": mismatch "
             << format_number(closest.match.mismatch, 5) << " ("
             << tool_label(tools, files, closest.a)
@@ -113,9 +113,9 @@ int run_ident(const IdentArgs& args) {
   const std::vector<Layout> tools = read_tools(args);
   std::vector<Eigen::Matrix3Xd> points;
   for (const Layout& tool : tools) points.push_back(tool.entries);
-  ToolMatchOptions options;
+  tracker::ToolMatchOptions options;
   options.min_visible = args.min_visible;
-  const ToolLibraryMatches matches = match_tool_library(points, options);
+  const tracker::ToolLibraryMatches matches = tracker::match_tool_library(points, options);
   if (args.json) {
     print_json(ident_json::report(matches, tools, args.files));
   } else {

@@ -41,7 +41,7 @@ std::vector<Eigen::Vector3d> TreTargetArgs::parsed_targets() const {
   return out;
 }
 
-FleModel TreTargetArgs::parsed_fle() const {
+tracker::FleModel TreTargetArgs::parsed_fle() const {
   const bool sigma = !fle_sigma.empty();
   if (fle_rms.has_value() == sigma) {
     throw InvalidArgument("--fle-rms", "give exactly one of --fle-rms F and --fle-sigma SP,SD");
@@ -50,10 +50,10 @@ FleModel TreTargetArgs::parsed_fle() const {
     if (!(std::isfinite(*fle_rms) && *fle_rms > 0.0)) {
       throw InvalidArgument("--fle-rms", "must be a finite number > 0");
     }
-    return FleModel::isotropic(*fle_rms);
+    return tracker::FleModel::isotropic(*fle_rms);
   }
   std::istringstream in(fle_sigma);
-  FleModel fle;
+  tracker::FleModel fle;
   char comma = 0;
   if (!(in >> fle.sigma_perp >> comma >> fle.sigma_axial) || comma != ',' ||
       !(in >> std::ws).eof() || !fle.is_valid()) {

@@ -29,7 +29,7 @@ struct TreTargetArgs {
   /// The typed targets (at least one); InvalidArgument naming --target otherwise.
   std::vector<Eigen::Vector3d> parsed_targets() const;
   /// Exactly one of --fle-rms F (> 0) and --fle-sigma SP,SD; InvalidArgument naming it otherwise.
-  FleModel parsed_fle() const;
+  tracker::FleModel parsed_fle() const;
   /// The unit --direction, or nothing when not given; InvalidArgument naming it otherwise.
   std::optional<Eigen::Vector3d> parsed_direction() const;
 };

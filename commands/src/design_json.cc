@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "vantage/analysis/identification.h"
 #include "vantage/commands/pose_json.h"
+#include "vantage/tracker/identification.h"
 
 namespace vantage::design_json {
 namespace {
@@ -113,7 +113,7 @@ Json design(const Json& source, const Layout& layout, bool direct_asked,
   out["min_distance_difference"] = r.min_distance_difference;
   if (layout.mode == LayoutMode::kPoints) {
     // Eq. (24.1) of the final markers; null with fewer than two pairs.
-    const double achieved = min_distance_difference(r.augmented.entries).value;
+    const double achieved = tracker::min_distance_difference(r.augmented.entries).value;
     out["final_distance_difference"] = std::isfinite(achieved) ? Json(achieved) : Json(nullptr);
   }
   if (r.direct.status == design::DirectResult::Status::kOk) {

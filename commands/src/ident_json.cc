@@ -17,8 +17,8 @@ Json names(const Layout& tool, const std::vector<int>& markers) {
 
 }  // namespace
 
-Json pair(const ToolPairMatch& p, const std::vector<Layout>& tools) {
-  const ToolMatch& m = p.match;
+Json pair(const tracker::ToolPairMatch& p, const std::vector<Layout>& tools) {
+  const tracker::ToolMatch& m = p.match;
   const Layout& a = tools[static_cast<std::size_t>(p.a)];
   const Layout& b = tools[static_cast<std::size_t>(p.b)];
   return {{"a", p.a},
@@ -37,7 +37,7 @@ Json pair(const ToolPairMatch& p, const std::vector<Layout>& tools) {
           {"comparisons", m.comparisons}};
 }
 
-Json report(const ToolLibraryMatches& matches, const std::vector<Layout>& tools,
+Json report(const tracker::ToolLibraryMatches& matches, const std::vector<Layout>& tools,
             const std::vector<std::string>& files) {
   Json out;
   out["min_visible"] = matches.min_visible;
@@ -48,9 +48,9 @@ Json report(const ToolLibraryMatches& matches, const std::vector<Layout>& tools,
   }
   out["tools"] = list;
   Json pairs = Json::array();
-  for (const ToolPairMatch& p : matches.pairs) pairs.push_back(pair(p, tools));
+  for (const tracker::ToolPairMatch& p : matches.pairs) pairs.push_back(pair(p, tools));
   out["pairs"] = pairs;
-  const ToolPairMatch& closest = matches.pairs[static_cast<std::size_t>(matches.closest)];
+  const tracker::ToolPairMatch& closest = matches.pairs[static_cast<std::size_t>(matches.closest)];
   out["closest"] = {
       {"a", closest.a}, {"b", closest.b}, {"mismatch", finite_or_null(closest.match.mismatch)}};
   out["certified"] = matches.certified;

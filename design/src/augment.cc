@@ -11,8 +11,8 @@
 #include "designer.h"
 #include "direct_search.h"
 #include "vantage/analysis/common.h"
-#include "vantage/analysis/identification.h"
 #include "vantage/analysis/internal/checks.h"
+#include "vantage/tracker/identification.h"
 
 namespace vantage::design {
 namespace {
@@ -29,7 +29,7 @@ void check_distance_difference(const Layout& layout, double gap) {
   if (layout.mode != LayoutMode::kPoints) {
     vantage::internal::fail("min_distance_difference", "needs a point layout (markers)");
   }
-  const DistanceDifference d = min_distance_difference(layout.entries);
+  const tracker::DistanceDifference d = tracker::min_distance_difference(layout.entries);
   if (d.value < gap) {
     vantage::internal::fail("min_distance_difference",
                             "the layout's own distances " + layout.entry_name(d.pair_a.first) +

@@ -8,7 +8,7 @@
 #include "kill_level.h"
 #include "text.h"
 #include "vantage/analysis/common.h"
-#include "vantage/analysis/identification.h"
+#include "vantage/tracker/identification.h"
 
 namespace vantage::design::internal {
 namespace {
@@ -86,7 +86,7 @@ WorstCase Designer::evaluate_added(const Eigen::Matrix3Xd& added, double stop_ab
 
 bool Designer::keeps_distance_difference(const Eigen::Matrix3Xd& markers) const {
   const double gap = options_.min_distance_difference;
-  return !(gap > 0.0) || min_distance_difference(markers).value >= gap;
+  return !(gap > 0.0) || tracker::min_distance_difference(markers).value >= gap;
 }
 
 bool Designer::feasible(const Eigen::Vector3d& x) const {

@@ -91,7 +91,7 @@ class Designer {
   AugmentStep step(const WorstCase& current, bool* out_of_candidates, bool* no_feasible);
 
   /// AugmentOptions::min_distance_difference: true when it is 0 or the columns of `markers`
-  /// keep it (vantage::min_distance_difference, docs/math.md §24).
+  /// keep it (vantage::tracker::min_distance_difference, docs/math.md §24).
   bool keeps_distance_difference(const Eigen::Matrix3Xd& markers) const;
   /// Point mode: keeps_distance_difference() of layout()'s markers with x added.
   bool feasible(const Eigen::Vector3d& x) const;

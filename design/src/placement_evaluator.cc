@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "vantage/analysis/identification.h"
+#include "vantage/tracker/identification.h"
 
 namespace vantage::design::internal {
 
@@ -54,7 +54,7 @@ bool PlacementEvaluator::feasible_with(const std::vector<int>& chosen, int c) co
     markers.col(static_cast<Eigen::Index>(k)) = p.col(chosen[k]);
   }
   markers.col(markers.cols() - 1) = p.col(c);
-  return min_distance_difference(markers).value >= gap;
+  return tracker::min_distance_difference(markers).value >= gap;
 }
 
 FamilyValue PlacementEvaluator::family_t(const std::vector<std::vector<int>>& family, double level,

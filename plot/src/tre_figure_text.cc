@@ -19,7 +19,7 @@ std::string tre_number_text(double x) {
   return buffer;
 }
 
-std::string tre_fle_text(const FleModel& fle) {
+std::string tre_fle_text(const tracker::FleModel& fle) {
   // Four digits: NDI's 0.0995 and 0.2985 as given.
   auto digits4 = [](double x) {
     char buffer[64];

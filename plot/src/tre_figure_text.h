@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "output_file.h"
-#include "vantage/analysis/target_registration.h"
 #include "vantage/plot/colormap.h"
+#include "vantage/tracker/target_registration.h"
 #include "vantage/tracker/tre_sweeps.h"
 
 namespace vantage::plot::internal {
@@ -25,7 +25,7 @@ Rgb tre_curve_colour(const std::string& label);
 
 /// "FLE sd 0.0995 across, 0.2985 along the line of sight" or "FLE isotropic, RMS 0.25"
 /// (four significant digits).
-std::string tre_fle_text(const FleModel& fle);
+std::string tre_fle_text(const tracker::FleModel& fle);
 
 /// "(0.287, 0, 0.958)": a unit direction or a point with `decimals` digits.
 std::string tre_vector_text(const Eigen::Vector3d& v, int decimals);

@@ -8,8 +8,8 @@
 #include "layouts.h"
 #include "results.h"
 #include "vantage/analysis/common.h"
-#include "vantage/analysis/tool_match.h"
 #include "vantage/commands/ident_json.h"
+#include "vantage/tracker/tool_match.h"
 
 namespace vantage::python {
 
@@ -63,10 +63,10 @@ py::object ident(const py::object& tools_arg, int min_visible, const py::object&
   if (tools.empty()) throw InvalidArgument("tools", "need at least one tool");
   std::vector<Eigen::Matrix3Xd> points;
   for (const Layout& tool : tools) points.push_back(tool.entries);
-  ToolMatchOptions options;
+  tracker::ToolMatchOptions options;
   options.min_visible = min_visible;
-  const ToolLibraryMatches matches =
-      without_gil([&] { return match_tool_library(points, options); });
+  const tracker::ToolLibraryMatches matches =
+      without_gil([&] { return tracker::match_tool_library(points, options); });
   Json out = ident_json::report(matches, tools, files);
   // A vantage.Layout has no file: null, as the other results' "layout" of arrays.
   for (std::size_t t = 0; t < files.size(); ++t) {

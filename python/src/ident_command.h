@@ -1,7 +1,8 @@
 #pragma once
 
 // vantage.ident: how close the tools of a library come by their inter-marker distances
-// (vantage::match_tool_library(), docs/math.md §24), as the fields of `vantage ident --json`.
+// (vantage::tracker::match_tool_library(), docs/math.md §24), as the fields of `vantage ident
+// --json`.
 
 #include <pybind11/pybind11.h>
 

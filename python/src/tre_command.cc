@@ -40,7 +40,7 @@ std::vector<Eigen::Vector3d> tre_targets(const py::object& targets) {
 }
 
 // Exactly one of fle_rms (> 0) and fle_sigma (sigma_perp, sigma_axial).
-FleModel tre_fle(const std::optional<double>& fle_rms, const py::object& fle_sigma) {
+tracker::FleModel tre_fle(const std::optional<double>& fle_rms, const py::object& fle_sigma) {
   if (fle_rms.has_value() == !fle_sigma.is_none()) {
     throw InvalidArgument("fle_rms", "give exactly one of fle_rms and fle_sigma");
   }
@@ -48,10 +48,10 @@ FleModel tre_fle(const std::optional<double>& fle_rms, const py::object& fle_sig
     if (!(std::isfinite(*fle_rms) && *fle_rms > 0.0)) {
       throw InvalidArgument("fle_rms", "must be a finite number > 0");
     }
-    return FleModel::isotropic(*fle_rms);
+    return tracker::FleModel::isotropic(*fle_rms);
   }
   const Eigen::VectorXd s = vector_from_array(fle_sigma, "fle_sigma");
-  FleModel fle;
+  tracker::FleModel fle;
   if (s.size() == 2) {
     fle.sigma_perp = s(0);
     fle.sigma_axial = s(1);

@@ -172,7 +172,7 @@ class IdentTool(_JsonView):
 
 class IdentPair(_JsonView):
     """One pair of tools a <= b (a == b: the tool against itself relabelled; C++
-    vantage::ToolPairMatch): the mismatch of Eq. (24.4), the view ``subset`` of tool a and the
+    vantage::tracker::ToolPairMatch): the mismatch of Eq. (24.4), the view ``subset`` of tool a and the
     markers ``assignment`` of tool b that give it (indices, and names), the best rigid fit
     ('rotation', 'reflection' or 'either') with the RMS of each, and whether the search ended
     within its budget (else ``mismatch_lower`` bounds what it left)."""
@@ -196,7 +196,7 @@ class IdentPair(_JsonView):
 
 
 class IdentReport(_JsonView):
-    """vantage.ident (``vantage ident --json``; C++ vantage::ToolLibraryMatches; docs/math.md
+    """vantage.ident (``vantage ident --json``; C++ vantage::tracker::ToolLibraryMatches; docs/math.md
     §24): the tools, every pair (each unordered pair once, self pairs included) and the closest
     pair, which ``closest`` is (an entry of ``pairs``)."""
 

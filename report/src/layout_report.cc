@@ -104,7 +104,7 @@ LayoutReport analyze_layout(const Layout& layout, const LayoutReportOptions& opt
   report.ceiling = sdp::pbar_ceiling(report.data.vectors.cols());
   report.coplanarity = sdp::coplanarity(report.data.vectors, options.coplanarity_threshold);
   if (layout.mode == LayoutMode::kPoints) {
-    report.identification = identification_margins(layout.entries, options.identification);
+    report.identification = tracker::identification_margins(layout.entries, options.identification);
   }
   if (options.dropout) {
     if (options.analysis.progress) options.analysis.progress("dropout");

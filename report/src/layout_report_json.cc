@@ -68,20 +68,20 @@ Json pair(const std::pair<int, int>& p) {
   return {p.first, p.second};
 }
 
-Json difference(const DistanceDifference& d) {
+Json difference(const tracker::DistanceDifference& d) {
   return {{"min_distance_difference", number(d.value)},
           {"pair_a", pair(d.pair_a)},
           {"pair_b", pair(d.pair_b)}};
 }
 
-Json dropout_difference(const DropoutDifference& e) {
+Json dropout_difference(const tracker::DropoutDifference& e) {
   Json out = {{"lost", e.lost}};
   out.update(difference(e.difference));
   return out;
 }
 
 // docs/math.md §24; README "vantage analyze" names the fields.
-Json identification(const IdentificationMargins& m) {
+Json identification(const tracker::IdentificationMargins& m) {
   Json out = difference(m.distance_difference);
   out["min_marker_separation"] = number(m.separation.value);
   out["separation_pair"] = pair(m.separation.pair);
@@ -91,7 +91,8 @@ Json identification(const IdentificationMargins& m) {
   out["own_mirror"] = m.mirror.own_mirror;
   out["mirror_assignment"] = m.mirror.assignment;
   Json entries = Json::array();
-  for (const DropoutDifference& e : m.under_dropout) entries.push_back(dropout_difference(e));
+  for (const tracker::DropoutDifference& e : m.under_dropout)
+    entries.push_back(dropout_difference(e));
   out["under_dropout"] = entries;
   out["worst_under_dropout"] =
       dropout_difference(m.under_dropout[static_cast<std::size_t>(m.worst_under_dropout)]);

@@ -16,7 +16,7 @@
 
 #include "support/cli_runner.h"
 #include "vantage/analysis/common.h"
-#include "vantage/analysis/target_registration.h"
+#include "vantage/tracker/target_registration.h"
 
 namespace vantage {
 namespace {
@@ -85,8 +85,8 @@ Eigen::Matrix3Xd tre_plot_ndi_points() {
 // The NDI-like plate: every marker faces +z with a 90-degree cone, so a line of sight sees all
 // four markers when a_z > 0 and none when a_z < 0.
 double tre_plot_ndi_rms(const Eigen::Matrix3Xd& points, const Eigen::Vector3d& target,
-                        const FleModel& fle, const Eigen::Vector3d& a) {
-  return std::sqrt(tre_covariance(points, {0, 1, 2, 3}, target, fle, a).trace());
+                        const tracker::FleModel& fle, const Eigen::Vector3d& a) {
+  return std::sqrt(tracker::tre_covariance(points, {0, 1, 2, 3}, target, fle, a).trace());
 }
 
 TEST(TrePlotCli, WritesThreeFiguresWhoseNumbersAreTheLibrarysTre) {
@@ -109,7 +109,7 @@ TEST(TrePlotCli, WritesThreeFiguresWhoseNumbersAreTheLibrarysTre) {
   const Eigen::Matrix3Xd points = tre_plot_ndi_points();
   const Eigen::Vector3d centroid = points.rowwise().mean();
   const Eigen::Vector3d axis = (Eigen::Vector3d(0, 0, -150) - centroid).normalized();
-  const FleModel fle{0.0995, 0.2985};
+  const tracker::FleModel fle{0.0995, 0.2985};
   int checked = 0;
   std::map<std::string, int> series;
   const std::vector<TreCsvRow> tip = read_tre_csv(scratch.path("figs/tre_tip_axis.csv"));
@@ -177,7 +177,7 @@ TEST(TrePlotCli, IsotropicFleAddsFitzpatricksCurvesAndSvgWorks) {
     if (row.at("series") != "isotropic") continue;
     const Eigen::Vector3d r = tre_csv_vector(row, "target_");
     EXPECT_NEAR((r - points.rowwise().mean()).norm(), 100.0, 1e-12 * 100.0);
-    const double truth = tre_rms_isotropic(points, r, 0.33);
+    const double truth = tracker::tre_rms_isotropic(points, r, 0.33);
     EXPECT_NEAR(tre_csv_number(row, "rms"), truth, kTrePlotRecompute * truth);
     EXPECT_EQ(row.at("visible"), "4");
     ++isotropic;

@@ -247,7 +247,7 @@ TEST(PlaceMarkers, HoldsTheDistanceDifference) {
   for (std::size_t i = 0; i < result.chosen.size(); ++i) {
     chosen.col(static_cast<Eigen::Index>(i)) = problem.sites.points.col(result.chosen[i]);
   }
-  EXPECT_GE(min_distance_difference(chosen).value, problem.min_distance_difference);
+  EXPECT_GE(tracker::min_distance_difference(chosen).value, problem.min_distance_difference);
 }
 
 TEST(PlaceMarkers, RobustValueIsTheWorstSingleLoss) {

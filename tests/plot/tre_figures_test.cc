@@ -41,7 +41,7 @@ Layout tre_fig_ndi_like() {
 
 tracker::TreOptions tre_fig_ndi_fle() {
   tracker::TreOptions options;
-  options.fle = FleModel{0.0995, 0.2985};
+  options.fle = tracker::FleModel{0.0995, 0.2985};
   return options;
 }
 
@@ -197,7 +197,7 @@ TEST(TreFigures, BadDataNamesTheFieldAndWritesNothing) {
                         }),
                         "target"));
   tracker::TreOptions zero = tre_fig_ndi_fle();
-  zero.fle = FleModel{0.0, 0.0};
+  zero.fle = tracker::FleModel{0.0, 0.0};
   EXPECT_TRUE(tre_names(
       tre_message_of([&] { tre_figures(layout, {kTreFigureTip}, zero, small_tre_figures()); }),
       "fle.sigma_perp"));

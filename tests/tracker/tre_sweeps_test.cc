@@ -14,7 +14,7 @@
 #include <random>
 
 #include "support/message_of.h"
-#include "vantage/analysis/target_registration.h"
+#include "vantage/tracker/target_registration.h"
 #include "vantage/visibility/visibility.h"
 
 namespace vantage::tracker {

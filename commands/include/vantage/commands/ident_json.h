@@ -1,7 +1,8 @@
 #pragma once
 
 // The JSON object of `vantage ident --json` (issue 20; README, "vantage ident"; docs/math.md
-// §24), from the one ToolLibraryMatches of vantage::match_tool_library(): min_visible, tools
+// §24), from the one ToolLibraryMatches of vantage::tracker::match_tool_library(): min_visible,
+// tools
 // [{file, name, markers}], pairs [{a, b, self, mismatch, subset, assignment, transform,
 // proper_rms, improper_rms, certified, mismatch_lower}], closest, certified.
 
@@ -10,17 +11,17 @@
 #include <vector>
 
 #include "vantage/analysis/layout.h"
-#include "vantage/analysis/tool_match.h"
+#include "vantage/tracker/tool_match.h"
 
 namespace vantage::ident_json {
 
 using Json = nlohmann::ordered_json;
 
 /// One pair: the tools' indices, the match and its markers by index and by name.
-Json pair(const ToolPairMatch& pair, const std::vector<Layout>& tools);
+Json pair(const tracker::ToolPairMatch& pair, const std::vector<Layout>& tools);
 
 /// The whole report; `files` names each tool's file, in the order of `tools`.
-Json report(const ToolLibraryMatches& matches, const std::vector<Layout>& tools,
+Json report(const tracker::ToolLibraryMatches& matches, const std::vector<Layout>& tools,
             const std::vector<std::string>& files);
 
 }  // namespace vantage::ident_json

@@ -106,8 +106,8 @@ struct AugmentOptions {
   /// by more than tie_tolerance). false solves every candidate from scratch to its certificate:
   /// the same choices, slower (the reference the tests compare with).
   bool prune_solves = true;
-  /// Point mode: every addition keeps vantage::min_distance_difference() of the markers at or
-  /// above this (ART's identification rule, docs/math.md §24; the check `vantage place` uses),
+  /// Point mode: every addition keeps vantage::tracker::min_distance_difference() of the markers at
+  /// or above this (ART's identification rule, docs/math.md §24; the check `vantage place` uses),
   /// in the layout's units, >= 0 and finite (0: no constraint; > 0 needs a point layout that
   /// keeps it itself). A position that breaks it scores t = +infinity, so no step chooses it
   /// (the branch and bound's lower bound, on the unconstrained t, stays valid); a step whose

@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "vantage/analysis/identification.h"
 #include "vantage/analysis/mesh.h"
+#include "vantage/tracker/identification.h"
 #include "vantage/visibility/visibility.h"
 
 namespace vantage::design {
@@ -32,7 +32,8 @@ struct PlacementProblem {
   int markers = 0;              ///< K: the markers of the answer, kept ones included
   double min_separation = 0.0;  ///< least distance between chosen markers, >= 0
   /// Least |d_ij - d_kl| of distinct pairs of chosen markers, >= 0: the chosen sites must have
-  /// vantage::min_distance_difference() >= this (analysis/identification.h, docs/math.md §24).
+  /// vantage::tracker::min_distance_difference() >= this (tracker/identification.h, docs/math.md
+  /// §24).
   double min_distance_difference = 0.0;
 
   /// Throws InvalidArgument naming the field: "markers" (K above the sites, below

@@ -15,11 +15,11 @@
 #include <vector>
 
 #include "vantage/analysis/free_vectors.h"
-#include "vantage/analysis/identification.h"
 #include "vantage/analysis/layout.h"
 #include "vantage/report/dropout.h"
 #include "vantage/sdp/layout_analysis.h"
 #include "vantage/sdp/layout_measures.h"
+#include "vantage/tracker/identification.h"
 #include "vantage/visibility/visibility_report.h"
 
 namespace vantage::report {
@@ -39,7 +39,7 @@ struct LayoutReportOptions {
   /// follows `dropout` above.
   visibility::VisibilityReportOptions visibility;
   /// Point mode: the identification margins (docs/math.md §24), their mirror search's budget.
-  IdentificationOptions identification;
+  tracker::IdentificationOptions identification;
 
   /// True when every field is in range; otherwise *why names the field and the constraint.
   bool is_valid(std::string* why = nullptr) const;
@@ -61,7 +61,7 @@ struct LayoutReport {
   std::optional<visibility::VisibilityReport> visibility;
   /// Point mode: how a tracker tells the markers apart by their distances and how far the layout
   /// is from its mirror image (docs/math.md §24); informative, not part of is_usable().
-  std::optional<IdentificationMargins> identification;
+  std::optional<tracker::IdentificationMargins> identification;
 
   /// True when the numbers can be relied on: the worst viewpoint is certified and confirmed on
   /// the SDP, the cross-check (when run) agrees, the layout is not degenerate, and the dropout

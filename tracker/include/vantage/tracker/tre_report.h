@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "vantage/analysis/layout.h"
-#include "vantage/analysis/target_registration.h"
+#include "vantage/tracker/target_registration.h"
 #include "vantage/tracker/tre_search.h"
 #include "vantage/visibility/visibility.h"
 #include "vantage/visibility/visibility_model.h"

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "vantage/analysis/target_registration.h"
+#include "vantage/tracker/target_registration.h"
 #include "vantage/visibility/visibility.h"
 
 namespace vantage::tracker {

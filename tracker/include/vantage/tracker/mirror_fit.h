@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace vantage {
+namespace vantage::tracker {
 
 /// A fit this close, relative to the tool's RMS radius about its centroid, is exact: rounding
 /// in the fit is about 1e-15 of the radius.
@@ -55,4 +55,4 @@ struct MirrorFit {
 /// options.
 MirrorFit mirror_fit(const Eigen::Matrix3Xd& points, const MirrorFitOptions& options = {});
 
-}  // namespace vantage
+}  // namespace vantage::tracker

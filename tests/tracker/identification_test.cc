@@ -2,7 +2,7 @@
 // brute force written here (all pairs of pairs; every permutation with an SVD fit, itself
 // checked against a numeric fit over rotations).
 
-#include "vantage/analysis/identification.h"
+#include "vantage/tracker/identification.h"
 #include "vantage/analysis/common.h"
 
 #include <gmock/gmock.h>
@@ -21,7 +21,7 @@
 #include "support/eigen_testing.h"
 #include "support/message_of.h"
 
-namespace vantage {
+namespace vantage::tracker {
 namespace {
 
 using ::testing::HasSubstr;
@@ -302,4 +302,4 @@ TEST(IdentificationMargins, RejectsTooFewOrNonFinitePoints) {
 }
 
 }  // namespace
-}  // namespace vantage
+}  // namespace vantage::tracker

@@ -1,7 +1,7 @@
 // The best rigid fit of a tool to its mirror image over every marker assignment (docs/math.md
 // §24, Eqs. 24.2-24.3): a depth-first branch and bound with the distance bound of Eq. (24.3).
 
-#include "vantage/analysis/mirror_fit.h"
+#include "vantage/tracker/mirror_fit.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,7 @@
 #include "orthogonal_fit.h"
 #include "vantage/analysis/internal/checks.h"
 
-namespace vantage {
+namespace vantage::tracker {
 namespace {
 
 constexpr double kMirrorInfinity = std::numeric_limits<double>::infinity();
@@ -229,4 +229,4 @@ MirrorFit mirror_fit(const Eigen::Matrix3Xd& points, const MirrorFitOptions& opt
   return MirrorSearch(points, options.max_comparisons).run();
 }
 
-}  // namespace vantage
+}  // namespace vantage::tracker

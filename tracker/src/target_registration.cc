@@ -1,11 +1,11 @@
-#include "vantage/analysis/target_registration.h"
+#include "vantage/tracker/target_registration.h"
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
 #include "vantage/analysis/common.h"
 
-namespace vantage {
+namespace vantage::tracker {
 namespace {
 
 // Lambda is singular (collinear markers) below this fraction of its trace: its condition then
@@ -114,4 +114,4 @@ double tre_rms_isotropic(const Eigen::Matrix3Xd& points_tool, const Eigen::Vecto
   return std::sqrt(quadratic.c);
 }
 
-}  // namespace vantage
+}  // namespace vantage::tracker

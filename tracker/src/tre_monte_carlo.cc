@@ -7,9 +7,9 @@
 #include "vantage/analysis/absolute_orientation.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/parallel.h"
-#include "vantage/analysis/target_registration.h"
+#include "vantage/tracker/target_registration.h"
 
-namespace vantage {
+namespace vantage::tracker {
 namespace {
 
 constexpr long kTreTrialsPerBlock = 1024;
@@ -84,4 +84,4 @@ TreMonteCarlo tre_monte_carlo(const Eigen::Matrix3Xd& points_tool, const std::ve
   return out;
 }
 
-}  // namespace vantage
+}  // namespace vantage::tracker

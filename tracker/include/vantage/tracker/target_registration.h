@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace vantage {
+namespace vantage::tracker {
 
 /// The FLE of every marker: standard deviations sigma_perp across and sigma_axial along the
 /// line of sight, Sigma(a) = sigma_perp^2 (I - a a^T) + sigma_axial^2 a a^T (Eq. 23.4).
@@ -81,4 +81,4 @@ TreMonteCarlo tre_monte_carlo(const Eigen::Matrix3Xd& points_tool, const std::ve
                               const Eigen::Vector3d& a, long trials, std::uint64_t seed,
                               int threads = 0);
 
-}  // namespace vantage
+}  // namespace vantage::tracker

@@ -1,7 +1,7 @@
 // The distance mismatch between tools (docs/math.md §24, Eq. 24.4) against the enumeration of
 // every subset and every injective assignment, its symmetry, mirror images and the budget.
 
-#include "vantage/analysis/tool_match.h"
+#include "vantage/tracker/tool_match.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -16,7 +16,7 @@
 #include "support/eigen_testing.h"
 #include "support/message_of.h"
 
-namespace vantage {
+namespace vantage::tracker {
 namespace {
 
 using ::testing::HasSubstr;
@@ -207,4 +207,4 @@ TEST(MatchToolLibrary, EveryPairOnceEachAsItsOwnSearch) {
 }
 
 }  // namespace
-}  // namespace vantage
+}  // namespace vantage::tracker

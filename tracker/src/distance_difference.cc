@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "vantage/analysis/common.h"
-#include "vantage/analysis/identification.h"
 #include "vantage/analysis/internal/checks.h"
+#include "vantage/tracker/identification.h"
 
-namespace vantage {
+namespace vantage::tracker {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -112,4 +112,4 @@ IdentificationMargins identification_margins(const Eigen::Matrix3Xd& points,
   return out;
 }
 
-}  // namespace vantage
+}  // namespace vantage::tracker

@@ -1,6 +1,6 @@
 #pragma once
 
-// Private to vantage::analysis: the RMS residual of the best rigid fit of one point set onto
+// Private to vantage::tracker: the RMS residual of the best rigid fit of one point set onto
 // another (docs/math.md §24), by a rotation or by an improper orthogonal transform.
 
 #include <Eigen/Core>

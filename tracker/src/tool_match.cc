@@ -2,7 +2,7 @@
 // Eq. 24.4): a depth-first branch and bound over subsets and injective assignments, and the
 // rigid fits (proper and improper) of the best match.
 
-#include "vantage/analysis/tool_match.h"
+#include "vantage/tracker/tool_match.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@
 #include "orthogonal_fit.h"
 #include "vantage/analysis/internal/checks.h"
 
-namespace vantage {
+namespace vantage::tracker {
 namespace {
 
 constexpr double kMatchInfinity = std::numeric_limits<double>::infinity();
@@ -205,4 +205,4 @@ ToolLibraryMatches match_tool_library(const std::vector<Eigen::Matrix3Xd>& tools
   return out;
 }
 
-}  // namespace vantage
+}  // namespace vantage::tracker

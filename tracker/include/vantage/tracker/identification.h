@@ -12,9 +12,9 @@
 #include <utility>
 #include <vector>
 
-#include "vantage/analysis/mirror_fit.h"
+#include "vantage/tracker/mirror_fit.h"
 
-namespace vantage {
+namespace vantage::tracker {
 
 /// The least difference between two inter-marker distances.
 struct DistanceDifference {
@@ -72,4 +72,4 @@ struct IdentificationMargins {
 IdentificationMargins identification_margins(const Eigen::Matrix3Xd& points,
                                              const IdentificationOptions& options = {});
 
-}  // namespace vantage
+}  // namespace vantage::tracker

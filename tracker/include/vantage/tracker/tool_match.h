@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace vantage {
+namespace vantage::tracker {
 
 /// Options of match_tools() and self_ambiguity().
 struct ToolMatchOptions {
@@ -88,4 +88,4 @@ struct ToolLibraryMatches {
 ToolLibraryMatches match_tool_library(const std::vector<Eigen::Matrix3Xd>& tools,
                                       const ToolMatchOptions& options = {});
 
-}  // namespace vantage
+}  // namespace vantage::tracker

@@ -2,7 +2,7 @@
 // (Eq. 23.3) from the principal axes, a finite-difference linearisation of the actual
 // registration (SVD fit, not the q-method), and Monte Carlo.
 
-#include "vantage/analysis/target_registration.h"
+#include "vantage/tracker/target_registration.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 
 #include "vantage/analysis/absolute_orientation.h"
 
-namespace vantage {
+namespace vantage::tracker {
 namespace {
 
 // Eq. (23.3) and the library's trace differ by the roundings of two 3x3 inversions.
@@ -158,4 +158,4 @@ TEST(TargetRegistration, MonteCarloDoesNotDependOnThreads) {
 }
 
 }  // namespace
-}  // namespace vantage
+}  // namespace vantage::tracker
