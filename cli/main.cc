@@ -43,6 +43,8 @@ std::string subcommand_names(CLI::App& app) {
 
 int main(int argc, char** argv) {
   using namespace vantage::cli;
+  // An interrupted write (Ctrl-C, kill) leaves neither its hidden temporary nor its lock file.
+  vantage::io::remove_partial_files_on_signal();
   CLI::App app{
       "vantage: evaluate and design fiducial layouts for pose estimation from a single affine "
       "image (McInroy, Erwin & Robertson), with the estimators of Haralick et al. and Wu & Wu.",

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <vector>
 
+#include "removal_registry.h"
 #include "vantage/io/printable.h"
 
 namespace vantage::io {
@@ -182,11 +183,13 @@ AtomicTextFile::AtomicTextFile(const std::string& path, bool overwrite)
   fd_ = ::mkostemp(pattern.data(), O_CLOEXEC);
   if (fd_ < 0) write_failure(path, "cannot create a temporary file in " + directory, errno);
   temp_ = pattern;
+  removal_slot_ = internal::register_removal(temp_);
 }
 
 AtomicTextFile::~AtomicTextFile() {
   if (fd_ >= 0) ::close(fd_);
   if (!temp_.empty()) ::unlink(temp_.c_str());
+  internal::unregister_removal(removal_slot_);
 }
 
 void AtomicTextFile::write(std::string_view text) {
@@ -231,6 +234,8 @@ void AtomicTextFile::commit() {
                      "; nothing written");
   }
   move_into_place(temp_, path_, overwrite_);
+  internal::unregister_removal(removal_slot_);
+  removal_slot_ = -1;
   temp_.clear();
   const int dir_fd = ::open(directory_of(path_).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (dir_fd >= 0) {
@@ -263,6 +268,7 @@ WriteLock::WriteLock(const std::string& path)
     }, now{};
     if (::fstat(fd_, &held) == 0 && ::stat(lock_path_.c_str(), &now) == 0 &&
         held.st_ino == now.st_ino && held.st_dev == now.st_dev) {
+      removal_slot_ = internal::register_removal(lock_path_);
       return;
     }
     ::close(fd_);
@@ -273,6 +279,7 @@ WriteLock::WriteLock(const std::string& path)
 WriteLock::~WriteLock() {
   if (fd_ < 0) return;
   ::unlink(lock_path_.c_str());
+  internal::unregister_removal(removal_slot_);
   ::close(fd_);
 }
 

@@ -76,6 +76,7 @@ class AtomicTextFile {
   std::string temp_;
   int fd_ = -1;
   std::string buffer_;
+  int removal_slot_ = -1;  ///< the temporary's slot in the signal handler's list
 };
 
 /// Checks everything write_text_file() can check before any work: the name is non-empty; when
@@ -88,6 +89,17 @@ void check_write_target(const std::string& path, bool overwrite);
 /// link or spelling of the path); false when either does not exist. A command checks it before
 /// it writes, so that its output never replaces one of its own inputs unasked.
 bool same_file(const std::string& a, const std::string& b);
+
+/// Installs handlers for SIGINT, SIGTERM and SIGHUP that remove the temporaries of the
+/// AtomicTextFile writes and the WriteLock lock files in progress, then end the process by the
+/// same signal (its default action, so the exit status still names the signal); a signal the
+/// parent ignores (SIGINT in a background job, SIGHUP under nohup) stays ignored. For a program
+/// that owns its signals: the vantage command calls it first thing; the libraries and the Python
+/// module never do (Python keeps its own SIGINT, KeyboardInterrupt, whose unwinding removes them
+/// through the destructors). A SIGKILL cannot be caught: its temporary stays (hidden,
+/// ".vantage-write-*"), and its lock file is taken over by the next run, since the kernel
+/// releases the lock (flock) with the process.
+void remove_partial_files_on_signal();
 
 /// An exclusive advisory lock (flock) on `path`'s lock file (".<name>.lock" beside it), held
 /// for the object's lifetime, so that a second run writing the same target fails at once
@@ -103,6 +115,7 @@ class WriteLock {
  private:
   std::string lock_path_;
   int fd_ = -1;
+  int removal_slot_ = -1;  ///< the lock file's slot in the signal handler's list
 };
 
 }  // namespace vantage::io
