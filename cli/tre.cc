@@ -105,8 +105,12 @@ int run_tre(const TreArgs& args) {
   options.seed = args.seed;
   options.threads = args.threads;
   const Layout layout = args.input.read(args.file, args.allow_large);
-  const tracker::TreReport report =
-      against_source(args.file, [&] { return tracker::tre_report(layout, targets, options); });
+  tracker::TreReport report;
+  try {
+    report = tracker::tre_report(layout, targets, options);
+  } catch (const InvalidArgument& e) {
+    throw tre_option_error(e, args.file);  // the library's fields as the options that set them
+  }
   if (args.json) {
     print_json(tre_json::report(report));
   } else {

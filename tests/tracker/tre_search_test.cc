@@ -4,13 +4,14 @@
 // the closed form.
 
 #include "vantage/tracker/tre_search.h"
-#include "vantage/analysis/common.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
+#include <random>
 
+#include "vantage/analysis/common.h"
 #include "vantage/tracker/target_registration.h"
 #include "vantage/visibility/visibility.h"
 
@@ -91,6 +92,42 @@ TEST(TreSearch, WorstAndBestWithNormalsHoldOnADenseLattice) {
     EXPECT_FALSE(e.worst.closed_form);
     expect_extremes_hold(problem, target, fle, e);
   }
+}
+
+// Issue 36, item 2: rms_bound equalled the attained value and a direction near it exceeded it
+// by 1.3e-8 relative (the patches pruned within the tolerance were forgotten). A bound must hold
+// to rounding: every direction of a dense cloud about each extreme, and of the lattice, is
+// within it to kRounding.
+constexpr double kRounding = 1e-13;
+TEST(TreSearch, TheBoundsHoldToRoundingNearTheExtremes) {
+  const visibility::VisibilityProblem problem = five_marker_tool();
+  std::mt19937_64 rng(36);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  int checked = 0;
+  for (const Eigen::Vector3d& target :
+       {Eigen::Vector3d(40.0, 10.0, -100.0), Eigen::Vector3d(0.0, 0.0, -120.0)}) {
+    for (const FleModel& fle : {FleModel{0.0995, 0.2985}, FleModel::isotropic(0.25)}) {
+      const TreExtremes e = tre_extremes(problem, target, fle);
+      ASSERT_TRUE(e.worst.certified());
+      ASSERT_TRUE(e.best.certified());
+      for (const double spread : {1e-2, 1e-4, 1e-6}) {
+        for (const TreExtreme* x : {&e.worst, &e.best}) {
+          for (int k = 0; k < 4000; ++k) {
+            const Eigen::Vector3d a =
+                (x->direction + spread * Eigen::Vector3d(normal(rng), normal(rng), normal(rng)))
+                    .normalized();
+            bool tracked = false;
+            const double rms = rms_at(problem, target, fle, a, &tracked);
+            if (!tracked) continue;
+            ++checked;
+            EXPECT_LE(rms, e.worst.rms_bound * (1.0 + kRounding)) << a.transpose();
+            EXPECT_GE(rms, e.best.rms_bound * (1.0 - kRounding)) << a.transpose();
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 40000);
 }
 
 TEST(TreSearch, WithoutNormalsTheWorstIsTheTopEigenvector) {

@@ -1,7 +1,11 @@
 #include "vantage/tracker/target_registration.h"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
+#include <utility>
 
 #include "vantage/analysis/common.h"
 
@@ -11,6 +15,18 @@ namespace {
 // Lambda is singular (collinear markers) below this fraction of its trace: its condition then
 // exceeds 1e12 and the first-order maps lose every digit.
 constexpr double kCollinearFraction = 1e-12;
+
+// A length in a message: three significant digits.
+std::string length_text(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+
+// "target 2: " for the third of several targets (index 2), "" for index -1.
+std::string target_text(long index) {
+  return index < 0 ? std::string() : "target " + std::to_string(index) + ": ";
+}
 
 Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& v) {
   Eigen::Matrix3d m;
@@ -99,6 +115,49 @@ Eigen::Matrix3d tre_covariance(const Eigen::Matrix3Xd& points_tool, const std::v
                                 (fle.sigma_axial * fle.sigma_axial - perp2) * a * a.transpose();
   for (const Eigen::Matrix3d& m : A) cov += m * sigma * m.transpose();
   return 0.5 * (cov + cov.transpose());
+}
+
+void check_tre_range(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d& target_tool,
+                     const FleModel& fle, long index) {
+  const auto outside = [](double length) {
+    return !(length >= kTreMinLength && length <= kTreMaxLength);
+  };
+  const std::string range =
+      " vantage computes the TRE in double precision for lengths in "
+      "[1e-100, 1e100] (docs/math.md §23); give the lengths in other units";
+  for (const auto& [field, sigma] :
+       {std::pair<const char*, double>{"fle.sigma_perp", fle.sigma_perp},
+        {"fle.sigma_axial", fle.sigma_axial}}) {
+    if (sigma > kTreMaxLength) throw InvalidArgument(field, "exceeds 1e100:" + range);
+  }
+  if (outside(std::max(fle.sigma_perp, fle.sigma_axial))) {
+    throw InvalidArgument("fle.sigma_perp", "the larger FLE deviation is below 1e-100:" + range);
+  }
+  if (points_tool.cols() == 0) return;
+  const Eigen::Vector3d centroid = points_tool.rowwise().mean();
+  const double radius =
+      std::sqrt((points_tool.colwise() - centroid).colwise().squaredNorm().mean());
+  if (outside(radius)) {
+    throw InvalidArgument("points", "the markers' RMS radius about their centroid, " +
+                                        length_text(radius) +
+                                        ", is outside [1e-100, 1e100]:" + range);
+  }
+  if (!((target_tool - centroid).norm() <= kTreMaxLength)) {
+    throw InvalidArgument(
+        "target", target_text(index) + "is more than 1e100 from the markers' centroid:" + range);
+  }
+  std::vector<int> all(static_cast<std::size_t>(points_tool.cols()));
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  const TreQuadratic q = tre_quadratic(points_tool, all, target_tool, fle);
+  if (!q.registrable) return;
+  const double mean_rms = std::sqrt(q.c + q.M.trace() / 3.0);
+  if (outside(mean_rms)) {
+    throw InvalidArgument("target", target_text(index) + "the RMS TRE there, " +
+                                        length_text(mean_rms) +
+                                        " averaged over the lines of sight, is outside [1e-100, "
+                                        "1e100]:" +
+                                        range);
+  }
 }
 
 double tre_rms_isotropic(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d& target_tool,

@@ -219,7 +219,11 @@ class TreSearch {
       if (bound == -kTreInfinity) return;  // no registrable set: nothing tracked on the patch
     }
     bound = std::min(bound, p.bound);
-    if (have_best_ && bound <= best_value_ + tolerance()) return;
+    if (have_best_ && bound <= best_value_ + tolerance()) {
+      // Closed within the tolerance, not below the best: its bound stays part of the answer's.
+      pruned_bound_ = std::max(pruned_bound_, bound);
+      return;
+    }
     const double q = 0.5 * p.h;
     for (int k = 0; k < 4; ++k) {
       open_.push({p.face, p.u + ((k & 1) ? q : -q), p.v + ((k & 2) ? q : -q), q, bound});
@@ -233,7 +237,10 @@ class TreSearch {
       out.status = TreExtreme::Status::kUntracked;
       return out;
     }
-    double upper = best_value_;
+    // The largest bound of every patch not shown below the best: those left open and those
+    // closed within the tolerance. Not the attained value: a direction of a patch closed within
+    // the tolerance may exceed it (by up to the tolerance), never this.
+    double upper = std::max(best_value_, pruned_bound_);
     if (!open_.empty()) upper = std::max(upper, open_.top().bound);
     out.status = exhausted_ ? TreExtreme::Status::kNotCertified : TreExtreme::Status::kCertified;
     out.direction = best_direction_;
@@ -257,6 +264,7 @@ class TreSearch {
   bool exhausted_ = false;
   bool have_best_ = false;
   double best_value_ = 0.0;
+  double pruned_bound_ = -kTreInfinity;  ///< the largest bound of the patches closed within tol
   Eigen::Vector3d best_direction_ = Eigen::Vector3d::UnitZ();
   std::vector<int> best_visible_;
 };

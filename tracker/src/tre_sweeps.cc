@@ -85,6 +85,11 @@ TreSweeps tre_sweeps(const TreModel& model, const std::vector<Eigen::Vector3d>& 
                      const TreOptions& options, const TreSweepOptions& sweep) {
   std::string why;
   if (!sweep.is_valid(&why)) throw InvalidArgument(why);
+  if (sweep.radius && *sweep.radius > kTreMaxLength) {
+    throw InvalidArgument("radius",
+                          "exceeds 1e100, the largest length the TRE is computed for "
+                          "in double precision (docs/math.md §23)");
+  }
   TreSweeps out;
   out.report = tre_report(model, targets, options);
   const Eigen::Vector3d g = model.centroid();

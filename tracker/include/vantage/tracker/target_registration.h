@@ -58,6 +58,21 @@ Eigen::Matrix3d tre_covariance(const Eigen::Matrix3Xd& points_tool, const std::v
                                const Eigen::Vector3d& target_tool, const FleModel& fle,
                                const Eigen::Vector3d& a);
 
+/// The lengths within which the TRE is computed in double precision (docs/math.md §23, "Numeric
+/// range"): RMS^2 of a target then stays a normal number, so that a reported TRE is never an
+/// overflow's inf or an underflow's 0.
+inline constexpr double kTreMinLength = 1e-100;
+inline constexpr double kTreMaxLength = 1e100;
+
+/// Throws InvalidArgument when a length leaves [kTreMinLength, kTreMaxLength]: the markers' RMS
+/// radius about their centroid ("points"), the larger FLE standard deviation and each of them
+/// ("fle.sigma_perp", "fle.sigma_axial"), the target's distance from the centroid (at most;
+/// "target"), or the RMS TRE at the target with every marker registered ("target"); the message
+/// names "target <index>" when index >= 0 (one of several). Markers that cannot be registered
+/// (collinear) are left to the search to report.
+void check_tre_range(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d& target_tool,
+                     const FleModel& fle, long index);
+
 /// Fitzpatrick, West & Maurer 1998's RMS TRE for isotropic FLE with E|e|^2 = fle_rms^2 and every
 /// marker registered, Eq. (23.3). Throws InvalidArgument when the markers are collinear.
 double tre_rms_isotropic(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d& target_tool,
