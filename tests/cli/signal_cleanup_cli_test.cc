@@ -105,13 +105,19 @@ TEST(SignalCleanupCli, InterruptedSimulateLeavesNoTemporary) {
   EXPECT_FALSE(fs::exists(scratch.path("out.csv")));
 }
 
-TEST(SignalCleanupCli, TerminatedDesignLeavesNoLock) {
-  ScratchDir scratch;
+// Starts `design drone.json --add 6 --write out.json` in `scratch`, sends `signal` once it holds
+// its lock, and returns the wait status (-1 when it never took the lock).
+int design_signalled(const ScratchDir& scratch, int signal) {
   const pid_t pid = start_vantage(
       scratch, {"design", kExamples + "drone.json", "--add", "6", "--write", "out.json"});
-  ASSERT_TRUE(wait_for_file(scratch, ".out.json.lock", pid)) << "the run never took its lock";
-  ASSERT_EQ(::kill(pid, SIGTERM), 0);
-  const int status = wait_status(pid);
+  if (!wait_for_file(scratch, ".out.json.lock", pid)) return -1;
+  if (::kill(pid, signal) != 0) return -1;
+  return wait_status(pid);
+}
+
+TEST(SignalCleanupCli, TerminatedDesignLeavesNoLock) {
+  ScratchDir scratch;
+  const int status = design_signalled(scratch, SIGTERM);
   ASSERT_TRUE(WIFSIGNALED(status)) << "status " << status;
   EXPECT_EQ(WTERMSIG(status), SIGTERM);
   EXPECT_FALSE(fs::exists(scratch.path(".out.json.lock")));
@@ -121,11 +127,7 @@ TEST(SignalCleanupCli, TerminatedDesignLeavesNoLock) {
 
 TEST(SignalCleanupCli, LockLeftByKillIsTakenOverSilently) {
   ScratchDir scratch;
-  const pid_t pid = start_vantage(
-      scratch, {"design", kExamples + "drone.json", "--add", "6", "--write", "out.json"});
-  ASSERT_TRUE(wait_for_file(scratch, ".out.json.lock", pid)) << "the run never took its lock";
-  ASSERT_EQ(::kill(pid, SIGKILL), 0);
-  const int status = wait_status(pid);
+  const int status = design_signalled(scratch, SIGKILL);
   ASSERT_TRUE(WIFSIGNALED(status)) << "status " << status;
   ASSERT_TRUE(fs::exists(scratch.path(".out.json.lock"))) << "SIGKILL leaves the lock file";
 
