@@ -92,6 +92,11 @@ py::object tre(const py::object& layout_arg, const py::object& points, const py:
     try {
       return tracker::tre_report(layout, target_list, options);
     } catch (const InvalidArgument& e) {
+      // The library's fields as the keywords that set them.
+      if (e.field() == "target") throw e.renamed("targets", std::nullopt);
+      if (e.field() == "fle.sigma_perp" || e.field() == "fle.sigma_axial") {
+        throw e.renamed(fle_rms ? "fle_rms" : "fle_sigma", std::nullopt);
+      }
       throw source.empty() || e.field() != "points" ? e : e.against(source);
     }
   });
