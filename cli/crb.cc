@@ -29,6 +29,8 @@ struct CrbArgs {
   std::string direction;
   bool sweep_tags = false;
   camera::TagSweepOptions tags;
+  CLI::Option* tags_per_side_option = nullptr;
+  CLI::Option* tag_fill_option = nullptr;
   bool json = false;
   bool allow_large = false;
 };
@@ -119,6 +121,14 @@ void print_tag_sweep(const std::vector<camera::TagFace>& faces,
 }
 
 int run_crb(const CrbArgs& args) {
+  if (!args.sweep_tags) {
+    // Issue 36: --tags-per-side without --sweep-tags was silently ignored.
+    for (const CLI::Option* option : {args.tags_per_side_option, args.tag_fill_option}) {
+      if (option->count() > 0) {
+        throw InvalidArgument(option->get_name(), "takes effect only with --sweep-tags");
+      }
+    }
+  }
   const Layout layout = args.input.read(args.file, args.allow_large);
   std::optional<Eigen::Vector3d> direction;
   if (!args.direction.empty()) direction = parse_direction(args.direction, "--direction");
@@ -169,13 +179,15 @@ Command add_crb_command(CLI::App& root) {
   sub->add_flag("--sweep-tags", args->sweep_tags,
                 "AprilTag corners: the bound with every face tiled by k x k tags of the same "
                 "extent (docs/math.md §22, \"How many tags, and how big\")");
-  sub->add_option("--tags-per-side", args->tags.per_side, "k of --sweep-tags, each in [1, 12]")
-      ->delimiter(',')
-      ->capture_default_str();
-  sub->add_option("--tag-fill", args->tags.fill,
-                  "tag side over its cell's side for --sweep-tags, each in (0, 1]")
-      ->delimiter(',')
-      ->capture_default_str();
+  args->tags_per_side_option =
+      sub->add_option("--tags-per-side", args->tags.per_side, "k of --sweep-tags, each in [1, 12]")
+          ->delimiter(',')
+          ->capture_default_str();
+  args->tag_fill_option =
+      sub->add_option("--tag-fill", args->tags.fill,
+                      "tag side over its cell's side for --sweep-tags, each in (0, 1]")
+          ->delimiter(',')
+          ->capture_default_str();
   sub->add_option("--threads", args->camera.threads, "threads, 0 = all cores")
       ->capture_default_str();
   add_allow_large_flag(sub, args->allow_large);

@@ -55,7 +55,14 @@ std::optional<MarkerVisibility> read_visibility(const nlohmann::json& root,
       out.cone_half_angle_deg = read_cones(v["cone_half_angle_deg"], source, markers);
     }
     if (v.contains("min_visible")) out.min_visible = read_min_visible(v["min_visible"], source);
-    if (v.contains("body")) out.body_path = read_string(v["body"], source, "visibility.body");
+    if (v.contains("body")) {
+      out.body_path = read_string(v["body"], source, "visibility.body");
+      // Issue 36: "" silently meant no body.
+      if (out.body_path.empty()) {
+        fail(source,
+             "visibility.body: empty; give a mesh path, or leave the field out for no body");
+      }
+    }
   }
   return out;
 }

@@ -150,6 +150,11 @@ TEST(CrbCli, BadInputIsOneLineNamingTheOption) {
        "--distance 2 --focal 900 --noise-px 1 --sweep-tags "
        "--tags-per-side 0",
        "--tags-per-side"},
+      // Issue 36: these were silently ignored without --sweep-tags.
+      {"tags per side alone", nullptr, "--distance 2 --focal 900 --noise-px 1 --tags-per-side 2",
+       "--tags-per-side: takes effect only with --sweep-tags"},
+      {"tag fill alone", nullptr, "--distance 2 --focal 900 --noise-px 1 --tag-fill 0.5",
+       "--tag-fill: takes effect only with --sweep-tags"},
       {"not tag corners", R"({"points": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]})",
        "in.json --distance 5 --focal 900 --noise-px 1 --sweep-tags", "names"},
   };

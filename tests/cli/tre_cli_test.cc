@@ -123,9 +123,34 @@ TEST(TreCli, BadInputIsOneLineAndExitTwo) {
   scratch.write("far_apart.json", "{\"points\": [[0,0,0],[1e150,0,0],[0,1e150,0],[0,0,1e150]]}");
   testing::expect_bad_input(run_vantage("tre far_apart.json --target 0,0,1 --fle-rms 0.2", scratch),
                             "far_apart.json: points: the markers' RMS radius about their centroid");
+  // Issue 36: "body": "" silently meant no body.
+  scratch.write("empty_body.json",
+                R"({"points": [[0,0,0],[1,0,0],[0,1,0]], "normals": [[0,0,1],[0,0,1],[0,0,1]],
+                    "visibility": {"body": ""}})");
+  testing::expect_bad_input(
+      run_vantage("tre empty_body.json --target 0,0,1 --fle-rms 0.2", scratch),
+      "empty_body.json: visibility.body: empty");
   scratch.write("broken.json", "{\"points\": [[0,0,0]]");
   testing::expect_bad_input(run_vantage("tre broken.json --target 0,0,1 --fle-rms 0.2", scratch),
                             "broken.json");
+}
+
+// Issue 36: with nothing tracked `tre` exited 0 with nothing on stderr; like analyze, it prints
+// its report and gives the reason on stderr, exit 1.
+TEST(TreCli, NothingTrackedIsExitOneWithTheReason) {
+  ScratchDir scratch;
+  // Markers that face +z through 10-degree cones, a workspace about -z: nothing is ever seen.
+  scratch.write("hidden.json",
+                R"({"points": [[0,0,0],[40,0,0],[0,40,0],[30,30,5]],
+                    "normals": [[0,0,1],[0,0,1],[0,0,1],[0,0,1]],
+                    "visibility": {"cone_half_angle_deg": 10},
+                    "workspace": {"axis": [0,0,-1], "half_angle_deg": 30}})");
+  const testing::CliRun run =
+      run_vantage("tre hidden.json --target 0,0,-100 --fle-rms 0.25", scratch);
+  EXPECT_EQ(run.status, 1) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("worst"));
+  EXPECT_EQ(testing::line_count(run.err), 1) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("vantage: tre: no direction of the workspace sees at least 3"));
 }
 
 }  // namespace
