@@ -186,8 +186,9 @@ void check_request(const Request& request) {
   if (!request.sites.empty() && request.candidates_given) {
     place_refuse("--candidates", "samples the body mesh; --sites gives the candidates itself");
   }
-  if (request.candidates < 1 || request.candidates > kMaxCandidates) {
-    place_refuse("--candidates", "must be in [1, " + std::to_string(kMaxCandidates) + "], got " +
+  // At least 3: a placement chooses at least min_visible >= 3 markers among the sites.
+  if (request.candidates < 3 || request.candidates > kMaxCandidates) {
+    place_refuse("--candidates", "must be in [3, " + std::to_string(kMaxCandidates) + "], got " +
                                      std::to_string(request.candidates));
   }
   if (request.markers < 1) {

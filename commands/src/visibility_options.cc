@@ -95,7 +95,21 @@ void VisibilityOptions::apply(Layout* layout) const {
     layout->visibility->body_path = std::filesystem::absolute(body).lexically_normal().string();
   }
   if (!workspace.empty()) layout->workspace = visibility_parse_workspace(workspace);
-  layout->validate();
+  try {
+    layout->validate();
+  } catch (const InvalidArgument& e) {
+    // A rule the library holds, broken by a value an option set: named as the option (issue 36:
+    // `--workspace 0,0,1,0` named workspace.half_angle_deg).
+    const auto set_by = [&e](const char* field) { return e.field().rfind(field, 0) == 0; };
+    if (!workspace.empty() && set_by("workspace")) throw e.renamed("--workspace", std::nullopt);
+    if (min_visible && set_by("visibility.min_visible")) {
+      throw e.renamed("--min-visible", std::nullopt);
+    }
+    if (cone_deg && set_by("visibility.cone_half_angle_deg")) {
+      throw e.renamed("--cone-deg", std::nullopt);
+    }
+    throw;
+  }
 }
 
 }  // namespace vantage::commands

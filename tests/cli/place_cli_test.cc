@@ -134,6 +134,7 @@ TEST(PlaceCli, BadInputGetsOneLineAndWritesNothing) {
   scratch.write("bare.json", R"({"points": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]})");
   scratch.write("empty.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
   std::filesystem::create_directories(scratch.path("adir"));
+  const std::string one_candidate = kSatelliteBody + " --markers 3 --candidates 1 --out o.json";
   const BadCall calls[] = {
       {"K above the sites", nullptr, "--sites sites.json --markers 17 --out o.json", "--markers"},
       {"K below min_visible", nullptr, "--sites sites.json --markers 2 --out o.json", "--markers"},
@@ -144,6 +145,8 @@ TEST(PlaceCli, BadInputGetsOneLineAndWritesNothing) {
       {"--out a directory", nullptr, "--sites sites.json --markers 4 --out adir --overwrite",
        "--out"},
       {"neither body nor sites", nullptr, "--markers 4 --out o.json", "BODY"},
+      // Issue 36: said "points: need at least 3 points (2 free vectors)".
+      {"one candidate", nullptr, one_candidate.c_str(), "--candidates: must be in [3, "},
       {"--out a CSV file (named once)", nullptr, "--sites sites.json --markers 4 --out o.csv",
        "error: --out: o.csv: write the placed layout as .json"},
   };

@@ -143,6 +143,9 @@ const BadCall kBadCalls[] = {
     {"OptionBodyMissing", kCorner, "in.json --body nowhere.stl", "--body"},
     {"OptionWorkspaceAxisZero", kCorner, "in.json --workspace 0,0,0,20", "--workspace"},
     {"OptionWorkspaceThreeNumbers", kCorner, "in.json --workspace 0,0,1", "--workspace"},
+    // Issue 36: named the library's workspace.half_angle_deg.
+    {"OptionWorkspaceZeroAngle", kCorner, "in.json --workspace 0,0,1,0",
+     "--workspace: must be in (0, 180] degrees"},
     {"OptionNormalsUnknown", kCorner, "in.json --normals inward", "--normals"},
 };
 
