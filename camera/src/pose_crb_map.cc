@@ -9,6 +9,7 @@
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/parallel.h"
 #include "vantage/camera/pose_crb.h"
+#include "vantage/visibility/visibility.h"
 
 namespace vantage::camera {
 
@@ -20,17 +21,6 @@ constexpr double kRefineMinStep = 1e-5;
 // Steps of the sliver probe along each cut: fine up to kSliverWidthDeg, then coarse.
 constexpr double kSliverFineStepDeg = 0.02;
 constexpr double kSliverCoarseStepDeg = 0.25;
-
-Eigen::Matrix3Xd fibonacci_sphere(int count) {
-  Eigen::Matrix3Xd out(3, count);
-  const double golden = kPi * (3.0 - std::sqrt(5.0));
-  for (int k = 0; k < count; ++k) {
-    const double z = 1.0 - (2.0 * k + 1.0) / count;
-    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    out.col(k) << r * std::cos(golden * k), r * std::sin(golden * k), z;
-  }
-  return out;
-}
 
 // Two unit vectors spanning the tangent plane at a.
 void tangent_basis(const Eigen::Vector3d& a, Eigen::Vector3d* u, Eigen::Vector3d* v) {
@@ -115,7 +105,7 @@ std::vector<int> trackable_by_bound(const std::vector<PoseCrbAt>& samples) {
 }
 
 std::vector<PoseCrbAt> sample_workspace(const PoseCrbModel& model, double distance) {
-  const Eigen::Matrix3Xd all = fibonacci_sphere(model.options().samples);
+  const Eigen::Matrix3Xd all = visibility::fibonacci_directions(model.options().samples);
   std::vector<int> inside;
   for (int k = 0; k < static_cast<int>(all.cols()); ++k) {
     if (model.in_workspace(all.col(k))) inside.push_back(k);
