@@ -101,14 +101,14 @@ TEST(TreCli, BadInputIsOneLineAndExitTwo) {
       {"zero direction", nullptr, "--target 0,0,1 --fle-rms 0.2 --direction 0,0,0", "--direction"},
       {"few trials", nullptr, "--target 0,0,1 --fle-rms 0.2 --monte-carlo 10", "--monte-carlo"},
       // Issue 36, item 2: these reported a certified worst RMS TRE of 0.0 (or inf), RMS^2
-      // having overflowed or underflowed; lengths outside [1e-100, 1e100] are refused.
+      // having overflowed or underflowed; lengths outside [1e-50, 1e50] are refused.
       {"target 1e200", nullptr, "--target 1e200,0,0 --fle-rms 0.25", "--target: is more than"},
       {"target 1e308", nullptr, "--target 1e308,0,0 --fle-rms 0.25", "--target"},
-      {"far target, large FLE", nullptr, "--target 1e40,0,0 --fle-rms 1e70",
+      {"far target, large FLE", nullptr, "--target 1e45,0,0 --fle-rms 1e20",
        "--target: the RMS TRE there"},
       {"huge sigmas", nullptr, "--target 0,0,-150 --fle-sigma 1e300,1e300", "--fle-sigma"},
-      {"huge rms", nullptr, "--target 0,0,-150 --fle-rms 1e300", "exceeds 1e100"},
-      {"tiny rms", nullptr, "--target 0,0,-150 --fle-rms 1e-300", "below 1e-100"},
+      {"huge rms", nullptr, "--target 0,0,-150 --fle-rms 1e300", "exceeds 1e50"},
+      {"tiny rms", nullptr, "--target 0,0,-150 --fle-rms 1e-300", "below 1e-50"},
   };
   for (const BadCall& call : calls) {
     SCOPED_TRACE(call.name);

@@ -202,7 +202,7 @@ TEST(TrePlotCli, BadInputIsOneLineAndMakesNoDirectory) {
        "--radius"},
       // Issue 36, item 2: wrote nan, -nan and inf rows into the three CSVs.
       {"radius 1e300", nullptr, "--tre --target 0,0,-150 --fle-rms 0.3 --radius 1e300 --out figs",
-       "--radius: exceeds 1e100"},
+       "--radius: exceeds 1e50"},
       {"target 1e200", nullptr, "--tre --target 1e200,0,0 --fle-rms 0.3 --out figs", "--target"},
       {"target without --tre", nullptr, "--target 0,0,-150 --out figs", "--target"},
       {"radius without --tre", nullptr, "--radius 10 --out figs", "--radius"},

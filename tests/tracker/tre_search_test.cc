@@ -130,6 +130,26 @@ TEST(TreSearch, TheBoundsHoldToRoundingNearTheExtremes) {
   EXPECT_GT(checked, 40000);
 }
 
+// The TRE is homogeneous: markers, target and FLE all scaled by s scale every RMS by s. At the
+// ends of the numeric range (docs/math.md §23) the search must still give the unit tool's
+// answers times s (the cofactor inverse of Lambda left the range of doubles there: an RMS of nan).
+TEST(TreSearch, ScaledToTheEndsOfTheRangeTheRmsScales) {
+  const visibility::VisibilityProblem unit = five_marker_tool();
+  const Eigen::Vector3d target(40.0, 10.0, -100.0);
+  const FleModel fle{0.0995, 0.2985};
+  const TreExtremes reference = tre_extremes(unit, target, fle);
+  for (const double s : {1e-45, 1e45}) {
+    visibility::VisibilityProblem scaled = unit;
+    scaled.points *= s;
+    const TreExtremes e =
+        tre_extremes(scaled, s * target, FleModel{s * fle.sigma_perp, s * fle.sigma_axial});
+    ASSERT_TRUE(e.worst.certified()) << s;
+    EXPECT_NEAR(e.worst.rms / s, reference.worst.rms, 1e-9 * reference.worst.rms) << s;
+    EXPECT_NEAR(e.best.rms / s, reference.best.rms, 1e-9 * reference.best.rms) << s;
+    EXPECT_NEAR(e.worst.rms_bound / s, reference.worst.rms_bound, 1e-9 * reference.worst.rms) << s;
+  }
+}
+
 TEST(TreSearch, WithoutNormalsTheWorstIsTheTopEigenvector) {
   const visibility::VisibilityProblem problem = seen_whole(five_marker_tool().points);
   const FleModel fle{0.0995, 0.2985};

@@ -18,6 +18,7 @@ constexpr double kCollinearFraction = 1e-12;
 
 // A length in a message: three significant digits.
 std::string length_text(double x) {
+  if (!std::isfinite(x)) return "beyond the range of doubles";
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", x);
   return text;
@@ -79,7 +80,12 @@ bool tre_linear_maps(const Eigen::Matrix3Xd& points_tool, const std::vector<int>
   }
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(lambda);
   if (!(eigen.eigenvalues()(0) > kCollinearFraction * lambda.trace())) return false;
-  const Eigen::Matrix3d d_lambda_inv = cross_matrix(target_tool - centroid) * lambda.inverse();
+  // Lambda^-1 from the eigenpairs already at hand, not from cofactors: its determinant (the cube
+  // of the markers' squared spread) leaves the range of doubles long before Lambda does.
+  const Eigen::Matrix3d lambda_inv = eigen.eigenvectors() *
+                                     eigen.eigenvalues().cwiseInverse().asDiagonal() *
+                                     eigen.eigenvectors().transpose();
+  const Eigen::Matrix3d d_lambda_inv = cross_matrix(target_tool - centroid) * lambda_inv;
   A->reserve(visible.size());
   for (int i : visible) {
     A->push_back(Eigen::Matrix3d::Identity() / n -
@@ -124,14 +130,14 @@ void check_tre_range(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d&
   };
   const std::string range =
       " vantage computes the TRE in double precision for lengths in "
-      "[1e-100, 1e100] (docs/math.md §23); give the lengths in other units";
+      "[1e-50, 1e50] (docs/math.md §23); give the lengths in other units";
   for (const auto& [field, sigma] :
        {std::pair<const char*, double>{"fle.sigma_perp", fle.sigma_perp},
         {"fle.sigma_axial", fle.sigma_axial}}) {
-    if (sigma > kTreMaxLength) throw InvalidArgument(field, "exceeds 1e100:" + range);
+    if (sigma > kTreMaxLength) throw InvalidArgument(field, "exceeds 1e50:" + range);
   }
   if (outside(std::max(fle.sigma_perp, fle.sigma_axial))) {
-    throw InvalidArgument("fle.sigma_perp", "the larger FLE deviation is below 1e-100:" + range);
+    throw InvalidArgument("fle.sigma_perp", "the larger FLE deviation is below 1e-50:" + range);
   }
   if (points_tool.cols() == 0) return;
   const Eigen::Vector3d centroid = points_tool.rowwise().mean();
@@ -140,11 +146,11 @@ void check_tre_range(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d&
   if (outside(radius)) {
     throw InvalidArgument("points", "the markers' RMS radius about their centroid, " +
                                         length_text(radius) +
-                                        ", is outside [1e-100, 1e100]:" + range);
+                                        ", is outside [1e-50, 1e50]:" + range);
   }
   if (!((target_tool - centroid).norm() <= kTreMaxLength)) {
     throw InvalidArgument(
-        "target", target_text(index) + "is more than 1e100 from the markers' centroid:" + range);
+        "target", target_text(index) + "is more than 1e50 from the markers' centroid:" + range);
   }
   std::vector<int> all(static_cast<std::size_t>(points_tool.cols()));
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
@@ -154,8 +160,8 @@ void check_tre_range(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d&
   if (outside(mean_rms)) {
     throw InvalidArgument("target", target_text(index) + "the RMS TRE there, " +
                                         length_text(mean_rms) +
-                                        " averaged over the lines of sight, is outside [1e-100, "
-                                        "1e100]:" +
+                                        " averaged over the lines of sight, is outside [1e-50, "
+                                        "1e50]:" +
                                         range);
   }
 }

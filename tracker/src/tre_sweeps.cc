@@ -87,7 +87,7 @@ TreSweeps tre_sweeps(const TreModel& model, const std::vector<Eigen::Vector3d>& 
   if (!sweep.is_valid(&why)) throw InvalidArgument(why);
   if (sweep.radius && *sweep.radius > kTreMaxLength) {
     throw InvalidArgument("radius",
-                          "exceeds 1e100, the largest length the TRE is computed for "
+                          "exceeds 1e50, the largest length the TRE is computed for "
                           "in double precision (docs/math.md §23)");
   }
   TreSweeps out;

@@ -61,8 +61,8 @@ Eigen::Matrix3d tre_covariance(const Eigen::Matrix3Xd& points_tool, const std::v
 /// The lengths within which the TRE is computed in double precision (docs/math.md §23, "Numeric
 /// range"): RMS^2 of a target then stays a normal number, so that a reported TRE is never an
 /// overflow's inf or an underflow's 0.
-inline constexpr double kTreMinLength = 1e-100;
-inline constexpr double kTreMaxLength = 1e100;
+inline constexpr double kTreMinLength = 1e-50;
+inline constexpr double kTreMaxLength = 1e50;
 
 /// Throws InvalidArgument when a length leaves [kTreMinLength, kTreMaxLength]: the markers' RMS
 /// radius about their centroid ("points"), the larger FLE standard deviation and each of them
