@@ -49,7 +49,8 @@ void print_report(const std::string& name, const camera::PoseCrbReport& r) {
   const camera::PoseCrbMap& map = r.map;
   std::cout << "vantage crb: " << name << "\n"
             << "  pinhole camera at distance " << format_number(r.camera.distance) << " from the "
-            << "markers' centroid, f = " << format_number(r.camera.focal_length) << " px, noise "
+            << (r.camera.aim ? "aim point " + format_vector(*r.camera.aim) : "markers' centroid")
+            << ", f = " << format_number(r.camera.focal_length) << " px, noise "
             << format_number(r.camera.noise_px) << " px per coordinate\n"
             << "  " << r.markers << " markers, visibility " << (r.with_body ? "cone+mesh" : "cone")
             << "; " << map.samples.size() << " directions sampled, trackable fraction "

@@ -17,6 +17,9 @@ void CrbCameraArgs::add_options(CLI::App* sub, bool required) {
   }
   sub->add_option("--principal-point", principal_point, "principal point CX CY, pixels")
       ->expected(2);
+  sub->add_option("--aim", aim,
+                  "X,Y,Z: the point the camera looks at, object frame (default: the markers' "
+                  "centroid)");
   sub->add_option("--sweep-distance", sweep_distance,
                   "D1:D2:N: the worst and median bound at N distances from D1 to D2");
   sub->add_option("--samples", samples, "Fibonacci directions of the CRB map")
@@ -31,12 +34,24 @@ camera::PoseCrbOptions CrbCameraArgs::options() const {
   if (!principal_point.empty()) options.principal_point = {principal_point[0], principal_point[1]};
   options.samples = samples;
   options.threads = threads;
+  if (!aim.empty()) options.aim = parse_point(aim, "--aim");
   return options;
 }
 
 std::optional<camera::PoseCrbSweep> CrbCameraArgs::sweep() const {
   if (sweep_distance.empty()) return std::nullopt;
   return parse_sweep(sweep_distance);
+}
+
+Eigen::Vector3d parse_point(const std::string& text, const std::string& option) {
+  std::istringstream in(text);
+  Eigen::Vector3d x;
+  char comma1 = 0, comma2 = 0;
+  if (!(in >> x.x() >> comma1 >> x.y() >> comma2 >> x.z()) || comma1 != ',' || comma2 != ',' ||
+      !(in >> std::ws).eof() || !x.allFinite()) {
+    throw InvalidArgument(option, "expected X,Y,Z, three finite numbers, got \"" + text + "\"");
+  }
+  return x;
 }
 
 Eigen::Vector3d parse_direction(const std::string& text, const std::string& option) {
@@ -64,10 +79,15 @@ camera::PoseCrbSweep parse_sweep(const std::string& text) {
 
 InvalidArgument crb_option_error(const InvalidArgument& e, const std::string& file) {
   static const std::pair<const char*, const char*> kOptions[] = {
-      {"distance", "--distance"},   {"focal_length", "--focal"},
-      {"noise_px", "--noise-px"},   {"principal_point", "--principal-point"},
-      {"samples", "--samples"},     {"threads", "--threads"},
-      {"direction", "--direction"}, {"sweep_distance", "--sweep-distance"}};
+      {"distance", "--distance"},
+      {"focal_length", "--focal"},
+      {"noise_px", "--noise-px"},
+      {"principal_point", "--principal-point"},
+      {"samples", "--samples"},
+      {"threads", "--threads"},
+      {"direction", "--direction"},
+      {"sweep_distance", "--sweep-distance"},
+      {"aim", "--aim"}};
   for (const auto& [field, option] : kOptions) {
     if (e.field() == field) return e.renamed(option, std::nullopt);
   }

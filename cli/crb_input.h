@@ -13,7 +13,8 @@
 
 namespace vantage::cli {
 
-/// --distance, --focal, --noise-px, --principal-point, --sweep-distance, --samples, --threads.
+/// --distance, --focal, --noise-px, --principal-point, --aim, --sweep-distance, --samples,
+/// --threads.
 struct CrbCameraArgs {
   double distance = 0.0;
   double focal = 0.0;
@@ -22,6 +23,7 @@ struct CrbCameraArgs {
   std::string sweep_distance;
   int samples = 10000;
   int threads = 0;
+  std::string aim;  ///< --aim X,Y,Z, or empty (the markers' centroid)
   CLI::Option* distance_option = nullptr;
   CLI::Option* focal_option = nullptr;
   CLI::Option* noise_option = nullptr;
@@ -33,6 +35,9 @@ struct CrbCameraArgs {
   /// The typed --sweep-distance, or nothing when not given.
   std::optional<camera::PoseCrbSweep> sweep() const;
 };
+
+/// "X,Y,Z" as typed, three finite numbers; InvalidArgument naming `option` otherwise.
+Eigen::Vector3d parse_point(const std::string& text, const std::string& option);
 
 /// "AX,AY,AZ" as typed to a unit vector; InvalidArgument naming `option` otherwise.
 Eigen::Vector3d parse_direction(const std::string& text, const std::string& option);

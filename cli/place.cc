@@ -39,16 +39,22 @@ int run_place(const PlaceArgs& args) {
     const std::function<void(const std::string&)> callback = progress.callback();
     outcome = place_json::place(args, sites, callback);
   }
-  if (outcome.complete) io::save_layout(args.out, outcome.placed.layout, args.overwrite);
+  const bool write = outcome.complete || args.allow_partial;
+  if (write) io::save_layout(args.out, outcome.placed.layout, args.overwrite);
   if (args.json) {
-    print_json(place_json::report(args, sites, outcome, outcome.complete));
+    print_json(place_json::report(args, sites, outcome, write));
   } else {
-    print_place_report(args, sites.n_candidates, sites.drawn, outcome.result, outcome.placed,
-                       outcome.complete);
+    print_place_report(args, sites.n_candidates, sites.drawn, outcome, write);
   }
   if (!outcome.complete) {
-    std::cerr << "vantage: place: " << place_json::failure_message(outcome.result, outcome.placed)
-              << "; nothing written" << std::endl;
+    const std::string why = place_json::failure_message(outcome.result, outcome.placed);
+    if (args.allow_partial) {
+      std::cerr << "vantage: warning: place: " << why << "; written as asked (--allow-partial)"
+                << std::endl;
+      return kExitOk;
+    }
+    std::cerr << "vantage: place: " << why
+              << "; nothing written (--allow-partial writes the best answer)" << std::endl;
     return kExitFailure;
   }
   return kExitOk;
@@ -99,6 +105,30 @@ Command add_place_command(CLI::App& root) {
   sub->add_option("--certificate-tolerance", args->certificate_tolerance,
                   "t_upper - t_lower of every certified search, in [1e-15, 1e-3]")
       ->capture_default_str();
+  sub->add_option("--objective", args->objective,
+                  "affine: the paper's scale-free bound under visibility; camera: the pinhole "
+                  "pose CRB (docs/math.md §21)")
+      ->capture_default_str();
+  sub->add_option("--distance", args->distance,
+                  "camera objective: distance of the camera from the aim point, layout units");
+  sub->add_option("--focal", args->focal, "camera objective: focal length, pixels");
+  sub->add_option("--noise-px", args->noise_px,
+                  "camera objective: pixel noise per coordinate, pixels");
+  sub->add_option("--statistic", args->statistic,
+                  "camera objective: worst, p95 or median of rot_rms over the workspace")
+      ->capture_default_str();
+  sub->add_option("--crb-samples", args->crb_samples,
+                  "camera objective: Fibonacci directions of the sphere (vantage crb --samples)")
+      ->capture_default_str();
+  sub->add_option("--aim", args->aim,
+                  "camera objective: X,Y,Z, the point the camera looks at (default: the centre "
+                  "of the sites' bounding box)");
+  sub->add_option("--min-coverage", args->min_coverage,
+                  "least trackable fraction of the workspace's lattice, in (0, 1] (default: "
+                  "every direction but one)");
+  sub->add_flag("--allow-partial", args->allow_partial,
+                "write the best answer even when it covers less than --min-coverage (warning, "
+                "exit 0)");
   sub->add_flag("--overwrite", args->overwrite, "let --out replace an existing regular file");
   sub->add_flag("--quiet", args->quiet, "no progress line on stderr (shown only on a terminal)");
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");

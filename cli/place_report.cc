@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <sstream>
 
 namespace vantage::cli {
 namespace {
@@ -14,11 +15,44 @@ double error_deg(double pbar_min) {
 
 std::string percent(double fraction) { return format_number(100.0 * fraction, 4) + " %"; }
 
+// X,Y,Z with every digit, as --aim reads it back.
+std::string aim_option(const Eigen::Vector3d& aim) {
+  std::ostringstream out;
+  out.precision(17);
+  out << aim.x() << "," << aim.y() << "," << aim.z();
+  return out.str();
+}
+
+// The camera objective's lines: what `vantage crb` reports of the placed layout.
+void print_camera_objective(const PlaceArgs& args, const place_json::Outcome& outcome) {
+  const camera::PoseCrbMap& map = *outcome.placed.crb;
+  const camera::PoseCrbOptions& c = *outcome.placed.camera;
+  std::cout << "\nthe camera objective (the placed layout's vantage crb --distance "
+            << format_number(c.distance, 9) << " --focal " << format_number(c.focal_length, 9)
+            << " --noise-px " << format_number(c.noise_px, 9) << " --samples " << c.samples
+            << " --aim " << aim_option(*c.aim) << "):\n";
+  if (map.status != camera::PoseCrbMap::Status::kOk) {
+    std::cout << "  untrackable from every sampled direction\n";
+    return;
+  }
+  std::cout << "  " << args.statistic << " rot_rms   " << format_number(outcome.objective_deg, 6)
+            << " deg (the search's lattice value "
+            << format_number(outcome.result.value.objective, 6) << " deg)\n"
+            << "  worst           " << format_number(map.worst.rot_rms_deg, 6) << " deg, trans_rms "
+            << format_number(map.worst.trans_rms, 6) << " at " << format_vector(map.worst.direction)
+            << "\n"
+            << "  p50 / p95 / p99 " << format_number(map.percentiles.p50, 6) << " / "
+            << format_number(map.percentiles.p95, 6) << " / "
+            << format_number(map.percentiles.p99, 6) << " deg\n"
+            << "  trackable       " << percent(map.trackable_fraction) << " of the workspace\n";
+}
+
 }  // namespace
 
 void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
-                        const design::PlacementResult& r, const PlacedLayout& placed,
-                        bool written) {
+                        const place_json::Outcome& outcome, bool written) {
+  const design::PlacementResult& r = outcome.result;
+  const PlacedLayout& placed = outcome.placed;
   const visibility::VisibilityReport& v = *placed.report.visibility;
   std::cout << "vantage place: " << args.markers << " markers on "
             << (args.sites.empty() ? args.body : args.sites) << "\n  " << n_candidates
@@ -28,7 +62,10 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
   std::cout << ", min_visible " << v.min_visible << ", " << (v.with_body ? "cone+mesh" : "cone")
             << " visibility, search " << r.search << "\n\n";
   if (!r.steps.empty()) {
-    std::cout << "greedy construction (k markers: coverage, certified p-bar_min, worst error):\n";
+    std::cout << (placed.crb ? "greedy construction (k markers: coverage, the objective on the "
+                               "search's lattice):\n"
+                             : "greedy construction (k markers: coverage, certified p-bar_min, "
+                               "worst error):\n");
     for (const design::PlacementStep& s : r.steps) {
       std::cout << "  k " << s.k << "  "
                 << (s.added >= 0 ? placed.site_names[static_cast<std::size_t>(s.added)]
@@ -36,6 +73,8 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
                 << "  " << percent(s.value.coverage) << "  ";
       if (s.value.status == visibility::VisibilityWorstViewpoint::Status::kUntrackable) {
         std::cout << "untrackable\n";
+      } else if (placed.crb) {
+        std::cout << format_number(s.value.objective, 6) << " deg\n";
       } else {
         std::cout << format_number(s.value.pbar_min, 6) << "  "
                   << format_number(error_deg(s.value.pbar_min), 4) << " deg\n";
@@ -46,10 +85,17 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
     std::cout << "exhaustive over " << r.subsets << " feasible subsets\n\n";
   }
   const design::RandomBaseline& b = r.random_baseline;
-  std::cout << "random baseline: " << b.trials << " feasible subsets, " << b.complete
-            << " trackable everywhere; best p-bar_min " << format_number(b.best_pbar_min, 6)
-            << " (coverage " << percent(b.best_coverage) << "), median "
-            << format_number(b.median_pbar_min, 6) << "\n";
+  if (placed.crb) {
+    std::cout << "random baseline: " << b.trials << " feasible subsets, " << b.complete
+              << " complete; best objective " << format_number(b.best_objective, 6)
+              << " deg (coverage " << percent(b.best_coverage) << "), median "
+              << format_number(b.median_objective, 6) << " deg\n";
+  } else {
+    std::cout << "random baseline: " << b.trials << " feasible subsets, " << b.complete
+              << " trackable everywhere; best p-bar_min " << format_number(b.best_pbar_min, 6)
+              << " (coverage " << percent(b.best_coverage) << "), median "
+              << format_number(b.median_pbar_min, 6) << "\n";
+  }
   std::cout << "chosen:";
   for (int s : r.chosen) std::cout << " " << placed.site_names[static_cast<std::size_t>(s)];
   std::cout << "\n\non its body (the placed layout's analysis, as vantage analyze):\n"
@@ -66,6 +112,7 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
               << placed.site_names[static_cast<std::size_t>(r.robust->worst_lost_marker)]
               << ", coverage at least " << percent(r.robust->coverage) << "\n";
   }
+  if (placed.crb) print_camera_objective(args, outcome);
   if (written) std::cout << "written: " << args.out << "\n";
 }
 

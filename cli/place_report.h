@@ -20,7 +20,6 @@ struct PlaceArgs : place_json::Request {
 using place_json::PlacedLayout;
 
 void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
-                        const design::PlacementResult& result, const PlacedLayout& placed,
-                        bool written);
+                        const place_json::Outcome& outcome, bool written);
 
 }  // namespace vantage::cli

@@ -45,6 +45,7 @@ std::optional<CrbOptionViolation> first_violation(const PoseCrbOptions& o) {
   if (!o.principal_point.allFinite()) {
     return CrbOptionViolation{"principal_point", "must be finite"};
   }
+  if (o.aim && !o.aim->allFinite()) return CrbOptionViolation{"aim", "must be finite"};
   if (!(o.noise_px > 0.0) || !std::isfinite(o.noise_px)) {
     return CrbOptionViolation{"noise_px", "must be > 0 and finite"};
   }
@@ -76,9 +77,10 @@ struct PoseCrbModel::Impl {
 
   void check_distance(double distance) const {
     if (!(distance > radius) || !std::isfinite(distance)) {
-      throw InvalidArgument("distance", "must exceed the layout's radius about its centroid, " +
-                                            std::to_string(radius) +
-                                            " (the camera would be among the markers)");
+      throw InvalidArgument(
+          "distance", "must exceed the layout's radius about " +
+                          std::string(options.aim ? "the aim point" : "its centroid") + ", " +
+                          std::to_string(radius) + " (the camera would be among the markers)");
     }
   }
 };
@@ -95,7 +97,7 @@ PoseCrbModel::PoseCrbModel(const Layout& layout, const PoseCrbOptions& options)
   Impl& m = *impl_;
   m.options = options;
   m.points = layout.entries;
-  m.centroid = m.points.rowwise().mean();
+  m.centroid = options.aim ? *options.aim : Eigen::Vector3d(m.points.rowwise().mean());
   m.radius = (m.points.colwise() - m.centroid).colwise().norm().maxCoeff();
   m.check_distance(options.distance);
   m.visibility.emplace(layout);
@@ -114,14 +116,15 @@ const Eigen::Vector3d& PoseCrbModel::centroid() const { return impl_->centroid; 
 double PoseCrbModel::radius() const { return impl_->radius; }
 const PoseCrbOptions& PoseCrbModel::options() const { return impl_->options; }
 bool PoseCrbModel::with_body() const { return impl_->visibility->with_body(); }
+const visibility::CameraVisibility& PoseCrbModel::visibility() const { return *impl_->visibility; }
 
 bool PoseCrbModel::in_workspace(const Eigen::Vector3d& a) const {
   return !impl_->workspace || a.dot(impl_->workspace->axis) >= impl_->workspace->cos_half_angle;
 }
 
-void PoseCrbModel::camera_pose(const Eigen::Vector3d& direction, double distance,
-                               Eigen::Matrix3d* R_camera_object,
-                               Eigen::Vector3d* p_camera_object) const {
+void camera_pose_toward(const Eigen::Vector3d& aim, const Eigen::Vector3d& direction,
+                        double distance, Eigen::Matrix3d* R_camera_object,
+                        Eigen::Vector3d* p_camera_object) {
   const Eigen::Vector3d a = unit_direction(direction);
   const Eigen::Vector3d z = -a;
   const Eigen::Vector3d reference = least_aligned_axis(a);
@@ -130,8 +133,14 @@ void PoseCrbModel::camera_pose(const Eigen::Vector3d& direction, double distance
   R_camera_object->row(0) = x.transpose();
   R_camera_object->row(1) = y.transpose();
   R_camera_object->row(2) = z.transpose();
-  const Eigen::Vector3d c = impl_->centroid + distance * a;
+  const Eigen::Vector3d c = aim + distance * a;
   *p_camera_object = -(*R_camera_object) * c;
+}
+
+void PoseCrbModel::camera_pose(const Eigen::Vector3d& direction, double distance,
+                               Eigen::Matrix3d* R_camera_object,
+                               Eigen::Vector3d* p_camera_object) const {
+  camera_pose_toward(impl_->centroid, direction, distance, R_camera_object, p_camera_object);
 }
 
 Eigen::Matrix2Xd PoseCrbModel::project(const Eigen::Vector3d& a, double distance) const {
@@ -200,13 +209,23 @@ PoseCrbAt PoseCrbModel::at(const Eigen::Vector3d& direction, double distance) co
   for (int i = 0; i < static_cast<int>(m.points.cols()); ++i) {
     if (!m.visibility->visible(i, c)) continue;
     out.visible_markers.push_back(i);
-    const Eigen::Matrix<double, 2, 6> J =
-        pixel_jacobian(R * m.points.col(i), p, m.options.focal_length);
-    F.noalias() += J.transpose() * J;
+    F.noalias() += marker_information(m.points.col(i), R, p, m.options.focal_length);
   }
   const int seen = static_cast<int>(out.visible_markers.size());
   if (!in_workspace(out.direction) || seen < 3 || seen < m.visibility->min_visible()) return out;
-  F /= m.options.noise_px * m.options.noise_px;
+  complete_pose_crb(F, m.options.noise_px, distance, &out);
+  return out;
+}
+
+Eigen::Matrix<double, 6, 6> marker_information(const Eigen::Vector3d& x, const Eigen::Matrix3d& R,
+                                               const Eigen::Vector3d& p, double focal_length) {
+  const Eigen::Matrix<double, 2, 6> J = pixel_jacobian(R * x, p, focal_length);
+  return J.transpose() * J;
+}
+
+void complete_pose_crb(const Eigen::Matrix<double, 6, 6>& F1, double noise_px, double distance,
+                       PoseCrbAt* out) {
+  const Eigen::Matrix<double, 6, 6> F = F1 / (noise_px * noise_px);
   // Scale translation by D so that both blocks are in radians-like units before the condition
   // test; the covariance is computed from the scaled matrix and scaled back.
   Eigen::Matrix<double, 6, 1> scale;
@@ -215,15 +234,15 @@ PoseCrbAt PoseCrbModel::at(const Eigen::Vector3d& direction, double distance) co
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(F_scaled);
   const double largest = eig.eigenvalues()(5);
   const double smallest = eig.eigenvalues()(0);
-  if (!(smallest > 0.0) || largest > PoseCrbAt::kMaxCondition * smallest) return out;
+  if (!(smallest > 0.0) || largest > PoseCrbAt::kMaxCondition * smallest) return;
   const Eigen::Matrix<double, 6, 6> C_scaled = eig.eigenvectors() *
                                                eig.eigenvalues().cwiseInverse().asDiagonal() *
                                                eig.eigenvectors().transpose();
-  out.covariance = scale.asDiagonal() * C_scaled * scale.asDiagonal();
-  out.trackable = true;
-  out.trans_rms = std::sqrt(out.covariance.topLeftCorner<3, 3>().trace());
-  out.rot_rms_deg = std::sqrt(out.covariance.bottomRightCorner<3, 3>().trace()) * kDegreesPerRadian;
-  return out;
+  out->covariance = scale.asDiagonal() * C_scaled * scale.asDiagonal();
+  out->trackable = true;
+  out->trans_rms = std::sqrt(out->covariance.topLeftCorner<3, 3>().trace());
+  out->rot_rms_deg =
+      std::sqrt(out->covariance.bottomRightCorner<3, 3>().trace()) * kDegreesPerRadian;
 }
 
 }  // namespace vantage::camera

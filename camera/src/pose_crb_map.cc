@@ -86,13 +86,6 @@ double worst_region_width_deg(const PoseCrbModel& model, double distance, const 
   return narrowest;
 }
 
-// The q-quantile (0 <= q <= 1) of sorted values: the nearest-rank value.
-double nearest_rank(const std::vector<double>& sorted, double q) {
-  const auto n = static_cast<double>(sorted.size());
-  const auto rank = static_cast<std::size_t>(std::max(1.0, std::ceil(q * n)));
-  return sorted[std::min(sorted.size(), rank) - 1];
-}
-
 // Indices of the trackable samples, by rot_rms_deg increasing (ties by index).
 std::vector<int> trackable_by_bound(const std::vector<PoseCrbAt>& samples) {
   std::vector<int> order;
@@ -136,6 +129,12 @@ PoseCrbAt refined_extreme(const PoseCrbModel& model, double distance,
 }
 
 }  // namespace crb_sampling
+
+double nearest_rank(const std::vector<double>& sorted, double q) {
+  const auto n = static_cast<double>(sorted.size());
+  const auto rank = static_cast<std::size_t>(std::max(1.0, std::ceil(q * n)));
+  return sorted[std::min(sorted.size(), rank) - 1];
+}
 
 const char* to_string(PoseCrbMap::Status status) {
   return status == PoseCrbMap::Status::kOk ? "ok" : "untrackable";

@@ -42,6 +42,8 @@ Json report(const camera::PoseCrbReport& r) {
       {"focal", r.camera.focal_length},
       {"principal_point", {r.camera.principal_point.x(), r.camera.principal_point.y()}},
       {"noise_px", r.camera.noise_px}};
+  if (r.camera.aim)
+    out["camera"]["aim"] = {r.camera.aim->x(), r.camera.aim->y(), r.camera.aim->z()};
   out["markers"] = r.markers;
   out["visibility"] = r.with_body ? "cone+mesh" : "cone";
   if (r.at_direction) out["at_direction"] = at_direction(*r.at_direction, true);

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <sstream>
+#include <utility>
 
 #include "vantage/analysis/common.h"
 #include "vantage/io/layout_file.h"
@@ -16,6 +18,8 @@ namespace vantage::place_json {
 namespace {
 
 constexpr int kMaxCandidates = 20000;
+// The camera objective's lattice: each evaluation is linear in it.
+constexpr int kMaxCrbSamples = 1'000'000;
 
 [[noreturn]] void place_refuse(const std::string& field, const std::string& message) {
   throw InvalidArgument(field, message);
@@ -177,7 +181,137 @@ Json place_steps_json(const design::PlacementResult& r) {
   return steps;
 }
 
+// "X,Y,Z": three finite numbers.
+Eigen::Vector3d place_point(const std::string& text, const std::string& option) {
+  std::istringstream in(text);
+  Eigen::Vector3d x;
+  char comma1 = 0, comma2 = 0;
+  if (!(in >> x.x() >> comma1 >> x.y() >> comma2 >> x.z()) || comma1 != ',' || comma2 != ',' ||
+      !(in >> std::ws).eof() || !x.allFinite()) {
+    place_refuse(option, "expected X,Y,Z, three finite numbers, got \"" + text + "\"");
+  }
+  return x;
+}
+
+void check_positive(double value, const char* option) {
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    place_refuse(option, "must be a finite number > 0 with --objective camera");
+  }
+}
+
+void check_objective(const Request& request) {
+  if (request.objective == "camera") {
+    check_positive(request.distance, "--distance");
+    check_positive(request.focal, "--focal");
+    check_positive(request.noise_px, "--noise-px");
+    if (!design::parse_crb_statistic(request.statistic)) {
+      place_refuse("--statistic",
+                   "expected worst, p95 or median, got \"" + request.statistic + "\"");
+    }
+    if (request.crb_samples < 100 || request.crb_samples > kMaxCrbSamples) {
+      place_refuse("--crb-samples", "must be in [100, " + std::to_string(kMaxCrbSamples) +
+                                        "], got " + std::to_string(request.crb_samples));
+    }
+    if (!request.aim.empty()) place_point(request.aim, "--aim");
+    return;
+  }
+  if (request.objective != "affine") {
+    place_refuse("--objective", "expected affine or camera, got \"" + request.objective + "\"");
+  }
+  const std::pair<bool, const char*> camera_only[] = {
+      {request.distance != 0.0, "--distance"},        {request.focal != 0.0, "--focal"},
+      {request.noise_px != 0.0, "--noise-px"},        {request.statistic != "worst", "--statistic"},
+      {request.crb_samples != 2000, "--crb-samples"}, {!request.aim.empty(), "--aim"}};
+  for (const auto& [given, option] : camera_only) {
+    if (given) place_refuse(option, "goes with --objective camera");
+  }
+}
+
+// The camera objective in words, with the `vantage crb` options that reproduce its numbers.
+std::string camera_words(const Request& request, const camera::PoseCrbOptions& camera) {
+  std::ostringstream out;
+  out.precision(17);
+  const Eigen::Vector3d& aim = *camera.aim;
+  out << "camera: the " << request.statistic
+      << " rot_rms over the workspace of vantage crb --distance " << camera.distance << " --focal "
+      << camera.focal_length << " --noise-px " << camera.noise_px << " --samples " << camera.samples
+      << " --aim " << aim.x() << "," << aim.y() << "," << aim.z();
+  return out.str();
+}
+
+// The camera's statistic of a crb map, degrees (+inf when untrackable).
+double crb_statistic(const camera::PoseCrbMap& map, design::CrbStatistic statistic) {
+  if (map.status != camera::PoseCrbMap::Status::kOk) return std::numeric_limits<double>::infinity();
+  switch (statistic) {
+    case design::CrbStatistic::kWorst:
+      return map.worst.rot_rms_deg;
+    case design::CrbStatistic::kP95:
+      return map.percentiles.p95;
+    case design::CrbStatistic::kMedian:
+      return map.percentiles.p50;
+  }
+  return map.worst.rot_rms_deg;
+}
+
+// A degree value, or null when it is infinite (nothing trackable).
+Json place_degrees(double value) { return std::isfinite(value) ? Json(value) : Json(); }
+
+Json place_objective_json(const Request& request, const Outcome& outcome) {
+  const design::PlacementResult& r = outcome.result;
+  Json out;
+  out["name"] = request.objective;
+  out["value_deg"] = place_degrees(outcome.objective_deg);
+  out["min_coverage"] = request.min_coverage == -1.0 ? Json("all lattice directions but one")
+                                                     : Json(request.min_coverage);
+  if (!outcome.placed.crb) {
+    out["scale_free"] = true;
+    return out;
+  }
+  const camera::PoseCrbOptions& c = *outcome.placed.camera;
+  const camera::PoseCrbMap& map = *outcome.placed.crb;
+  out["statistic"] = request.statistic;
+  out["search_value_deg"] = place_degrees(r.value.objective);
+  out["camera"] = {{"distance", c.distance},
+                   {"focal_px", c.focal_length},
+                   {"noise_px", c.noise_px},
+                   {"samples", c.samples},
+                   {"aim", {c.aim->x(), c.aim->y(), c.aim->z()}}};
+  Json crb = {{"status", camera::to_string(map.status)},
+              {"trackable_fraction", map.trackable_fraction}};
+  if (map.status == camera::PoseCrbMap::Status::kOk) {
+    crb["worst"] = {
+        {"rot_rms_deg", map.worst.rot_rms_deg},
+        {"trans_rms", map.worst.trans_rms},
+        {"direction", {map.worst.direction.x(), map.worst.direction.y(), map.worst.direction.z()}}};
+    crb["percentiles"] = {
+        {"p50", map.percentiles.p50}, {"p95", map.percentiles.p95}, {"p99", map.percentiles.p99}};
+  }
+  out["crb"] = crb;
+  return out;
+}
+
 }  // namespace
+
+std::optional<design::CameraObjective> camera_objective(const Request& request,
+                                                        const Layout& sites) {
+  if (request.objective != "camera") return std::nullopt;
+  design::CameraObjective out;
+  out.sites = sites;
+  out.statistic = *design::parse_crb_statistic(request.statistic);
+  out.crb.distance = request.distance;
+  out.crb.focal_length = request.focal;
+  out.crb.noise_px = request.noise_px;
+  out.crb.samples = request.crb_samples;
+  out.crb.threads = request.threads;
+  if (request.aim.empty()) {
+    const Eigen::Vector3d low = sites.entries.rowwise().minCoeff();
+    const Eigen::Vector3d high = sites.entries.rowwise().maxCoeff();
+    out.crb.aim = 0.5 * (low + high);
+  } else {
+    out.crb.aim = place_point(request.aim, "--aim");
+  }
+  return out;
+}
 
 void check_request(const Request& request) {
   if (request.body.empty() == request.sites.empty()) {
@@ -206,6 +340,11 @@ void check_request(const Request& request) {
   if (request.exhaustive_limit < 0) place_refuse("--exhaustive-limit", "must be >= 0");
   if (!(request.certificate_tolerance >= 1e-15 && request.certificate_tolerance <= 1e-3)) {
     place_refuse("--certificate-tolerance", "must be in [1e-15, 1e-3]");
+  }
+  check_objective(request);
+  if (request.min_coverage != -1.0 &&
+      !(request.min_coverage > 0.0 && request.min_coverage <= 1.0)) {
+    place_refuse("--min-coverage", "must be in (0, 1]");
   }
   if (request.out.empty()) return;
   if (!place_valid_utf8(request.out)) place_refuse("--out", "the file name is not valid UTF-8");
@@ -268,21 +407,36 @@ Outcome place(const Request& request, const Sites& sites,
   options.threads = request.threads;
   options.search.certificate_tolerance = request.certificate_tolerance;
   options.progress = progress;
+  if (request.min_coverage != -1.0) options.min_coverage = request.min_coverage;
   Outcome out;
   try {
+    options.camera = camera_objective(request, sites.layout);
     out.result = design::place_markers(problem, options);
   } catch (const InvalidArgument& e) {
+    if (e.field() == "distance") place_refuse("--distance", e.what());
     place_refuse(e.field() == "min_separation" ? "--min-separation" : "--markers", e.what());
   }
   if (progress) progress("final analysis");
-  out.placed = placed_layout(request, sites.layout, sites.n_candidates, out.result);
-  out.complete = out.result.status == design::PlacementResult::Status::kComplete &&
-                 out.placed.report.visibility && out.placed.report.visibility->worst.certified();
+  std::optional<camera::PoseCrbOptions> camera;
+  if (options.camera) camera = options.camera->crb;
+  out.placed = placed_layout(request, sites.layout, sites.n_candidates, out.result, camera);
+  const bool covered = out.result.status == design::PlacementResult::Status::kComplete;
+  if (out.placed.crb) {
+    out.objective_deg = crb_statistic(*out.placed.crb, options.camera->statistic);
+    out.complete = covered && out.placed.crb->status == camera::PoseCrbMap::Status::kOk;
+  } else {
+    out.objective_deg = out.placed.report.visibility
+                            ? out.placed.report.visibility->max_worst_case_error_deg
+                            : 90.0;
+    out.complete =
+        covered && out.placed.report.visibility && out.placed.report.visibility->worst.certified();
+  }
   return out;
 }
 
 PlacedLayout placed_layout(const Request& request, const Layout& sites, int n_candidates,
-                           const design::PlacementResult& result) {
+                           const design::PlacementResult& result,
+                           const std::optional<camera::PoseCrbOptions>& camera) {
   PlacedLayout out;
   for (Eigen::Index i = 0; i < sites.entries.cols(); ++i) {
     out.site_names.push_back(design::site_name(sites, static_cast<int>(i)));
@@ -291,11 +445,16 @@ PlacedLayout placed_layout(const Request& request, const Layout& sites, int n_ca
   record.sites = request.source();
   record.n_candidates = n_candidates;
   record.robust_dropout = request.robust_dropout;
+  if (camera) record.objective = camera_words(request, *camera);
   out.layout = design::placed_layout(sites, result, record);
   report::LayoutReportOptions options;
   options.visibility.search.certificate_tolerance = request.certificate_tolerance;
   options.visibility.threads = request.threads;
   out.report = report::analyze_layout(out.layout, options);
+  if (camera) {
+    out.camera = camera;
+    out.crb = camera::pose_crb_map(camera::PoseCrbModel(out.layout, *camera));
+  }
   return out;
 }
 
@@ -310,6 +469,9 @@ std::string failure_message(const design::PlacementResult& result, const PlacedL
       message += "; all sites together cover " + place_percent(result.all_sites_coverage);
     }
     return message;
+  }
+  if (placed.crb) {
+    return "the placed layout is trackable from no sampled direction of the camera's workspace";
   }
   const visibility::VisibilityReport& v = *placed.report.visibility;
   return "the placed layout's analysis is not certified: " + v.message();
@@ -346,6 +508,7 @@ Json report(const Request& request, const Sites& sites, const Outcome& outcome, 
                             {"best_coverage", r.random_baseline.best_coverage},
                             {"best_pbar_min", r.random_baseline.best_pbar_min},
                             {"median_pbar_min", r.random_baseline.median_pbar_min}};
+  out["objective"] = place_objective_json(request, outcome);
   out["steps"] = place_steps_json(r);
   if (r.robust) {
     out["robust"] = {

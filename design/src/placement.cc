@@ -12,11 +12,14 @@
 namespace vantage::design {
 namespace {
 
-PlacementValue value_of(const internal::Scored& s, int directions) {
+PlacementValue value_of(const internal::Scored& s, int directions, bool camera) {
   PlacementValue out;
-  out.coverage = directions == 0 ? 0.0 : static_cast<double>(s.cover.covered) / directions;
-  out.t_upper = s.t;
-  out.pbar_min = std::sqrt(std::max(0.0, 1.0 - s.t * s.t));
+  out.coverage = directions == 0 ? 0.0 : static_cast<double>(s.covered) / directions;
+  out.objective = s.t;
+  if (!camera) {
+    out.t_upper = s.t;
+    out.pbar_min = std::sqrt(std::max(0.0, 1.0 - s.t * s.t));
+  }
   out.status = s.status;
   return out;
 }
@@ -26,6 +29,7 @@ RobustValue robust_value(internal::PlacementSearch& search, const std::vector<in
   RobustValue out;
   out.coverage = 1.0;
   out.pbar_min = 1.0;
+  out.objective = -1.0;
   const int directions = search.coverage().directions();
   for (std::size_t m = 0; m < chosen.size(); ++m) {
     const internal::Scored lost = search.score(internal::without_position(chosen, m));
@@ -33,8 +37,9 @@ RobustValue robust_value(internal::PlacementSearch& search, const std::vector<in
         directions == 0 ? 0.0 : static_cast<double>(lost.cover.covered) / directions;
     const double pbar = std::sqrt(std::max(0.0, 1.0 - lost.t * lost.t));
     out.coverage = std::min(out.coverage, coverage);
-    if (out.worst_lost_marker < 0 || pbar < out.pbar_min) {
-      out.pbar_min = pbar;
+    if (out.worst_lost_marker < 0 || lost.t > out.objective) {
+      out.pbar_min = search.camera() != nullptr ? 0.0 : pbar;
+      out.objective = lost.t;
       out.worst_lost_marker = chosen[m];
     }
   }
@@ -88,8 +93,40 @@ void PlacementProblem::validate() const {
   }
 }
 
+const char* to_string(CrbStatistic statistic) {
+  switch (statistic) {
+    case CrbStatistic::kWorst:
+      return "worst";
+    case CrbStatistic::kP95:
+      return "p95";
+    case CrbStatistic::kMedian:
+      return "median";
+  }
+  return "unknown";
+}
+
+std::optional<CrbStatistic> parse_crb_statistic(const std::string& name) {
+  for (CrbStatistic s : {CrbStatistic::kWorst, CrbStatistic::kP95, CrbStatistic::kMedian}) {
+    if (name == to_string(s)) return s;
+  }
+  return std::nullopt;
+}
+
 bool PlaceOptions::is_valid(std::string* why) const {
   if (!search.is_valid(why)) return false;
+  if (min_coverage && !(*min_coverage > 0.0 && *min_coverage <= 1.0)) {
+    return vantage::internal::invalid_option(why, "min_coverage", "must be in (0, 1]");
+  }
+  if (camera) {
+    std::string camera_why;
+    if (!camera->crb.is_valid(&camera_why)) {
+      return vantage::internal::invalid_option(why, "camera", camera_why);
+    }
+    if (!camera->crb.aim) {
+      return vantage::internal::invalid_option(why, "camera.aim",
+                                               "must be given (the point the camera looks at)");
+    }
+  }
   if (coverage_samples < 100) {
     return vantage::internal::invalid_option(why, "coverage_samples", "must be >= 100");
   }
@@ -120,6 +157,11 @@ PlacementResult place_markers(const PlacementProblem& problem, const PlaceOption
     throw InvalidArgument("markers", "robust_dropout needs more markers than min_visible (" +
                                          std::to_string(problem.sites.min_visible) + ")");
   }
+  if (options.camera && options.camera->sites.entries.cols() != problem.sites.points.cols()) {
+    throw InvalidArgument(
+        "camera.sites",
+        "must hold the problem's " + std::to_string(problem.sites.points.cols()) + " sites");
+  }
   internal::PlacementSearch search(problem, options);
   const int directions = search.coverage().directions();
   PlacementResult out;
@@ -148,11 +190,11 @@ PlacementResult place_markers(const PlacementProblem& problem, const PlaceOption
                               " sites satisfy the separation and distance-difference constraints");
   }
   out.chosen = best->chosen;
-  out.value = value_of(*best, directions);
+  out.value = value_of(*best, directions, search.camera() != nullptr);
   if (options.robust_dropout) out.robust = robust_value(search, out.chosen);
   out.evaluations = search.evaluations();
-  out.status = best->cover.covered == directions ? PlacementResult::Status::kComplete
-                                                 : PlacementResult::Status::kIncomplete;
+  out.status = best->covered >= search.required() ? PlacementResult::Status::kComplete
+                                                  : PlacementResult::Status::kIncomplete;
   {
     std::vector<int> all(static_cast<std::size_t>(problem.sites.points.cols()));
     for (std::size_t s = 0; s < all.size(); ++s) all[s] = static_cast<int>(s);
@@ -162,8 +204,9 @@ PlacementResult place_markers(const PlacementProblem& problem, const PlaceOption
   }
   if (out.status == PlacementResult::Status::kIncomplete) {
     out.covering_markers = search.covering_markers();
-    out.message = "no placement of " + std::to_string(problem.markers) +
-                  " markers found makes every workspace direction trackable";
+    out.message = "no placement of " + std::to_string(problem.markers) + " markers found makes " +
+                  std::to_string(search.required()) + " of the " + std::to_string(directions) +
+                  " workspace directions trackable";
   }
   return out;
 }

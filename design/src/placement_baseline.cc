@@ -44,7 +44,8 @@ RandomBaseline PlacementSearch::baseline(std::optional<Scored>* best) {
         if (!evaluator_.feasible(chosen)) continue;
         Scored s;
         s.chosen = chosen;
-        s.cover = coverage_.key(chosen);
+        s.covered = coverage_.key(chosen).covered;
+        s.cover = ranked(coverage_.key(chosen), false);
         s.robust_cover = robust_cover(chosen);
         drawn[static_cast<std::size_t>(trial)] = std::move(s);
         break;
@@ -60,7 +61,7 @@ RandomBaseline PlacementSearch::baseline(std::optional<Scored>* best) {
   std::vector<Scored*> searched;
   for (std::optional<Scored>& s : drawn) {
     if (!s) continue;
-    const bool complete = s->cover.covered == coverage_.directions();
+    const bool complete = s->covered >= required_;
     const bool ties_top = !better_cover(*top, *s);
     if (complete || ties_top) searched.push_back(&*s);
   }
@@ -68,7 +69,7 @@ RandomBaseline PlacementSearch::baseline(std::optional<Scored>* best) {
     for (long i = b; i < e; ++i) {
       Scored& s = *searched[static_cast<std::size_t>(i)];
       const FamilyValue v =
-          evaluator_.family_t(family(s.chosen), 2.0, {},
+          evaluator_.family_t(family(s.chosen), no_level(), {},
                               std::max(kBaselineTolerance, options_.search.certificate_tolerance));
       s.t = v.t_upper;
       s.status = v.status;
@@ -80,23 +81,28 @@ RandomBaseline PlacementSearch::baseline(std::optional<Scored>* best) {
   evaluations_ += static_cast<long>(searched.size());
   RandomBaseline out;
   std::vector<double> pbar;
+  std::vector<double> values;
   for (const std::optional<Scored>& s : drawn) {
     if (!s) continue;
     ++out.trials;
-    const bool complete = s->cover.covered == coverage_.directions();
+    const bool complete = s->covered >= required_;
     if (complete) ++out.complete;
     pbar.push_back(complete ? std::sqrt(std::max(0.0, 1.0 - s->t * s->t)) : 0.0);
+    values.push_back(complete ? s->t : no_level());
     if (!better_cover(*top, *s) && (!*best || better(*s, **best))) *best = *s;
   }
   if (*best) {
     out.best_coverage = coverage_.directions() == 0
                             ? 0.0
-                            : static_cast<double>((*best)->cover.covered) / coverage_.directions();
+                            : static_cast<double>((*best)->covered) / coverage_.directions();
     out.best_pbar_min = std::sqrt(std::max(0.0, 1.0 - (*best)->t * (*best)->t));
+    out.best_objective = (*best)->t;
     out.best = (*best)->chosen;
     std::sort(pbar.begin(), pbar.end());
+    std::sort(values.begin(), values.end());
     const std::size_t n = pbar.size();
     out.median_pbar_min = n % 2 == 1 ? pbar[n / 2] : 0.5 * (pbar[n / 2 - 1] + pbar[n / 2]);
+    out.median_objective = n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
   }
   return out;
 }
@@ -107,7 +113,7 @@ std::optional<int> PlacementSearch::covering_markers() {
   const std::vector<int> free = free_sites();
   while (true) {
     const CoverageCounts counts(coverage_, chosen);
-    if (counts.key().covered == coverage_.directions()) return static_cast<int>(chosen.size());
+    if (counts.key().covered >= required_) return static_cast<int>(chosen.size());
     int pick = -1;
     CoverageKey top = counts.key();
     for (int c : free) {

@@ -32,6 +32,18 @@ SiteCoverage::SiteCoverage(const visibility::VisibilityProblem& sites, int latti
   }
 }
 
+SiteCoverage::SiteCoverage(int sites, int directions, int min_visible,
+                           const std::function<bool(int, int)>& sees)
+    : directions_(directions), min_visible_(min_visible), words_per_site_((directions + 63) / 64) {
+  words_.assign(static_cast<std::size_t>(sites) * words_per_site_, 0);
+  for (int s = 0; s < sites; ++s) {
+    std::uint64_t* w = words_.data() + static_cast<std::size_t>(s) * words_per_site_;
+    for (int d = 0; d < directions_; ++d) {
+      if (sees(s, d)) w[d >> 6] |= std::uint64_t{1} << (d & 63);
+    }
+  }
+}
+
 std::vector<std::uint16_t> SiteCoverage::counts(const std::vector<int>& chosen) const {
   std::vector<std::uint16_t> out(static_cast<std::size_t>(directions_), 0);
   for (int s : chosen) {

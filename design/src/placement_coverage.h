@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "vantage/visibility/visibility.h"
@@ -29,6 +30,10 @@ struct CoverageKey {
 class SiteCoverage {
  public:
   SiteCoverage(const visibility::VisibilityProblem& sites, int lattice_samples);
+  /// The bits of `sites` sites over `directions` directions from sees(site, direction); a
+  /// direction is covered when it sees at least `min_visible` chosen sites.
+  SiteCoverage(int sites, int directions, int min_visible,
+               const std::function<bool(int, int)>& sees);
 
   int directions() const { return directions_; }
   int min_visible() const { return min_visible_; }

@@ -9,8 +9,9 @@
 
 namespace vantage::design::internal {
 
-PlacementEvaluator::PlacementEvaluator(const PlacementProblem& problem, const PlaceOptions& options)
-    : problem_(problem), options_(options) {}
+PlacementEvaluator::PlacementEvaluator(const PlacementProblem& problem, const PlaceOptions& options,
+                                       const CameraSiteObjective* camera)
+    : problem_(problem), options_(options), camera_(camera) {}
 
 visibility::VisibilityProblem PlacementEvaluator::subproblem(const std::vector<int>& chosen) const {
   const visibility::VisibilityProblem& all = problem_.sites;
@@ -60,6 +61,7 @@ bool PlacementEvaluator::feasible_with(const std::vector<int>& chosen, int c) co
 FamilyValue PlacementEvaluator::family_t(const std::vector<std::vector<int>>& family, double level,
                                          const std::vector<Eigen::Vector3d>& witnesses,
                                          double tolerance) const {
+  if (camera_ != nullptr) return camera_family(family, level);
   FamilyValue out;
   std::vector<visibility::VisibilityProblem> problems;
   problems.reserve(family.size());
@@ -96,6 +98,29 @@ FamilyValue PlacementEvaluator::family_t(const std::vector<std::vector<int>>& fa
       out.t_upper = t;
       out.worst_member = static_cast<int>(m);
       out.status = r.status;
+    }
+  }
+  out.below = true;
+  return out;
+}
+
+FamilyValue PlacementEvaluator::camera_family(const std::vector<std::vector<int>>& family,
+                                              double level) const {
+  FamilyValue out;
+  out.t_upper = -1.0;
+  for (std::size_t m = 0; m < family.size(); ++m) {
+    int hint = camera_hint_.load(std::memory_order_relaxed);
+    const double value = camera_->value(family[m], level, &hint);
+    camera_hint_.store(hint, std::memory_order_relaxed);
+    ++out.searches;
+    if (!(value < level)) {
+      out.t_upper = value;
+      return out;
+    }
+    if (value > out.t_upper) {
+      out.t_upper = value;
+      out.worst_member = static_cast<int>(m);
+      out.status = visibility::VisibilityWorstViewpoint::Status::kCertified;
     }
   }
   out.below = true;

@@ -4,7 +4,10 @@
 // left after the loss of one marker, needed only when it beats a level (docs/math.md §21).
 
 #include <Eigen/Core>
+#include <atomic>
 #include <vector>
+
+#include "camera_objective.h"
 
 #include "vantage/design/placement.h"
 
@@ -24,7 +27,9 @@ struct FamilyValue {
 
 class PlacementEvaluator {
  public:
-  PlacementEvaluator(const PlacementProblem& problem, const PlaceOptions& options);
+  /// `camera` (or null for the affine objective) outlives the evaluator.
+  PlacementEvaluator(const PlacementProblem& problem, const PlaceOptions& options,
+                     const CameraSiteObjective* camera);
 
   /// The visibility problem of the chosen sites (their grid markers remapped).
   visibility::VisibilityProblem subproblem(const std::vector<int>& chosen) const;
@@ -34,15 +39,21 @@ class PlacementEvaluator {
   /// The constraints hold for `chosen` plus site c, given that they hold for `chosen`.
   bool feasible_with(const std::vector<int>& chosen, int c) const;
 
-  /// The largest t_upper over `family` (subsets of sites), when below `level`: attained values
-  /// at the witnesses first, then a search per member that stops once it attains the level.
-  /// `tolerance` > 0 replaces the search's certificate tolerance (the random baseline's).
+  /// The largest objective value over `family` (subsets of sites), when below `level`. Affine:
+  /// t_upper, attained values at the witnesses first, then a search per member that stops once
+  /// it attains the level; `tolerance` > 0 replaces the search's certificate tolerance (the
+  /// random baseline's). Camera: the statistic of the CRB (docs/math.md §21, "Objectives").
   FamilyValue family_t(const std::vector<std::vector<int>>& family, double level,
                        const std::vector<Eigen::Vector3d>& witnesses, double tolerance = 0.0) const;
 
  private:
+  FamilyValue camera_family(const std::vector<std::vector<int>>& family, double level) const;
+
   const PlacementProblem& problem_;
   const PlaceOptions& options_;
+  const CameraSiteObjective* camera_;
+  // The camera's worst direction last found: tried first (it only speeds the rejections up).
+  mutable std::atomic<int> camera_hint_{0};
 };
 
 /// `chosen` without its entry m (by position).

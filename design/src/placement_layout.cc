@@ -60,7 +60,9 @@ Layout placed_layout(const Layout& sites, const PlacementResult& result,
   visibility.body = from.body;
   LayoutPlacement placement;
   placement.sites = record.sites;
-  placement.objective = record.robust_dropout ? kRobustObjective : kObjective;
+  placement.objective = !record.objective.empty() ? record.objective
+                        : record.robust_dropout   ? kRobustObjective
+                                                  : kObjective;
   for (Eigen::Index j = 0; j < k; ++j) {
     const int s = result.chosen[static_cast<std::size_t>(j)];
     layout.entries.col(j) = sites.entries.col(s);

@@ -4,6 +4,8 @@
 #include "placement_search.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "vantage/analysis/parallel.h"
 
@@ -23,15 +25,48 @@ std::vector<int> sorted(std::vector<int> v) {
   return v;
 }
 
+std::unique_ptr<CameraSiteObjective> camera_objective(const PlaceOptions& options) {
+  if (!options.camera) return nullptr;
+  return std::make_unique<CameraSiteObjective>(*options.camera, options.threads);
+}
+
+SiteCoverage site_coverage(const PlacementProblem& problem, const PlaceOptions& options,
+                           const CameraSiteObjective* camera) {
+  if (camera == nullptr) return SiteCoverage(problem.sites, options.coverage_samples);
+  return SiteCoverage(static_cast<int>(problem.sites.points.cols()), camera->directions(),
+                      camera->min_seen(), [camera](int s, int d) { return camera->sees(s, d); });
+}
+
+// Directions a complete placement covers: ceil(min_coverage * D), or D - 1 by default (every
+// lattice direction but one), at least 1.
+int required_directions(const PlaceOptions& options, int directions) {
+  if (directions == 0) return 0;
+  if (!options.min_coverage) return std::max(1, directions - 1);
+  const double wanted = std::ceil(*options.min_coverage * directions - 1e-9);
+  return std::clamp(static_cast<int>(wanted), 1, directions);
+}
+
 }  // namespace
 
 PlacementSearch::PlacementSearch(const PlacementProblem& problem, const PlaceOptions& options)
     : problem_(problem),
       options_(options),
-      coverage_(problem.sites, options.coverage_samples),
-      evaluator_(problem, options),
+      camera_(camera_objective(options)),
+      coverage_(site_coverage(problem, options, camera_.get())),
+      required_(required_directions(options, coverage_.directions())),
+      evaluator_(problem, options, camera_.get()),
       kept_(static_cast<std::size_t>(problem.sites.points.cols()), 0) {
   for (int s : problem.keep) kept_[static_cast<std::size_t>(s)] = 1;
+}
+
+CoverageKey PlacementSearch::ranked(CoverageKey key, bool potential) const {
+  if (key.covered >= required_) return {required_, 0};
+  if (!potential) key.potential = 0;
+  return key;
+}
+
+double PlacementSearch::no_level() const {
+  return camera_ ? std::numeric_limits<double>::infinity() : 2.0;
 }
 
 void PlacementSearch::progress(const std::string& stage) const {
@@ -66,7 +101,7 @@ CoverageKey PlacementSearch::robust_cover(const std::vector<int>& chosen) const 
     for (int d = 0; d < coverage_.directions(); ++d) {
       if (coverage_.sees(m, d)) --without[static_cast<std::size_t>(d)];
     }
-    const CoverageKey key = coverage_.key(without);
+    const CoverageKey key = ranked(coverage_.key(without), false);
     if (first || key < least) least = key;
     first = false;
   }
@@ -76,9 +111,10 @@ CoverageKey PlacementSearch::robust_cover(const std::vector<int>& chosen) const 
 Scored PlacementSearch::score(std::vector<int> chosen) {
   Scored out;
   out.chosen = sorted(std::move(chosen));
-  out.cover = coverage_.key(out.chosen);
+  out.covered = coverage_.key(out.chosen).covered;
+  out.cover = ranked(coverage_.key(out.chosen), false);
   out.robust_cover = robust_cover(out.chosen);
-  const FamilyValue v = evaluator_.family_t(family(out.chosen), 2.0, {});
+  const FamilyValue v = evaluator_.family_t(family(out.chosen), no_level(), {});
   evaluations_ += v.searches;
   out.t = v.t_upper;
   out.status = v.status;
@@ -170,7 +206,9 @@ std::optional<Scored> PlacementSearch::exhaustive(long* subsets) {
   std::vector<CoverageKey> covers(all.size());
   std::vector<CoverageKey> robust(all.size());
   parallel_blocks(static_cast<long>(all.size()), options_.threads, [&](long b, long e) {
-    for (long s = b; s < e; ++s) covers[static_cast<std::size_t>(s)] = coverage_.key(all[s]);
+    for (long s = b; s < e; ++s) {
+      covers[static_cast<std::size_t>(s)] = ranked(coverage_.key(all[s]), false);
+    }
   });
   const CoverageKey top = *std::max_element(covers.begin(), covers.end());
   std::vector<std::vector<int>> ties;
@@ -190,8 +228,9 @@ std::optional<Scored> PlacementSearch::exhaustive(long* subsets) {
     ties = std::move(kept);
   }
   Scored best;
-  const int winner = least_t(ties, 2.0, &best);
+  const int winner = least_t(ties, no_level(), &best);
   best.chosen = ties[static_cast<std::size_t>(std::max(winner, 0))];
+  best.covered = coverage_.key(best.chosen).covered;
   best.cover = top;
   best.robust_cover = robust_cover(best.chosen);
   return best;
@@ -209,8 +248,11 @@ std::optional<Scored> PlacementSearch::greedy(std::vector<PlacementStep>* steps)
         coverage_.directions() == 0
             ? 0.0
             : static_cast<double>(coverage_.key(chosen).covered) / coverage_.directions();
-    step.value.t_upper = s.t;
-    step.value.pbar_min = std::sqrt(std::max(0.0, 1.0 - s.t * s.t));
+    step.value.objective = s.t;
+    if (!camera_) {
+      step.value.t_upper = s.t;
+      step.value.pbar_min = std::sqrt(std::max(0.0, 1.0 - s.t * s.t));
+    }
     step.value.status = s.status;
     steps->push_back(step);
   };
@@ -230,7 +272,7 @@ std::optional<Scored> PlacementSearch::greedy(std::vector<PlacementStep>* steps)
     parallel_blocks(static_cast<long>(candidates.size()), options_.threads, [&](long b, long e) {
       for (long i = b; i < e; ++i) {
         keys[static_cast<std::size_t>(i)] =
-            counts.with_added(candidates[static_cast<std::size_t>(i)]);
+            ranked(counts.with_added(candidates[static_cast<std::size_t>(i)]), true);
       }
     });
     const CoverageKey top = *std::max_element(keys.begin(), keys.end());
@@ -254,7 +296,7 @@ std::optional<Scored> PlacementSearch::greedy(std::vector<PlacementStep>* steps)
     int pick = 0;
     if (ties.size() > 1 && static_cast<int>(chosen.size()) + 1 >= k) {
       Scored best;
-      pick = std::max(0, least_t(ties, 2.0, &best));
+      pick = std::max(0, least_t(ties, no_level(), &best));
     }
     std::vector<int> next = ties[static_cast<std::size_t>(pick)];
     int added = -1;
@@ -292,7 +334,7 @@ Scored PlacementSearch::swaps(Scored current, int* swaps) {
       parallel_blocks(static_cast<long>(candidates.size()), options_.threads, [&](long b, long e) {
         for (long i = b; i < e; ++i) {
           keys[static_cast<std::size_t>(i)] =
-              counts.with_swapped(candidates[static_cast<std::size_t>(i)]);
+              ranked(counts.with_swapped(candidates[static_cast<std::size_t>(i)]), false);
         }
       });
       const CoverageKey top = *std::max_element(keys.begin(), keys.end());
@@ -321,9 +363,10 @@ Scored PlacementSearch::swaps(Scored current, int* swaps) {
       const bool cover_gain =
           current.cover < top || (options_.robust_dropout && current.robust_cover < robust_top);
       Scored best;
-      const int pick = least_t(ties, cover_gain ? 2.0 : current.t - min_gain(), &best);
+      const int pick = least_t(ties, cover_gain ? no_level() : current.t - min_gain(), &best);
       if (pick < 0) continue;
       best.chosen = ties[static_cast<std::size_t>(pick)];
+      best.covered = coverage_.key(best.chosen).covered;
       best.cover = top;
       best.robust_cover = robust_top;
       if (!better(best, current)) continue;

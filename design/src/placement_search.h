@@ -3,8 +3,11 @@
 // Private to vantage::design: the searches of marker placement (docs/math.md §21) over one
 // objective: exhaustive, greedy, swaps, the random baseline, and greedy by coverage alone.
 
+#include <memory>
 #include <optional>
 #include <vector>
+
+#include "camera_objective.h"
 
 #include "placement_coverage.h"
 #include "placement_evaluator.h"
@@ -13,11 +16,12 @@
 namespace vantage::design::internal {
 
 /// A choice scored by the objective: coverage first (with robust_dropout, then the least
-/// coverage after one loss), then t (the largest t_upper over the family: the choice itself, or
-/// each choice left after one loss), smaller better.
+/// coverage after one loss), ranked by PlacementSearch::ranked(), then t (the largest objective
+/// value over the family: the choice itself, or each choice left after one loss), smaller better.
 struct Scored {
-  std::vector<int> chosen;  ///< increasing
-  CoverageKey cover;
+  std::vector<int> chosen;   ///< increasing
+  int covered = 0;           ///< lattice directions covered, as counted
+  CoverageKey cover;         ///< ranked
   CoverageKey robust_cover;  ///< robust_dropout only
   double t = 1.0;
   int worst_lost = -1;  ///< robust_dropout: the site whose loss gives t
@@ -30,6 +34,10 @@ class PlacementSearch {
   PlacementSearch(const PlacementProblem& problem, const PlaceOptions& options);
 
   const SiteCoverage& coverage() const { return coverage_; }
+  /// Lattice directions a complete choice covers at least.
+  int required() const { return required_; }
+  /// The camera objective's model, or null (affine).
+  const CameraSiteObjective* camera() const { return camera_.get(); }
   const PlacementEvaluator& evaluator() const { return evaluator_; }
   long evaluations() const { return evaluations_; }
 
@@ -56,6 +64,12 @@ class PlacementSearch {
 
  private:
   std::vector<std::vector<int>> family(const std::vector<int>& chosen) const;
+  // The key as placements are ranked: every key covering required() directions is the same
+  // (coverage no longer ranks), below it the count, then (`potential`: the greedy's guide only)
+  // the potential.
+  CoverageKey ranked(CoverageKey key, bool potential) const;
+  // A level above every objective value: 2 for t, +inf for degrees.
+  double no_level() const;
   CoverageKey robust_cover(const std::vector<int>& chosen) const;
   // Among `subsets` (tying on coverage), the first of least t below `level`, by chunks of fixed
   // size so that the answer does not depend on the threads; -1 when none is below.
@@ -64,12 +78,15 @@ class PlacementSearch {
   std::vector<int> free_sites() const;
   // A swap or a new incumbent must lower t by more than the certificate tolerance: two t_upper
   // closer than that are not told apart, and the earlier choice stays.
-  double min_gain() const { return options_.search.certificate_tolerance; }
+  // The camera's values are evaluated exactly: any decrease counts.
+  double min_gain() const { return camera_ ? 0.0 : options_.search.certificate_tolerance; }
   void progress(const std::string& stage) const;
 
   const PlacementProblem& problem_;
   const PlaceOptions& options_;
+  std::unique_ptr<CameraSiteObjective> camera_;
   SiteCoverage coverage_;
+  int required_ = 0;
   PlacementEvaluator evaluator_;
   std::vector<char> kept_;
   std::vector<Eigen::Vector3d> witnesses_;

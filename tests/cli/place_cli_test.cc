@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "support/cli_runner.h"
 
@@ -104,6 +105,45 @@ TEST(PlaceCli, SixteenSitesFourMarkersIsExhaustive) {
   EXPECT_EQ(json["chosen"].size(), 4u);
 }
 
+// Issue 35: the camera objective's value is what `vantage crb` reports on the written file with
+// the camera the report names.
+TEST(PlaceCli, CameraObjectiveIsWhatCrbReportsOnTheWrittenFile) {
+  ScratchDir scratch;
+  scratch.write("sites.json", cube_sites());
+  const nlohmann::json json = testing::run_json(
+      "place --sites sites.json --markers 5 --out cam.json --objective camera --distance 6 "
+      "--focal 900 --noise-px 0.3 --crb-samples 800",
+      scratch);
+  ASSERT_EQ(json["status"], "complete");
+  const nlohmann::json& objective = json["objective"];
+  EXPECT_EQ(objective["name"], "camera");
+  const nlohmann::json& aim = objective["camera"]["aim"];
+  std::ostringstream aim_text;
+  aim_text.precision(17);
+  aim_text << aim[0].get<double>() << "," << aim[1].get<double>() << "," << aim[2].get<double>();
+  const nlohmann::json crb = testing::run_json(
+      "crb cam.json --distance 6 --focal 900 --noise-px 0.3 --samples 800 --aim " + aim_text.str(),
+      scratch);
+  EXPECT_EQ(crb["worst"]["rot_rms_deg"], objective["value_deg"]);
+  EXPECT_EQ(crb["worst"]["rot_rms_deg"], objective["crb"]["worst"]["rot_rms_deg"]);
+  EXPECT_LE(objective["search_value_deg"].get<double>(), objective["value_deg"].get<double>());
+}
+
+TEST(PlaceCli, AllowPartialWritesTheBestIncompleteAnswer) {
+  ScratchDir scratch;
+  scratch.write("sites.json", cube_sites());
+  // Three markers cannot see the whole sphere from 16 cube sites with 150 degree cones.
+  const std::string args = "place --sites sites.json --markers 3 --out part.json";
+  const CliRun refused = run_vantage(args, scratch);
+  EXPECT_EQ(refused.status, 1);
+  EXPECT_THAT(refused.err, HasSubstr("nothing written (--allow-partial"));
+  EXPECT_FALSE(std::filesystem::exists(scratch.path("part.json")));
+  const CliRun partial = run_vantage(args + " --allow-partial", scratch);
+  EXPECT_EQ(partial.status, 0);
+  EXPECT_THAT(partial.err, HasSubstr("warning"));
+  EXPECT_TRUE(std::filesystem::exists(scratch.path("part.json")));
+}
+
 TEST(PlaceCli, KeptMarkersAreChosenAndThreadsDoNotChangeTheAnswer) {
   ScratchDir scratch;
   scratch.write("sites.json", cube_sites());
@@ -149,6 +189,39 @@ TEST(PlaceCli, BadInputGetsOneLineAndWritesNothing) {
       {"one candidate", nullptr, one_candidate.c_str(), "--candidates: must be in [3, "},
       {"--out a CSV file (named once)", nullptr, "--sites sites.json --markers 4 --out o.csv",
        "error: --out: o.csv: write the placed layout as .json"},
+      // Issue 35: the objective's settings, each named by its option.
+      {"an unknown objective", nullptr, "--sites sites.json --markers 4 --out o.json --objective x",
+       "--objective"},
+      {"camera without --focal", nullptr,
+       "--sites sites.json --markers 4 --out o.json --objective camera --distance 5 --noise-px 1",
+       "--focal"},
+      {"a negative noise", nullptr,
+       "--sites sites.json --markers 4 --out o.json --objective camera --distance 5 --focal 800 "
+       "--noise-px -1",
+       "--noise-px"},
+      {"an infinite distance", nullptr,
+       "--sites sites.json --markers 4 --out o.json --objective camera --distance inf --focal 800 "
+       "--noise-px 1",
+       "--distance"},
+      {"the camera inside the sites", nullptr,
+       "--sites sites.json --markers 4 --out o.json --objective camera --distance 0.1 --focal "
+       "800 --noise-px 1",
+       "--distance"},
+      {"a camera option with affine", nullptr,
+       "--sites sites.json --markers 4 --out o.json --focal 800",
+       "--focal: goes with --objective camera"},
+      {"a bad statistic", nullptr,
+       "--sites sites.json --markers 4 --out o.json --objective camera --distance 5 --focal 800 "
+       "--noise-px 1 --statistic mean",
+       "--statistic"},
+      {"a bad aim", nullptr,
+       "--sites sites.json --markers 4 --out o.json --objective camera --distance 5 --focal 800 "
+       "--noise-px 1 --aim 0,nan,0",
+       "--aim"},
+      {"--min-coverage 0", nullptr, "--sites sites.json --markers 4 --out o.json --min-coverage 0",
+       "--min-coverage"},
+      {"--min-coverage above 1", nullptr,
+       "--sites sites.json --markers 4 --out o.json --min-coverage 1.5", "--min-coverage"},
   };
   for (const BadCall& call : calls) {
     SCOPED_TRACE(call.name);

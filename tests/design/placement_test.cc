@@ -189,6 +189,54 @@ TEST(PlaceMarkers, GreedyWithSwapsOnTheSmallInstances) {
   }
 }
 
+// Five sites facing +z in the plane z = 0 and two facing -z below: every 5-subset that holds
+// sites 0, 1, 2 covers the same +z cap, and [0, 1, 2, 5, 6] also brings the -z directions two
+// markers closer to being seen. Coverage ties; only t may rank them (issue 35: place chose
+// [0, 1, 2, 5, 6] by that progress, with a worse t).
+TEST(PlaceMarkers, RanksEqualCoverageByTheObjectiveAlone) {
+  visibility::VisibilityProblem sites;
+  sites.points.resize(3, 7);
+  sites.points << 0.0, 1.0, 0.2, 0.9, 0.4, 0.3, 0.7,  //
+      0.0, 0.1, 1.0, 0.8, 0.5, 0.2, 0.6,              //
+      0.0, 0.0, 0.0, 0.0, 0.0, -1.0, -1.0;
+  sites.normals.resize(3, 7);
+  for (int i = 0; i < 7; ++i) sites.normals.col(i) = Eigen::Vector3d(0, 0, i < 5 ? 1.0 : -1.0);
+  sites.cos_cone = Eigen::VectorXd::Constant(7, std::cos(60.0 * kPi / 180.0));
+  const Truth truth = enumerate(sites, 5);
+  PlacementProblem problem;
+  problem.sites = sites;
+  problem.markers = 5;
+  PlaceOptions options = small_options(kTruthTolerance);
+  options.min_coverage = 1.0;
+  const PlacementResult result = place_markers(problem, options);
+  EXPECT_EQ(result.search, "exhaustive");
+  EXPECT_EQ(result.chosen, (std::vector<int>{0, 1, 2, 3, 4}));
+  EXPECT_EQ(result.chosen, truth.chosen);
+  EXPECT_NEAR(result.value.coverage, truth.coverage, kSameLattice);
+  EXPECT_NEAR(result.value.t_upper, truth.t, kTie);
+}
+
+TEST(PlaceMarkers, MinCoverageMakesAPlacementComplete) {
+  // The cone instance: the best 4 of 10 covers part of the workspace. A min_coverage at that
+  // fraction makes it complete; above it, incomplete.
+  const Solved& cone = small_instances()[1];
+  PlacementProblem problem;
+  problem.sites = cone.instance.sites;
+  problem.markers = 4;
+  PlaceOptions options = small_options(kTruthTolerance);
+  options.min_coverage = 1.0;
+  const PlacementResult strict = place_markers(problem, options);
+  ASSERT_LT(strict.value.coverage, 1.0);
+  EXPECT_EQ(strict.status, PlacementResult::Status::kIncomplete);
+  options.min_coverage = strict.value.coverage;
+  const PlacementResult loose = place_markers(problem, options);
+  EXPECT_EQ(loose.status, PlacementResult::Status::kComplete);
+  EXPECT_GE(loose.value.coverage, strict.value.coverage - kSameLattice);
+  EXPECT_LE(loose.value.t_upper, strict.value.t_upper + kTie);
+  options.min_coverage = 0.0;
+  EXPECT_THAT(message_of([&] { place_markers(problem, options); }), HasSubstr("min_coverage"));
+}
+
 PlacementProblem larger_problem() {
   PlacementProblem problem;
   problem.sites = sphere_sites(60, 100.0, kSeed + 2);

@@ -3,8 +3,9 @@
 /// The Cramér–Rao bound of the 6-DoF pose from one pinhole image, over every viewpoint of a
 /// layout (docs/math.md §22).
 ///
-/// Camera. Centre c = centroid + D a, a the unit viewing direction (object frame, from the body
-/// toward the camera, as in §20), optical axis -a, looking at the markers' centroid. Frames:
+/// Camera. Centre c = o + D a, a the unit viewing direction (object frame, from the body toward
+/// the camera, as in §20), optical axis -a, looking at the aim point o (the markers' centroid
+/// unless an aim is given). Frames:
 /// x_camera = R_camera_object x_object + p_camera_object, the camera looks along +z, and a
 /// camera-frame point x projects to q = pp + f (x / z, y / z) pixels, each coordinate with
 /// independent Gaussian noise of standard deviation S pixels.
@@ -30,6 +31,7 @@
 #include <vector>
 
 #include "vantage/analysis/layout.h"
+#include "vantage/visibility/camera_visibility.h"
 
 namespace vantage::camera {
 
@@ -40,6 +42,8 @@ struct PoseCrbOptions {
   /// Principal point, pixels, finite (the bound does not depend on it; it is reported).
   Eigen::Vector2d principal_point = Eigen::Vector2d::Zero();
   double noise_px = 0.0;  ///< S, pixels per coordinate, > 0
+  /// o, the point the camera looks at (object frame, finite); none: the markers' centroid.
+  std::optional<Eigen::Vector3d> aim;
   /// Fibonacci directions of the map over the whole sphere (those in the workspace count),
   /// in [100, 10'000'000].
   int samples = 10000;
@@ -74,7 +78,7 @@ class PoseCrbModel {
  public:
   /// Throws InvalidArgument on a bad layout (Layout::validate()), a direction-mode layout
   /// ("vectors": the CRB needs marker points), fewer than 3 points, or bad options
-  /// ("distance" when D does not exceed the layout's radius, ...).
+  /// ("distance" when D does not exceed the layout's radius about the aim point, ...).
   PoseCrbModel(const Layout& layout, const PoseCrbOptions& options);
   ~PoseCrbModel();
   PoseCrbModel(PoseCrbModel&&) noexcept;
@@ -97,16 +101,40 @@ class PoseCrbModel {
   Eigen::MatrixXd jacobian(const Eigen::Vector3d& a, double distance) const;
 
   const Eigen::Matrix3Xd& points() const;
+  /// o: the aim point (options().aim, or the markers' centroid).
   const Eigen::Vector3d& centroid() const;
-  double radius() const;  ///< max |p_i - centroid|
+  double radius() const;  ///< max |p_i - o|
   bool in_workspace(const Eigen::Vector3d& a) const;
   const PoseCrbOptions& options() const;
   bool with_body() const;
+  /// Which markers a camera centre sees (§22, "Visibility").
+  const visibility::CameraVisibility& visibility() const;
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+/// The camera of direction a (unit) at distance D looking at o (§22, "Camera"): R's third row is
+/// -a, its first row the unit part of the coordinate axis least aligned with a orthogonal to a,
+/// and p = -R (o + D a).
+void camera_pose_toward(const Eigen::Vector3d& aim, const Eigen::Vector3d& a, double distance,
+                        Eigen::Matrix3d* R_camera_object, Eigen::Vector3d* p_camera_object);
+
+/// J^T J of one marker at object point x seen by the camera (R, p) of focal length f: its Fisher
+/// information at a noise of 1 pixel (§22, "Fisher information").
+Eigen::Matrix<double, 6, 6> marker_information(const Eigen::Vector3d& x, const Eigen::Matrix3d& R,
+                                               const Eigen::Vector3d& p, double focal_length);
+
+/// Completes `out` from F1, the summed marker_information() of its visible markers: the condition
+/// test (§22, "Visibility"), C = S^2 F1^-1, rot_rms_deg and trans_rms. The caller has checked the
+/// workspace and the marker count; `out` is left untrackable when F is singular.
+void complete_pose_crb(const Eigen::Matrix<double, 6, 6>& F1, double noise_px, double distance,
+                       PoseCrbAt* out);
+
+/// The q-quantile (0 <= q <= 1) of increasing values, nearest rank: sorted[ceil(q n) - 1] (the
+/// first for q n < 1). `sorted` is not empty.
+double nearest_rank(const std::vector<double>& sorted, double q);
 
 /// Percentiles of rot_rms_deg over the trackable area (equal-area samples).
 struct PoseCrbPercentiles {

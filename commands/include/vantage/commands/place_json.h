@@ -9,11 +9,13 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "vantage/analysis/layout.h"
+#include "vantage/camera/pose_crb.h"
 #include "vantage/design/placement.h"
 #include "vantage/design/placement_layout.h"
 #include "vantage/report/layout_report.h"
@@ -40,6 +42,20 @@ struct Request {
   long exhaustive_limit = 5000;
   double certificate_tolerance = visibility::VisibilitySearchOptions{}.certificate_tolerance;
   bool overwrite = false;
+  /// "affine" (the paper's bound under visibility) or "camera" (the pinhole CRB, §22).
+  std::string objective = "affine";
+  /// The camera objective's settings (--distance, --focal, --noise-px, --statistic,
+  /// --crb-samples, --aim: "X,Y,Z" or empty for the centre of the sites' bounding box).
+  double distance = 0.0;
+  double focal = 0.0;
+  double noise_px = 0.0;
+  std::string statistic = "worst";
+  int crb_samples = 2000;
+  std::string aim;
+  /// --min-coverage in (0, 1], or below 0 for every lattice direction but one.
+  double min_coverage = -1.0;
+  /// --allow-partial: an incomplete placement is written (with a warning), not refused.
+  bool allow_partial = false;
 
   /// The body mesh or the sites file, as given.
   const std::string& source() const { return sites.empty() ? body : sites; }
@@ -68,16 +84,27 @@ Sites candidate_sites(const Request& request,
 struct PlacedLayout {
   Layout layout;
   report::LayoutReport report;
+  /// The camera objective: `vantage crb`'s map of the placed layout with the same camera.
+  std::optional<camera::PoseCrbMap> crb;
+  /// The camera the objective used (the aim resolved), when the objective is the camera.
+  std::optional<camera::PoseCrbOptions> camera;
   std::vector<std::string> site_names;  ///< the name of every site and kept marker
 };
 
-/// A finished placement: complete when every workspace direction is trackable and the placed
-/// layout's analysis is certified (only then is it written).
+/// A finished placement: complete when it covers min_coverage of the workspace and the placed
+/// layout's analysis is certified (affine) or trackable (camera); only then is it written, or
+/// also when incomplete with allow_partial.
 struct Outcome {
   design::PlacementResult result;
   PlacedLayout placed;
   bool complete = false;
+  /// The objective's value of the placed layout as `vantage crb` or `vantage analyze` reports it
+  /// (camera: the statistic of the crb map, degrees; affine: the worst error, degrees).
+  double objective_deg = 0.0;
 };
+
+/// The camera objective's options of a request on `sites` (the aim resolved), or none.
+std::optional<design::CameraObjective> camera_objective(const Request& request, const Layout& sites);
 
 /// Runs design::place_markers() on the sites and analyses the placed layout; `progress` (or
 /// empty) gets the stages.
@@ -87,7 +114,8 @@ Outcome place(const Request& request, const Sites& sites,
 /// The layout of result.chosen (sites first, kept markers last, in index order) with the
 /// visibility block, workspace and placement record, and its analysis.
 PlacedLayout placed_layout(const Request& request, const Layout& sites, int n_candidates,
-                           const design::PlacementResult& result);
+                           const design::PlacementResult& result,
+                           const std::optional<camera::PoseCrbOptions>& camera = std::nullopt);
 
 /// Why the placement is not written.
 std::string failure_message(const design::PlacementResult& result, const PlacedLayout& placed);

@@ -17,7 +17,9 @@
 #include <string>
 #include <vector>
 
+#include "vantage/analysis/layout.h"
 #include "vantage/analysis/mesh.h"
+#include "vantage/camera/pose_crb.h"
 #include "vantage/tracker/identification.h"
 #include "vantage/visibility/visibility.h"
 
@@ -42,6 +44,33 @@ struct PlacementProblem {
   void validate() const;
 };
 
+/// Which value of rot_rms_deg over the workspace the `camera` objective minimises.
+enum class CrbStatistic {
+  kWorst,   ///< the largest over the trackable lattice directions
+  kP95,     ///< the 95th percentile (nearest rank) over them
+  kMedian,  ///< the median (nearest rank)
+};
+
+/// "worst", "p95" or "median".
+const char* to_string(CrbStatistic statistic);
+/// The statistic of its name, or none.
+std::optional<CrbStatistic> parse_crb_statistic(const std::string& name);
+
+/// The `camera` objective (docs/math.md §21, "Objectives"): the pinhole CRB of §22 instead of the
+/// paper's scale-free bound. A lattice direction a is trackable by a choice when the camera at
+/// crb.aim + D a sees at least max(3, min_visible) of its markers and their Fisher information
+/// is not singular (§22); the objective is the statistic of rot_rms_deg over the trackable
+/// directions, and coverage counts the directions that see enough markers.
+struct CameraObjective {
+  /// The sites as a point layout on the body (the points of PlacementProblem::sites, with their
+  /// normals, cones, min_visible, workspace and mesh): each site is seen by its own line of sight.
+  Layout sites;
+  /// The camera: distance, focal length, noise, samples (the lattice) and the aim point, which
+  /// must be given (a choice's centroid would move the cameras with the choice).
+  camera::PoseCrbOptions crb;
+  CrbStatistic statistic = CrbStatistic::kWorst;
+};
+
 /// Options of place_markers().
 struct PlaceOptions {
   /// The certified analysis of each subset (docs/math.md §20); its certificate_tolerance is the
@@ -49,6 +78,11 @@ struct PlaceOptions {
   visibility::VisibilitySearchOptions search;
   int coverage_samples = 20000;  ///< whole-sphere Fibonacci lattice of the coverage, >= 100
   bool robust_dropout = false;   ///< objective 3 of docs/math.md §21
+  /// The `camera` objective; none: the paper's bound under visibility (`affine`).
+  std::optional<CameraObjective> camera;
+  /// Least coverage of a complete placement, in (0, 1]; none: every lattice direction of the
+  /// workspace but one. Above it, coverage no longer ranks placements: the objective does.
+  std::optional<double> min_coverage;
   /// Search every feasible subset when there are at most this many K-subsets of the free
   /// sites, >= 0 (0: never).
   long exhaustive_limit = 5000;
@@ -64,6 +98,9 @@ struct PlaceOptions {
 /// What one choice of sites promises (docs/math.md §21's objective).
 struct PlacementValue {
   double coverage = 0.0;  ///< trackable fraction of the workspace's lattice directions
+  /// The objective, smaller is better: t_upper (affine) or the statistic of rot_rms_deg in
+  /// degrees (camera; +inf when nothing is trackable).
+  double objective = 1.0;
   /// The certified worst case t_upper (1 when nothing is trackable) and p-bar_min =
   /// sqrt(1 - t_upper^2).
   double t_upper = 1.0;
@@ -82,25 +119,30 @@ struct PlacementStep {
 /// The random feasible subsets of the baseline.
 struct RandomBaseline {
   int trials = 0;    ///< feasible subsets drawn (fewer than asked when few are feasible)
-  int complete = 0;  ///< of them, how many cover every lattice direction
+  int complete = 0;  ///< of them, how many cover min_coverage of the lattice
   double best_coverage = 0.0;
   double best_pbar_min = 0.0;    ///< of the best trial by the objective
   double median_pbar_min = 0.0;  ///< median over the trials (0 for an untrackable trial)
-  std::vector<int> best;         ///< the best trial's sites, increasing
+  /// The objective of the best trial, and its median over the trials (an incomplete trial counts
+  /// as 1 for t, +inf for degrees). For the affine objective, t_upper.
+  double best_objective = 1.0;
+  double median_objective = 1.0;
+  std::vector<int> best;  ///< the best trial's sites, increasing
 };
 
 /// The worst single loss (with robust_dropout).
 struct RobustValue {
   double coverage = 0.0;       ///< least coverage over the loss of one marker
   double pbar_min = 0.0;       ///< least certified p-bar_min over the loss of one marker
+  double objective = 1.0;      ///< largest objective value over the loss of one marker
   int worst_lost_marker = -1;  ///< the site whose loss gives it
 };
 
 /// The answer of place_markers().
 struct PlacementResult {
   enum class Status {
-    kComplete,    ///< every lattice direction of the workspace is trackable by the answer
-    kIncomplete,  ///< no K-subset found covers the workspace; `chosen` is the best coverage
+    kComplete,    ///< the answer covers at least min_coverage of the workspace's lattice
+    kIncomplete,  ///< no K-subset found covers that much; `chosen` is the best coverage
   };
   Status status = Status::kIncomplete;
   std::vector<int> chosen;  ///< site indices, increasing (kept sites included)

@@ -27,6 +27,7 @@ struct PlacedLayoutRecord {
   std::string sites;            ///< the candidates' source (a mesh or a sites file), as given
   int n_candidates = 0;         ///< the leading columns of the sites that are candidates
   bool robust_dropout = false;  ///< the objective of the search
+  std::string objective;        ///< the objective in words; empty: the affine objective's
 };
 
 /// The layout of result.chosen (in index order) on the sites' body, named "<sites' name>
