@@ -117,7 +117,9 @@ int run_ident(const IdentArgs& args) {
   options.min_visible = args.min_visible;
   const tracker::ToolLibraryMatches matches = tracker::match_tool_library(points, options);
   if (args.json) {
-    print_json(ident_json::report(matches, tools, args.files));
+    print_json(ident_json::report_without_pairs(matches, tools, args.files), "pairs",
+               matches.pairs.size(),
+               [&](std::size_t i) { return ident_json::pair(matches.pairs[i], tools); });
   } else {
     print_report(matches, tools, args.files);
   }

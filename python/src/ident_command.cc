@@ -67,12 +67,19 @@ py::object ident(const py::object& tools_arg, int min_visible, const py::object&
   options.min_visible = min_visible;
   const tracker::ToolLibraryMatches matches =
       without_gil([&] { return tracker::match_tool_library(points, options); });
-  Json out = ident_json::report(matches, tools, files);
+  Json out = ident_json::report_without_pairs(matches, tools, files);
   // A vantage.Layout has no file: null, as the other results' "layout" of arrays.
   for (std::size_t t = 0; t < files.size(); ++t) {
     if (files[t].empty()) out["tools"][t]["file"] = nullptr;
   }
-  return to_python(out);
+  // One pair's JSON at a time (ident_json::report_without_pairs).
+  py::object result = to_python(out);
+  py::list pairs;
+  for (const tracker::ToolPairMatch& p : matches.pairs) {
+    pairs.append(to_python(ident_json::pair(p, tools)));
+  }
+  result["pairs"] = pairs;
+  return result;
 }
 
 }  // namespace
