@@ -45,9 +45,13 @@ py::object ident(const py::object& tools_arg, int min_visible, const py::object&
     throw InvalidArgument("tools", "expected a list of vantage.Layout objects or file paths");
   }
   const ReadArguments read{format, py::none(), py::none(), allow_large};
+  // The items first: the bound is checked before any tool is read.
+  const py::list items(tools_arg);
+  commands::check_limit("tools", static_cast<long>(items.size()), commands::kMaxIdentTools, "ident",
+                        allow_large, kPythonWords);
   std::vector<Layout> tools;
   std::vector<std::string> files;
-  for (const py::handle item : py::iter(tools_arg)) {
+  for (const py::handle item : items) {
     const long index = static_cast<long>(tools.size());
     std::string source;
     tools.push_back(ident_tool(item, index, read, &source));
