@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 #include <Eigen/Core>
+#include <cstddef>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -68,6 +69,12 @@ bool is_valid_utf8(const std::string& text);
 /// Prints one JSON object on stdout (two-space indented; invalid UTF-8 in strings, e.g. a file
 /// name, is replaced by U+FFFD instead of failing).
 void print_json(const Json& object);
+
+/// print_json() of `object` with the value of its key `key` replaced by the array of `count`
+/// elements element(0), ..., element(count - 1), each made only when printed: the same bytes,
+/// without the whole array in memory (`vantage ident` on many tools).
+void print_json(const Json& object, const std::string& key, std::size_t count,
+                const std::function<Json(std::size_t)>& element);
 
 /// Fixed-width text for the readable reports: "[ x y z ]" and a number with `digits`
 /// significant digits.

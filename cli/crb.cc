@@ -130,10 +130,18 @@ int run_crb(const CrbArgs& args) {
       }
     }
   }
+  const std::optional<camera::PoseCrbSweep> sweep = args.camera.sweep();
+  if (sweep) {
+    check_limit("--sweep-distance", sweep->count, kMaxCrbSweepDistances, "crb", args.allow_large);
+  }
+  if (args.sweep_tags) {
+    check_limit("--sweep-tags (--tags-per-side values x --tag-fill values)",
+                static_cast<long>(args.tags.per_side.size() * args.tags.fill.size()),
+                kMaxTagSweepRows, "crb", args.allow_large);
+  }
   const Layout layout = args.input.read(args.file, args.allow_large);
   std::optional<Eigen::Vector3d> direction;
   if (!args.direction.empty()) direction = parse_direction(args.direction, "--direction");
-  const std::optional<camera::PoseCrbSweep> sweep = args.camera.sweep();
   camera::PoseCrbReport report;
   try {
     report = camera::pose_crb_report(layout, args.camera.options(), direction, sweep);
@@ -181,7 +189,11 @@ Command add_crb_command(CLI::App& root) {
                 "AprilTag corners: the bound with every face tiled by k x k tags of the same "
                 "extent (docs/math.md §22, \"How many tags, and how big\")");
   args->tags_per_side_option =
-      sub->add_option("--tags-per-side", args->tags.per_side, "k of --sweep-tags, each in [1, 12]")
+      sub->add_option("--tags-per-side", args->tags.per_side,
+                      "k of --sweep-tags, each in [1, " +
+                          std::to_string(camera::TagSweepOptions::kMaxPerSide) + "]; at most " +
+                          std::to_string(kMaxTagSweepRows) +
+                          " tilings (values x --tag-fill values) without --allow-large")
           ->delimiter(',')
           ->capture_default_str();
   args->tag_fill_option =

@@ -3,6 +3,8 @@
 #include <sstream>
 #include <utility>
 
+#include "limits.h"
+
 namespace vantage::cli {
 
 void CrbCameraArgs::add_options(CLI::App* sub, bool required) {
@@ -21,7 +23,9 @@ void CrbCameraArgs::add_options(CLI::App* sub, bool required) {
                   "X,Y,Z: the point the camera looks at, object frame (default: the markers' "
                   "centroid)");
   sub->add_option("--sweep-distance", sweep_distance,
-                  "D1:D2:N: the worst and median bound at N distances from D1 to D2");
+                  "D1:D2:N: the worst and median bound at N distances from D1 to D2 (N at most " +
+                      std::to_string(kMaxCrbSweepDistances) +
+                      ", README \"Limits\"; `crb --allow-large` lifts it)");
   sub->add_option("--samples", samples, "Fibonacci directions of the CRB map")
       ->capture_default_str();
 }

@@ -110,6 +110,8 @@ int run_ident(const IdentArgs& args) {
                           "must be >= 3 (a 3-D registration needs three "
                           "markers)");
   }
+  check_limit("TOOL files", static_cast<long>(args.files.size()), kMaxIdentTools, "ident",
+              args.allow_large);
   const std::vector<Layout> tools = read_tools(args);
   std::vector<Eigen::Matrix3Xd> points;
   for (const Layout& tool : tools) points.push_back(tool.entries);
@@ -117,7 +119,9 @@ int run_ident(const IdentArgs& args) {
   options.min_visible = args.min_visible;
   const tracker::ToolLibraryMatches matches = tracker::match_tool_library(points, options);
   if (args.json) {
-    print_json(ident_json::report(matches, tools, args.files));
+    print_json(ident_json::report_without_pairs(matches, tools, args.files), "pairs",
+               matches.pairs.size(),
+               [&](std::size_t i) { return ident_json::pair(matches.pairs[i], tools); });
   } else {
     print_report(matches, tools, args.files);
   }
@@ -132,7 +136,10 @@ Command add_ident_command(CLI::App& root) {
       "ident",
       "how close the tools of a library come by their inter-marker distances (docs/math.md "
       "§24): every pair and each tool relabelled, mirror images included");
-  sub->add_option("TOOL", args->files, "tool files (points: .json, .csv, .ini, .rom)")->required();
+  sub->add_option("TOOL", args->files,
+                  "tool files (points: .json, .csv, .ini, .rom); at most " +
+                      std::to_string(kMaxIdentTools) + " without --allow-large")
+      ->required();
   sub->add_option("--min-visible", args->min_visible,
                   "K: the markers a view holds (>= 3, at most every tool's markers)")
       ->capture_default_str();

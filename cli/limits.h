@@ -27,9 +27,13 @@ using commands::kDesignPointSecondsPerVector;
 using commands::kDesignPointStepSeconds;
 using commands::kDesignSecondsPerSolveVector;
 using commands::kMaxAnalyzeVectors;
+using commands::kMaxCrbSweepDistances;
 using commands::kMaxDesignSeconds;
 using commands::kMaxDropoutVectors;
+using commands::kMaxIdentTools;
 using commands::kMaxPerTrialTrials;
+using commands::kMaxTagSweepRows;
+using commands::kMaxTreTrials;
 using commands::kMaxTrials;
 using commands::kMaxWeightsEntries;
 

@@ -32,9 +32,51 @@ bool is_valid_utf8(const std::string& text) {
   return true;
 }
 
-void print_json(const Json& object) {
-  // File names need not be UTF-8: replace invalid bytes (U+FFFD) rather than fail after the work.
-  std::cout << object.dump(2, ' ', false, Json::error_handler_t::replace) << std::endl;
+namespace {
+
+// File names need not be UTF-8: replace invalid bytes (U+FFFD) rather than fail after the work.
+// `indent` spaces begin every line but the first (the value is nested that deep).
+std::string dump_nested(const Json& value, int indent) {
+  std::string text = value.dump(2, ' ', false, Json::error_handler_t::replace);
+  if (indent == 0) return text;
+  const std::string newline = "\n" + std::string(static_cast<std::size_t>(indent), ' ');
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    if (c == '\n') {
+      out += newline;
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+void print_json(const Json& object) { std::cout << dump_nested(object, 0) << std::endl; }
+
+void print_json(const Json& object, const std::string& key, std::size_t count,
+                const std::function<Json(std::size_t)>& element) {
+  // nlohmann's two-space dump, one member at a time (an object with members, as every report).
+  std::cout << "{";
+  const char* separator = "\n";
+  for (auto member = object.begin(); member != object.end(); ++member) {
+    std::cout << separator << "  " << dump_nested(Json(member.key()), 0) << ": ";
+    separator = ",\n";
+    if (member.key() != key) {
+      std::cout << dump_nested(member.value(), 2);
+    } else if (count == 0) {
+      std::cout << "[]";
+    } else {
+      std::cout << "[";
+      for (std::size_t i = 0; i < count; ++i) {
+        std::cout << (i == 0 ? "\n" : ",\n") << "    " << dump_nested(element(i), 4);
+      }
+      std::cout << "\n  ]";
+    }
+  }
+  std::cout << "\n}" << std::endl;
 }
 
 std::string format_number(double x, int digits) {

@@ -17,6 +17,7 @@
 #include "crb_input.h"
 #include "figure_output.h"
 #include "layout_input.h"
+#include "limits.h"
 #include "tre_input.h"
 #include "vantage/analysis/common.h"
 #include "vantage/commands/tre_json.h"
@@ -213,6 +214,11 @@ int run_crb_plot(const PlotArgs& args) {
   options.figure.title = args.title;
   parse_size(args.size, options.figure);
   options.sweep = args.camera.sweep();
+  // plot has no --allow-large: the bound of `vantage crb --sweep-distance`, not lifted here.
+  if (options.sweep && options.sweep->count > kMaxCrbSweepDistances) {
+    bad("--sweep-distance: " + std::to_string(options.sweep->count) + " exceeds the limit of " +
+        std::to_string(kMaxCrbSweepDistances) + " for `vantage plot --crb` (README \"Limits\")");
+  }
   check_figure_directory("--out", args.out);
   const Layout layout = args.input.read(args.file);
   plot::CrbFigures figures;

@@ -11,6 +11,7 @@
 #include "command.h"
 #include "layout_input.h"
 #include "limits.h"
+#include "progress.h"
 #include "tre_input.h"
 #include "vantage/analysis/common.h"
 #include "vantage/commands/tre_json.h"
@@ -28,6 +29,7 @@ struct TreArgs {
   std::uint64_t seed = 1;
   int threads = 0;
   bool json = false;
+  bool quiet = false;
   bool allow_large = false;
 };
 
@@ -100,6 +102,7 @@ int run_tre(const TreArgs& args) {
   if (args.monte_carlo != 0 && args.monte_carlo < 1000) {
     throw InvalidArgument("--monte-carlo", "must be >= 1000 trials");
   }
+  check_limit("--monte-carlo", args.monte_carlo, kMaxTreTrials, "tre", args.allow_large);
   if (args.threads < 0) throw InvalidArgument("--threads", "must be >= 0");
   options.monte_carlo_trials = args.monte_carlo;
   options.seed = args.seed;
@@ -107,6 +110,8 @@ int run_tre(const TreArgs& args) {
   const Layout layout = args.input.read(args.file, args.allow_large);
   tracker::TreReport report;
   try {
+    Progress progress("tre", !args.json && !args.quiet);  // cleared before the report
+    options.progress = progress.callback();
     report = tracker::tre_report(layout, targets, options);
   } catch (const InvalidArgument& e) {
     throw tre_option_error(e, args.file);  // the library's fields as the options that set them
@@ -141,12 +146,16 @@ Command add_tre_command(CLI::App& root) {
   args->input.add_options(sub);
   args->target.add_options(sub);
   sub->add_option("--monte-carlo", args->monte_carlo,
-                  "trials of the Monte Carlo check (>= 1000; at --direction, else the worst)");
+                  "trials of the Monte Carlo check (>= 1000, at most " +
+                      std::to_string(kMaxTreTrials) +
+                      " without --allow-large; at --direction, else the worst)");
   sub->add_option("--seed", args->seed, "Monte Carlo seed")->capture_default_str();
   sub->add_option("--threads", args->threads, "Monte Carlo threads, 0 = all cores")
       ->capture_default_str();
   add_allow_large_flag(sub, args->allow_large);
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
+  sub->add_flag("--quiet", args->quiet,
+                "no progress line on stderr (shown only on a terminal, during --monte-carlo)");
   return {sub, [args] { return run_tre(*args); }};
 }
 

@@ -192,7 +192,9 @@ bool TagSweepOptions::is_valid(std::string* why) const {
   };
   if (per_side.empty()) return fail("per_side: needs at least one count");
   for (int k : per_side) {
-    if (k < 1 || k > 12) return fail("per_side: each count must be in [1, 12]");
+    if (k < 1 || k > kMaxPerSide) {
+      return fail("per_side: each count must be in [1, " + std::to_string(kMaxPerSide) + "]");
+    }
   }
   if (fill.empty()) return fail("fill: needs at least one fill");
   for (double f : fill) {

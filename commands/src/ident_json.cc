@@ -39,6 +39,14 @@ Json pair(const tracker::ToolPairMatch& p, const std::vector<Layout>& tools) {
 
 Json report(const tracker::ToolLibraryMatches& matches, const std::vector<Layout>& tools,
             const std::vector<std::string>& files) {
+  Json out = report_without_pairs(matches, tools, files);
+  Json& pairs = out["pairs"];
+  for (const tracker::ToolPairMatch& p : matches.pairs) pairs.push_back(pair(p, tools));
+  return out;
+}
+
+Json report_without_pairs(const tracker::ToolLibraryMatches& matches,
+                          const std::vector<Layout>& tools, const std::vector<std::string>& files) {
   Json out;
   out["min_visible"] = matches.min_visible;
   Json list = Json::array();
@@ -47,9 +55,7 @@ Json report(const tracker::ToolLibraryMatches& matches, const std::vector<Layout
         {{"file", files[t]}, {"name", tools[t].name}, {"markers", tools[t].entries.cols()}});
   }
   out["tools"] = list;
-  Json pairs = Json::array();
-  for (const tracker::ToolPairMatch& p : matches.pairs) pairs.push_back(pair(p, tools));
-  out["pairs"] = pairs;
+  out["pairs"] = Json::array();
   const tracker::ToolPairMatch& closest = matches.pairs[static_cast<std::size_t>(matches.closest)];
   out["closest"] = {
       {"a", closest.a}, {"b", closest.b}, {"mismatch", finite_or_null(closest.match.mismatch)}};

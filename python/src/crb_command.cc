@@ -20,12 +20,19 @@ namespace {
 py::object crb(const py::object& layout_arg, const py::object& points, double distance,
                double focal, double noise_px, const py::object& principal_point,
                const py::object& direction, const py::object& sweep_distance, int samples,
-               int threads, const py::object& format, const py::object& tag_points,
-               const py::object& bundle) {
+               int threads, bool allow_large, const py::object& format,
+               const py::object& tag_points, const py::object& bundle) {
+  std::optional<camera::PoseCrbSweep> sweep;
+  if (!sweep_distance.is_none()) {
+    const auto t = sweep_distance.cast<std::tuple<double, double, int>>();
+    sweep = camera::PoseCrbSweep{std::get<0>(t), std::get<1>(t), std::get<2>(t)};
+    commands::check_limit("sweep_distance", sweep->count, commands::kMaxCrbSweepDistances, "crb",
+                          allow_large, kPythonWords);
+  }
   std::string source;
   const Layout layout =
       layout_from_arguments(layout_arg, py::none(), points, py::none(), py::none(),
-                            {format, tag_points, bundle, false}, &source);
+                            {format, tag_points, bundle, allow_large}, &source);
   camera::PoseCrbOptions options;
   options.distance = distance;
   options.focal_length = focal;
@@ -42,11 +49,6 @@ py::object crb(const py::object& layout_arg, const py::object& points, double di
     const Eigen::VectorXd d = vector_from_array(direction, "direction");
     if (d.size() != 3) throw InvalidArgument("direction", "expected [ax, ay, az]");
     a = Eigen::Vector3d(d);
-  }
-  std::optional<camera::PoseCrbSweep> sweep;
-  if (!sweep_distance.is_none()) {
-    const auto t = sweep_distance.cast<std::tuple<double, double, int>>();
-    sweep = camera::PoseCrbSweep{std::get<0>(t), std::get<1>(t), std::get<2>(t)};
   }
   const camera::PoseCrbReport report = without_gil([&] {
     try {
@@ -65,8 +67,9 @@ void bind_crb_command(py::module_& module) {
              py::arg("points") = py::none(), py::arg("distance"), py::arg("focal"),
              py::arg("noise_px"), py::arg("principal_point") = py::none(),
              py::arg("direction") = py::none(), py::arg("sweep_distance") = py::none(),
-             py::arg("samples") = 10000, py::arg("threads") = 0, py::arg("format") = py::none(),
-             py::arg("tag_points") = py::none(), py::arg("bundle") = py::none(),
+             py::arg("samples") = 10000, py::arg("threads") = 0, py::arg("allow_large") = false,
+             py::arg("format") = py::none(), py::arg("tag_points") = py::none(),
+             py::arg("bundle") = py::none(),
              "The pose Cramer-Rao bound of a pinhole camera over every viewpoint (as `vantage crb "
              "--json`; docs/math.md §22).");
 }

@@ -45,9 +45,13 @@ py::object ident(const py::object& tools_arg, int min_visible, const py::object&
     throw InvalidArgument("tools", "expected a list of vantage.Layout objects or file paths");
   }
   const ReadArguments read{format, py::none(), py::none(), allow_large};
+  // The items first: the bound is checked before any tool is read.
+  const py::list items(tools_arg);
+  commands::check_limit("tools", static_cast<long>(items.size()), commands::kMaxIdentTools, "ident",
+                        allow_large, kPythonWords);
   std::vector<Layout> tools;
   std::vector<std::string> files;
-  for (const py::handle item : py::iter(tools_arg)) {
+  for (const py::handle item : items) {
     const long index = static_cast<long>(tools.size());
     std::string source;
     tools.push_back(ident_tool(item, index, read, &source));
@@ -67,12 +71,19 @@ py::object ident(const py::object& tools_arg, int min_visible, const py::object&
   options.min_visible = min_visible;
   const tracker::ToolLibraryMatches matches =
       without_gil([&] { return tracker::match_tool_library(points, options); });
-  Json out = ident_json::report(matches, tools, files);
+  Json out = ident_json::report_without_pairs(matches, tools, files);
   // A vantage.Layout has no file: null, as the other results' "layout" of arrays.
   for (std::size_t t = 0; t < files.size(); ++t) {
     if (files[t].empty()) out["tools"][t]["file"] = nullptr;
   }
-  return to_python(out);
+  // One pair's JSON at a time (ident_json::report_without_pairs).
+  py::object result = to_python(out);
+  py::list pairs;
+  for (const tracker::ToolPairMatch& p : matches.pairs) {
+    pairs.append(to_python(ident_json::pair(p, tools)));
+  }
+  result["pairs"] = pairs;
+  return result;
 }
 
 }  // namespace

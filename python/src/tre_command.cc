@@ -66,11 +66,14 @@ tracker::FleModel tre_fle(const std::optional<double>& fle_rms, const py::object
 py::object tre(const py::object& layout_arg, const py::object& points, const py::object& targets,
                const std::optional<double>& fle_rms, const py::object& fle_sigma,
                const py::object& direction, long monte_carlo, std::uint64_t seed, int threads,
-               const py::object& format, const py::object& tag_points, const py::object& bundle) {
+               bool allow_large, const py::object& format, const py::object& tag_points,
+               const py::object& bundle) {
+  commands::check_limit("monte_carlo", monte_carlo, commands::kMaxTreTrials, "tre", allow_large,
+                        kPythonWords);
   std::string source;
   const Layout layout =
       layout_from_arguments(layout_arg, py::none(), points, py::none(), py::none(),
-                            {format, tag_points, bundle, false}, &source);
+                            {format, tag_points, bundle, allow_large}, &source);
   const std::vector<Eigen::Vector3d> target_list = tre_targets(targets);
   tracker::TreOptions options;
   options.fle = tre_fle(fle_rms, fle_sigma);
@@ -110,7 +113,7 @@ void bind_tre_command(py::module_& module) {
              py::arg("points") = py::none(), py::arg("targets") = py::none(),
              py::arg("fle_rms") = py::none(), py::arg("fle_sigma") = py::none(),
              py::arg("direction") = py::none(), py::arg("monte_carlo") = 0, py::arg("seed") = 1,
-             py::arg("threads") = 0, py::arg("format") = py::none(),
+             py::arg("threads") = 0, py::arg("allow_large") = false, py::arg("format") = py::none(),
              py::arg("tag_points") = py::none(), py::arg("bundle") = py::none(),
              "The target registration error of a tool on a 3-D tracker over every tracked line "
              "of sight (as `vantage tre --json`; docs/math.md §23).");

@@ -144,6 +144,23 @@ def test_trials_and_design_time_have_the_cli_limits(vantage):
                                          "the budget of 30 s for vantage.design()")
 
 
+def test_monte_carlo_sweep_and_tool_count_have_the_cli_limits(vantage, tmp_path):
+    tool = LAYOUTS.parent / "tools" / "ndi_like.json"
+    # Refused before any work, named by the keyword; allow_large=True lifts the bound.
+    with pytest.raises(ValueError, match=r"^monte_carlo: 10000001 exceeds the limit of 10000000 "
+                                         r"for vantage.tre\(\) \(allow_large=True lifts it\)$"):
+        vantage.tre(tool, targets=[0, 0, -150], fle_rms=0.3, monte_carlo=10_000_001)
+    with pytest.raises(ValueError, match=r"^sweep_distance: 1001 exceeds the limit of 1000"):
+        vantage.crb(LAYOUTS / "apriltag_cube.yaml", distance=2, focal=900, noise_px=0.3,
+                    sweep_distance=(1.0, 4.0, 1001))
+    with pytest.raises(ValueError, match=r"^tools: 501 exceeds the limit of 500") as refused:
+        vantage.ident([str(tmp_path / "never_read.json")] * 501)
+    assert refused.value.field == "tools"
+    lifted = vantage.tre(tool, targets=[0, 0, -150], fle_rms=0.3, monte_carlo=1000,
+                         allow_large=True)
+    assert lifted.targets[0].monte_carlo.trials == 1000
+
+
 def test_value_errors_carry_field_index_and_problem(vantage):
     with pytest.raises(ValueError) as bad:
         vantage.analyze(vectors=np.eye(3), weights=[1.0, -1.0, 1.0])

@@ -132,8 +132,8 @@ def crb(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
         principal_point: Optional[npt.ArrayLike] = None,
         direction: Optional[npt.ArrayLike] = None,
         sweep_distance: Optional[Tuple[float, float, int]] = None, samples: int = 10000,
-        threads: int = 0, format: Optional[str] = None, tag_points: Optional[str] = None,
-        bundle: Optional[str] = None) -> CrbReport:
+        threads: int = 0, allow_large: bool = False, format: Optional[str] = None,
+        tag_points: Optional[str] = None, bundle: Optional[str] = None) -> CrbReport:
     """The Cramér–Rao bound of the pose from one pinhole image over every viewpoint (as
     ``vantage crb --json``; docs/math.md §22).
 
@@ -141,23 +141,25 @@ def crb(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
     distance: the camera's distance from the markers' centroid (layout units, above the
     layout's radius); focal: pixels; noise_px: pixel noise per coordinate.
     direction: also the bound at this viewing direction (body toward camera), with its 6 x 6
-    covariance. sweep_distance: (D1, D2, N), the worst and median bound at N distances.
-    samples: Fibonacci directions of the map.
+    covariance. sweep_distance: (D1, D2, N), the worst and median bound at N distances (N
+    bounded, README "Limits"). samples: Fibonacci directions of the map. allow_large: lift the
+    size limits, as ``--allow-large``.
 
     Raises ValueError on bad input.
     """
     return CrbReport(_vantage.crb(
         layout, points=points, distance=distance, focal=focal, noise_px=noise_px,
         principal_point=principal_point, direction=direction, sweep_distance=sweep_distance,
-        samples=samples, threads=threads, format=format, tag_points=tag_points, bundle=bundle))
+        samples=samples, threads=threads, allow_large=allow_large, format=format,
+        tag_points=tag_points, bundle=bundle))
 
 
 def tre(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
         targets: Optional[npt.ArrayLike] = None, fle_rms: Optional[float] = None,
         fle_sigma: Optional[Tuple[float, float]] = None,
         direction: Optional[npt.ArrayLike] = None, monte_carlo: int = 0, seed: int = 1,
-        threads: int = 0, format: Optional[str] = None, tag_points: Optional[str] = None,
-        bundle: Optional[str] = None) -> TreReport:
+        threads: int = 0, allow_large: bool = False, format: Optional[str] = None,
+        tag_points: Optional[str] = None, bundle: Optional[str] = None) -> TreReport:
     """The target registration error of a tool on a 3-D optical tracker (as ``vantage tre
     --json``; docs/math.md §23): markers registered by least squares without scale, the error of
     each target to first order, in the layout's units.
@@ -168,15 +170,17 @@ def tre(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
     or fle_sigma: (sigma_perp, sigma_axial), the standard deviations across and along the
     tracker's line of sight (NDI: (0.0995, 0.2985) mm). Exactly one of the two.
     direction: also the TRE and its 3 x 3 covariance at this line of sight (tool toward tracker,
-    tool frame). monte_carlo: trials of the seeded Monte Carlo check (0 or >= 1000), at
-    direction or else at the worst line of sight; seed, threads: as ``--seed``, ``--threads``.
+    tool frame). monte_carlo: trials of the seeded Monte Carlo check (0 or >= 1000,
+    bounded per target, README "Limits"), at direction or else at the worst line of sight; seed,
+    threads: as ``--seed``, ``--threads``. allow_large: lift the size limits, as
+    ``--allow-large``.
 
     Raises ValueError on bad input.
     """
     return TreReport(_vantage.tre(
         layout, points=points, targets=targets, fle_rms=fle_rms, fle_sigma=fle_sigma,
-        direction=direction, monte_carlo=monte_carlo, seed=seed, threads=threads, format=format,
-        tag_points=tag_points, bundle=bundle))
+        direction=direction, monte_carlo=monte_carlo, seed=seed, threads=threads,
+        allow_large=allow_large, format=format, tag_points=tag_points, bundle=bundle))
 
 
 def ident(tools: Iterable[Union[Layout, str, "os.PathLike[str]"]], *, min_visible: int = 3,
@@ -189,8 +193,8 @@ def ident(tools: Iterable[Union[Layout, str, "os.PathLike[str]"]], *, min_visibl
 
     tools: vantage.Layout objects (points) or tool files (.json, .csv, Atracsys .ini, NDI .rom),
     read with format ('auto', 'json', 'csv', 'atracsys', 'ndi') and allow_large as
-    ``--format``, ``--allow-large``; a Layout's ``file`` is None. min_visible: K >= 3, at most
-    every tool's markers.
+    ``--format``, ``--allow-large``; a Layout's ``file`` is None; the number of tools is
+    bounded (README "Limits"; allow_large=True lifts it). min_visible: K >= 3, at most every tool's markers.
 
     Raises ValueError on bad input (its ``field`` 'min_visible' or 'tools').
     """

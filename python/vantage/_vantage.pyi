@@ -80,13 +80,15 @@ def orient(model: npt.ArrayLike, measured: npt.ArrayLike, *, weights: _Array = N
 def crb(layout: Union[Layout, _Path, None] = None, *, points: _Array = None,
         distance: float, focal: float, noise_px: float, principal_point: _Array = None,
         direction: _Array = None, sweep_distance: Optional[Tuple[float, float, int]] = None,
-        samples: int = 10000, threads: int = 0, format: Optional[str] = None,
-        tag_points: Optional[str] = None, bundle: Optional[str] = None) -> Dict[str, Any]: ...
+        samples: int = 10000, threads: int = 0, allow_large: bool = False,
+        format: Optional[str] = None, tag_points: Optional[str] = None,
+        bundle: Optional[str] = None) -> Dict[str, Any]: ...
 def tre(layout: Union[Layout, _Path, None] = None, *, points: _Array = None,
         targets: _Array = None, fle_rms: Optional[float] = None,
         fle_sigma: Optional[Tuple[float, float]] = None, direction: _Array = None,
-        monte_carlo: int = 0, seed: int = 1, threads: int = 0, format: Optional[str] = None,
-        tag_points: Optional[str] = None, bundle: Optional[str] = None) -> Dict[str, Any]: ...
+        monte_carlo: int = 0, seed: int = 1, threads: int = 0, allow_large: bool = False,
+        format: Optional[str] = None, tag_points: Optional[str] = None,
+        bundle: Optional[str] = None) -> Dict[str, Any]: ...
 def simulate(layout: Union[Layout, _Path, None] = None, *, vectors: _Array = None,
              points: _Array = None, trials: int = 1000, camera: str = "affine",
              noise_px: float = 0.0, snr_db: Optional[float] = None, noise: str = "gaussian",

@@ -18,6 +18,20 @@ void check_tre_targets(const std::vector<Eigen::Vector3d>& targets) {
   }
 }
 
+// The trials_done callback of tre_monte_carlo() that words options.progress's stage; target 0:
+// the only one.
+std::function<void(long)> monte_carlo_progress(const TreOptions& options, std::size_t target,
+                                               std::size_t targets) {
+  if (!options.progress) return {};
+  const std::string prefix =
+      target == 0 ? std::string()
+                  : "target " + std::to_string(target) + "/" + std::to_string(targets) + ", ";
+  return [&options, prefix](long done) {
+    options.progress(prefix + "Monte Carlo " + std::to_string(done) + "/" +
+                     std::to_string(options.monte_carlo_trials) + " trials");
+  };
+}
+
 }  // namespace
 
 bool TreOptions::is_valid(std::string* why) const {
@@ -119,7 +133,8 @@ TreReport tre_report(const TreModel& model, const std::vector<Eigen::Vector3d>& 
     check_tre_range(problem.points, targets[i], options.fle,
                     targets.size() > 1 ? static_cast<long>(i) : -1L);
   }
-  for (const Eigen::Vector3d& target : targets) {
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const Eigen::Vector3d& target = targets[i];
     TreTargetReport t;
     t.target = target;
     if (options.fle.from_rms) {
@@ -136,8 +151,10 @@ TreReport tre_report(const TreModel& model, const std::vector<Eigen::Vector3d>& 
           at_given ? t.at_direction->visible_markers : t.extremes.worst.visible_markers;
       if (at_given || t.extremes.worst.status != TreExtreme::Status::kUntracked) {
         t.monte_carlo_direction = a;
-        t.monte_carlo = tre_monte_carlo(problem.points, visible, target, options.fle, a,
-                                        options.monte_carlo_trials, options.seed, options.threads);
+        t.monte_carlo = tre_monte_carlo(
+            problem.points, visible, target, options.fle, a, options.monte_carlo_trials,
+            options.seed, options.threads,
+            monte_carlo_progress(options, targets.size() > 1 ? i + 1 : 0, targets.size()));
       }
     }
     report.targets.push_back(std::move(t));

@@ -37,7 +37,11 @@ Layout tag_grid_layout(const Layout& layout, const std::vector<TagFace>& faces, 
 
 /// The tilings of the sweep.
 struct TagSweepOptions {
-  std::vector<int> per_side = {1, 2, 3, 4};  ///< k, each in [1, 12]
+  /// The largest k: the cube's 3 faces at 12 x 12 tags (1728 corners) cost 0.6 s of CPU and
+  /// 58 MB per map (README "Limits"; the map's memory grows with the corners).
+  static constexpr int kMaxPerSide = 12;
+
+  std::vector<int> per_side = {1, 2, 3, 4};  ///< k, each in [1, kMaxPerSide]
   /// Each in (0, 1]; 1 only when every per_side is 1 (neighbours would share corners).
   std::vector<double> fill = {0.5, 0.8};
 

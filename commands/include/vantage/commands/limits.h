@@ -57,6 +57,27 @@ constexpr long kMaxTrials = 10'000'000;
 /// the 64 MiB that --merge reads (and the memory under 100 MB).
 constexpr long kMaxPerTrialTrials = 40'000;
 
+/// `crb --sweep-distance D1:D2:N` (and `plot --crb`): N, the distances, one CRB map each. A map of
+/// the 12-corner AprilTag cube at the default 10 000 samples costs 28 ms of CPU (it grows with
+/// --samples and the markers): 1000 distances 28 s, where the 1:2:1000000 ran for hours.
+constexpr long kMaxCrbSweepDistances = 1000;
+/// `crb --sweep-tags`: the tilings, the --tags-per-side values times the --tag-fill values, one
+/// CRB map each. The costliest tiling (the cube's 3 faces at 12 x 12 tags, 1728 corners) takes
+/// 0.6 s of CPU and 58 MB: 50 tilings about 30 s (the design budget); the default 8 take 1 s.
+/// The largest --tags-per-side is camera::TagSweepOptions::kMaxPerSide (a library rule).
+constexpr long kMaxTagSweepRows = 50;
+/// `tre --monte-carlo`: trials per target. Streamed (flat memory, 16 MB); a trial of the 4-marker
+/// NDI-like tool costs 0.67 us of CPU (one registration; more with more markers): 10^7 trials are
+/// 6.7 s and measure the RMS to about 0.02 %, where 10^9 ran for 11 minutes.
+constexpr long kMaxTreTrials = 10'000'000;
+/// `ident`: tools. Every pair is matched and reported: n (n + 1) / 2 pairs, about 180 bytes of
+/// memory and 580 bytes of JSON each in the CLI, 4 us of CPU for 4-marker tools (more with more
+/// markers, up to the search budget), and about 3.5 KB each as Python objects. Random 4-marker
+/// tools: 500 tools (125 250 pairs) take 1.1 s, 38 MB and write 73 MB of JSON, Python 4 s and
+/// 470 MB; 1000 tools 5 s and 100 MB, Python 18 s and 1.75 GB; 2000 tools 25 s, 360 MB, 1.2 GB
+/// of JSON.
+constexpr long kMaxIdentTools = 500;
+
 /// How a front end names its commands and the switch that lifts the limits in its messages:
 /// {"`vantage ", "`", "--allow-large"} for the CLI, {"vantage.", "()", "allow_large=True"} for
 /// Python.

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -90,10 +91,13 @@ struct TreMonteCarlo {
 /// taking a to the tracker's +z, Gaussian FLE of the model's covariance in the tracker frame,
 /// the q-method fit of Eq. (23.1), the target error measured. Trials are drawn in blocks of 1024,
 /// block b from a generator seeded with (seed, b), so the result does not depend on `threads`
-/// (0: all cores). Throws InvalidArgument for trials < 1 or a set that is not registrable.
+/// (0: all cores); they run a chunk of 2^20 at a time, so the memory does not grow with
+/// `trials`, and trials_done (if given) is called after each chunk with the trials done so far.
+/// Throws InvalidArgument for trials < 1 or a set that is not registrable.
 TreMonteCarlo tre_monte_carlo(const Eigen::Matrix3Xd& points_tool, const std::vector<int>& visible,
                               const Eigen::Vector3d& target_tool, const FleModel& fle,
                               const Eigen::Vector3d& a, long trials, std::uint64_t seed,
-                              int threads = 0);
+                              int threads = 0,
+                              const std::function<void(long trials_done)>& trials_done = {});
 
 }  // namespace vantage::tracker

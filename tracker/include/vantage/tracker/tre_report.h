@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +29,9 @@ struct TreOptions {
   std::uint64_t seed = 1;
   int threads = 0;  ///< Monte Carlo threads (0: all cores); the result does not depend on it
   TreSearchOptions search;
+  /// Called during the Monte Carlo check with its stage ("Monte Carlo 2097152/10000000 trials",
+  /// "target 2/3, " before it with several targets), e.g. to show progress; empty: nothing.
+  std::function<void(const std::string& stage)> progress;
 
   /// Names "fle.sigma_perp", "direction", "monte_carlo_trials" or the search's field.
   bool is_valid(std::string* why = nullptr) const;
