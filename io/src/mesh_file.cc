@@ -11,6 +11,7 @@
 #include <new>
 #include <stdexcept>
 
+#include "ply_header.h"
 #include "vantage/analysis/common.h"
 #include "vantage/io/printable.h"
 
@@ -121,6 +122,7 @@ Mesh read_mesh(const std::string& path) {
     throw InvalidArgument(printable(path) + ": cannot open file (not a readable file)");
   }
   try {
+    internal::check_ply_header(path);
     Mesh mesh = read_with_assimp(path);
     mesh.source = path;
     return mesh;

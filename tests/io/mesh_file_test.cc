@@ -1,5 +1,6 @@
 // io::read_mesh() refuses what it cannot read right: a vertex that is not finite, wherever it is
-// and in whichever format. Identical positions are joined on reading.
+// and in whichever format, and a PLY header that declares more elements than its file holds
+// (before assimp reserves memory for them). Identical positions are joined on reading.
 
 #include "vantage/io/mesh_file.h"
 
@@ -153,6 +154,57 @@ TEST(MeshFile, FiniteStlReadsWithIdenticalPositionsJoined) {
   EXPECT_EQ(mesh.triangles.cols(), 12);
   EXPECT_EQ(mesh.vertices.cols(), 8);
   EXPECT_DOUBLE_EQ(mesh.area(), 6.0);
+}
+
+/// A PLY of one triangle whose header declares `vertices` vertices.
+std::string ply_declaring(const std::string& vertices, bool binary) {
+  std::string out = std::string("ply\nformat ") + (binary ? "binary_little_endian" : "ascii") +
+                    " 1.0\nelement vertex " + vertices +
+                    "\nproperty float x\nproperty float y\nproperty float z\n"
+                    "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  if (!binary) return out + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const float p[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  out.append(reinterpret_cast<const char*>(p), sizeof p);
+  const unsigned char n = 3;
+  const std::int32_t face[3] = {0, 1, 2};
+  out.append(reinterpret_cast<const char*>(&n), 1);
+  out.append(reinterpret_cast<const char*>(face), sizeof face);
+  return out;
+}
+
+TEST(MeshFile, PlyHeaderDeclaringMoreVerticesThanTheFileHoldsIsRefused) {
+  const Scratch scratch;
+  for (const bool binary : {false, true}) {
+    for (const char* count : {"10000000", "1000000000", "18446744073709551615"}) {
+      const std::string path = scratch.write("big.ply", ply_declaring(count, binary));
+      const std::string message = message_of([&] { io::read_mesh(path); });
+      EXPECT_THAT(message, HasSubstr(path + ": PLY header declares " + count +
+                                     " vertices (header line 3, element \"vertex\""));
+      EXPECT_THAT(message, HasSubstr("but the file holds at most"));
+    }
+  }
+}
+
+TEST(MeshFile, PlyHeaderWithACountThatIsNotAWholeNumberIsRefused) {
+  const Scratch scratch;
+  for (const char* count : {"-3", "3.0", "1e9", "99999999999999999999999"}) {
+    const std::string path = scratch.write("bad.ply", ply_declaring(count, false));
+    EXPECT_THAT(message_of([&] { io::read_mesh(path); }),
+                HasSubstr("PLY header line 3: element \"vertex\" has count"))
+        << count;
+  }
+}
+
+TEST(MeshFile, PlyWhoseCountsFitItsSizeReads) {
+  const Scratch scratch;
+  for (const bool binary : {false, true}) {
+    const Mesh mesh = io::read_mesh(scratch.write("ok.ply", ply_declaring("3", binary)));
+    EXPECT_EQ(mesh.triangles.cols(), 1);
+  }
+  // Without a newline at the end of the file.
+  std::string tight = ply_declaring("3", false);
+  tight.pop_back();
+  EXPECT_EQ(io::read_mesh(scratch.write("tight.ply", tight)).triangles.cols(), 1);
 }
 
 }  // namespace
