@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <numeric>
@@ -231,6 +232,11 @@ int run_analyze(const AnalyzeArgs& args) {
     Progress progress("analyze", !args.json && !args.quiet);  // cleared before the report
     options.analysis.progress = progress.callback();
     report = against_source(args.file, [&] { return report::analyze_layout(layout, options); });
+  }
+  if (report.mesh) {
+    const std::string name = std::filesystem::path(layout.visibility->body->source).filename();
+    const std::string warning = report.mesh->warning(name);
+    if (!warning.empty()) std::cerr << "vantage: warning: " << warning << std::endl;
   }
   if (report.visibility && !report.visibility->off_body.empty()) {
     std::cerr << "vantage: warning: " << off_body_warning(report) << std::endl;

@@ -57,14 +57,19 @@ function(vantage_add_library name)
     PATTERN internal EXCLUDE)
 endfunction()
 
-# vantage_add_test_suite(<module> LIBS ... [DEFINITIONS ...] [EXCLUDE file ...] [EXTRA file ...])
+# vantage_add_test_suite(<module> LIBS ... [DEFINITIONS ...] [EXCLUDE file ...] [EXTRA file ...]
+#                        [LABEL <label>])
 #
 # One GoogleTest executable per module from tests/<module>/*_test.cc (without EXCLUDE, plus
 # EXTRA; both relative to tests/), each test registered with ctest through gtest_discover_tests.
 # Every suite sees VANTAGE_WITH_NLOPT and VANTAGE_WITH_PLOT (1 or 0, the options), so that a test
-# can hold the library's own answer (built_with_nlopt()) against the build's.
+# can hold the library's own answer (built_with_nlopt()) against the build's. Its tests carry the
+# CTest label <label> (default: <module>).
 function(vantage_add_test_suite module)
-  cmake_parse_arguments(ARG "" "" "LIBS;DEFINITIONS;EXCLUDE;EXTRA" ${ARGN})
+  cmake_parse_arguments(ARG "" "LABEL" "LIBS;DEFINITIONS;EXCLUDE;EXTRA" ${ARGN})
+  if(NOT ARG_LABEL)
+    set(ARG_LABEL ${module})
+  endif()
   file(GLOB sources CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/${module}/*_test.cc")
   foreach(file ${ARG_EXCLUDE})
     list(REMOVE_ITEM sources "${CMAKE_CURRENT_SOURCE_DIR}/${file}")
@@ -93,5 +98,5 @@ function(vantage_add_test_suite module)
     VANTAGE_WITH_NLOPT=${with_nlopt} VANTAGE_WITH_PLOT=${with_plot} ${ARG_DEFINITIONS})
   target_link_libraries(${target} PRIVATE ${ARG_LIBS} GTest::gmock GTest::gtest_main)
   vantage_speed_up_build(${target} TESTS)
-  gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS ${module})
+  gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS ${ARG_LABEL})
 endfunction()

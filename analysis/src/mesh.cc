@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 #include "vantage/analysis/common.h"
 
@@ -66,6 +67,54 @@ double Mesh::area() const {
         0.5 * (vertices.col(triangles(1, k)) - a).cross(vertices.col(triangles(2, k)) - a).norm();
   }
   return total;
+}
+
+std::vector<int> first_identical_vertex(const Eigen::Matrix3Xd& vertices) {
+  if (!vertices.allFinite()) throw InvalidArgument("vertices", "must be finite");
+  const int n = static_cast<int>(vertices.cols());
+  std::vector<int> order(static_cast<std::size_t>(n));
+  std::iota(order.begin(), order.end(), 0);
+  // Lexicographic on (x, y, z), ties by index: each group of equal positions is contiguous and
+  // starts at its first vertex.
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    for (int c = 0; c < 3; ++c) {
+      if (vertices(c, a) != vertices(c, b)) return vertices(c, a) < vertices(c, b);
+    }
+    return a < b;
+  });
+  std::vector<int> first(static_cast<std::size_t>(n));
+  for (std::size_t k = 0; k < order.size();) {
+    std::size_t end = k + 1;
+    while (end < order.size() && vertices.col(order[end]) == vertices.col(order[k])) ++end;
+    for (std::size_t j = k; j < end; ++j) first[static_cast<std::size_t>(order[j])] = order[k];
+    k = end;
+  }
+  return first;
+}
+
+void weld_identical_vertices(Mesh* mesh) {
+  mesh->validate();
+  const std::vector<int> first = first_identical_vertex(mesh->vertices);
+  constexpr int kUnused = -1, kUsed = -2;
+  std::vector<int> renumbered(first.size(), kUnused);
+  for (Eigen::Index k = 0; k < mesh->triangles.size(); ++k) {
+    renumbered[static_cast<std::size_t>(first[static_cast<std::size_t>(mesh->triangles(k))])] =
+        kUsed;
+  }
+  int kept = 0;
+  for (int& index : renumbered) {
+    if (index == kUsed) index = kept++;
+  }
+  Eigen::Matrix3Xd vertices(3, kept);
+  for (std::size_t v = 0; v < renumbered.size(); ++v) {
+    if (renumbered[v] >= 0)
+      vertices.col(renumbered[v]) = mesh->vertices.col(static_cast<Eigen::Index>(v));
+  }
+  for (Eigen::Index k = 0; k < mesh->triangles.size(); ++k) {
+    mesh->triangles(k) =
+        renumbered[static_cast<std::size_t>(first[static_cast<std::size_t>(mesh->triangles(k))])];
+  }
+  mesh->vertices = std::move(vertices);
 }
 
 double distance_to_mesh(const Mesh& mesh, const Eigen::Vector3d& point) {

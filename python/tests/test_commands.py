@@ -49,9 +49,10 @@ def test_arrays_and_files_give_the_same_analysis(vantage):
     from_layout = vantage.analyze(layout).to_dict()
     from_float32 = vantage.analyze(points=layout.entries.astype(np.float32)).to_dict()
     from_points.pop("name"), from_layout.pop("name")
-    # The file's normals and body add "visibility"; the top-level fields (the layout seen whole)
-    # are those of its points alone.
+    # The file's normals and body add "visibility" and "mesh"; the top-level fields (the layout
+    # seen whole) are those of its points alone.
     assert from_layout.pop("visibility")["model"] == "cone+mesh"
+    assert from_layout.pop("mesh")["triangles"] > 0
     assert_same(from_points, from_layout)
     assert from_float32["pbar_min"] == pytest.approx(from_layout["pbar_min"], abs=1e-6)
 

@@ -111,6 +111,7 @@ LayoutReport analyze_layout(const Layout& layout, const LayoutReportOptions& opt
     report.dropout = dropout_analysis(layout, options.dropout_options);
   }
   if (layout.visibility) {
+    if (layout.visibility->body) report.mesh = mesh_report(*layout.visibility->body);
     if (options.analysis.progress) options.analysis.progress("visibility");
     visibility::VisibilityReportOptions visibility = options.visibility;
     visibility.dropout = options.dropout;

@@ -99,6 +99,21 @@ Json identification(const tracker::IdentificationMargins& m) {
   return out;
 }
 
+Json mesh(const MeshReport& m) {
+  return {{"triangles", m.triangles},
+          {"vertices", m.vertices},
+          {"closed", m.closed},
+          {"manifold", m.manifold},
+          {"consistently_wound", m.consistently_wound},
+          {"boundary_edges", m.boundary_edges},
+          {"non_manifold_edges", m.non_manifold_edges},
+          {"inconsistent_edges", m.inconsistent_edges},
+          {"triangles_against_neighbours", m.triangles_against_neighbours},
+          {"degenerate_triangles", m.degenerate_triangles},
+          {"bounding_box_size", list(m.bounding_box_size)},
+          {"units_hint", to_string(m.units_hint)}};
+}
+
 }  // namespace
 
 std::string to_json(const LayoutReport& report) {
@@ -137,6 +152,7 @@ std::string to_json(const LayoutReport& report) {
   if (report.identification) out["identification"] = identification(*report.identification);
   if (report.dropout) out["dropout"] = dropout(*report.dropout);
   if (report.visibility) out["visibility"] = internal::visibility_json(*report.visibility);
+  if (report.mesh) out["mesh"] = mesh(*report.mesh);
   out["usable"] = report.is_usable();
   const std::string message = report.message();
   if (!message.empty()) out["message"] = message;

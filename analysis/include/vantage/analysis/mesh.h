@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <vector>
 
 namespace vantage {
 
@@ -24,6 +25,16 @@ struct Mesh {
   /// Total area of the triangles.
   double area() const;
 };
+
+/// For each vertex (finite, one per column), the index of the first vertex at the identical
+/// position (coordinates equal as numbers: -0 equals +0): vertices that share a position share
+/// the index. O(n log n).
+std::vector<int> first_identical_vertex(const Eigen::Matrix3Xd& vertices);
+
+/// Joins the vertices of `mesh` at identical positions (first_identical_vertex()) and drops the
+/// vertices no triangle uses; the vertices kept stay in their order, the triangles unchanged but
+/// for their indices. Throws InvalidArgument ("body: ...") as Mesh::validate() does.
+void weld_identical_vertices(Mesh* mesh);
 
 /// The distance from `point` to the nearest point of the mesh's triangles (every triangle is
 /// tested: O(triangles)).

@@ -16,6 +16,7 @@
 
 #include "vantage/analysis/free_vectors.h"
 #include "vantage/analysis/layout.h"
+#include "vantage/analysis/mesh_report.h"
 #include "vantage/report/dropout.h"
 #include "vantage/sdp/layout_analysis.h"
 #include "vantage/sdp/layout_measures.h"
@@ -59,6 +60,9 @@ struct LayoutReport {
   /// The layout on its body (docs/math.md §20), for a layout with normals: the worst viewpoint
   /// over the trackable directions of the workspace, the coverage, the dropout under visibility.
   std::optional<visibility::VisibilityReport> visibility;
+  /// The body's mesh, when the layout has one: its size, whether it is closed and consistently
+  /// wound (informative, not part of is_usable(); MeshReport::warning() says what is wrong).
+  std::optional<MeshReport> mesh;
   /// Point mode: how a tracker tells the markers apart by their distances and how far the layout
   /// is from its mirror image (docs/math.md §24); informative, not part of is_usable().
   std::optional<tracker::IdentificationMargins> identification;
