@@ -9,8 +9,8 @@
 
 #include <cstdint>
 #include <functional>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -104,7 +104,8 @@ struct Outcome {
 };
 
 /// The camera objective's options of a request on `sites` (the aim resolved), or none.
-std::optional<design::CameraObjective> camera_objective(const Request& request, const Layout& sites);
+std::optional<design::CameraObjective> camera_objective(const Request& request,
+                                                        const Layout& sites);
 
 /// Runs design::place_markers() on the sites and analyses the placed layout; `progress` (or
 /// empty) gets the stages.
