@@ -1,5 +1,7 @@
 #include "crb_input.h"
 
+#include "vantage/commands/point_text.h"
+
 #include <sstream>
 #include <utility>
 
@@ -38,24 +40,13 @@ camera::PoseCrbOptions CrbCameraArgs::options() const {
   if (!principal_point.empty()) options.principal_point = {principal_point[0], principal_point[1]};
   options.samples = samples;
   options.threads = threads;
-  if (!aim.empty()) options.aim = parse_point(aim, "--aim");
+  if (!aim.empty()) options.aim = commands::parse_point(aim, "--aim");
   return options;
 }
 
 std::optional<camera::PoseCrbSweep> CrbCameraArgs::sweep() const {
   if (sweep_distance.empty()) return std::nullopt;
   return parse_sweep(sweep_distance);
-}
-
-Eigen::Vector3d parse_point(const std::string& text, const std::string& option) {
-  std::istringstream in(text);
-  Eigen::Vector3d x;
-  char comma1 = 0, comma2 = 0;
-  if (!(in >> x.x() >> comma1 >> x.y() >> comma2 >> x.z()) || comma1 != ',' || comma2 != ',' ||
-      !(in >> std::ws).eof() || !x.allFinite()) {
-    throw InvalidArgument(option, "expected X,Y,Z, three finite numbers, got \"" + text + "\"");
-  }
-  return x;
 }
 
 Eigen::Vector3d parse_direction(const std::string& text, const std::string& option) {

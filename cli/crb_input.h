@@ -36,9 +36,6 @@ struct CrbCameraArgs {
   std::optional<camera::PoseCrbSweep> sweep() const;
 };
 
-/// "X,Y,Z" as typed, three finite numbers; InvalidArgument naming `option` otherwise.
-Eigen::Vector3d parse_point(const std::string& text, const std::string& option);
-
 /// "AX,AY,AZ" as typed to a unit vector; InvalidArgument naming `option` otherwise.
 Eigen::Vector3d parse_direction(const std::string& text, const std::string& option);
 

@@ -5,22 +5,9 @@
 #include <utility>
 
 #include "crb_input.h"
+#include "vantage/commands/point_text.h"
 
 namespace vantage::cli {
-namespace {
-
-Eigen::Vector3d parse_tre_target(const std::string& text) {
-  std::istringstream in(text);
-  Eigen::Vector3d r;
-  char comma1 = 0, comma2 = 0;
-  if (!(in >> r.x() >> comma1 >> r.y() >> comma2 >> r.z()) || comma1 != ',' || comma2 != ',' ||
-      !(in >> std::ws).eof() || !r.allFinite()) {
-    throw InvalidArgument("--target", "expected X,Y,Z, three finite numbers, got \"" + text + "\"");
-  }
-  return r;
-}
-
-}  // namespace
 
 void TreTargetArgs::add_options(CLI::App* sub) {
   target_option =
@@ -37,7 +24,7 @@ void TreTargetArgs::add_options(CLI::App* sub) {
 std::vector<Eigen::Vector3d> TreTargetArgs::parsed_targets() const {
   if (targets.empty()) throw InvalidArgument("--target", "give at least one X,Y,Z");
   std::vector<Eigen::Vector3d> out;
-  for (const std::string& text : targets) out.push_back(parse_tre_target(text));
+  for (const std::string& text : targets) out.push_back(commands::parse_point(text, "--target"));
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "vantage/analysis/common.h"
+#include "vantage/commands/point_text.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/io/layout_formats.h"
 #include "vantage/io/mesh_file.h"
@@ -181,18 +182,6 @@ Json place_steps_json(const design::PlacementResult& r) {
   return steps;
 }
 
-// "X,Y,Z": three finite numbers.
-Eigen::Vector3d place_point(const std::string& text, const std::string& option) {
-  std::istringstream in(text);
-  Eigen::Vector3d x;
-  char comma1 = 0, comma2 = 0;
-  if (!(in >> x.x() >> comma1 >> x.y() >> comma2 >> x.z()) || comma1 != ',' || comma2 != ',' ||
-      !(in >> std::ws).eof() || !x.allFinite()) {
-    place_refuse(option, "expected X,Y,Z, three finite numbers, got \"" + text + "\"");
-  }
-  return x;
-}
-
 void check_positive(double value, const char* option) {
   if (!(value > 0.0) || !std::isfinite(value)) {
     place_refuse(option, "must be a finite number > 0 with --objective camera");
@@ -212,16 +201,19 @@ void check_objective(const Request& request) {
       place_refuse("--crb-samples", "must be in [100, " + std::to_string(kMaxCrbSamples) +
                                         "], got " + std::to_string(request.crb_samples));
     }
-    if (!request.aim.empty()) place_point(request.aim, "--aim");
+    if (!request.aim.empty()) commands::parse_point(request.aim, "--aim");
     return;
   }
   if (request.objective != "affine") {
     place_refuse("--objective", "expected affine or camera, got \"" + request.objective + "\"");
   }
   const std::pair<bool, const char*> camera_only[] = {
-      {request.distance != 0.0, "--distance"},        {request.focal != 0.0, "--focal"},
-      {request.noise_px != 0.0, "--noise-px"},        {request.statistic != "worst", "--statistic"},
-      {request.crb_samples != 2000, "--crb-samples"}, {!request.aim.empty(), "--aim"}};
+      {request.distance != 0.0, "--distance"},
+      {request.focal != 0.0, "--focal"},
+      {request.noise_px != 0.0, "--noise-px"},
+      {request.statistic != "worst", "--statistic"},
+      {request.crb_samples != Request{}.crb_samples, "--crb-samples"},
+      {!request.aim.empty(), "--aim"}};
   for (const auto& [given, option] : camera_only) {
     if (given) place_refuse(option, "goes with --objective camera");
   }
@@ -308,7 +300,7 @@ std::optional<design::CameraObjective> camera_objective(const Request& request,
     const Eigen::Vector3d high = sites.entries.rowwise().maxCoeff();
     out.crb.aim = 0.5 * (low + high);
   } else {
-    out.crb.aim = place_point(request.aim, "--aim");
+    out.crb.aim = commands::parse_point(request.aim, "--aim");
   }
   return out;
 }

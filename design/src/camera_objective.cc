@@ -62,8 +62,7 @@ camera::PoseCrbAt CameraSiteObjective::at(const std::vector<int>& chosen, int d)
 double CameraSiteObjective::value(const std::vector<int>& chosen, double level, int* hint) const {
   const bool worst = objective_.statistic == CrbStatistic::kWorst;
   const int n = directions();
-  std::vector<double> values;
-  values.reserve(static_cast<std::size_t>(n));
+  std::vector<double> values;  // every trackable value, for a percentile only
   int worst_at = -1;
   double largest = -1.0;
   const int first = hint != nullptr && *hint >= 0 && *hint < n ? *hint : 0;
@@ -71,7 +70,7 @@ double CameraSiteObjective::value(const std::vector<int>& chosen, double level, 
     const int d = (first + step) % n;
     const camera::PoseCrbAt at = this->at(chosen, d);
     if (!at.trackable) continue;
-    values.push_back(at.rot_rms_deg);
+    if (!worst) values.push_back(at.rot_rms_deg);
     if (at.rot_rms_deg > largest) {
       largest = at.rot_rms_deg;
       worst_at = d;
@@ -79,7 +78,7 @@ double CameraSiteObjective::value(const std::vector<int>& chosen, double level, 
     if (worst && largest >= level) break;
   }
   if (hint != nullptr && worst_at >= 0) *hint = worst_at;
-  if (values.empty()) return std::numeric_limits<double>::infinity();
+  if (worst_at < 0) return std::numeric_limits<double>::infinity();
   if (worst) return largest;
   std::sort(values.begin(), values.end());
   return camera::nearest_rank(values, objective_.statistic == CrbStatistic::kP95 ? 0.95 : 0.50);
