@@ -12,6 +12,7 @@
 #include "place_report.h"
 #include "progress.h"
 #include "vantage/analysis/common.h"
+#include "vantage/commands/point_text.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/io/layout_formats.h"
 #include "vantage/io/text_file.h"
@@ -120,9 +121,15 @@ Command add_place_command(CLI::App& root) {
   sub->add_option("--crb-samples", args->crb_samples,
                   "camera objective: Fibonacci directions of the sphere (vantage crb --samples)")
       ->capture_default_str();
-  sub->add_option("--aim", args->aim,
+  sub->add_option("--aim", args->aim_text,
                   "camera objective: X,Y,Z, the point the camera looks at (default: the centre "
                   "of the sites' bounding box)");
+  args->tre.add_options(sub, false);
+  args->tre.target_option->description(
+      "tracker objective: target X,Y,Z in the sites' frame (repeatable)");
+  args->tre.fle_rms_option->description("tracker objective: isotropic FLE, RMS of the 3-D error");
+  args->tre.fle_sigma_option->description(
+      "tracker objective: anisotropic FLE SP,SD, sd across and along the line of sight");
   sub->add_option("--min-coverage", args->min_coverage,
                   "least trackable fraction of the workspace's lattice, in (0, 1] (default: "
                   "every direction but one)");
@@ -134,6 +141,11 @@ Command add_place_command(CLI::App& root) {
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
   return {sub, [args, candidates] {
             args->candidates_given = candidates->count() > 0;
+            if (!args->aim_text.empty()) args->aim = commands::parse_point(args->aim_text, "--aim");
+            if (!args->tre.targets.empty()) args->targets = args->tre.parsed_targets();
+            if (args->tre.fle_rms || !args->tre.fle_sigma.empty()) {
+              args->fle = args->tre.parsed_fle();
+            }
             return run_place(*args);
           }};
 }

@@ -35,7 +35,7 @@ void print_camera_objective(const PlaceArgs& args, const place_json::Outcome& ou
     std::cout << "  untrackable from every sampled direction\n";
     return;
   }
-  std::cout << "  " << args.statistic << " rot_rms   " << format_number(outcome.objective_deg, 6)
+  std::cout << "  " << args.statistic << " rot_rms   " << format_number(outcome.objective_value, 6)
             << " deg (the search's lattice value "
             << format_number(outcome.result.value.objective, 6) << " deg)\n"
             << "  worst           " << format_number(map.worst.rot_rms_deg, 6) << " deg, trans_rms "
@@ -45,6 +45,36 @@ void print_camera_objective(const PlaceArgs& args, const place_json::Outcome& ou
             << format_number(map.percentiles.p95, 6) << " / "
             << format_number(map.percentiles.p99, 6) << " deg\n"
             << "  trackable       " << percent(map.trackable_fraction) << " of the workspace\n";
+}
+
+// The tracker objective's lines: what `vantage tre` reports of the placed layout.
+void print_tracker_objective(const place_json::Outcome& outcome) {
+  const tracker::TreReport& tre = *outcome.placed.tre;
+  std::cout << "\nthe tracker objective (the placed layout's vantage tre, FLE ";
+  if (tre.fle.from_rms) {
+    std::cout << "rms " << format_number(tre.fle.rms(), 9);
+  } else {
+    std::cout << "sigma " << format_number(tre.fle.sigma_perp, 9) << ","
+              << format_number(tre.fle.sigma_axial, 9);
+  }
+  std::cout << "):\n  worst RMS TRE bound " << format_number(outcome.objective_value, 6)
+            << " (the search's value " << format_number(outcome.result.value.objective, 6) << ")\n";
+  for (const tracker::TreTargetReport& t : tre.targets) {
+    const tracker::TreExtreme& w = t.extremes.worst;
+    std::cout << "  target " << format_vector(t.target) << ": ";
+    if (w.status == tracker::TreExtreme::Status::kUntracked) {
+      std::cout << "untracked\n";
+      continue;
+    }
+    std::cout << "worst " << format_number(w.rms, 6) << " (bound " << format_number(w.rms_bound, 6)
+              << ", " << tracker::to_string(w.status) << ") at " << format_vector(w.direction)
+              << "\n";
+  }
+}
+
+// A step's or a baseline's objective value with its unit.
+std::string objective_text(const place_json::PlacedLayout& placed, double value) {
+  return format_number(value, 6) + (placed.tre ? "" : " deg");
 }
 
 }  // namespace
@@ -62,10 +92,11 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
   std::cout << ", min_visible " << v.min_visible << ", " << (v.with_body ? "cone+mesh" : "cone")
             << " visibility, search " << r.search << "\n\n";
   if (!r.steps.empty()) {
-    std::cout << (placed.crb ? "greedy construction (k markers: coverage, the objective on the "
-                               "search's lattice):\n"
-                             : "greedy construction (k markers: coverage, certified p-bar_min, "
-                               "worst error):\n");
+    std::cout << (placed.crb   ? "greedy construction (k markers: coverage, the objective on the "
+                                 "search's lattice):\n"
+                  : placed.tre ? "greedy construction (k markers: coverage, worst RMS TRE bound):\n"
+                               : "greedy construction (k markers: coverage, certified p-bar_min, "
+                                 "worst error):\n");
     for (const design::PlacementStep& s : r.steps) {
       std::cout << "  k " << s.k << "  "
                 << (s.added >= 0 ? placed.site_names[static_cast<std::size_t>(s.added)]
@@ -73,8 +104,8 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
                 << "  " << percent(s.value.coverage) << "  ";
       if (s.value.status == visibility::VisibilityWorstViewpoint::Status::kUntrackable) {
         std::cout << "untrackable\n";
-      } else if (placed.crb) {
-        std::cout << format_number(s.value.objective, 6) << " deg\n";
+      } else if (placed.crb || placed.tre) {
+        std::cout << objective_text(placed, s.value.objective) << "\n";
       } else {
         std::cout << format_number(s.value.pbar_min, 6) << "  "
                   << format_number(error_deg(s.value.pbar_min), 4) << " deg\n";
@@ -85,11 +116,11 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
     std::cout << "exhaustive over " << r.subsets << " feasible subsets\n\n";
   }
   const design::RandomBaseline& b = r.random_baseline;
-  if (placed.crb) {
+  if (placed.crb || placed.tre) {
     std::cout << "random baseline: " << b.trials << " feasible subsets, " << b.complete
-              << " complete; best objective " << format_number(b.best_objective, 6)
-              << " deg (coverage " << percent(b.best_coverage) << "), median "
-              << format_number(b.median_objective, 6) << " deg\n";
+              << " complete; best objective " << objective_text(placed, b.best_objective)
+              << " (coverage " << percent(b.best_coverage) << "), median "
+              << objective_text(placed, b.median_objective) << "\n";
   } else {
     std::cout << "random baseline: " << b.trials << " feasible subsets, " << b.complete
               << " trackable everywhere; best p-bar_min " << format_number(b.best_pbar_min, 6)
@@ -106,13 +137,19 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
             << "  certificate     " << visibility::to_string(v.worst.status) << " (t in ["
             << format_number(v.worst.t_lower, 9) << ", " << format_number(v.worst.t_upper, 9)
             << "])\n";
-  if (r.robust) {
+  if (r.robust && (placed.crb || placed.tre)) {
+    std::cout << "  one marker lost: the objective " << objective_text(placed, r.robust->objective)
+              << " on the search's terms without "
+              << placed.site_names[static_cast<std::size_t>(r.robust->worst_lost_marker)]
+              << ", coverage at least " << percent(r.robust->coverage) << "\n";
+  } else if (r.robust) {
     std::cout << "  one marker lost: p-bar_min " << format_number(r.robust->pbar_min, 6) << " ("
               << format_number(error_deg(r.robust->pbar_min), 4) << " deg) without "
               << placed.site_names[static_cast<std::size_t>(r.robust->worst_lost_marker)]
               << ", coverage at least " << percent(r.robust->coverage) << "\n";
   }
   if (placed.crb) print_camera_objective(args, outcome);
+  if (placed.tre) print_tracker_objective(outcome);
   if (written) std::cout << "written: " << args.out << "\n";
 }
 

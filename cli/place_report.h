@@ -5,6 +5,7 @@
 
 #include "command.h"
 #include "layout_input.h"
+#include "tre_input.h"
 #include "vantage/commands/place_json.h"
 
 namespace vantage::cli {
@@ -12,7 +13,9 @@ namespace vantage::cli {
 /// The placement's arguments (place_json::Request) and the CLI's own: the sites file's format and
 /// the visibility options, --json and --quiet.
 struct PlaceArgs : place_json::Request {
-  LayoutInput input;  ///< --format of --sites and the visibility options
+  LayoutInput input;     ///< --format of --sites and the visibility options
+  TreTargetArgs tre;     ///< the tracker objective's --target, --fle-rms and --fle-sigma as typed
+  std::string aim_text;  ///< --aim as typed
   bool json = false;
   bool quiet = false;
 };

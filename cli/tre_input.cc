@@ -9,13 +9,14 @@
 
 namespace vantage::cli {
 
-void TreTargetArgs::add_options(CLI::App* sub) {
+void TreTargetArgs::add_options(CLI::App* sub, bool with_direction) {
   target_option =
       sub->add_option("--target", targets, "target X,Y,Z in the tool frame (repeatable)");
   fle_rms_option =
       sub->add_option("--fle-rms", fle_rms, "isotropic FLE, RMS of the 3-D marker error");
   fle_sigma_option = sub->add_option(
       "--fle-sigma", fle_sigma, "anisotropic FLE SP,SD: sd across and along the line of sight");
+  if (!with_direction) return;
   direction_option =
       sub->add_option("--direction", direction,
                       "also the TRE at this line of sight AX,AY,AZ (tool toward tracker)");

@@ -24,8 +24,8 @@ struct TreTargetArgs {
   CLI::Option* fle_sigma_option = nullptr;
   CLI::Option* direction_option = nullptr;
 
-  /// Adds the four options to `sub`.
-  void add_options(CLI::App* sub);
+  /// Adds the four options to `sub` (--direction only `with_direction`).
+  void add_options(CLI::App* sub, bool with_direction = true);
   /// The typed targets (at least one); InvalidArgument naming --target otherwise.
   std::vector<Eigen::Vector3d> parsed_targets() const;
   /// Exactly one of --fle-rms F (> 0) and --fle-sigma SP,SD; InvalidArgument naming it otherwise.

@@ -8,7 +8,6 @@
 #include <utility>
 
 #include "vantage/analysis/common.h"
-#include "vantage/commands/point_text.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/io/layout_formats.h"
 #include "vantage/io/mesh_file.h"
@@ -188,35 +187,83 @@ void check_positive(double value, const char* option) {
   }
 }
 
+void check_camera(const Request& request) {
+  check_positive(request.distance, "--distance");
+  check_positive(request.focal, "--focal");
+  check_positive(request.noise_px, "--noise-px");
+  if (!design::parse_crb_statistic(request.statistic)) {
+    place_refuse("--statistic", "expected worst, p95 or median, got \"" + request.statistic + "\"");
+  }
+  if (request.crb_samples < 100 || request.crb_samples > kMaxCrbSamples) {
+    place_refuse("--crb-samples", "must be in [100, " + std::to_string(kMaxCrbSamples) + "], got " +
+                                      std::to_string(request.crb_samples));
+  }
+  if (request.aim && !request.aim->allFinite()) place_refuse("--aim", "must be finite");
+}
+
+// The FLE's option as the request was given it.
+const char* fle_option(const Request& request) {
+  return request.fle && !request.fle->from_rms ? "--fle-sigma" : "--fle-rms";
+}
+
+void check_tracker(const Request& request) {
+  if (request.targets.empty()) {
+    place_refuse("--target", "give at least one X,Y,Z with --objective tracker");
+  }
+  for (const Eigen::Vector3d& target : request.targets) {
+    if (!target.allFinite()) place_refuse("--target", "must be finite");
+  }
+  if (!request.fle) {
+    place_refuse("--fle-rms", "give --fle-rms F or --fle-sigma SP,SD with --objective tracker");
+  }
+  std::string why;
+  if (!request.fle->is_valid(&why)) place_refuse(fle_option(request), why);
+  if (request.markers > design::TrackerObjective::kMaxMarkers) {
+    place_refuse("--markers", "the tracker objective takes at most " +
+                                  std::to_string(design::TrackerObjective::kMaxMarkers) +
+                                  " markers (the TRE search's limit), got " +
+                                  std::to_string(request.markers));
+  }
+}
+
+// The TRE's numeric range (docs/math.md §23) on the sites, before any search.
+void check_tracker_range(const Request& request, const Eigen::Matrix3Xd& sites) {
+  const long n = static_cast<long>(request.targets.size());
+  for (long i = 0; i < n; ++i) {
+    try {
+      tracker::check_tre_range(sites, request.targets[static_cast<std::size_t>(i)], *request.fle,
+                               n > 1 ? i : -1);
+    } catch (const InvalidArgument& e) {
+      if (e.field() == "target") place_refuse("--target", e.what());
+      if (e.field().rfind("fle.", 0) == 0) place_refuse(fle_option(request), e.what());
+      place_refuse(request.sites.empty() ? "BODY" : "--sites", e.what());
+    }
+  }
+}
+
 void check_objective(const Request& request) {
-  if (request.objective == "camera") {
-    check_positive(request.distance, "--distance");
-    check_positive(request.focal, "--focal");
-    check_positive(request.noise_px, "--noise-px");
-    if (!design::parse_crb_statistic(request.statistic)) {
-      place_refuse("--statistic",
-                   "expected worst, p95 or median, got \"" + request.statistic + "\"");
-    }
-    if (request.crb_samples < 100 || request.crb_samples > kMaxCrbSamples) {
-      place_refuse("--crb-samples", "must be in [100, " + std::to_string(kMaxCrbSamples) +
-                                        "], got " + std::to_string(request.crb_samples));
-    }
-    if (!request.aim.empty()) commands::parse_point(request.aim, "--aim");
-    return;
+  const bool camera = request.objective == "camera";
+  const bool tracker = request.objective == "tracker";
+  if (!camera && !tracker && request.objective != "affine") {
+    place_refuse("--objective",
+                 "expected affine, camera or tracker, got \"" + request.objective + "\"");
   }
-  if (request.objective != "affine") {
-    place_refuse("--objective", "expected affine or camera, got \"" + request.objective + "\"");
-  }
+  if (camera) check_camera(request);
+  if (tracker) check_tracker(request);
   const std::pair<bool, const char*> camera_only[] = {
       {request.distance != 0.0, "--distance"},
       {request.focal != 0.0, "--focal"},
       {request.noise_px != 0.0, "--noise-px"},
       {request.statistic != "worst", "--statistic"},
       {request.crb_samples != Request{}.crb_samples, "--crb-samples"},
-      {!request.aim.empty(), "--aim"}};
+      {request.aim.has_value(), "--aim"}};
   for (const auto& [given, option] : camera_only) {
-    if (given) place_refuse(option, "goes with --objective camera");
+    if (given && !camera) place_refuse(option, "goes with --objective camera");
   }
+  if (!tracker && !request.targets.empty()) {
+    place_refuse("--target", "goes with --objective tracker");
+  }
+  if (!tracker && request.fle) place_refuse(fle_option(request), "goes with --objective tracker");
 }
 
 // The camera objective in words, with the `vantage crb` options that reproduce its numbers.
@@ -229,6 +276,42 @@ std::string camera_words(const Request& request, const camera::PoseCrbOptions& c
       << camera.focal_length << " --noise-px " << camera.noise_px << " --samples " << camera.samples
       << " --aim " << aim.x() << "," << aim.y() << "," << aim.z();
   return out.str();
+}
+
+// The tracker objective in words, with the `vantage tre` options that reproduce its numbers.
+std::string tracker_words(const design::TrackerObjective& tracker) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "tracker: the largest worst.rms_bound over the targets of vantage tre";
+  for (const Eigen::Vector3d& t : tracker.targets) {
+    out << " --target " << t.x() << "," << t.y() << "," << t.z();
+  }
+  if (tracker.fle.from_rms) {
+    out << " --fle-rms " << tracker.fle.rms();
+  } else {
+    out << " --fle-sigma " << tracker.fle.sigma_perp << "," << tracker.fle.sigma_axial;
+  }
+  return out.str();
+}
+
+// The largest certified bound on the worst RMS TRE over the targets of a tre report (+inf when a
+// target is tracked from nowhere).
+double tre_objective(const tracker::TreReport& report) {
+  double out = 0.0;
+  for (const tracker::TreTargetReport& t : report.targets) {
+    if (t.extremes.worst.status == tracker::TreExtreme::Status::kUntracked) {
+      return std::numeric_limits<double>::infinity();
+    }
+    out = std::max(out, t.extremes.worst.rms_bound);
+  }
+  return out;
+}
+
+// Every target's worst is certified.
+bool tre_certified(const tracker::TreReport& report) {
+  return std::all_of(
+      report.targets.begin(), report.targets.end(),
+      [](const tracker::TreTargetReport& t) { return t.extremes.worst.certified(); });
 }
 
 // The camera's statistic of a crb map, degrees (+inf when untrackable).
@@ -245,16 +328,46 @@ double crb_statistic(const camera::PoseCrbMap& map, design::CrbStatistic statist
   return map.worst.rot_rms_deg;
 }
 
-// A degree value, or null when it is infinite (nothing trackable).
+// A value, or null when it is infinite (nothing trackable).
 Json place_degrees(double value) { return std::isfinite(value) ? Json(value) : Json(); }
+
+Json place_vector(const Eigen::Vector3d& v) { return Json{v.x(), v.y(), v.z()}; }
+
+// The tracker objective's block: `vantage tre`'s worst of each target on the placed layout.
+void place_tracker_json(const Outcome& outcome, Json* out) {
+  const tracker::TreReport& tre = *outcome.placed.tre;
+  (*out)["search_value"] = place_degrees(outcome.result.value.objective);
+  Json fle = {{"sigma_perp", tre.fle.sigma_perp}, {"sigma_axial", tre.fle.sigma_axial}};
+  if (tre.fle.from_rms) fle["rms"] = tre.fle.rms();
+  (*out)["fle"] = fle;
+  Json targets = Json::array();
+  for (const tracker::TreTargetReport& t : tre.targets) {
+    const tracker::TreExtreme& w = t.extremes.worst;
+    targets.push_back({{"target", place_vector(t.target)},
+                       {"status", tracker::to_string(w.status)},
+                       {"rms", w.rms},
+                       {"rms_bound", w.rms_bound},
+                       {"direction", place_vector(w.direction)}});
+  }
+  (*out)["targets"] = targets;
+}
 
 Json place_objective_json(const Request& request, const Outcome& outcome) {
   const design::PlacementResult& r = outcome.result;
   Json out;
   out["name"] = request.objective;
-  out["value_deg"] = place_degrees(outcome.objective_deg);
+  if (outcome.placed.tre) {
+    // A length in the layout's unit, not degrees.
+    out["value"] = place_degrees(outcome.objective_value);
+  } else {
+    out["value_deg"] = place_degrees(outcome.objective_value);
+  }
   out["min_coverage"] = request.min_coverage == -1.0 ? Json("all lattice directions but one")
                                                      : Json(request.min_coverage);
+  if (outcome.placed.tre) {
+    place_tracker_json(outcome, &out);
+    return out;
+  }
   if (!outcome.placed.crb) {
     out["scale_free"] = true;
     return out;
@@ -295,13 +408,21 @@ std::optional<design::CameraObjective> camera_objective(const Request& request,
   out.crb.noise_px = request.noise_px;
   out.crb.samples = request.crb_samples;
   out.crb.threads = request.threads;
-  if (request.aim.empty()) {
+  if (!request.aim) {
     const Eigen::Vector3d low = sites.entries.rowwise().minCoeff();
     const Eigen::Vector3d high = sites.entries.rowwise().maxCoeff();
     out.crb.aim = 0.5 * (low + high);
   } else {
-    out.crb.aim = commands::parse_point(request.aim, "--aim");
+    out.crb.aim = request.aim;
   }
+  return out;
+}
+
+std::optional<design::TrackerObjective> tracker_objective(const Request& request) {
+  if (request.objective != "tracker") return std::nullopt;
+  design::TrackerObjective out;
+  out.targets = request.targets;
+  out.fle = *request.fle;
   return out;
 }
 
@@ -403,6 +524,8 @@ Outcome place(const Request& request, const Sites& sites,
   Outcome out;
   try {
     options.camera = camera_objective(request, sites.layout);
+    options.tracker = tracker_objective(request);
+    if (options.tracker) check_tracker_range(request, problem.sites.points);
     out.result = design::place_markers(problem, options);
   } catch (const InvalidArgument& e) {
     if (e.field() == "distance") place_refuse("--distance", e.what());
@@ -411,15 +534,19 @@ Outcome place(const Request& request, const Sites& sites,
   if (progress) progress("final analysis");
   std::optional<camera::PoseCrbOptions> camera;
   if (options.camera) camera = options.camera->crb;
-  out.placed = placed_layout(request, sites.layout, sites.n_candidates, out.result, camera);
+  out.placed =
+      placed_layout(request, sites.layout, sites.n_candidates, out.result, camera, options.tracker);
   const bool covered = out.result.status == design::PlacementResult::Status::kComplete;
-  if (out.placed.crb) {
-    out.objective_deg = crb_statistic(*out.placed.crb, options.camera->statistic);
+  if (out.placed.tre) {
+    out.objective_value = tre_objective(*out.placed.tre);
+    out.complete = covered && std::isfinite(out.objective_value) && tre_certified(*out.placed.tre);
+  } else if (out.placed.crb) {
+    out.objective_value = crb_statistic(*out.placed.crb, options.camera->statistic);
     out.complete = covered && out.placed.crb->status == camera::PoseCrbMap::Status::kOk;
   } else {
-    out.objective_deg = out.placed.report.visibility
-                            ? out.placed.report.visibility->max_worst_case_error_deg
-                            : 90.0;
+    out.objective_value = out.placed.report.visibility
+                              ? out.placed.report.visibility->max_worst_case_error_deg
+                              : 90.0;
     out.complete =
         covered && out.placed.report.visibility && out.placed.report.visibility->worst.certified();
   }
@@ -428,7 +555,8 @@ Outcome place(const Request& request, const Sites& sites,
 
 PlacedLayout placed_layout(const Request& request, const Layout& sites, int n_candidates,
                            const design::PlacementResult& result,
-                           const std::optional<camera::PoseCrbOptions>& camera) {
+                           const std::optional<camera::PoseCrbOptions>& camera,
+                           const std::optional<design::TrackerObjective>& tracker) {
   PlacedLayout out;
   for (Eigen::Index i = 0; i < sites.entries.cols(); ++i) {
     out.site_names.push_back(design::site_name(sites, static_cast<int>(i)));
@@ -438,6 +566,7 @@ PlacedLayout placed_layout(const Request& request, const Layout& sites, int n_ca
   record.n_candidates = n_candidates;
   record.robust_dropout = request.robust_dropout;
   if (camera) record.objective = camera_words(request, *camera);
+  if (tracker) record.objective = tracker_words(*tracker);
   out.layout = design::placed_layout(sites, result, record);
   report::LayoutReportOptions options;
   options.visibility.search.certificate_tolerance = request.certificate_tolerance;
@@ -446,6 +575,13 @@ PlacedLayout placed_layout(const Request& request, const Layout& sites, int n_ca
   if (camera) {
     out.camera = camera;
     out.crb = camera::pose_crb_map(camera::PoseCrbModel(out.layout, *camera));
+  }
+  if (tracker) {
+    tracker::TreOptions tre;
+    tre.fle = tracker->fle;
+    tre.search = tracker->search;
+    tre.threads = request.threads;
+    out.tre = tracker::tre_report(out.layout, tracker->targets, tre);
   }
   return out;
 }
@@ -461,6 +597,11 @@ std::string failure_message(const design::PlacementResult& result, const PlacedL
       message += "; all sites together cover " + place_percent(result.all_sites_coverage);
     }
     return message;
+  }
+  if (placed.tre) {
+    return tre_objective(*placed.tre) == std::numeric_limits<double>::infinity()
+               ? "the placed layout tracks a target from no direction of the workspace"
+               : "the placed layout's worst TRE is not certified at every target";
   }
   if (placed.crb) {
     return "the placed layout is trackable from no sampled direction of the camera's workspace";
@@ -509,6 +650,9 @@ Json report(const Request& request, const Sites& sites, const Outcome& outcome, 
         {"worst_lost_name",
          placed.site_names[static_cast<std::size_t>(r.robust->worst_lost_marker)]},
         {"coverage", r.robust->coverage}};
+    if (outcome.placed.crb || outcome.placed.tre) {
+      out["robust"]["objective"] = place_degrees(r.robust->objective);
+    }
   }
   out["swaps"] = r.swaps;
   out["evaluations"] = r.evaluations;

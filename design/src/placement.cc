@@ -12,11 +12,11 @@
 namespace vantage::design {
 namespace {
 
-PlacementValue value_of(const internal::Scored& s, int directions, bool camera) {
+PlacementValue value_of(const internal::Scored& s, int directions, bool affine) {
   PlacementValue out;
   out.coverage = directions == 0 ? 0.0 : static_cast<double>(s.covered) / directions;
   out.objective = s.t;
-  if (!camera) {
+  if (affine) {
     out.t_upper = s.t;
     out.pbar_min = std::sqrt(std::max(0.0, 1.0 - s.t * s.t));
   }
@@ -24,24 +24,22 @@ PlacementValue value_of(const internal::Scored& s, int directions, bool camera) 
   return out;
 }
 
-// The least coverage and p-bar_min over the loss of one marker of `chosen`.
+// The worst single loss of `chosen`: its objective and p-bar_min are those of the family of
+// single losses that the robust search scores (each S without one marker, every member searched
+// to the certificate), so that they are what `vantage analyze --dropout` reports of the placed
+// layout; the coverage is the least over the losses.
 RobustValue robust_value(internal::PlacementSearch& search, const std::vector<int>& chosen) {
+  const internal::Scored s = search.score(chosen);
   RobustValue out;
+  out.objective = s.t;
+  out.pbar_min = search.affine() ? std::sqrt(std::max(0.0, 1.0 - s.t * s.t)) : 0.0;
+  out.worst_lost_marker = s.worst_lost;
   out.coverage = 1.0;
-  out.pbar_min = 1.0;
-  out.objective = -1.0;
   const int directions = search.coverage().directions();
   for (std::size_t m = 0; m < chosen.size(); ++m) {
-    const internal::Scored lost = search.score(internal::without_position(chosen, m));
-    const double coverage =
-        directions == 0 ? 0.0 : static_cast<double>(lost.cover.covered) / directions;
-    const double pbar = std::sqrt(std::max(0.0, 1.0 - lost.t * lost.t));
-    out.coverage = std::min(out.coverage, coverage);
-    if (out.worst_lost_marker < 0 || lost.t > out.objective) {
-      out.pbar_min = search.camera() != nullptr ? 0.0 : pbar;
-      out.objective = lost.t;
-      out.worst_lost_marker = chosen[m];
-    }
+    const int covered = search.coverage().key(internal::without_position(chosen, m)).covered;
+    out.coverage =
+        std::min(out.coverage, directions == 0 ? 0.0 : static_cast<double>(covered) / directions);
   }
   return out;
 }
@@ -117,6 +115,9 @@ bool PlaceOptions::is_valid(std::string* why) const {
   if (min_coverage && !(*min_coverage > 0.0 && *min_coverage <= 1.0)) {
     return vantage::internal::invalid_option(why, "min_coverage", "must be in (0, 1]");
   }
+  if (tracker && camera) {
+    return vantage::internal::invalid_option(why, "tracker", "goes with no camera objective");
+  }
   if (camera) {
     std::string camera_why;
     if (!camera->crb.is_valid(&camera_why)) {
@@ -125,6 +126,23 @@ bool PlaceOptions::is_valid(std::string* why) const {
     if (!camera->crb.aim) {
       return vantage::internal::invalid_option(why, "camera.aim",
                                                "must be given (the point the camera looks at)");
+    }
+  }
+  if (tracker) {
+    if (tracker->targets.empty()) {
+      return vantage::internal::invalid_option(why, "tracker.targets", "give at least one");
+    }
+    for (const Eigen::Vector3d& target : tracker->targets) {
+      if (!target.allFinite()) {
+        return vantage::internal::invalid_option(why, "tracker.targets", "must be finite");
+      }
+    }
+    std::string tracker_why;
+    if (!tracker->fle.is_valid(&tracker_why)) {
+      return vantage::internal::invalid_option(why, "tracker.fle", tracker_why);
+    }
+    if (!tracker->search.is_valid(&tracker_why)) {
+      return vantage::internal::invalid_option(why, "tracker.search", tracker_why);
     }
   }
   if (coverage_samples < 100) {
@@ -162,6 +180,12 @@ PlacementResult place_markers(const PlacementProblem& problem, const PlaceOption
         "camera.sites",
         "must hold the problem's " + std::to_string(problem.sites.points.cols()) + " sites");
   }
+  if (options.tracker && problem.markers > TrackerObjective::kMaxMarkers) {
+    throw InvalidArgument("markers", "the tracker objective takes at most " +
+                                         std::to_string(TrackerObjective::kMaxMarkers) +
+                                         " markers (the TRE search's limit), got " +
+                                         std::to_string(problem.markers));
+  }
   internal::PlacementSearch search(problem, options);
   const int directions = search.coverage().directions();
   PlacementResult out;
@@ -190,7 +214,7 @@ PlacementResult place_markers(const PlacementProblem& problem, const PlaceOption
                               " sites satisfy the separation and distance-difference constraints");
   }
   out.chosen = best->chosen;
-  out.value = value_of(*best, directions, search.camera() != nullptr);
+  out.value = value_of(*best, directions, search.affine());
   if (options.robust_dropout) out.robust = robust_value(search, out.chosen);
   out.evaluations = search.evaluations();
   out.status = best->covered >= search.required() ? PlacementResult::Status::kComplete

@@ -87,7 +87,7 @@ RandomBaseline PlacementSearch::baseline(std::optional<Scored>* best) {
     ++out.trials;
     const bool complete = s->covered >= required_;
     if (complete) ++out.complete;
-    pbar.push_back(complete ? std::sqrt(std::max(0.0, 1.0 - s->t * s->t)) : 0.0);
+    pbar.push_back(complete && affine() ? std::sqrt(std::max(0.0, 1.0 - s->t * s->t)) : 0.0);
     values.push_back(complete ? s->t : no_level());
     if (!better_cover(*top, *s) && (!*best || better(*s, **best))) *best = *s;
   }
@@ -95,7 +95,7 @@ RandomBaseline PlacementSearch::baseline(std::optional<Scored>* best) {
     out.best_coverage = coverage_.directions() == 0
                             ? 0.0
                             : static_cast<double>((*best)->covered) / coverage_.directions();
-    out.best_pbar_min = std::sqrt(std::max(0.0, 1.0 - (*best)->t * (*best)->t));
+    out.best_pbar_min = affine() ? std::sqrt(std::max(0.0, 1.0 - (*best)->t * (*best)->t)) : 0.0;
     out.best_objective = (*best)->t;
     out.best = (*best)->chosen;
     std::sort(pbar.begin(), pbar.end());

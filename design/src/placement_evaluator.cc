@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "vantage/tracker/identification.h"
+#include "vantage/tracker/target_registration.h"
+#include "vantage/tracker/tre_search.h"
 
 namespace vantage::design::internal {
 
@@ -62,6 +65,7 @@ FamilyValue PlacementEvaluator::family_t(const std::vector<std::vector<int>>& fa
                                          const std::vector<Eigen::Vector3d>& witnesses,
                                          double tolerance) const {
   if (camera_ != nullptr) return camera_family(family, level);
+  if (options_.tracker) return tracker_family(family, level, witnesses);
   FamilyValue out;
   std::vector<visibility::VisibilityProblem> problems;
   problems.reserve(family.size());
@@ -115,12 +119,92 @@ FamilyValue PlacementEvaluator::camera_family(const std::vector<std::vector<int>
     ++out.searches;
     if (!(value < level)) {
       out.t_upper = value;
+      out.worst_member = static_cast<int>(m);
       return out;
     }
     if (value > out.t_upper) {
       out.t_upper = value;
       out.worst_member = static_cast<int>(m);
       out.status = visibility::VisibilityWorstViewpoint::Status::kCertified;
+    }
+  }
+  out.below = true;
+  return out;
+}
+
+namespace {
+
+// The largest RMS TRE over the targets attained at the tracked direction a of `p` (what tre's
+// search attains there), or -1 when a is not tracked.
+double tracker_attained(const visibility::VisibilityProblem& p, const TrackerObjective& tracker,
+                        const Eigen::Vector3d& a) {
+  const visibility::DirectionVisibility seen = visibility::direction_visibility(p, a);
+  if (!seen.trackable) return -1.0;
+  double out = -1.0;
+  for (const Eigen::Vector3d& target : tracker.targets) {
+    const tracker::TreQuadratic q =
+        tracker::tre_quadratic(p.points, seen.visible, target, tracker.fle);
+    if (!q.registrable) return -1.0;
+    out = std::max(out, std::sqrt(std::max(0.0, q.rms_squared(a))));
+  }
+  return out;
+}
+
+}  // namespace
+
+FamilyValue PlacementEvaluator::tracker_family(
+    const std::vector<std::vector<int>>& family, double level,
+    const std::vector<Eigen::Vector3d>& witnesses) const {
+  const TrackerObjective& tracker = *options_.tracker;
+  FamilyValue out;
+  std::vector<visibility::VisibilityProblem> problems;
+  problems.reserve(family.size());
+  for (const std::vector<int>& member : family) problems.push_back(subproblem(member));
+  // An attained value at or above the level: the family cannot beat it.
+  for (const Eigen::Vector3d& w : witnesses) {
+    for (const visibility::VisibilityProblem& p : problems) {
+      if (p.points.cols() >= p.min_visible && tracker_attained(p, tracker, w) >= level) {
+        out.t_upper = std::numeric_limits<double>::infinity();
+        return out;
+      }
+    }
+  }
+  tracker::TreSearchOptions search = tracker.search;
+  search.stop_above = level;
+  out.t_upper = -1.0;
+  for (std::size_t m = 0; m < problems.size(); ++m) {
+    // Fewer markers than a direction must see: tracked nowhere (robust_dropout early on).
+    double value = std::numeric_limits<double>::infinity();
+    auto status = visibility::VisibilityWorstViewpoint::Status::kUntrackable;
+    if (problems[m].points.cols() >= problems[m].min_visible) {
+      status = visibility::VisibilityWorstViewpoint::Status::kCertified;
+      value = -1.0;
+      for (const Eigen::Vector3d& target : tracker.targets) {
+        const tracker::TreExtreme worst =
+            tracker::tre_worst(problems[m], target, tracker.fle, search);
+        ++out.searches;
+        if (worst.status == tracker::TreExtreme::Status::kUntracked) {
+          value = std::numeric_limits<double>::infinity();
+          status = visibility::VisibilityWorstViewpoint::Status::kUntrackable;
+          break;
+        }
+        out.witnesses.push_back(worst.direction);
+        if (!worst.certified())
+          status = visibility::VisibilityWorstViewpoint::Status::kNotCertified;
+        value = std::max(value, worst.rms_bound);
+        if (!(value < level)) break;
+      }
+    }
+    if (!(value < level)) {
+      out.t_upper = value;
+      out.worst_member = static_cast<int>(m);
+      out.status = status;
+      return out;
+    }
+    if (value > out.t_upper) {
+      out.t_upper = value;
+      out.worst_member = static_cast<int>(m);
+      out.status = status;
     }
   }
   out.below = true;

@@ -42,12 +42,16 @@ class PlacementEvaluator {
   /// The largest objective value over `family` (subsets of sites), when below `level`. Affine:
   /// t_upper, attained values at the witnesses first, then a search per member that stops once
   /// it attains the level; `tolerance` > 0 replaces the search's certificate tolerance (the
-  /// random baseline's). Camera: the statistic of the CRB (docs/math.md §21, "Objectives").
+  /// random baseline's). Camera: the statistic of the CRB; tracker: the largest certified worst
+  /// RMS TRE bound over the targets, the witnesses' attained values first (docs/math.md §21,
+  /// "Objectives").
   FamilyValue family_t(const std::vector<std::vector<int>>& family, double level,
                        const std::vector<Eigen::Vector3d>& witnesses, double tolerance = 0.0) const;
 
  private:
   FamilyValue camera_family(const std::vector<std::vector<int>>& family, double level) const;
+  FamilyValue tracker_family(const std::vector<std::vector<int>>& family, double level,
+                             const std::vector<Eigen::Vector3d>& witnesses) const;
 
   const PlacementProblem& problem_;
   const PlaceOptions& options_;

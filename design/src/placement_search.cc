@@ -66,7 +66,7 @@ CoverageKey PlacementSearch::ranked(CoverageKey key, bool potential) const {
 }
 
 double PlacementSearch::no_level() const {
-  return camera_ ? std::numeric_limits<double>::infinity() : 2.0;
+  return affine() ? 2.0 : std::numeric_limits<double>::infinity();
 }
 
 void PlacementSearch::progress(const std::string& stage) const {
@@ -249,7 +249,7 @@ std::optional<Scored> PlacementSearch::greedy(std::vector<PlacementStep>* steps)
             ? 0.0
             : static_cast<double>(coverage_.key(chosen).covered) / coverage_.directions();
     step.value.objective = s.t;
-    if (!camera_) {
+    if (affine()) {
       step.value.t_upper = s.t;
       step.value.pbar_min = std::sqrt(std::max(0.0, 1.0 - s.t * s.t));
     }

@@ -36,8 +36,10 @@ class PlacementSearch {
   const SiteCoverage& coverage() const { return coverage_; }
   /// Lattice directions a complete choice covers at least.
   int required() const { return required_; }
-  /// The camera objective's model, or null (affine).
+  /// The camera objective's model, or null (affine, tracker).
   const CameraSiteObjective* camera() const { return camera_.get(); }
+  /// The objective is the paper's bound (t, p-bar_min), not camera or tracker.
+  bool affine() const { return !camera_ && !options_.tracker; }
   const PlacementEvaluator& evaluator() const { return evaluator_; }
   long evaluations() const { return evaluations_; }
 
@@ -78,8 +80,9 @@ class PlacementSearch {
   std::vector<int> free_sites() const;
   // A swap or a new incumbent must lower t by more than the certificate tolerance: two t_upper
   // closer than that are not told apart, and the earlier choice stays.
-  // The camera's values are evaluated exactly: any decrease counts.
-  double min_gain() const { return camera_ ? 0.0 : options_.search.certificate_tolerance; }
+  // The camera's and the tracker's values are exact (a lattice statistic, a certified bound
+  // computed the same way every time): any decrease counts.
+  double min_gain() const { return affine() ? options_.search.certificate_tolerance : 0.0; }
   void progress(const std::string& stage) const;
 
   const PlacementProblem& problem_;

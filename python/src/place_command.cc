@@ -11,6 +11,7 @@
 #include "arrays.h"
 #include "layouts.h"
 #include "results.h"
+#include "tre_command.h"
 #include "vantage/analysis/common.h"
 #include "vantage/commands/place_json.h"
 #include "vantage/commands/visibility_options.h"
@@ -27,6 +28,7 @@ namespace {
 InvalidArgument place_renamed(const InvalidArgument& e) {
   const std::string& field = e.field();
   if (field == "BODY" || field == "BODY/--sites") return e.renamed("body", e.index());
+  if (field == "--target") return e.renamed("targets", e.index());
   if (field.rfind("--", 0) != 0) return e;
   std::string keyword = field.substr(2);
   for (char& c : keyword) {
@@ -77,17 +79,26 @@ py::object place_run(const place_json::Request& request,
   if (!request.out.empty()) lock.emplace(request.out);
   const place_json::Outcome outcome =
       without_gil([&] { return place_json::place(request, sites, {}); });
-  if (outcome.complete && !request.out.empty()) {
-    io::save_layout(request.out, outcome.placed.layout, request.overwrite);
+  const bool write = (outcome.complete || request.allow_partial) && !request.out.empty();
+  if (write) io::save_layout(request.out, outcome.placed.layout, request.overwrite);
+  const Json report = place_json::report(request, sites, outcome, write);
+  const std::string why = outcome.complete
+                              ? std::string()
+                              : place_json::failure_message(outcome.result, outcome.placed);
+  if (!outcome.complete && !request.allow_partial) {
+    NumericalFailure failure(outcome.result.status == design::PlacementResult::Status::kComplete
+                                 ? "not_certified"
+                                 : design::to_string(outcome.result.status),
+                             why, report);
+    failure.objects.emplace_back("layout",
+                                 std::make_shared<py::object>(py::cast(outcome.placed.layout)));
+    throw failure;
   }
-  const Json report =
-      place_json::report(request, sites, outcome, outcome.complete && !request.out.empty());
-  py::object result =
-      result_or_raise(!outcome.complete,
-                      outcome.result.status == design::PlacementResult::Status::kComplete
-                          ? "not_certified"
-                          : design::to_string(outcome.result.status),
-                      place_json::failure_message(outcome.result, outcome.placed), report);
+  if (!outcome.complete) {
+    const std::string warning = why + (write ? "; written as asked (allow_partial)" : "");
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) < 0) throw py::error_already_set();
+  }
+  py::object result = to_python(report);
   result["layout"] = py::cast(outcome.placed.layout);
   return result;
 }
@@ -99,8 +110,13 @@ py::object place(const py::object& body, const py::object& sites, int markers,
                  bool robust_dropout, double min_distance_difference,
                  const std::optional<std::uint64_t>& seed, const std::optional<int>& threads,
                  const std::optional<int>& random_trials,
-                 const std::optional<long>& exhaustive_limit, const py::object& out,
-                 bool overwrite) {
+                 const std::optional<long>& exhaustive_limit, const py::object& out, bool overwrite,
+                 const std::string& objective, const std::optional<double>& distance,
+                 const std::optional<double>& focal, const std::optional<double>& noise_px,
+                 const std::string& statistic, const std::optional<int>& crb_samples,
+                 const py::object& aim, const py::object& targets,
+                 const std::optional<double>& fle_rms, const py::object& fle_sigma,
+                 const std::optional<double>& min_coverage, bool allow_partial) {
   try {
     place_json::Request request;
     request.body = place_path(body, "body");
@@ -118,6 +134,21 @@ py::object place(const py::object& body, const py::object& sites, int markers,
     request.random_trials = random_trials.value_or(request.random_trials);
     request.exhaustive_limit = exhaustive_limit.value_or(request.exhaustive_limit);
     request.overwrite = overwrite;
+    request.objective = objective;
+    request.distance = distance.value_or(request.distance);
+    request.focal = focal.value_or(request.focal);
+    request.noise_px = noise_px.value_or(request.noise_px);
+    request.statistic = statistic;
+    request.crb_samples = crb_samples.value_or(request.crb_samples);
+    if (!aim.is_none()) {
+      const Eigen::VectorXd a = vector_from_array(aim, "aim");
+      if (a.size() != 3) throw InvalidArgument("aim", "expected (x, y, z)");
+      request.aim = Eigen::Vector3d(a);
+    }
+    if (!targets.is_none()) request.targets = tre_targets(targets);
+    if (fle_rms || !fle_sigma.is_none()) request.fle = tre_fle(fle_rms, fle_sigma);
+    request.min_coverage = min_coverage.value_or(request.min_coverage);
+    request.allow_partial = allow_partial;
     commands::VisibilityOptions visibility;
     visibility.cone_deg = cone_deg;
     visibility.min_visible = min_visible;
@@ -139,7 +170,13 @@ void bind_place_command(py::module_& module) {
              py::arg("min_distance_difference") = 0.0, py::arg("seed") = py::none(),
              py::arg("threads") = py::none(), py::arg("random_trials") = py::none(),
              py::arg("exhaustive_limit") = py::none(), py::arg("out") = py::none(),
-             py::arg("overwrite") = false,
+             py::arg("overwrite") = false, py::arg("objective") = "affine",
+             py::arg("distance") = py::none(), py::arg("focal") = py::none(),
+             py::arg("noise_px") = py::none(), py::arg("statistic") = "worst",
+             py::arg("crb_samples") = py::none(), py::arg("aim") = py::none(),
+             py::arg("targets") = py::none(), py::arg("fle_rms") = py::none(),
+             py::arg("fle_sigma") = py::none(), py::arg("min_coverage") = py::none(),
+             py::arg("allow_partial") = false,
              "K marker sites on a body mesh or among given sites: every workspace direction "
              "trackable, then the best certified worst case under visibility (as `vantage place "
              "--json`; docs/math.md §21).");

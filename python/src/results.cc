@@ -53,7 +53,9 @@ void register_errors(py::module_& module) {
       py::object instance = py::handle(error.ptr())(failure.what());
       instance.attr("status") = failure.status;
       instance.attr("message") = std::string(failure.what());
-      instance.attr("result") = to_python(failure.result);
+      py::object result = to_python(failure.result);
+      for (const auto& [key, object] : failure.objects) result[py::str(key)] = *object;
+      instance.attr("result") = result;
       instance.attr("text") = failure.text;
       PyErr_SetObject(error.ptr(), instance.ptr());
     } catch (const InvalidArgument& bad) {

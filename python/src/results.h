@@ -10,6 +10,10 @@
 
 #include <pybind11/pybind11.h>
 
+#include <memory>
+#include <utility>
+#include <vector>
+
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -38,6 +42,9 @@ class NumericalFailure : public std::runtime_error {
   std::string status;
   Json result;
   std::string text;  ///< the result's own brief text (LayoutReport::brief_report()), or ""
+  /// Entries added to the result's dict beside the JSON's (e.g. place's "layout", a bound
+  /// vantage.Layout): what a caller gets on success is on the error too.
+  std::vector<std::pair<std::string, std::shared_ptr<py::object>>> objects;
 };
 
 /// Returns `result` as Python objects, or throws NumericalFailure(status, message, result, text)

@@ -17,9 +17,6 @@
 
 namespace vantage::python {
 
-namespace {
-
-// One target [x, y, z] or an n x 3 array of them.
 std::vector<Eigen::Vector3d> tre_targets(const py::object& targets) {
   if (targets.is_none()) throw InvalidArgument("targets", "give at least one target [x, y, z]");
   std::vector<Eigen::Vector3d> out;
@@ -39,7 +36,6 @@ std::vector<Eigen::Vector3d> tre_targets(const py::object& targets) {
   return out;
 }
 
-// Exactly one of fle_rms (> 0) and fle_sigma (sigma_perp, sigma_axial).
 tracker::FleModel tre_fle(const std::optional<double>& fle_rms, const py::object& fle_sigma) {
   if (fle_rms.has_value() == !fle_sigma.is_none()) {
     throw InvalidArgument("fle_rms", "give exactly one of fle_rms and fle_sigma");
@@ -62,6 +58,8 @@ tracker::FleModel tre_fle(const std::optional<double>& fle_rms, const py::object
   }
   return fle;
 }
+
+namespace {
 
 py::object tre(const py::object& layout_arg, const py::object& points, const py::object& targets,
                const std::optional<double>& fle_rms, const py::object& fle_sigma,

@@ -111,3 +111,52 @@ def test_everything_after_body_is_keyword_only(vantage):
     assert all(p.kind is inspect.Parameter.KEYWORD_ONLY for p in parameters[1:])
     markers = next(p for p in parameters if p.name == "markers")
     assert markers.default is inspect.Parameter.empty
+
+
+def test_tracker_objective_matches_the_cli_and_is_what_tre_reports(vantage, tmp_path):
+    """Issue 35: objective='tracker' gives the CLI's JSON, and its value is vantage.tre's largest
+    worst.rms_bound on the placed layout, to the bit."""
+    targets = [[0.0, 0.0, -2.0], [1.0, 1.0, 0.0]]
+    report = vantage.place(sites=CUBE_SITES, markers=6, objective="tracker", targets=targets,
+                           fle_sigma=(0.1, 0.3))
+    cli = cli_json("place", "--sites", CUBE_SITES, "--markers", 6, "--objective", "tracker",
+                   "--target", "0,0,-2", "--target", "1,1,0", "--fle-sigma", "0.1,0.3",
+                   "--out", tmp_path / "cli.json")
+    assert_same(without_written(report.to_dict()), without_written(cli))
+    assert report.objective["name"] == "tracker"
+    tre = vantage.tre(report.layout, targets=targets, fle_sigma=(0.1, 0.3))
+    assert report.objective["value"] == max(t.worst.rms_bound for t in tre.targets)
+
+
+def test_incomplete_placement_keeps_its_layout_and_allow_partial_returns_it(vantage, tmp_path):
+    """Issue 35 item 5: the best incomplete answer is on the error, and allow_partial returns it
+    (and writes it) with a warning."""
+    out = tmp_path / "part.json"
+    with pytest.raises(vantage.NumericalError) as error:
+        vantage.place(sites=CUBE_SITES, markers=3, cone_deg=60.0, out=out)
+    assert error.value.result.status == "incomplete"
+    assert isinstance(error.value.result.layout, vantage.Layout)
+    assert len(error.value.result.layout) == 3 and not out.exists()
+    with pytest.warns(RuntimeWarning, match="allow_partial"):
+        report = vantage.place(sites=CUBE_SITES, markers=3, cone_deg=60.0, out=out,
+                               allow_partial=True)
+    assert report.status == "incomplete" and report.written == str(out) and out.exists()
+
+
+def test_objective_settings_name_their_keyword(vantage, tmp_path):
+    calls = [
+        ("objective", dict(objective="x")),
+        ("focal", dict(objective="camera", distance=5.0, noise_px=1.0)),
+        ("targets", dict(objective="tracker", fle_rms=0.2)),
+        ("fle_rms", dict(objective="tracker", targets=[0.0, 0.0, 0.0])),
+        ("fle_rms", dict(objective="tracker", targets=[0.0, 0.0, 0.0], fle_rms=0.2,
+                         fle_sigma=(0.1, 0.1))),
+        ("targets", dict(targets=[0.0, 0.0, 0.0], fle_rms=0.2)),
+        ("aim", dict(objective="camera", distance=5.0, focal=800.0, noise_px=1.0,
+                     aim=(0.0, float("nan"), 0.0))),
+        ("min_coverage", dict(min_coverage=1.5)),
+    ]
+    for field, kwargs in calls:
+        with pytest.raises(ValueError) as error:
+            vantage.place(sites=CUBE_SITES, markers=4, **kwargs)
+        assert error.value.field == field, (field, str(error.value))

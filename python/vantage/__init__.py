@@ -221,7 +221,13 @@ def place(body: Optional[PathArg] = None, *, sites: Optional[PathArg] = None, ma
           robust_dropout: bool = False, min_distance_difference: float = 0.0,
           seed: Optional[int] = None, threads: Optional[int] = None,
           random_trials: Optional[int] = None, exhaustive_limit: Optional[int] = None,
-          out: Optional[PathArg] = None, overwrite: bool = False) -> PlaceReport:
+          out: Optional[PathArg] = None, overwrite: bool = False, objective: str = "affine",
+          distance: Optional[float] = None, focal: Optional[float] = None,
+          noise_px: Optional[float] = None, statistic: str = "worst",
+          crb_samples: Optional[int] = None, aim: Optional[Sequence[float]] = None,
+          targets: Optional[npt.ArrayLike] = None, fle_rms: Optional[float] = None,
+          fle_sigma: Optional[Sequence[float]] = None, min_coverage: Optional[float] = None,
+          allow_partial: bool = False) -> PlaceReport:
     """Choose ``markers`` (K) marker sites on a body so that every workspace direction is
     trackable and the certified worst case under visibility is best (as ``vantage place
     --json``; docs/math.md §21); the result's ``layout`` is the placed vantage.Layout.
@@ -235,16 +241,29 @@ def place(body: Optional[PathArg] = None, *, sites: Optional[PathArg] = None, ma
     the placed layout (.json) there, all or nothing, only when the placement is complete;
     overwrite: replace an existing file. None: the CLI's default.
 
+    objective: 'affine' (the paper's scale-free bound), 'camera' (the pinhole pose CRB: needs
+    distance, focal and noise_px; statistic 'worst', 'p95' or 'median'; crb_samples; aim
+    (x, y, z), default the centre of the sites' bounding box) or 'tracker' (the worst RMS TRE:
+    needs targets, one [x, y, z] or an n x 3 array, and fle_rms or fle_sigma (sigma_perp,
+    sigma_axial)); the report's ``objective`` holds its value as ``vantage crb`` or ``vantage
+    tre`` reports it on the placed layout (docs/math.md §21, "Objectives"). min_coverage: the
+    least trackable fraction of the workspace's lattice, in (0, 1] (default: every direction
+    but one); allow_partial: return (and write) the best answer even when it covers less, with
+    a RuntimeWarning, instead of raising.
+
     Raises ValueError on bad input (its ``field`` the keyword, e.g. 'markers', 'body') and
-    NumericalError (its ``result`` the PlaceReport) when the placement leaves a workspace
-    direction untracked or its analysis is not certified.
+    NumericalError (its ``result`` the PlaceReport, with the best ``layout`` found) when the
+    placement leaves a workspace direction untracked or its analysis is not certified.
     """
     return _place_report(_vantage.place(
         body, sites=sites, markers=markers, candidates=candidates, cone_deg=cone_deg,
         min_visible=min_visible, workspace=workspace, min_separation=min_separation, keep=keep,
         robust_dropout=robust_dropout, min_distance_difference=min_distance_difference,
         seed=seed, threads=threads, random_trials=random_trials,
-        exhaustive_limit=exhaustive_limit, out=out, overwrite=overwrite))
+        exhaustive_limit=exhaustive_limit, out=out, overwrite=overwrite, objective=objective,
+        distance=distance, focal=focal, noise_px=noise_px, statistic=statistic,
+        crb_samples=crb_samples, aim=aim, targets=targets, fle_rms=fle_rms, fle_sigma=fle_sigma,
+        min_coverage=min_coverage, allow_partial=allow_partial))
 
 
 def _design_result(fields: Any) -> DesignResult:

@@ -260,7 +260,7 @@ class PlaceReport(_JsonView):
 
     def __init__(self, fields: Mapping[str, Any], layout: Optional[Layout]) -> None:
         super().__init__(fields)
-        #: None when the placement failed (NumericalError.result).
+        #: The placed layout; on a NumericalError, the best (incomplete) answer found.
         self.layout: Optional[Layout] = layout
         self.sites: str = str(fields["sites"])
         self.status: str = str(fields["status"])
@@ -277,6 +277,10 @@ class PlaceReport(_JsonView):
         self.coverage: float = _float(fields["coverage"])
         self.pbar_min: float = _float(fields["pbar_min"])
         self.random_baseline = PlaceBaseline(fields["random_baseline"])
+        #: The objective (``--json``'s "objective"): its name, its value on the placed layout as
+        #: ``vantage analyze``, ``crb`` or ``tre`` reports it ("value_deg", or "value" in the
+        #: layout's unit for 'tracker'), and its settings.
+        self.objective: Dict[str, Any] = dict(fields["objective"])
         self.steps: List[PlaceStep] = [PlaceStep(s) for s in fields["steps"]]
         self.robust: Optional[PlaceRobust] = (
             PlaceRobust(fields["robust"]) if "robust" in fields else None)

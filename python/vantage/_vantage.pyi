@@ -108,4 +108,10 @@ def place(body: Optional[_Path] = None, *, sites: Optional[_Path] = None, marker
           robust_dropout: bool = False, min_distance_difference: float = 0.0,
           seed: Optional[int] = None, threads: Optional[int] = None,
           random_trials: Optional[int] = None, exhaustive_limit: Optional[int] = None,
-          out: Optional[_Path] = None, overwrite: bool = False) -> Dict[str, Any]: ...
+          out: Optional[_Path] = None, overwrite: bool = False, objective: str = "affine",
+          distance: Optional[float] = None, focal: Optional[float] = None,
+          noise_px: Optional[float] = None, statistic: str = "worst",
+          crb_samples: Optional[int] = None, aim: Optional[Sequence[float]] = None,
+          targets: Optional[Any] = None, fle_rms: Optional[float] = None,
+          fle_sigma: Optional[Sequence[float]] = None, min_coverage: Optional[float] = None,
+          allow_partial: bool = False) -> Dict[str, Any]: ...

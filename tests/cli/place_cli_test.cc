@@ -129,6 +129,66 @@ TEST(PlaceCli, CameraObjectiveIsWhatCrbReportsOnTheWrittenFile) {
   EXPECT_LE(objective["search_value_deg"].get<double>(), objective["value_deg"].get<double>());
 }
 
+// Issue 35: the tracker objective's value is what `vantage tre` reports on the written file with
+// the same targets and FLE: the largest worst.rms_bound, to the bit (the same search on the same
+// visible sets).
+TEST(PlaceCli, TrackerObjectiveIsWhatTreReportsOnTheWrittenFile) {
+  ScratchDir scratch;
+  scratch.write("sites.json", cube_sites());
+  const std::string settings = " --target 0,0,-2 --target 1,1,0 --fle-sigma 0.1,0.3";
+  const nlohmann::json json = testing::run_json(
+      "place --sites sites.json --markers 6 --out tool.json --objective tracker" + settings,
+      scratch);
+  ASSERT_EQ(json["status"], "complete");
+  const nlohmann::json& objective = json["objective"];
+  EXPECT_EQ(objective["name"], "tracker");
+  const nlohmann::json tre = testing::run_json("tre tool.json" + settings, scratch);
+  double worst = 0.0;
+  for (const nlohmann::json& target : tre["targets"]) {
+    worst = std::max(worst, target["worst"]["rms_bound"].get<double>());
+  }
+  EXPECT_EQ(objective["value"].get<double>(), worst);
+  EXPECT_EQ(objective["search_value"].get<double>(), worst);
+  ASSERT_EQ(objective["targets"].size(), 2u);
+  EXPECT_EQ(objective["targets"][0]["rms_bound"], tre["targets"][0]["worst"]["rms_bound"]);
+  // The layout file says what it was placed for, with the command that reproduces the value.
+  const nlohmann::json file = nlohmann::json::parse(testing::read_file(scratch.path("tool.json")));
+  EXPECT_THAT(
+      file["placement"]["objective"].get<std::string>(),
+      HasSubstr("vantage tre --target 0,0,-2 --target 1,1,0 --fle-sigma 0.10000000000000001,"));
+}
+
+// Issue 35 item 6: the robust value is the worst entry of `vantage analyze --dropout` on the
+// written file (it was the worst loss of two markers: "90 deg" where analyze said 44 deg).
+TEST(PlaceCli, RobustDropoutIsWhatAnalyzeDropoutReportsOnTheWrittenFile) {
+  // Both certify each t to the certificate tolerance (1e-6): p-bar_min near 0.5 moves by less.
+  constexpr double kCertificate = 2e-6;
+  ScratchDir scratch;
+  scratch.write("sites.json", cube_sites());
+  for (int markers : {4, 6}) {
+    SCOPED_TRACE(markers);
+    const std::string out = "robust" + std::to_string(markers) + ".json";
+    const nlohmann::json json = testing::run_json(
+        "place --sites sites.json --robust-dropout --markers " + std::to_string(markers) +
+            " --exhaustive-limit 0 --random-trials 20 --out " + out,
+        scratch);
+    ASSERT_TRUE(json.contains("robust"));
+    const nlohmann::json analysed = testing::run_json("analyze " + out + " --dropout", scratch);
+    const nlohmann::json& entries = analysed["visibility"]["dropout"];
+    ASSERT_EQ(entries.size(), static_cast<std::size_t>(markers));
+    double least = 2.0;
+    int lost = -1;
+    for (const nlohmann::json& e : entries) {
+      if (e["pbar_min"].get<double>() < least) {
+        least = e["pbar_min"].get<double>();
+        lost = e["lost"].get<int>();
+      }
+    }
+    EXPECT_NEAR(json["robust"]["pbar_min"].get<double>(), least, kCertificate);
+    EXPECT_EQ(json["robust"]["worst_lost_marker"], json["chosen"][static_cast<std::size_t>(lost)]);
+  }
+}
+
 TEST(PlaceCli, AllowPartialWritesTheBestIncompleteAnswer) {
   ScratchDir scratch;
   scratch.write("sites.json", cube_sites());
@@ -218,6 +278,30 @@ TEST(PlaceCli, BadInputGetsOneLineAndWritesNothing) {
        "--sites sites.json --markers 4 --out o.json --objective camera --distance 5 --focal 800 "
        "--noise-px 1 --aim 0,nan,0",
        "--aim"},
+      {"tracker without a target", nullptr,
+       "--sites sites.json --markers 4 --out o.json --objective tracker --fle-rms 0.2", "--target"},
+      {"tracker without an FLE", nullptr,
+       "--sites sites.json --markers 4 --out o.json --objective tracker --target 0,0,0",
+       "--fle-rms"},
+      {"tracker with both FLEs", nullptr,
+       "--sites sites.json --markers 4 --out o.json --objective tracker --target 0,0,0 "
+       "--fle-rms 0.2 --fle-sigma 0.1,0.1",
+       "--fle-rms"},
+      {"a non-finite target", nullptr,
+       "--sites sites.json --markers 4 --out o.json --objective tracker --target 0,inf,0 "
+       "--fle-rms 0.2",
+       "--target"},
+      {"a target beyond the TRE's range", nullptr,
+       "--sites sites.json --markers 4 --out o.json --objective tracker --target 1e200,0,0 "
+       "--fle-rms 0.2",
+       "--target"},
+      {"a tracker option with affine", nullptr,
+       "--sites sites.json --markers 4 --out o.json --target 0,0,0",
+       "--target: goes with --objective tracker"},
+      {"a camera option with tracker", nullptr,
+       "--sites sites.json --markers 4 --out o.json --objective tracker --target 0,0,0 "
+       "--fle-rms 0.2 --focal 800",
+       "--focal: goes with --objective camera"},
       {"--min-coverage 0", nullptr, "--sites sites.json --markers 4 --out o.json --min-coverage 0",
        "--min-coverage"},
       {"--min-coverage above 1", nullptr,

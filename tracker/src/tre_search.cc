@@ -79,6 +79,10 @@ class TreSearch {
     while (!open_.empty()) {
       const Patch patch = open_.top();
       if (have_best_ && patch.bound <= best_value_ + tolerance()) break;
+      if (stopped_above()) {
+        exhausted_ = true;
+        break;
+      }
       if (patches_ >= options_.max_patches) {
         exhausted_ = true;
         break;
@@ -97,6 +101,12 @@ class TreSearch {
     double bound;
     bool operator<(const Patch& other) const { return bound < other.bound; }
   };
+
+  // The worst's search has attained options.stop_above: the caller needs no more.
+  bool stopped_above() const {
+    return sign_ > 0.0 && have_best_ &&
+           std::sqrt(std::max(0.0, best_value_)) >= options_.stop_above;
+  }
 
   // The tolerance in the objective s * RMS^2 for relative_tolerance in the RMS.
   double tolerance() const { return 2.0 * options_.relative_tolerance * std::abs(best_value_); }
@@ -316,6 +326,7 @@ bool TreSearchOptions::is_valid(std::string* why) const {
   if (max_enumerated_units < 0 || max_enumerated_units > 16) {
     return fail("max_enumerated_units: must be in [0, 16]");
   }
+  if (std::isnan(stop_above)) return fail("stop_above: must not be NaN");
   return true;
 }
 
@@ -331,9 +342,11 @@ const char* to_string(TreExtreme::Status status) {
   return "unknown";
 }
 
-TreExtremes tre_extremes(const visibility::VisibilityProblem& problem,
-                         const Eigen::Vector3d& target_tool, const FleModel& fle,
-                         const TreSearchOptions& options) {
+namespace {
+
+void check_tre_search(const visibility::VisibilityProblem& problem,
+                      const Eigen::Vector3d& target_tool, const FleModel& fle,
+                      const TreSearchOptions& options) {
   problem.validate();
   std::string why;
   if (!fle.is_valid(&why) || !options.is_valid(&why)) throw InvalidArgument(why);
@@ -341,6 +354,22 @@ TreExtremes tre_extremes(const visibility::VisibilityProblem& problem,
     throw InvalidArgument("points", "more than 63 markers: the TRE search takes at most 63");
   }
   if (!target_tool.allFinite()) throw InvalidArgument("target", "must be finite");
+}
+
+}  // namespace
+
+TreExtreme tre_worst(const visibility::VisibilityProblem& problem,
+                     const Eigen::Vector3d& target_tool, const FleModel& fle,
+                     const TreSearchOptions& options) {
+  check_tre_search(problem, target_tool, fle, options);
+  if (tre_sees_everything(problem)) return tre_closed_form(problem, target_tool, fle, true);
+  return TreSearch(problem, target_tool, fle, 1.0, options).run();
+}
+
+TreExtremes tre_extremes(const visibility::VisibilityProblem& problem,
+                         const Eigen::Vector3d& target_tool, const FleModel& fle,
+                         const TreSearchOptions& options) {
+  check_tre_search(problem, target_tool, fle, options);
   TreExtremes out;
   if (tre_sees_everything(problem)) {
     out.worst = tre_closed_form(problem, target_tool, fle, true);

@@ -19,6 +19,7 @@
 #include "vantage/design/placement.h"
 #include "vantage/design/placement_layout.h"
 #include "vantage/report/layout_report.h"
+#include "vantage/tracker/tre_report.h"
 
 namespace vantage::place_json {
 
@@ -42,16 +43,21 @@ struct Request {
   long exhaustive_limit = 5000;
   double certificate_tolerance = visibility::VisibilitySearchOptions{}.certificate_tolerance;
   bool overwrite = false;
-  /// "affine" (the paper's bound under visibility) or "camera" (the pinhole CRB, §22).
+  /// "affine" (the paper's bound under visibility), "camera" (the pinhole CRB, §22) or
+  /// "tracker" (the target registration error, §23).
   std::string objective = "affine";
   /// The camera objective's settings (--distance, --focal, --noise-px, --statistic,
-  /// --crb-samples, --aim: "X,Y,Z" or empty for the centre of the sites' bounding box).
+  /// --crb-samples, --aim: none for the centre of the sites' bounding box).
   double distance = 0.0;
   double focal = 0.0;
   double noise_px = 0.0;
   std::string statistic = "worst";
   int crb_samples = 2000;
-  std::string aim;
+  std::optional<Eigen::Vector3d> aim;
+  /// The tracker objective's settings: the targets in the sites' frame (--target, repeatable)
+  /// and the FLE (exactly one of --fle-rms and --fle-sigma; FleModel::from_rms tells which).
+  std::vector<Eigen::Vector3d> targets;
+  std::optional<tracker::FleModel> fle;
   /// --min-coverage in (0, 1], or below 0 for every lattice direction but one.
   double min_coverage = -1.0;
   /// --allow-partial: an incomplete placement is written (with a warning), not refused.
@@ -88,24 +94,30 @@ struct PlacedLayout {
   std::optional<camera::PoseCrbMap> crb;
   /// The camera the objective used (the aim resolved), when the objective is the camera.
   std::optional<camera::PoseCrbOptions> camera;
+  /// The tracker objective: `vantage tre`'s report of the placed layout at the targets.
+  std::optional<tracker::TreReport> tre;
   std::vector<std::string> site_names;  ///< the name of every site and kept marker
 };
 
 /// A finished placement: complete when it covers min_coverage of the workspace and the placed
-/// layout's analysis is certified (affine) or trackable (camera); only then is it written, or
-/// also when incomplete with allow_partial.
+/// layout's analysis is certified (affine), trackable (camera) or its worst TRE certified at every
+/// target (tracker); only then is it written, or also when incomplete with allow_partial.
 struct Outcome {
   design::PlacementResult result;
   PlacedLayout placed;
   bool complete = false;
-  /// The objective's value of the placed layout as `vantage crb` or `vantage analyze` reports it
-  /// (camera: the statistic of the crb map, degrees; affine: the worst error, degrees).
-  double objective_deg = 0.0;
+  /// The objective's value of the placed layout as `vantage analyze`, `crb` or `tre` reports it
+  /// (affine: the worst error, degrees; camera: the statistic of the crb map, degrees; tracker:
+  /// the largest worst.rms_bound over the targets, the layout's length unit). +inf: untrackable.
+  double objective_value = 0.0;
 };
 
 /// The camera objective's options of a request on `sites` (the aim resolved), or none.
 std::optional<design::CameraObjective> camera_objective(const Request& request,
                                                         const Layout& sites);
+
+/// The tracker objective's options of a request, or none.
+std::optional<design::TrackerObjective> tracker_objective(const Request& request);
 
 /// Runs design::place_markers() on the sites and analyses the placed layout; `progress` (or
 /// empty) gets the stages.
@@ -116,7 +128,8 @@ Outcome place(const Request& request, const Sites& sites,
 /// visibility block, workspace and placement record, and its analysis.
 PlacedLayout placed_layout(const Request& request, const Layout& sites, int n_candidates,
                            const design::PlacementResult& result,
-                           const std::optional<camera::PoseCrbOptions>& camera = std::nullopt);
+                           const std::optional<camera::PoseCrbOptions>& camera = std::nullopt,
+                           const std::optional<design::TrackerObjective>& tracker = std::nullopt);
 
 /// Why the placement is not written.
 std::string failure_message(const design::PlacementResult& result, const PlacedLayout& placed);

@@ -21,6 +21,8 @@
 #include "vantage/analysis/mesh.h"
 #include "vantage/camera/pose_crb.h"
 #include "vantage/tracker/identification.h"
+#include "vantage/tracker/target_registration.h"
+#include "vantage/tracker/tre_search.h"
 #include "vantage/visibility/visibility.h"
 
 namespace vantage::design {
@@ -71,6 +73,18 @@ struct CameraObjective {
   CrbStatistic statistic = CrbStatistic::kWorst;
 };
 
+/// The `tracker` objective (docs/math.md §21, "Objectives"): the target registration error of
+/// §23 instead of the paper's bound. The value of a choice is the largest, over the targets, of
+/// the certified bound on the worst RMS TRE over its tracked directions (tre_worst()'s
+/// rms_bound, in the sites' length unit): what `vantage tre` reports on the placed layout as
+/// worst.rms_bound. At most 63 markers (the TRE search's limit).
+struct TrackerObjective {
+  static constexpr int kMaxMarkers = 63;
+  std::vector<Eigen::Vector3d> targets;  ///< in the sites' frame, at least one, finite
+  tracker::FleModel fle;
+  tracker::TreSearchOptions search;  ///< its stop_above is the search's own
+};
+
 /// Options of place_markers().
 struct PlaceOptions {
   /// The certified analysis of each subset (docs/math.md §20); its certificate_tolerance is the
@@ -80,6 +94,8 @@ struct PlaceOptions {
   bool robust_dropout = false;   ///< objective 3 of docs/math.md §21
   /// The `camera` objective; none: the paper's bound under visibility (`affine`).
   std::optional<CameraObjective> camera;
+  /// The `tracker` objective (not with `camera`); none: `affine` (or `camera`).
+  std::optional<TrackerObjective> tracker;
   /// Least coverage of a complete placement, in (0, 1]; none: every lattice direction of the
   /// workspace but one. Above it, coverage no longer ranks placements: the objective does.
   std::optional<double> min_coverage;
@@ -98,11 +114,12 @@ struct PlaceOptions {
 /// What one choice of sites promises (docs/math.md §21's objective).
 struct PlacementValue {
   double coverage = 0.0;  ///< trackable fraction of the workspace's lattice directions
-  /// The objective, smaller is better: t_upper (affine) or the statistic of rot_rms_deg in
-  /// degrees (camera; +inf when nothing is trackable).
+  /// The objective, smaller is better: t_upper (affine), the statistic of rot_rms_deg in
+  /// degrees (camera) or the worst RMS TRE bound in the sites' unit (tracker); +inf when nothing
+  /// is trackable (camera, tracker).
   double objective = 1.0;
-  /// The certified worst case t_upper (1 when nothing is trackable) and p-bar_min =
-  /// sqrt(1 - t_upper^2).
+  /// The affine objective's certified worst case t_upper (1 when nothing is trackable) and
+  /// p-bar_min = sqrt(1 - t_upper^2); 1 and 0 with the other objectives.
   double t_upper = 1.0;
   double pbar_min = 0.0;
   visibility::VisibilityWorstViewpoint::Status status =

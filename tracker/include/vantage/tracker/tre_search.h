@@ -8,6 +8,7 @@
 /// Frames: a is a unit vector in the tool frame from the tool toward the tracker.
 
 #include <Eigen/Core>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,10 @@ struct TreSearchOptions {
   long max_patches = 2'000'000;
   /// A patch with more mixed units than this is split without a bound, in [0, 16].
   int max_enumerated_units = 8;
+  /// The worst's search stops as soon as it attains an RMS at or above this (then the worst is
+  /// kNotCertified with rms >= stop_above): a caller that only asks "below a level?"; not NaN.
+  /// The default never stops.
+  double stop_above = std::numeric_limits<double>::infinity();
 
   bool is_valid(std::string* why = nullptr) const;
 };
@@ -62,5 +67,11 @@ struct TreExtremes {
 TreExtremes tre_extremes(const visibility::VisibilityProblem& problem,
                          const Eigen::Vector3d& target_tool, const FleModel& fle,
                          const TreSearchOptions& options = {});
+
+/// The worst of tre_extremes() alone (the same numbers), with options.stop_above: what a search
+/// over layouts needs (docs/math.md §21, "Objectives"). Throws as tre_extremes().
+TreExtreme tre_worst(const visibility::VisibilityProblem& problem,
+                     const Eigen::Vector3d& target_tool, const FleModel& fle,
+                     const TreSearchOptions& options = {});
 
 }  // namespace vantage::tracker
