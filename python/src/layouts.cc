@@ -248,12 +248,9 @@ void bind_layout_vectors(py::module_& module) {
   module.def(
       "data_vectors",
       [](const Layout& layout, const std::string& pair_weighting) {
-        if (pair_weighting != "geometric" && pair_weighting != "arithmetic") {
-          throw InvalidArgument("pair_weighting: expected geometric or arithmetic");
-        }
-        const DataVectors data =
-            data_vectors(layout, pair_weighting == "arithmetic" ? PairWeighting::kArithmeticMean
-                                                                : PairWeighting::kGeometricMean);
+        const std::optional<PairWeighting> weighting = parse_pair_weighting(pair_weighting);
+        if (!weighting) throw InvalidArgument("pair_weighting: expected geometric or arithmetic");
+        const DataVectors data = data_vectors(layout, *weighting);
         return py::make_tuple(array_from_columns(data.vectors), array_from_vector(data.weights));
       },
       py::arg("layout"), py::kw_only(), py::arg("pair_weighting") = "geometric",
