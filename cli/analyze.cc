@@ -14,6 +14,7 @@
 #include "limits.h"
 #include "progress.h"
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/free_vectors.h"
 #include "vantage/analysis/layout.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/report/layout_report.h"
@@ -222,8 +223,9 @@ int run_analyze(const AnalyzeArgs& args) {
                 kMaxDropoutVectors, "analyze --dropout", args.allow_large);
   }
   report::LayoutReportOptions options;
-  options.pair_weighting = args.pair_weighting == "arithmetic" ? PairWeighting::kArithmeticMean
-                                                               : PairWeighting::kGeometricMean;
+  // CLI11 has checked the name (IsMember).
+  options.pair_weighting =
+      parse_pair_weighting(args.pair_weighting).value_or(PairWeighting::kGeometricMean);
   options.analysis.swap_count = args.swaps;
   options.analysis.run_crosscheck = args.crosscheck;
   options.dropout = args.dropout;

@@ -44,9 +44,6 @@ Command add_crb_command(CLI::App& root);
 Command add_tre_command(CLI::App& root);
 Command add_ident_command(CLI::App& root);
 
-/// "qmethod" | "svd" | "foam" (already checked by CLI11) to the enum.
-OrientationMethod parse_orientation_method(const std::string& name);
-
 /// Runs a library call on data read from `source`; its InvalidArgument (too few points,
 /// coincident points, ...) is reported against the file: the same error, with the file as its
 /// source. The library names the fields as the file does, so nothing is renamed.

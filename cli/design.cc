@@ -235,7 +235,8 @@ void print_report(const DesignArgs& args, const Layout& layout, const design::Au
             << (r.final_coplanarity.nearly_coplanar ? " (NEARLY COPLANAR)" : "") << "\n";
 }
 
-int run_design(const DesignArgs& args) {
+/// --add, --margin, --search-budget and --min-distance-difference in range.
+void check_design_numbers(const DesignArgs& args) {
   if (args.add < 1) bad("--add: must be >= 1, got " + std::to_string(args.add));
   if (!(args.margin >= 0.0 && args.margin <= kMaxMargin)) {
     bad("--margin: must be in [0, " + format_number(kMaxMargin) + "], got " +
@@ -248,8 +249,11 @@ int run_design(const DesignArgs& args) {
     bad("--min-distance-difference: must be a finite number >= 0, got " +
         format_number(args.min_distance_difference));
   }
-  check_write_target(args);
-  const Layout layout = args.input.read(args.file, args.allow_large);
+}
+
+/// What needs the layout: the time limit, --candidates-only, the candidates, the distance
+/// difference and the --write format.
+void check_design_layout(const DesignArgs& args, const Layout& layout) {
   const long final_count =
       layout.mode == LayoutMode::kPoints
           ? static_cast<long>(free_vector_count(layout.entries.cols() + args.add))
@@ -270,14 +274,10 @@ int run_design(const DesignArgs& args) {
   check_point_candidates(args.file, layout, args.margin);
   check_distance_difference(args, layout);
   check_write_format(args, layout);
-  std::optional<io::WriteLock> lock;
-  if (args.write_given) lock.emplace(args.write);
-#if VANTAGE_WITH_PLOT
-  if (!args.plot.empty()) check_figure_directory("--plot", args.plot);
-#else
-  if (!args.plot.empty()) throw InvalidArgument(std::string("--plot: ") + kWithoutPlot);
-#endif
+}
 
+/// The augmentation, with a progress line cleared before the report.
+design::AugmentResult augment(const DesignArgs& args, const Layout& layout) {
   design::AugmentOptions options;
   options.add = args.add;
   options.candidates_only = args.candidates_only;
@@ -291,6 +291,34 @@ int run_design(const DesignArgs& args) {
     options.progress = progress.callback();
     r = against_source(args.file, [&] { return design::augment_layout(layout, options); });
   }
+  return r;
+}
+
+/// The one-line error of a result that is not kOk.
+void print_failure(const DesignArgs& args, const design::AugmentResult& r) {
+  std::cerr << "vantage: design: " << design::to_string(r.status) << ": " << r.message;
+  const std::string parts = uncertified_parts(r);
+  if (!parts.empty()) std::cerr << " (" << parts << ")";
+  if (parts == "direct") {
+    std::cerr << "; the greedy steps are certified (--no-direct skips the comparison)";
+  }
+  std::cerr << (args.write_given ? "; nothing written" : "") << std::endl;
+}
+
+int run_design(const DesignArgs& args) {
+  check_design_numbers(args);
+  check_write_target(args);
+  const Layout layout = args.input.read(args.file, args.allow_large);
+  check_design_layout(args, layout);
+  std::optional<io::WriteLock> lock;
+  if (args.write_given) lock.emplace(args.write);
+#if VANTAGE_WITH_PLOT
+  if (!args.plot.empty()) check_figure_directory("--plot", args.plot);
+#else
+  if (!args.plot.empty()) throw InvalidArgument(std::string("--plot: ") + kWithoutPlot);
+#endif
+
+  const design::AugmentResult r = augment(args, layout);
 
   const bool ok = r.status == design::AugmentResult::Status::kOk;
   if (ok && args.write_given)
@@ -325,13 +353,7 @@ int run_design(const DesignArgs& args) {
 #endif
   }
   if (!ok) {
-    std::cerr << "vantage: design: " << design::to_string(r.status) << ": " << r.message;
-    const std::string parts = uncertified_parts(r);
-    if (!parts.empty()) std::cerr << " (" << parts << ")";
-    if (parts == "direct") {
-      std::cerr << "; the greedy steps are certified (--no-direct skips the comparison)";
-    }
-    std::cerr << (args.write_given ? "; nothing written" : "") << std::endl;
+    print_failure(args, r);
     return kExitFailure;
   }
   return kExitOk;

@@ -10,12 +10,6 @@
 
 namespace vantage::cli {
 
-OrientationMethod parse_orientation_method(const std::string& name) {
-  if (name == "svd") return OrientationMethod::kSvd;
-  if (name == "foam") return OrientationMethod::kFoam;
-  return OrientationMethod::kQMethod;
-}
-
 namespace {
 
 /// 0 for a unique pose; 1 (with the reason on stderr) when the data do not determine it.
@@ -35,7 +29,8 @@ int run_orient(const OrientArgs& args) {
   const io::CorrespondenceFile file = io::read_correspondences(args.file);
   file.require({"model", "measured"}, "vantage orient");
   OrientationOptions options;
-  options.method = parse_orientation_method(args.method);
+  // CLI11 has checked the name (IsMember).
+  options.method = parse_orientation_method(args.method).value_or(OrientationMethod::kQMethod);
   const PoseResult pose = against_source(file.source, [&] {
     try {
       return absolute_pose(file.model, file.measured, file.weights, options);

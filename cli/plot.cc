@@ -321,13 +321,8 @@ int run_tre_plot(const PlotArgs& args) {
   return kExitOk;
 }
 
-int run_plot(const PlotArgs& args) {
-  if (!args.experiment.empty()) return run_experiment_plot(args);
-  if (args.file.empty()) bad("LAYOUT: required (or --experiment NAME)");
-  check_crb_options(args);
-  check_tre_options(args);
-  if (args.crb) return run_crb_plot(args);
-  if (args.tre) return run_tre_plot(args);
+/// The layout figures' options from --format, --title, --size, --threshold-deg and --only.
+plot::LayoutFiguresOptions layout_figures_options(const PlotArgs& args) {
   plot::LayoutFiguresOptions options;
   options.figure.format = plot::parse_format(args.format, "--format");
   options.figure.title = args.title;
@@ -351,8 +346,11 @@ int run_plot(const PlotArgs& args) {
   } catch (const InvalidArgument& e) {
     throw e.renamed("--" + e.field(), e.index());
   }
-  check_figure_directory("--out", args.out);
-  const Layout layout = args.input.read(args.file);
+  return options;
+}
+
+/// Refuses --only visibility without normals and --only placement without a placement.
+void check_layout_figures(const PlotArgs& args, const Layout& layout) {
   const bool on_body = layout.visibility.has_value();
   if (!on_body && std::find(args.only.begin(), args.only.end(), "visibility") != args.only.end()) {
     bad("--only: the visibility figure needs markers with normals (\"normals\" in " + args.file +
@@ -363,27 +361,12 @@ int run_plot(const PlotArgs& args) {
     bad("--only: the placement figure needs a layout written by vantage place (\"placement\" in " +
         args.file + ")");
   }
-  std::unique_ptr<plot::DesignCurve> design;
-  if (!args.design.empty()) {
-    design = std::make_unique<plot::DesignCurve>(read_design_curve(args.design));
-    if (design->layout_name.empty()) design->layout_name = layout.name;
-  }
-  create_figure_directory("--out", args.out);
+}
 
-  report::LayoutReportOptions report_options;
-  report_options.dropout =
-      plot::needs_dropout(options, design != nullptr, on_body, layout.placement.has_value());
-  report_options.dropout_options.threads = options.figure.threads;
-  const report::LayoutReport report =
-      against_source(args.file, [&] { return report::analyze_layout(layout, report_options); });
-  plot::LayoutFigures figures;
-  try {
-    figures = plot::write_layout_figures(report, args.out, options, design.get());
-  } catch (const plot::RenderError& e) {
-    std::cerr << "vantage: plot: " << e.what() << std::endl;
-    return kExitFailure;
-  }
-  const bool certified = figures.status == plot::LayoutFigures::Status::kCertified;
+/// The JSON (--json) or text summary of the layout figures written.
+void print_layout_plot(const PlotArgs& args, const Layout& layout,
+                       const plot::LayoutFigures& figures,
+                       const plot::LayoutFiguresOptions& options, bool certified) {
   if (args.json) {
     Json out;
     out["layout"] = args.file;
@@ -416,6 +399,41 @@ int run_plot(const PlotArgs& args) {
     }
     print_figure_files(figures.files, options.figure.format);
   }
+}
+
+int run_plot(const PlotArgs& args) {
+  if (!args.experiment.empty()) return run_experiment_plot(args);
+  if (args.file.empty()) bad("LAYOUT: required (or --experiment NAME)");
+  check_crb_options(args);
+  check_tre_options(args);
+  if (args.crb) return run_crb_plot(args);
+  if (args.tre) return run_tre_plot(args);
+  const plot::LayoutFiguresOptions options = layout_figures_options(args);
+  check_figure_directory("--out", args.out);
+  const Layout layout = args.input.read(args.file);
+  check_layout_figures(args, layout);
+  std::unique_ptr<plot::DesignCurve> design;
+  if (!args.design.empty()) {
+    design = std::make_unique<plot::DesignCurve>(read_design_curve(args.design));
+    if (design->layout_name.empty()) design->layout_name = layout.name;
+  }
+  create_figure_directory("--out", args.out);
+
+  report::LayoutReportOptions report_options;
+  report_options.dropout = plot::needs_dropout(
+      options, design != nullptr, layout.visibility.has_value(), layout.placement.has_value());
+  report_options.dropout_options.threads = options.figure.threads;
+  const report::LayoutReport report =
+      against_source(args.file, [&] { return report::analyze_layout(layout, report_options); });
+  plot::LayoutFigures figures;
+  try {
+    figures = plot::write_layout_figures(report, args.out, options, design.get());
+  } catch (const plot::RenderError& e) {
+    std::cerr << "vantage: plot: " << e.what() << std::endl;
+    return kExitFailure;
+  }
+  const bool certified = figures.status == plot::LayoutFigures::Status::kCertified;
+  print_layout_plot(args, layout, figures, options, certified);
   if (!certified) {
     std::cerr << "vantage: warning: " << figures.message << std::endl;
     return kExitFailure;

@@ -24,6 +24,14 @@ const char* to_string(OrientationMethod method) {
   return "unknown";
 }
 
+std::optional<OrientationMethod> parse_orientation_method(std::string_view name) {
+  for (const OrientationMethod method :
+       {OrientationMethod::kQMethod, OrientationMethod::kSvd, OrientationMethod::kFoam}) {
+    if (name == to_string(method)) return method;
+  }
+  return std::nullopt;
+}
+
 const char* to_string(OrientationStatus status) {
   switch (status) {
     case OrientationStatus::kOk:

@@ -214,6 +214,46 @@ VANTAGE_FLATTEN void solve_lanes(const QuarticSolver& solver, const AffineProble
                .select(j.max(LaneArray::Zero()), LaneArray::Constant(-1.0));
 }
 
+// The quartic solver's constants for the problem: G's columns a, b and the bound on lambda.
+QuarticSolver quartic_solver(const Eigen::Matrix3Xd& z, const AffineProblem& problem,
+                             const AffineOrientationOptions& options) {
+  QuarticSolver solver;
+  solver.a = problem.G.col(0);
+  solver.b = problem.G.col(1);
+  solver.a_cross_b = solver.a.cross(solver.b);
+  solver.ab2 = solver.a.squaredNorm() + solver.b.squaredNorm();
+  solver.axb2 = solver.a_cross_b.squaredNorm();
+  for (Eigen::Index i = 0; i < z.cols(); ++i) {
+    const double v_norm =
+        std::sqrt(problem.d.col(i).squaredNorm() + problem.v_z(i) * problem.v_z(i));
+    solver.lambda_bound += problem.w(i) * z.col(i).norm() * v_norm;
+  }
+  solver.fallback_gap = options.eigen.fallback_relative_gap;
+  return solver;
+}
+
+// Offsets of lane t (bit k of t negates v_z of free vector low_bits + k) from the walk's H, D;
+// lanes past 2^lane_bits stay zero.
+void lane_offsets(const Eigen::Matrix3Xd& z, const AffineProblem& problem, int lane_bits,
+                  LaneArray* lane_hx, LaneArray* lane_hy, LaneArray* lane_hz,
+                  Eigen::Matrix4d* lane_d) {
+  const int m = static_cast<int>(problem.free.size());
+  const int lanes = 1 << lane_bits;
+  const int low_bits = m - lane_bits;
+  for (int t = 0; t < kLanes; ++t) {
+    lane_d[t].setZero();
+    for (int k = 0; k < lane_bits && t < lanes; ++k) {
+      if (!((t >> k) & 1)) continue;
+      const int j = problem.free[low_bits + k];
+      const double scale = -2.0 * problem.w(j) * problem.v_z(j);
+      (*lane_hx)(t) += scale * z(0, j);
+      (*lane_hy)(t) += scale * z(1, j);
+      (*lane_hz)(t) += scale * z(2, j);
+      lane_d[t] += scale * quaternion_k(Eigen::Vector3d::UnitZ(), z.col(j));
+    }
+  }
+}
+
 }  // namespace
 
 void enumerate_gray_code(const Eigen::Matrix3Xd& z, const AffineProblem& problem,
@@ -233,18 +273,7 @@ void enumerate_gray_code(const Eigen::Matrix3Xd& z, const AffineProblem& problem
     return;
   }
 
-  QuarticSolver solver;
-  solver.a = problem.G.col(0);
-  solver.b = problem.G.col(1);
-  solver.a_cross_b = solver.a.cross(solver.b);
-  solver.ab2 = solver.a.squaredNorm() + solver.b.squaredNorm();
-  solver.axb2 = solver.a_cross_b.squaredNorm();
-  for (Eigen::Index i = 0; i < z.cols(); ++i) {
-    const double v_norm =
-        std::sqrt(problem.d.col(i).squaredNorm() + problem.v_z(i) * problem.v_z(i));
-    solver.lambda_bound += problem.w(i) * z.col(i).norm() * v_norm;
-  }
-  solver.fallback_gap = options.eigen.fallback_relative_gap;
+  const QuarticSolver solver = quartic_solver(z, problem, options);
 
   // With m <= kLaneBits free vectors only 2^m lanes are active; the others repeat lane 0 and
   // are ignored.
@@ -254,21 +283,10 @@ void enumerate_gray_code(const Eigen::Matrix3Xd& z, const AffineProblem& problem
   const int low_bits = m - lane_bits;
   const std::vector<int> low(problem.free.begin(), problem.free.begin() + low_bits);
   GrayCodeWalk walk(z, problem.d, problem.v_z, problem.w, low);
-  // Offsets of lane t (bit k of t negates v_z of free vector low_bits + k) from the walk's H, D.
+  // Offsets of each lane from the walk's H, D.
   LaneArray lane_hx = LaneArray::Zero(), lane_hy = LaneArray::Zero(), lane_hz = LaneArray::Zero();
   Eigen::Matrix4d lane_d[kLanes];
-  for (int t = 0; t < kLanes; ++t) {
-    lane_d[t].setZero();
-    for (int k = 0; k < lane_bits && t < lanes; ++k) {
-      if (!((t >> k) & 1)) continue;
-      const int j = problem.free[low_bits + k];
-      const double scale = -2.0 * problem.w(j) * problem.v_z(j);
-      lane_hx(t) += scale * z(0, j);
-      lane_hy(t) += scale * z(1, j);
-      lane_hz(t) += scale * z(2, j);
-      lane_d[t] += scale * quaternion_k(Eigen::Vector3d::UnitZ(), z.col(j));
-    }
-  }
+  lane_offsets(z, problem, lane_bits, &lane_hx, &lane_hy, &lane_hz, lane_d);
   // lambda_max = max_R trace(R H) moves by at most |Delta h| when h changes, so the previous
   // root plus |Delta h| bounds the next one from above: a warm start for the root finder.
   std::vector<double> step_norm;

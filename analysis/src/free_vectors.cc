@@ -17,6 +17,12 @@ const char* to_string(PairWeighting weighting) {
   return "unknown";
 }
 
+std::optional<PairWeighting> parse_pair_weighting(std::string_view name) {
+  if (name == "geometric") return PairWeighting::kGeometricMean;
+  if (name == "arithmetic") return PairWeighting::kArithmeticMean;
+  return std::nullopt;
+}
+
 const char* to_string(FreeVectorSet set) {
   switch (set) {
     case FreeVectorSet::kAuto:

@@ -4,11 +4,13 @@
 
 #include <cmath>
 
+#include "vantage/report/json_number.h"
+
 namespace vantage::crb_json {
 
 namespace {
 
-Json number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
+using report::json_number;
 
 Json vector3(const Eigen::Vector3d& v) { return Json::array({v.x(), v.y(), v.z()}); }
 
@@ -18,8 +20,8 @@ Json at_direction(const camera::PoseCrbAt& at, bool with_covariance) {
   Json out = Json::object();
   out["direction"] = vector3(at.direction);
   out["trackable"] = at.trackable;
-  out["rot_rms_deg"] = number(at.rot_rms_deg);
-  out["trans_rms"] = number(at.trans_rms);
+  out["rot_rms_deg"] = json_number(at.rot_rms_deg);
+  out["trans_rms"] = json_number(at.trans_rms);
   if (with_covariance) {
     Json rows = Json::array();
     for (int r = 0; r < 6; ++r) {

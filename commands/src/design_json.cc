@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "vantage/commands/pose_json.h"
+#include "vantage/report/json_number.h"
 #include "vantage/tracker/identification.h"
 
 namespace vantage::design_json {
@@ -114,7 +115,7 @@ Json design(const Json& source, const Layout& layout, bool direct_asked,
   if (layout.mode == LayoutMode::kPoints) {
     // Eq. (24.1) of the final markers; null with fewer than two pairs.
     const double achieved = tracker::min_distance_difference(r.augmented.entries).value;
-    out["final_distance_difference"] = std::isfinite(achieved) ? Json(achieved) : Json(nullptr);
+    out["final_distance_difference"] = report::json_number(achieved);
   }
   if (r.direct.status == design::DirectResult::Status::kOk) {
     out["direct"] = direct(r.direct);

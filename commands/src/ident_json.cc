@@ -4,10 +4,12 @@
 
 #include <cmath>
 
+#include "vantage/report/json_number.h"
+
 namespace vantage::ident_json {
 namespace {
 
-Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
+using report::json_number;
 
 Json names(const Layout& tool, const std::vector<int>& markers) {
   Json out = Json::array();
@@ -24,7 +26,7 @@ Json pair(const tracker::ToolPairMatch& p, const std::vector<Layout>& tools) {
   return {{"a", p.a},
           {"b", p.b},
           {"self", p.a == p.b},
-          {"mismatch", finite_or_null(m.mismatch)},
+          {"mismatch", json_number(m.mismatch)},
           {"subset", m.subset},
           {"assignment", m.assignment},
           {"subset_names", names(a, m.subset)},
@@ -33,7 +35,7 @@ Json pair(const tracker::ToolPairMatch& p, const std::vector<Layout>& tools) {
           {"proper_rms", m.proper_rms},
           {"improper_rms", m.improper_rms},
           {"certified", m.certified},
-          {"mismatch_lower", finite_or_null(m.mismatch_lower)},
+          {"mismatch_lower", json_number(m.mismatch_lower)},
           {"comparisons", m.comparisons}};
 }
 
@@ -58,7 +60,7 @@ Json report_without_pairs(const tracker::ToolLibraryMatches& matches,
   out["pairs"] = Json::array();
   const tracker::ToolPairMatch& closest = matches.pairs[static_cast<std::size_t>(matches.closest)];
   out["closest"] = {
-      {"a", closest.a}, {"b", closest.b}, {"mismatch", finite_or_null(closest.match.mismatch)}};
+      {"a", closest.a}, {"b", closest.b}, {"mismatch", json_number(closest.match.mismatch)}};
   out["certified"] = matches.certified;
   return out;
 }

@@ -3,8 +3,11 @@
 #include <cmath>
 
 #include "vantage/analysis/common.h"
+#include "vantage/report/json_number.h"
 
 namespace vantage::pose_json {
+
+using report::json_number;
 
 Json rows(const Eigen::Matrix3d& m) {
   Json out = Json::array();
@@ -14,11 +17,9 @@ Json rows(const Eigen::Matrix3d& m) {
 
 Json list(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
-Json number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
-
 Json finite_list(const Eigen::VectorXd& v) {
   Json out = Json::array();
-  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(number(v(i)));
+  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(json_number(v(i)));
   return out;
 }
 
@@ -36,11 +37,11 @@ Json estimate(const PoseEstimate& pose, Eigen::Index n) {
   out["n"] = n;
   out["R"] = rows(pose.R_camera_object);
   out["p"] = finite_list(pose.p_camera_object);
-  out["alpha"] = number(pose.alpha);
+  out["alpha"] = json_number(pose.alpha);
   out["status"] = to_string(pose.status);
   out["ambiguous"] = pose.ambiguous;
-  out["reprojection_rms_px"] = number(pose.reprojection_rms_px);
-  out["objective"] = number(pose.objective);
+  out["reprojection_rms_px"] = json_number(pose.reprojection_rms_px);
+  out["objective"] = json_number(pose.objective);
   out["iterations"] = pose.iterations;
   out["camera"] = camera(pose.camera);
   if (!pose.message.empty()) out["message"] = pose.message;
@@ -48,49 +49,49 @@ Json estimate(const PoseEstimate& pose, Eigen::Index n) {
     Json alternative;
     alternative["R"] = rows(pose.alternative->R_camera_object);
     alternative["p"] = finite_list(pose.alternative->p_camera_object);
-    alternative["reprojection_rms_px"] = number(pose.alternative->reprojection_rms_px);
+    alternative["reprojection_rms_px"] = json_number(pose.alternative->reprojection_rms_px);
     out["alternative"] = alternative;
   }
   switch (pose.method) {
     case PoseMethod::kAffine:
     case PoseMethod::kStandard:
       out["depth_known"] = std::isfinite(pose.p_camera_object.z());
-      out["orientation_residual"] = number(d.orientation_residual);
+      out["orientation_residual"] = json_number(d.orientation_residual);
       out["sign_patterns"] = d.sign_patterns;
-      out["ambiguity_margin"] = number(d.ambiguity_margin);
-      out["runner_up_residual"] = number(d.runner_up_residual);
-      out["runner_up_angle_deg"] = number(d.runner_up_angle_rad * kDegreesPerRadian);
+      out["ambiguity_margin"] = json_number(d.ambiguity_margin);
+      out["runner_up_residual"] = json_number(d.runner_up_residual);
+      out["runner_up_angle_deg"] = json_number(d.runner_up_angle_rad * kDegreesPerRadian);
       out["clamped"] = d.clamped;
       out["in_plane"] = d.in_plane;
-      out["eigen_gap"] = number(d.eigen_gap);
+      out["eigen_gap"] = json_number(d.eigen_gap);
       break;
     case PoseMethod::kFull3d:
     case PoseMethod::kHaralick3d:
-      out["eigen_gap"] = number(d.eigen_gap);
+      out["eigen_gap"] = json_number(d.eigen_gap);
       break;
     case PoseMethod::kAffineRefined:
     case PoseMethod::kPerspective:
       out["branches"] = d.branches;
-      out["planarity"] = number(d.planarity);
-      out["start_reprojection_rms_px"] = number(d.start_reprojection_rms_px);
+      out["planarity"] = json_number(d.planarity);
+      out["start_reprojection_rms_px"] = json_number(d.start_reprojection_rms_px);
       break;
     case PoseMethod::kOiFoam:
     case PoseMethod::kOiSvd:
       out["branches"] = d.branches;
-      out["initial_objective"] = number(d.initial_objective);
+      out["initial_objective"] = json_number(d.initial_objective);
       out["points_behind_camera"] = d.points_behind_camera;
       if (d.rotation_step) out["rotation_step"] = to_string(*d.rotation_step);
       break;
     case PoseMethod::kTwoView:
       out["T"] = list(pose.p_camera_object);
       out["focal"] = pose.camera.focal_length;
-      out["epipolar_rms"] = number(pose.objective);
+      out["epipolar_rms"] = json_number(pose.objective);
       if (d.essential) out["essential"] = rows(*d.essential);
-      out["null_space_ratio"] = number(d.null_space_ratio);
+      out["null_space_ratio"] = json_number(d.null_space_ratio);
       out["points_in_front"] = d.points_in_front;
       break;
     case PoseMethod::kHaralick2d:
-      out["rejected_objective"] = number(d.rejected_objective);
+      out["rejected_objective"] = json_number(d.rejected_objective);
       break;
   }
   if (d.free_vectors) {

@@ -123,8 +123,10 @@ TagPoints tag_points_from_string(const std::string& name, const std::string& opt
 
 namespace {
 
-AprilTagMarkers read_markers(std::string_view text, const std::string& source,
-                             const AprilTagOptions& options) {
+/// The bundle read (options.bundle, or the only one) of the YAML text, checked down to its
+/// "layout" list; *prefix is its path, "tag_bundles[b]".
+YAML::Node chosen_bundle(std::string_view text, const std::string& source,
+                         const AprilTagOptions& options, std::string* prefix) {
   const YAML::Node root = parse_yaml(text, source);
   if (!root.IsMap()) fail(source, "the top level must be a YAML map with \"tag_bundles\"");
   std::set<int> visited;
@@ -136,12 +138,54 @@ AprilTagMarkers read_markers(std::string_view text, const std::string& source,
     fail(source, "tag_bundles: expected a non-empty list of bundles");
   }
   const std::size_t b = choose_bundle(bundles, source, options.bundle);
-  const std::string prefix = "tag_bundles[" + std::to_string(b) + "]";
+  *prefix = "tag_bundles[" + std::to_string(b) + "]";
   const YAML::Node bundle = bundles[b];
-  if (!bundle.IsMap()) fail(source, prefix + ": expected a map with name and layout");
-  reject_unknown_fields(bundle, prefix, source, kBundleFields);
+  if (!bundle.IsMap()) fail(source, *prefix + ": expected a map with name and layout");
+  reject_unknown_fields(bundle, *prefix, source, kBundleFields);
   const YAML::Node tags = bundle["layout"];
-  if (!tags || !tags.IsSequence()) fail(source, prefix + ".layout: expected a list of tags");
+  if (!tags || !tags.IsSequence()) fail(source, *prefix + ".layout: expected a list of tags");
+  return bundle;
+}
+
+/// One tag of the bundle: its id (unique: seen maps each id to its index), size and pose.
+struct TagPose {
+  long id = 0;
+  double size = 0;
+  Eigen::Vector3d p_bundle_tag;
+  Eigen::Matrix3d R_bundle_tag;
+};
+
+TagPose read_tag(const YAML::Node& tag, std::size_t k, const std::string& source,
+                 const std::string& where, std::map<long, std::size_t>* seen) {
+  if (!tag.IsMap()) fail(source, where + ": expected a map {id, size, x, y, z, qw, qx, qy, qz}");
+  reject_unknown_fields(tag, where, source, kTagFields);
+  const double id_value = read_number(tag, source, where, "id");
+  if (id_value < 0 || id_value != std::floor(id_value) || id_value > 1e9) {
+    fail(source, where + ".id: expected a non-negative integer");
+  }
+  const long id = static_cast<long>(id_value);
+  const auto [previous, inserted] = seen->emplace(id, k);
+  if (!inserted) {
+    fail(source, where + ".id: tag " + std::to_string(id) + " repeats layout[" +
+                     std::to_string(previous->second) + "]");
+  }
+  const double size = read_number(tag, source, where, "size");
+  if (size <= 0) fail(source, where + ".size: must be > 0");
+  const Eigen::Vector3d p(read_number(tag, source, where, "x"),
+                          read_number(tag, source, where, "y"),
+                          read_number(tag, source, where, "z"));
+  Eigen::Quaterniond q(read_number(tag, source, where, "qw"), read_number(tag, source, where, "qx"),
+                       read_number(tag, source, where, "qy"),
+                       read_number(tag, source, where, "qz"));
+  if (!(q.norm() >= kMinQuaternionNorm)) fail(source, where + ".qw: zero quaternion");
+  return {id, size, p, q.normalized().toRotationMatrix()};
+}
+
+AprilTagMarkers read_markers(std::string_view text, const std::string& source,
+                             const AprilTagOptions& options) {
+  std::string prefix;
+  const YAML::Node bundle = chosen_bundle(text, source, options, &prefix);
+  const YAML::Node tags = bundle["layout"];
 
   const bool corners = options.tag_points == TagPoints::kCorners;
   const int per_tag = corners ? 4 : 1;
@@ -157,29 +201,11 @@ AprilTagMarkers read_markers(std::string_view text, const std::string& source,
   std::map<long, std::size_t> seen;
   for (std::size_t k = 0; k < tags.size(); ++k) {
     const std::string where = prefix + ".layout[" + std::to_string(k) + "]";
-    const YAML::Node tag = tags[k];
-    if (!tag.IsMap()) fail(source, where + ": expected a map {id, size, x, y, z, qw, qx, qy, qz}");
-    reject_unknown_fields(tag, where, source, kTagFields);
-    const double id_value = read_number(tag, source, where, "id");
-    if (id_value < 0 || id_value != std::floor(id_value) || id_value > 1e9) {
-      fail(source, where + ".id: expected a non-negative integer");
-    }
-    const long id = static_cast<long>(id_value);
-    const auto [previous, inserted] = seen.emplace(id, k);
-    if (!inserted) {
-      fail(source, where + ".id: tag " + std::to_string(id) + " repeats layout[" +
-                       std::to_string(previous->second) + "]");
-    }
-    const double size = read_number(tag, source, where, "size");
-    if (size <= 0) fail(source, where + ".size: must be > 0");
-    const Eigen::Vector3d p(read_number(tag, source, where, "x"),
-                            read_number(tag, source, where, "y"),
-                            read_number(tag, source, where, "z"));
-    Eigen::Quaterniond q(
-        read_number(tag, source, where, "qw"), read_number(tag, source, where, "qx"),
-        read_number(tag, source, where, "qy"), read_number(tag, source, where, "qz"));
-    if (!(q.norm() >= kMinQuaternionNorm)) fail(source, where + ".qw: zero quaternion");
-    const Eigen::Matrix3d R_bundle_tag = q.normalized().toRotationMatrix();
+    const TagPose pose = read_tag(tags[k], k, source, where, &seen);
+    const long id = pose.id;
+    const Eigen::Vector3d& p = pose.p_bundle_tag;
+    const Eigen::Matrix3d& R_bundle_tag = pose.R_bundle_tag;
+    const double size = pose.size;
     const double s = size / 2;
     const Eigen::Vector3d corner_tag[4] = {{-s, -s, 0}, {s, -s, 0}, {s, s, 0}, {-s, s, 0}};
     for (int c = 0; c < per_tag; ++c) {

@@ -131,6 +131,44 @@ std::string where(const Row& row, const std::string& name) {
   return "line " + std::to_string(row.line) + (name.empty() ? "" : " (" + name + ")");
 }
 
+/// Drops a header row (is_header()); with normals it must name the columns (names).
+void drop_header(std::vector<Row>& rows, const char* const* names, bool with_normals,
+                 const std::string& source) {
+  if (is_header(rows.front())) {
+    // With normals the header says which of 7 or 8 columns is which: it must name them.
+    for (std::size_t c = 1; with_normals && c < rows.front().fields.size(); ++c) {
+      if (lowercase(rows.front().fields[c]) != names[c]) {
+        fail(source, where(rows.front(), "") + ": column " + std::to_string(c + 1) +
+                         " of the header is \"" + rows.front().fields[c] + "\", expected \"" +
+                         names[c] + "\" (name,x,y,z[,weight],nx,ny,nz)");
+      }
+    }
+    rows.erase(rows.begin());
+  }
+}
+
+/// The numbers of row `column` (columns 1.. of row): its point into layout->entries, its weight
+/// into layout->weights and its normal (not yet unit) into *normals.
+void read_values(const Row& row, const std::string& name, Eigen::Index column,
+                 const char* const* names, const std::string& source, Layout* layout,
+                 Eigen::Matrix3Xd* normals) {
+  const std::size_t columns = row.fields.size();
+  for (std::size_t c = 1; c < columns; ++c) {
+    double value = 0;
+    if (!parse_number(row.fields[c], &value)) {
+      fail(source, where(row, name) + ", " + names[c] + ": expected a finite number, got \"" +
+                       row.fields[c] + "\"");
+    }
+    if (c < 4) {
+      layout->entries(static_cast<Eigen::Index>(c - 1), column) = value;
+    } else if (c == 4 && columns != 7) {
+      layout->weights(column) = value;
+    } else {
+      (*normals)(static_cast<Eigen::Index>(c - (columns - 3)), column) = value;
+    }
+  }
+}
+
 }  // namespace
 
 CsvMarkers parse_csv_markers(std::string_view text, const std::string& source) {
@@ -144,17 +182,7 @@ CsvMarkers parse_csv_markers(std::string_view text, const std::string& source) {
                      std::to_string(columns));
   }
   const bool with_normals = columns >= 7;
-  if (is_header(rows.front())) {
-    // With normals the header says which of 7 or 8 columns is which: it must name them.
-    for (std::size_t c = 1; with_normals && c < columns; ++c) {
-      if (lowercase(rows.front().fields[c]) != names[c]) {
-        fail(source, where(rows.front(), "") + ": column " + std::to_string(c + 1) +
-                         " of the header is \"" + rows.front().fields[c] + "\", expected \"" +
-                         names[c] + "\" (name,x,y,z[,weight],nx,ny,nz)");
-      }
-    }
-    rows.erase(rows.begin());
-  }
+  drop_header(rows, names, with_normals, source);
   if (rows.empty()) fail(source, "no marker rows after the header");
 
   CsvMarkers out;
@@ -180,21 +208,7 @@ CsvMarkers parse_csv_markers(std::string_view text, const std::string& source) {
       fail(source, where(row, name) + ", name: repeats the marker of line " +
                        std::to_string(previous->second));
     }
-    for (std::size_t c = 1; c < columns; ++c) {
-      double value = 0;
-      if (!parse_number(row.fields[c], &value)) {
-        fail(source, where(row, name) + ", " + names[c] + ": expected a finite number, got \"" +
-                         row.fields[c] + "\"");
-      }
-      const auto column = static_cast<Eigen::Index>(k);
-      if (c < 4) {
-        layout.entries(static_cast<Eigen::Index>(c - 1), column) = value;
-      } else if (c == 4 && columns != 7) {
-        layout.weights(column) = value;
-      } else {
-        normals(static_cast<Eigen::Index>(c - (columns - 3)), column) = value;
-      }
-    }
+    read_values(row, name, static_cast<Eigen::Index>(k), names, source, &layout, &normals);
     if (with_normals) {
       const Eigen::Vector3d normal = unit_normal(normals.col(static_cast<Eigen::Index>(k)));
       if (normal.isZero()) fail(source, where(row, name) + ", nx,ny,nz: zero length");

@@ -46,6 +46,69 @@ void write_csv(const DesignCurve& curve, const std::filesystem::path& path) {
   csv.commit();
 }
 
+// The ceiling cos(pi/(2m)) for m in [m0, m1], dashed.
+void draw_ceiling(Canvas& canvas, double m0, double m1, internal::LegendPlacer& placer) {
+  const double s = internal::page_scale(canvas);
+  plstream& pls = canvas.pls();
+  constexpr int kCeilingPoints = 200;
+  std::vector<double> cx(kCeilingPoints), cy(kCeilingPoints);
+  for (int k = 0; k < kCeilingPoints; ++k) {
+    cx[k] = m0 + (m1 - m0) * k / (kCeilingPoints - 1);
+    cy[k] = std::cos(kPi / (2.0 * cx[k]));
+  }
+  pls.col0(internal::kPenInk);
+  pls.width(1.6 * s);
+  pls.lsty(2);
+  pls.line(kCeilingPoints, cx.data(), cy.data());
+  pls.lsty(1);
+  placer.add_line(cx, cy);
+}
+
+// The greedy steps: a line with labelled markers; label_drop is the height of a step label in
+// p-bar (the labels hang below their markers).
+void draw_steps(Canvas& canvas, const DesignCurve& curve, double label_drop,
+                internal::LegendPlacer& placer) {
+  const double s = internal::page_scale(canvas);
+  plstream& pls = canvas.pls();
+  const int steps = static_cast<int>(curve.n_vectors.size());
+  std::vector<double> gx(steps), gy(steps);
+  for (int k = 0; k < steps; ++k) {
+    gx[k] = curve.n_vectors[k];
+    gy[k] = curve.pbar_min[k];
+  }
+  pls.col0(internal::kPenWorst);
+  pls.width(2.2 * s);
+  pls.line(steps, gx.data(), gy.data());
+  placer.add_line(gx, gy);
+  std::vector<double> label_y(gy);
+  for (double& v : label_y) v -= label_drop;
+  placer.add_points(gx, label_y);
+  for (int k = 0; k < steps; ++k) {
+    canvas.marker(gx[k], gy[k], 6.0 * s, kWorstViewpointColour);
+    canvas.label(gx[k], gy[k], k == 0 ? "initial" : "step " + std::to_string(k), 0.0, 18 * s, 0.5,
+                 internal::kSmallSize * s, {25, 25, 25}, {255, 255, 255}, 0.8);
+  }
+}
+
+void draw_legend(Canvas& canvas, const DesignCurve& curve, internal::LegendPlacer& placer) {
+  using internal::fixed;
+  const double s = internal::page_scale(canvas);
+  using Entry = Canvas::LegendEntry;
+  std::vector<Entry> legend{
+      Entry::marker("greedy augmenter, p̄_min after each step (" + fixed(curve.pbar_min.front(), 4) +
+                        " → " + fixed(curve.pbar_min.back(), 4) + ")",
+                    kWorstViewpointColour),
+      Entry::line("ceiling cos(π/(2m)) (zone covering bound)", {25, 25, 25}, 1.6 * s, true)};
+  if (curve.has_direct) {
+    legend.insert(legend.begin() + 1, Entry::marker("direct optimiser, all additions at once (" +
+                                                        fixed(curve.direct_pbar_min, 4) + ")",
+                                                    {33, 113, 181}, Canvas::Shape::kDiamond));
+  }
+  const auto [legend_x, legend_y] =
+      placer.corner(canvas.legend_size(legend, internal::kSmallSize * s));
+  canvas.legend(legend_x, legend_y, legend, internal::kSmallSize * s);
+}
+
 void draw_curve(Canvas& canvas, const DesignCurve& curve, const FigureOptions& options) {
   using internal::fixed;
   const double s = internal::page_scale(canvas);
@@ -73,40 +136,11 @@ void draw_curve(Canvas& canvas, const DesignCurve& curve, const FigureOptions& o
   internal::set_text_size(canvas, internal::kSmallSize);
   pls.box("g", 0.0, 0, "g", 0.0, 0);
 
-  constexpr int kCeilingPoints = 200;
-  std::vector<double> cx(kCeilingPoints), cy(kCeilingPoints);
-  const double m0 = std::max(1.0, range.m_lo - pad), m1 = range.m_hi + pad;
-  for (int k = 0; k < kCeilingPoints; ++k) {
-    cx[k] = m0 + (m1 - m0) * k / (kCeilingPoints - 1);
-    cy[k] = std::cos(kPi / (2.0 * cx[k]));
-  }
-  pls.col0(internal::kPenInk);
-  pls.width(1.6 * s);
-  pls.lsty(2);
-  pls.line(kCeilingPoints, cx.data(), cy.data());
-  pls.lsty(1);
-  placer.add_line(cx, cy);
+  draw_ceiling(canvas, std::max(1.0, range.m_lo - pad), range.m_hi + pad, placer);
 
-  const int steps = static_cast<int>(curve.n_vectors.size());
-  std::vector<double> gx(steps), gy(steps);
-  for (int k = 0; k < steps; ++k) {
-    gx[k] = curve.n_vectors[k];
-    gy[k] = curve.pbar_min[k];
-  }
-  pls.col0(internal::kPenWorst);
-  pls.width(2.2 * s);
-  pls.line(steps, gx.data(), gy.data());
-  placer.add_line(gx, gy);
   // The step labels hang below their markers: their world height there.
   const double label_drop = (1.0 - lo) * 26.0 * s / (viewport.height * canvas.height());
-  std::vector<double> label_y(gy);
-  for (double& v : label_y) v -= label_drop;
-  placer.add_points(gx, label_y);
-  for (int k = 0; k < steps; ++k) {
-    canvas.marker(gx[k], gy[k], 6.0 * s, kWorstViewpointColour);
-    canvas.label(gx[k], gy[k], k == 0 ? "initial" : "step " + std::to_string(k), 0.0, 18 * s, 0.5,
-                 internal::kSmallSize * s, {25, 25, 25}, {255, 255, 255}, 0.8);
-  }
+  draw_steps(canvas, curve, label_drop, placer);
   if (curve.has_direct) {
     placer.add_points({static_cast<double>(curve.direct_n_vectors)}, {curve.direct_pbar_min});
     canvas.marker(curve.direct_n_vectors, curve.direct_pbar_min, 8.0 * s, {33, 113, 181},
@@ -120,20 +154,7 @@ void draw_curve(Canvas& canvas, const DesignCurve& curve, const FigureOptions& o
                       "m: number of data vectors (free vectors in point mode)", 3.2,
                       "p̄_min: global worst case (higher is better)", 4.8);
 
-  using Entry = Canvas::LegendEntry;
-  std::vector<Entry> legend{
-      Entry::marker("greedy augmenter, p̄_min after each step (" + fixed(curve.pbar_min.front(), 4) +
-                        " → " + fixed(curve.pbar_min.back(), 4) + ")",
-                    kWorstViewpointColour),
-      Entry::line("ceiling cos(π/(2m)) (zone covering bound)", {25, 25, 25}, 1.6 * s, true)};
-  if (curve.has_direct) {
-    legend.insert(legend.begin() + 1, Entry::marker("direct optimiser, all additions at once (" +
-                                                        fixed(curve.direct_pbar_min, 4) + ")",
-                                                    {33, 113, 181}, Canvas::Shape::kDiamond));
-  }
-  const auto [legend_x, legend_y] =
-      placer.corner(canvas.legend_size(legend, internal::kSmallSize * s));
-  canvas.legend(legend_x, legend_y, legend, internal::kSmallSize * s);
+  draw_legend(canvas, curve, placer);
 }
 
 }  // namespace

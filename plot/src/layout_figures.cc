@@ -153,6 +153,76 @@ bool needs_dropout(const LayoutFiguresOptions& options, bool has_design, bool ha
   return wants(selected_figures(options, has_design, has_visibility, has_placement), "dropout");
 }
 
+namespace {
+
+/// The viewpoint map of a layout without a body.
+FigureFiles write_free_viewpoint_map(const report::LayoutReport& report,
+                                     const std::filesystem::path& directory,
+                                     const LayoutFiguresOptions& options) {
+  const Layout& layout = report.layout;
+  const sdp::LayoutAnalysis& r = report.analysis;
+  ViewpointMapData map;
+  map.layout_name = layout.name;
+  map.vectors = report.data.vectors;
+  map.worst_viewpoints = r.worst_viewpoints;
+  map.pbar_min = r.pbar_min;
+  map.paper_lmi_viewpoint = r.paper_lmi.viewpoint;
+  map.paper_lmi_pbar = r.paper_lmi.pbar_at;
+  map.threshold_deg = options.threshold_deg;
+  map.samples_per_axis = options.map_samples;
+  return write_viewpoint_map(map, directory, options.figure);
+}
+
+/// The dropout chart: on the body (seen whole beside it) or of the data vectors.
+FigureFiles write_dropout(const report::LayoutReport& report,
+                          const std::filesystem::path& directory, const FigureOptions& figure) {
+  const Layout& layout = report.layout;
+  const sdp::LayoutAnalysis& r = report.analysis;
+  if (report.visibility.has_value()) {
+    VisibilityDropoutChartData chart;
+    chart.layout_name = layout.name;
+    chart.report = &*report.visibility;
+    chart.seen_whole_error_deg = seen_whole_dropout(report);
+    return write_visibility_dropout_chart(chart, directory, figure);
+  }
+  DropoutChartData chart;
+  chart.layout_name = layout.name;
+  chart.mode = layout.mode;
+  chart.intact_pbar_min = r.pbar_min;
+  chart.intact_max_error_deg = r.max_worst_case_error_deg;
+  chart.dropout = *report.dropout;
+  return write_dropout_chart(chart, directory, figure);
+}
+
+/// The figure of the data vectors with the worst viewpoints (and the body's, on a body).
+FigureFiles write_vectors(const report::LayoutReport& report,
+                          const std::filesystem::path& directory, const FigureOptions& figure) {
+  const Layout& layout = report.layout;
+  const sdp::LayoutAnalysis& r = report.analysis;
+  const bool on_body = report.visibility.has_value();
+  VectorsFigureData vectors;
+  vectors.layout_name = layout.name;
+  vectors.mode = layout.mode;
+  vectors.entries = layout.entries;
+  vectors.worst_viewpoints = r.worst_viewpoints;
+  vectors.pbar_min = r.pbar_min;
+  vectors.paper_lmi_viewpoint = r.paper_lmi.viewpoint;
+  vectors.paper_lmi_pbar = r.paper_lmi.pbar_at;
+  if (on_body) {
+    const visibility::VisibilityReport& v = *report.visibility;
+    vectors.normals = layout.visibility->normals;
+    if (layout.visibility->body) vectors.body = &*layout.visibility->body;
+    if (v.worst.status != visibility::VisibilityWorstViewpoint::Status::kUntrackable) {
+      vectors.body_worst_viewpoint = v.worst.viewpoint;
+      vectors.body_visible_markers = v.worst.visible_markers;
+      vectors.body_max_error_deg = v.max_worst_case_error_deg;
+    }
+  }
+  return write_vectors_figure(vectors, directory, figure);
+}
+
+}  // namespace
+
 LayoutFigures write_layout_figures(const report::LayoutReport& report,
                                    const std::filesystem::path& directory,
                                    const LayoutFiguresOptions& options, const DesignCurve* design) {
@@ -183,32 +253,9 @@ LayoutFigures write_layout_figures(const report::LayoutReport& report,
   if (on_body) {
     write_body_maps(report, directory, options, names, &result.files);
   } else if (wants(names, "viewpoint_map")) {
-    ViewpointMapData map;
-    map.layout_name = layout.name;
-    map.vectors = report.data.vectors;
-    map.worst_viewpoints = r.worst_viewpoints;
-    map.pbar_min = r.pbar_min;
-    map.paper_lmi_viewpoint = r.paper_lmi.viewpoint;
-    map.paper_lmi_pbar = r.paper_lmi.pbar_at;
-    map.threshold_deg = options.threshold_deg;
-    map.samples_per_axis = options.map_samples;
-    result.files.push_back(write_viewpoint_map(map, directory, figure));
+    result.files.push_back(write_free_viewpoint_map(report, directory, options));
   }
-  if (wants(names, "dropout") && on_body) {
-    VisibilityDropoutChartData chart;
-    chart.layout_name = layout.name;
-    chart.report = &*report.visibility;
-    chart.seen_whole_error_deg = seen_whole_dropout(report);
-    result.files.push_back(write_visibility_dropout_chart(chart, directory, figure));
-  } else if (wants(names, "dropout")) {
-    DropoutChartData chart;
-    chart.layout_name = layout.name;
-    chart.mode = layout.mode;
-    chart.intact_pbar_min = r.pbar_min;
-    chart.intact_max_error_deg = r.max_worst_case_error_deg;
-    chart.dropout = *report.dropout;
-    result.files.push_back(write_dropout_chart(chart, directory, figure));
-  }
+  if (wants(names, "dropout")) result.files.push_back(write_dropout(report, directory, figure));
   if (wants(names, "error_surface")) {
     ErrorSurfaceData surface;
     surface.layout_name = layout.name;
@@ -216,25 +263,7 @@ LayoutFigures write_layout_figures(const report::LayoutReport& report,
     result.files.push_back(write_error_surface(surface, directory, figure));
   }
   if (wants(names, "vectors")) {
-    VectorsFigureData vectors;
-    vectors.layout_name = layout.name;
-    vectors.mode = layout.mode;
-    vectors.entries = layout.entries;
-    vectors.worst_viewpoints = r.worst_viewpoints;
-    vectors.pbar_min = r.pbar_min;
-    vectors.paper_lmi_viewpoint = r.paper_lmi.viewpoint;
-    vectors.paper_lmi_pbar = r.paper_lmi.pbar_at;
-    if (on_body) {
-      const visibility::VisibilityReport& v = *report.visibility;
-      vectors.normals = layout.visibility->normals;
-      if (layout.visibility->body) vectors.body = &*layout.visibility->body;
-      if (v.worst.status != visibility::VisibilityWorstViewpoint::Status::kUntrackable) {
-        vectors.body_worst_viewpoint = v.worst.viewpoint;
-        vectors.body_visible_markers = v.worst.visible_markers;
-        vectors.body_max_error_deg = v.max_worst_case_error_deg;
-      }
-    }
-    result.files.push_back(write_vectors_figure(vectors, directory, figure));
+    result.files.push_back(write_vectors(report, directory, figure));
   }
   if (wants(names, "placement")) result.files.push_back(write_placement(report, directory, figure));
   if (wants(names, "design")) {

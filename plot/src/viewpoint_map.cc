@@ -90,6 +90,56 @@ void draw_threshold_contour(Canvas& canvas, const ViewpointSamples& samples, dou
   canvas.unclip();
 }
 
+// The worst viewpoints (tied ones close together share one label) and the paper's LMI one.
+void draw_viewpoints(Canvas& canvas, const ViewpointMapData& data, const std::string& worst_text) {
+  using internal::fixed;
+  const double s = internal::page_scale(canvas);
+  const Rgb ink{25, 25, 25};
+  const double small = internal::kSmallSize * s;
+  const Eigen::Vector2d lmi = lambert_from_viewpoint(data.paper_lmi_viewpoint);
+  canvas.marker(lmi.x(), lmi.y(), 9.0 * s, kPaperLmiColour, Canvas::Shape::kDiamond);
+  for (const Eigen::Vector3d& a : data.worst_viewpoints) {
+    const Eigen::Vector2d p = lambert_from_viewpoint(a);
+    canvas.marker(p.x(), p.y(), 6.0 * s, kWorstViewpointColour);
+  }
+  // Tied viewpoints close together share one label (above the first of them).
+  std::vector<Eigen::Vector2d> labelled;
+  for (const Eigen::Vector3d& a : data.worst_viewpoints) {
+    const Eigen::Vector2d p = lambert_from_viewpoint(a);
+    const Eigen::Vector2d at = canvas.device(p.x(), p.y());
+    const bool near = std::any_of(labelled.begin(), labelled.end(), [&](const Eigen::Vector2d& q) {
+      return (q - at).norm() < kLabelSpacingPx * s;
+    });
+    if (near) continue;
+    labelled.push_back(at);
+    canvas.label(p.x(), p.y(), worst_text, 0.0, -19 * s, 0.5, small, ink, {255, 255, 255}, 0.85);
+  }
+  canvas.label(lmi.x(), lmi.y(), "LMI p̄ " + fixed(data.paper_lmi_pbar, 4), 16 * s, 0.0, 0.0, small,
+               ink, {255, 220, 255}, 0.85);
+}
+
+void draw_map_legend(Canvas& canvas, const ViewpointMapData& data, bool has_contour) {
+  using internal::fixed;
+  const double s = internal::page_scale(canvas);
+  const double max_error = error_deg(data.pbar_min);
+  const std::size_t ties = data.worst_viewpoints.size();
+  using Entry = Canvas::LegendEntry;
+  const std::vector<Entry> legend{
+      Entry::marker(ties == 1 ? "global worst viewpoint (Theorem 6)"
+                              : std::to_string(ties) + " tied global worst viewpoints",
+                    kWorstViewpointColour),
+      Entry::text_only("p̄_min " + fixed(data.pbar_min, 4) + ", error " + fixed(max_error, 2) + "°"),
+      Entry::marker("paper's single LMI (one cell)", kPaperLmiColour, Canvas::Shape::kDiamond),
+      Entry::text_only("p̄ " + fixed(data.paper_lmi_pbar, 4) + ", error " +
+                       fixed(error_deg(data.paper_lmi_pbar), 2) + "°"),
+      Entry::line(has_contour ? "error = " + fixed(data.threshold_deg, 1) + "° contour"
+                              : "no direction exceeds " + fixed(data.threshold_deg, 1) + "°",
+                  kThresholdColour, 2.4 * s),
+      Entry::line("planes nᵢ⊥ (error 0), " + std::to_string(data.vectors.cols()) + " vectors",
+                  {150, 150, 150}, 1.0 * s)};
+  canvas.legend(0.99, 0.82, legend, internal::kSmallSize * s, 1.0);
+}
+
 void draw_map(Canvas& canvas, const ViewpointMapData& data, const ViewpointSamples& samples,
               const FigureOptions& options) {
   using internal::fixed;
@@ -133,46 +183,12 @@ void draw_map(Canvas& canvas, const ViewpointMapData& data, const ViewpointSampl
   canvas.label(0.0, -1.0, "−y", 0.0, 11 * s, 0.5, small, ink);
   canvas.label(0.0, 0.0, "+z", 0.0, 14 * s, 0.5, small, {255, 255, 255}, {25, 25, 25}, 0.55);
 
-  const Eigen::Vector2d lmi = lambert_from_viewpoint(data.paper_lmi_viewpoint);
-  canvas.marker(lmi.x(), lmi.y(), 9.0 * s, kPaperLmiColour, Canvas::Shape::kDiamond);
-  for (const Eigen::Vector3d& a : data.worst_viewpoints) {
-    const Eigen::Vector2d p = lambert_from_viewpoint(a);
-    canvas.marker(p.x(), p.y(), 6.0 * s, kWorstViewpointColour);
-  }
-  // Tied viewpoints close together share one label (above the first of them).
-  std::vector<Eigen::Vector2d> labelled;
-  for (const Eigen::Vector3d& a : data.worst_viewpoints) {
-    const Eigen::Vector2d p = lambert_from_viewpoint(a);
-    const Eigen::Vector2d at = canvas.device(p.x(), p.y());
-    const bool near = std::any_of(labelled.begin(), labelled.end(), [&](const Eigen::Vector2d& q) {
-      return (q - at).norm() < kLabelSpacingPx * s;
-    });
-    if (near) continue;
-    labelled.push_back(at);
-    canvas.label(p.x(), p.y(), worst_text, 0.0, -19 * s, 0.5, small, ink, {255, 255, 255}, 0.85);
-  }
-  canvas.label(lmi.x(), lmi.y(), "LMI p̄ " + fixed(data.paper_lmi_pbar, 4), 16 * s, 0.0, 0.0, small,
-               ink, {255, 220, 255}, 0.85);
+  draw_viewpoints(canvas, data, worst_text);
 
   internal::draw_colour_bar(canvas, 0.625, 0.65, 0.10, 0.82, 0.0, max_error,
                             "worst-case error arccos p̄(a)  [deg]");
 
-  const std::size_t ties = data.worst_viewpoints.size();
-  using Entry = Canvas::LegendEntry;
-  const std::vector<Entry> legend{
-      Entry::marker(ties == 1 ? "global worst viewpoint (Theorem 6)"
-                              : std::to_string(ties) + " tied global worst viewpoints",
-                    kWorstViewpointColour),
-      Entry::text_only("p̄_min " + fixed(data.pbar_min, 4) + ", error " + fixed(max_error, 2) + "°"),
-      Entry::marker("paper's single LMI (one cell)", kPaperLmiColour, Canvas::Shape::kDiamond),
-      Entry::text_only("p̄ " + fixed(data.paper_lmi_pbar, 4) + ", error " +
-                       fixed(error_deg(data.paper_lmi_pbar), 2) + "°"),
-      Entry::line(has_contour ? "error = " + fixed(data.threshold_deg, 1) + "° contour"
-                              : "no direction exceeds " + fixed(data.threshold_deg, 1) + "°",
-                  kThresholdColour, 2.4 * s),
-      Entry::line("planes nᵢ⊥ (error 0), " + std::to_string(data.vectors.cols()) + " vectors",
-                  {150, 150, 150}, 1.0 * s)};
-  canvas.legend(0.99, 0.82, legend, internal::kSmallSize * s, 1.0);
+  draw_map_legend(canvas, data, has_contour);
 }
 
 }  // namespace

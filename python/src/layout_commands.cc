@@ -44,9 +44,8 @@ py::tuple analyze(const py::object& layout_arg, const py::object& vectors, const
                   const py::object& format, const py::object& tag_points,
                   const py::object& bundle) {
   if (swaps < 1) throw InvalidArgument("swaps", "must be >= 1");
-  if (pair_weighting != "geometric" && pair_weighting != "arithmetic") {
-    throw InvalidArgument("pair_weighting", "expected geometric or arithmetic");
-  }
+  const std::optional<PairWeighting> weighting = parse_pair_weighting(pair_weighting);
+  if (!weighting) throw InvalidArgument("pair_weighting", "expected geometric or arithmetic");
   std::string source;
   const Layout layout = layout_from_arguments(layout_arg, vectors, points, weights, py::none(),
                                               {format, tag_points, bundle, allow_large}, &source);
@@ -60,8 +59,7 @@ py::tuple analyze(const py::object& layout_arg, const py::object& vectors, const
   });
   report::LayoutReportOptions options;
   options.dropout = dropout;
-  options.pair_weighting = pair_weighting == "arithmetic" ? PairWeighting::kArithmeticMean
-                                                          : PairWeighting::kGeometricMean;
+  options.pair_weighting = *weighting;
   options.analysis.swap_count = swaps;
   options.analysis.run_crosscheck = crosscheck;
   const report::LayoutReport report =

@@ -144,7 +144,10 @@ Layout layout_from_arguments(const py::object& layout, const py::object& vectors
   }
 }
 
-void bind_layouts(py::module_& module) {
+namespace {
+
+/// The Layout class: its constructor, read-only fields and to_dict().
+void bind_layout_class(py::module_& module) {
   py::class_<Layout>(module, "Layout",
                      "A fiducial layout: marker positions (points) or data vectors (vectors), "
                      "with weights and optional candidates. Arrays are n x 3.")
@@ -193,7 +196,10 @@ void bind_layouts(py::module_& module) {
         return "<vantage.Layout '" + l.name + "': " + std::to_string(l.entries.cols()) + " " +
                to_string(l.mode) + ">";
       });
+}
 
+/// load_layout, save_layout and board: layouts from and to files, and calibration targets.
+void bind_layout_files(py::module_& module) {
   module.def(
       "load_layout",
       [](const py::object& path, const py::object& format, const py::object& tag_points,
@@ -235,15 +241,16 @@ void bind_layouts(py::module_& module) {
       "The layout of a calibration target (as `vantage layout board`): 'chessboard' or "
       "'charuco' inner corners (rows x cols squares), 'aprilgrid' tag corners (rows x cols tags, "
       "Kalibr spacing ratio).");
+}
+
+/// data_vectors and pbar_at_viewpoints: what the analysis computes from a layout.
+void bind_layout_vectors(py::module_& module) {
   module.def(
       "data_vectors",
       [](const Layout& layout, const std::string& pair_weighting) {
-        if (pair_weighting != "geometric" && pair_weighting != "arithmetic") {
-          throw InvalidArgument("pair_weighting: expected geometric or arithmetic");
-        }
-        const DataVectors data =
-            data_vectors(layout, pair_weighting == "arithmetic" ? PairWeighting::kArithmeticMean
-                                                                : PairWeighting::kGeometricMean);
+        const std::optional<PairWeighting> weighting = parse_pair_weighting(pair_weighting);
+        if (!weighting) throw InvalidArgument("pair_weighting: expected geometric or arithmetic");
+        const DataVectors data = data_vectors(layout, *weighting);
         return py::make_tuple(array_from_columns(data.vectors), array_from_vector(data.weights));
       },
       py::arg("layout"), py::kw_only(), py::arg("pair_weighting") = "geometric",
@@ -260,6 +267,14 @@ void bind_layouts(py::module_& module) {
       "p-bar(a) = sqrt(1 - min_i (a.n_i)^2), n_i = z_i / |z_i|, at each unit viewpoint a (rows of "
       "viewpoints, k x 3) "
       "for the data vectors (m x 3): the figure of merit whose minimum analyze() reports.");
+}
+
+}  // namespace
+
+void bind_layouts(py::module_& module) {
+  bind_layout_class(module);
+  bind_layout_files(module);
+  bind_layout_vectors(module);
 }
 
 }  // namespace vantage::python

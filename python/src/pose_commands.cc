@@ -93,15 +93,11 @@ py::object pose(const py::object& model, const py::object& image, const std::str
 py::object orient(const py::object& model, const py::object& measured, const py::object& weights,
                   const std::string& method) {
   OrientationOptions options;
-  if (method == "qmethod") {
-    options.method = OrientationMethod::kQMethod;
-  } else if (method == "svd") {
-    options.method = OrientationMethod::kSvd;
-  } else if (method == "foam") {
-    options.method = OrientationMethod::kFoam;
-  } else {
+  const std::optional<OrientationMethod> parsed = parse_orientation_method(method);
+  if (!parsed) {
     throw InvalidArgument("method: expected qmethod, svd or foam, got \"" + method + "\"");
   }
+  options.method = *parsed;
   const Eigen::Matrix3Xd z = rows_from_array<3>(model, "model");
   const Eigen::Matrix3Xd q = rows_from_array<3>(measured, "measured");
   const Eigen::VectorXd w =

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "vantage/report/json_number.h"
 #include "vantage/report/layout_report.h"
 #include "visibility_report_json.h"
 
@@ -13,11 +14,9 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-Json number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
-
 Json list(const Eigen::VectorXd& v) {
   Json out = Json::array();
-  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(number(v(i)));
+  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(json_number(v(i)));
   return out;
 }
 
@@ -69,7 +68,7 @@ Json pair(const std::pair<int, int>& p) {
 }
 
 Json difference(const tracker::DistanceDifference& d) {
-  return {{"min_distance_difference", number(d.value)},
+  return {{"min_distance_difference", json_number(d.value)},
           {"pair_a", pair(d.pair_a)},
           {"pair_b", pair(d.pair_b)}};
 }
@@ -83,7 +82,7 @@ Json dropout_difference(const tracker::DropoutDifference& e) {
 // docs/math.md §24; README "vantage analyze" names the fields.
 Json identification(const tracker::IdentificationMargins& m) {
   Json out = difference(m.distance_difference);
-  out["min_marker_separation"] = number(m.separation.value);
+  out["min_marker_separation"] = json_number(m.separation.value);
   out["separation_pair"] = pair(m.separation.pair);
   out["mirror_rms"] = m.mirror.rms;
   out["mirror_rms_lower"] = m.mirror.rms_lower;

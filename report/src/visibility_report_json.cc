@@ -5,24 +5,28 @@
 
 #include "visibility_report_json.h"
 
+#include "vantage/report/json_number.h"
+
 namespace vantage::report::internal {
 namespace {
 
 using Json = nlohmann::ordered_json;
 
-Json number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
+using report::json_number;
 
-Json direction(const Eigen::Vector3d& a) { return {number(a.x()), number(a.y()), number(a.z())}; }
+Json direction(const Eigen::Vector3d& a) {
+  return {json_number(a.x()), json_number(a.y()), json_number(a.z())};
+}
 
 Json dropout(const visibility::VisibilityReport& r) {
   Json out = Json::array();
   for (const visibility::VisibilityDropoutEntry& e : r.dropout) {
     out.push_back({{"lost", e.lost},
                    {"status", to_string(e.status)},
-                   {"t", number(e.t)},
-                   {"pbar_min", number(e.pbar_min)},
-                   {"max_worst_case_error_deg", number(e.max_worst_case_error_deg)},
-                   {"trackable_fraction", number(e.trackable_fraction)}});
+                   {"t", json_number(e.t)},
+                   {"pbar_min", json_number(e.pbar_min)},
+                   {"max_worst_case_error_deg", json_number(e.max_worst_case_error_deg)},
+                   {"trackable_fraction", json_number(e.trackable_fraction)}});
   }
   return out;
 }
@@ -39,13 +43,13 @@ nlohmann::ordered_json visibility_json(const visibility::VisibilityReport& r) {
   } else {
     out["workspace"] = nullptr;
   }
-  out["trackable_fraction"] = number(r.coverage.trackable_fraction);
+  out["trackable_fraction"] = json_number(r.coverage.trackable_fraction);
   out["status"] = to_string(r.worst.status);
   const bool trackable =
       r.worst.status != visibility::VisibilityWorstViewpoint::Status::kUntrackable;
-  out["t"] = trackable ? number(r.worst.t) : Json(nullptr);
-  out["pbar_min"] = trackable ? number(r.worst.pbar_min) : Json(nullptr);
-  out["max_worst_case_error_deg"] = number(r.max_worst_case_error_deg);
+  out["t"] = trackable ? json_number(r.worst.t) : Json(nullptr);
+  out["pbar_min"] = trackable ? json_number(r.worst.pbar_min) : Json(nullptr);
+  out["max_worst_case_error_deg"] = json_number(r.max_worst_case_error_deg);
   out["worst_viewpoint"] = trackable ? direction(r.worst.viewpoint) : Json(nullptr);
   Json ties = Json::array();
   if (trackable) {
@@ -53,17 +57,17 @@ nlohmann::ordered_json visibility_json(const visibility::VisibilityReport& r) {
   }
   out["worst_viewpoints"] = ties;
   out["visible_markers"] = trackable ? Json(r.worst.visible_markers) : Json::array();
-  out["certificate"] = {{"t_upper", number(r.worst.t_upper)},
-                        {"t_lower", number(r.worst.t_lower)},
+  out["certificate"] = {{"t_upper", json_number(r.worst.t_upper)},
+                        {"t_lower", json_number(r.worst.t_lower)},
                         {"certified", r.worst.certified()},
                         {"patches", r.worst.patches}};
   out["occlusion_resolution_deg"] =
       r.occlusion_resolution_deg ? Json(*r.occlusion_resolution_deg) : Json(nullptr);
-  out["lost"] = {{"fraction", number(r.coverage.lost_fraction)},
+  out["lost"] = {{"fraction", json_number(r.coverage.lost_fraction)},
                  {"largest_region_center", r.coverage.largest_region_center
                                                ? direction(*r.coverage.largest_region_center)
                                                : Json(nullptr)},
-                 {"largest_region_radius_deg", number(r.coverage.largest_region_radius_deg)}};
+                 {"largest_region_radius_deg", json_number(r.coverage.largest_region_radius_deg)}};
   if (r.with_body) {
     out["distance_to_body"] = r.distance_to_body;
     out["off_body"] = r.off_body;

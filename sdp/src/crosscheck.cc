@@ -229,8 +229,11 @@ bool CrossCheckOptions::is_valid(std::string* why) const {
   return true;
 }
 
-CrossCheck crosscheck_worst_viewpoint(const Eigen::Matrix3Xd& vectors,
-                                      [[maybe_unused]] double t_reference,
+namespace {
+
+// Throws InvalidArgument on invalid options, fewer than 2 vectors or a zero or non-finite
+// reference viewpoint; returns the vectors normalised.
+Eigen::Matrix3Xd checked_unit_vectors(const Eigen::Matrix3Xd& vectors,
                                       const CrossCheckOptions& options,
                                       const std::vector<Eigen::Vector3d>& reference_viewpoints) {
   std::string why;
@@ -248,6 +251,16 @@ CrossCheck crosscheck_worst_viewpoint(const Eigen::Matrix3Xd& vectors,
                             std::to_string(k) + "] is zero or not finite");
     }
   }
+  return n;
+}
+
+}  // namespace
+
+CrossCheck crosscheck_worst_viewpoint(const Eigen::Matrix3Xd& vectors,
+                                      [[maybe_unused]] double t_reference,
+                                      const CrossCheckOptions& options,
+                                      const std::vector<Eigen::Vector3d>& reference_viewpoints) {
+  const Eigen::Matrix3Xd n = checked_unit_vectors(vectors, options, reference_viewpoints);
 #if !VANTAGE_WITH_NLOPT
   CrossCheck skipped;
   skipped.skipped = kWithoutNlopt;

@@ -177,19 +177,24 @@ SdpStatus status_from_csdp_code(int code) {
   }
 }
 
-SdpResult solve_with_csdp(const LmiProblem& problem, const SdpOptions& options) {
-  const int num_blocks = problem.num_blocks();
-  CsdpSolve s;
-  s.k = problem.num_variables();
-  for (int b = 0; b < num_blocks; ++b) s.n += problem.block_size(b);
+namespace {
 
-  // Sum duplicate entries: key (matrix, block, row, col), all 0-based here.
-  std::map<std::tuple<int, int, int, int>, double> summed;
+using EntryKey = std::tuple<int, int, int, int>;  // (matrix, block, row, col), 0-based
+using BlockEntries = std::vector<std::tuple<int, int, double>>;  // (row, col, value), 1-based
+
+// Sums duplicate entries of the problem by (matrix, block, row, col).
+std::map<EntryKey, double> summed_entries(const LmiProblem& problem) {
+  std::map<EntryKey, double> summed;
   for (const LmiProblem::Entry& e : problem.entries()) {
     summed[{e.matrix, e.block, e.row, e.col}] += e.value;
   }
+  return summed;
+}
 
-  // C = F_0 (CSDP indexing: blocks 1..nblocks, vectors 1..size, matrices column-major).
+// Allocates C = F_0's blocks (CSDP indexing: blocks 1..nblocks, vectors 1..size, matrices
+// column-major), all zero, and the objective vector a.
+void allocate_objective(const LmiProblem& problem, CsdpSolve& s) {
+  const int num_blocks = problem.num_blocks();
   s.C.nblocks = num_blocks;
   s.C.blocks = c_alloc<blockrec>(num_blocks + 1);
   for (int b = 0; b < num_blocks; ++b) {
@@ -206,9 +211,12 @@ SdpResult solve_with_csdp(const LmiProblem& problem, const SdpOptions& options) 
   }
   s.a = c_alloc<double>(s.k + 1);
   for (int j = 0; j < s.k; ++j) s.a[j + 1] = problem.objective()(j);
+}
 
-  // Group the constraint entries by (constraint, block), fill C directly.
-  std::map<std::pair<int, int>, std::vector<std::tuple<int, int, double>>> grouped;
+// Fills C with F_0's entries and returns the constraint entries grouped by (constraint, block).
+std::map<std::pair<int, int>, BlockEntries> fill_objective_and_group(
+    const std::map<EntryKey, double>& summed, CsdpSolve& s) {
+  std::map<std::pair<int, int>, BlockEntries> grouped;
   for (const auto& [key, value] : summed) {
     const auto [matrix, block, row, col] = key;
     if (value == 0.0) continue;
@@ -224,10 +232,15 @@ SdpResult solve_with_csdp(const LmiProblem& problem, const SdpOptions& options) 
       grouped[{matrix, block}].emplace_back(row + 1, col + 1, value);
     }
   }
+  return grouped;
+}
 
+// Builds CSDP's sparse constraint blocks F_1..F_k, each constraint's blocks in block order.
+void build_constraints(const LmiProblem& problem,
+                       const std::map<std::pair<int, int>, BlockEntries>& grouped, CsdpSolve& s) {
   s.constraints = c_alloc<constraintmatrix>(s.k + 1);
   std::vector<sparseblock*> tail(s.k + 1, nullptr);
-  for (auto& [key, list] : grouped) {  // ordered by constraint, then by block
+  for (const auto& [key, list] : grouped) {  // ordered by constraint, then by block
     const auto [matrix, block] = key;
     auto* sb = c_alloc<sparseblock>(1);
     const int count = static_cast<int>(list.size());
@@ -257,8 +270,10 @@ SdpResult solve_with_csdp(const LmiProblem& problem, const SdpOptions& options) 
       vantage::internal::fail("problem", "F_" + std::to_string(j) + " sums to zero");
     }
   }
+}
 
-  // Cross links of the blocks of equal block number, in constraint order (CSDP's byblocks).
+// Cross links of the blocks of equal block number, in constraint order (CSDP's byblocks).
+std::vector<sparseblock*> link_by_blocks(int num_blocks, const CsdpSolve& s) {
   std::vector<sparseblock*> byblocks(num_blocks + 1, nullptr);
   std::vector<sparseblock*> last_in_block(num_blocks + 1, nullptr);
   for (int j = 1; j <= s.k; ++j) {
@@ -272,7 +287,13 @@ SdpResult solve_with_csdp(const LmiProblem& problem, const SdpOptions& options) 
       last_in_block[p->blocknum] = p;
     }
   }
+  return byblocks;
+}
 
+// Allocates the work matrices and the initial solution, runs CSDP's sdp() under the process-wide
+// lock and returns its code; the objectives go to *pobj and *dobj.
+int run_csdp(const SdpOptions& options, std::vector<sparseblock*>& byblocks, CsdpSolve& s,
+             double* pobj, double* dobj) {
   const int printlevel = 0;
   alloc_mat(s.C, &s.work1);
   alloc_mat(s.C, &s.work2);
@@ -298,16 +319,33 @@ SdpResult solve_with_csdp(const LmiProblem& problem, const SdpOptions& options) 
   const size_t ldam = static_cast<size_t>(s.k % 2 == 0 ? s.k + 1 : s.k);
   std::vector<double> O(ldam * ldam, 0.0);
 
-  double pobj = 0.0;
-  double dobj = 0.0;
   std::unique_lock<std::mutex> lock(csdp_mutex());
   const int code = ::sdp(
       s.n, s.k, s.C, s.a, 0.0, s.constraints, byblocks.data(), s.fill, s.X, s.y, s.Z, s.cholxinv,
-      s.cholzinv, &pobj, &dobj, s.work1, s.work2, s.work3, workvec[0].data(), workvec[1].data(),
+      s.cholzinv, pobj, dobj, s.work1, s.work2, s.work3, workvec[0].data(), workvec[1].data(),
       workvec[2].data(), workvec[3].data(), workvec[4].data(), workvec[5].data(), workvec[6].data(),
       workvec[7].data(), diag_o.data(), s.bestx, besty.data(), s.bestz, s.Zi, O.data(), rhs.data(),
       s.dZ, s.dX, dy.data(), dy1.data(), fp.data(), printlevel, csdp_parameters(options));
   lock.unlock();
+  return code;
+}
+
+}  // namespace
+
+SdpResult solve_with_csdp(const LmiProblem& problem, const SdpOptions& options) {
+  const int num_blocks = problem.num_blocks();
+  CsdpSolve s;
+  s.k = problem.num_variables();
+  for (int b = 0; b < num_blocks; ++b) s.n += problem.block_size(b);
+
+  const std::map<EntryKey, double> summed = summed_entries(problem);
+  allocate_objective(problem, s);
+  build_constraints(problem, fill_objective_and_group(summed, s), s);
+  std::vector<sparseblock*> byblocks = link_by_blocks(num_blocks, s);
+
+  double pobj = 0.0;
+  double dobj = 0.0;
+  const int code = run_csdp(options, byblocks, s, &pobj, &dobj);
 
   SdpResult result;
   result.status = status_from_csdp_code(code);

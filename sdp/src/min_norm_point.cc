@@ -53,25 +53,93 @@ bool affine_min_norm(const Eigen::Vector3d* q, int k, double* lambda, Eigen::Vec
   return true;
 }
 
-}  // namespace
+using PointAt = Eigen::Map<const Eigen::Vector3d>;
 
-MinNormPoint min_norm_point(const double* points, int count) {
-  auto point = [points](int i) { return Eigen::Map<const Eigen::Vector3d>(points + 3 * i); };
-  MinNormPoint result;
+// The index of the point of least norm (the first of equals).
+int nearest_to_origin(const double* points, int count) {
   int best = 0;
-  double best_norm = point(0).squaredNorm();
+  double best_norm = PointAt(points).squaredNorm();
   for (int i = 1; i < count; ++i) {
-    const double n = point(i).squaredNorm();
+    const double n = PointAt(points + 3 * i).squaredNorm();
     if (n < best_norm) {
       best_norm = n;
       best = i;
     }
   }
+  return best;
+}
+
+// The point most violating the Wolfe test x.p_j >= ||x||^2 - kOptimality, or -1 if none does.
+int most_violating(const Eigen::Vector3d& x, double xx, const double* points, int count) {
+  int j = -1;
+  double lowest = xx - kOptimality;
+  for (int i = 0; i < count; ++i) {
+    const double v = x.dot(PointAt(points + 3 * i));
+    if (v < lowest) {
+      lowest = v;
+      j = i;
+    }
+  }
+  return j;
+}
+
+// Wolfe's minor cycles on the corral corral[0..*k-1] with barycentric weights weight[] of x:
+// moves x to the affine minimum-norm point of the corral, dropping the points whose weight
+// vanishes on the way. Returns false (with the newest point dropped) when the corral is affinely
+// dependent, which happens only from rounding.
+bool minor_cycles(Eigen::Vector3d* corral, double* weight, int* k, Eigen::Vector3d* x) {
+  double lambda[4];
+  for (int minor = 0; minor < 8; ++minor) {
+    Eigen::Vector3d y;
+    if (!affine_min_norm(corral, *k, lambda, &y)) {
+      // Affinely dependent corral (only from rounding): keep x, which is in the hull.
+      --*k;
+      return false;
+    }
+    bool interior = true;
+    for (int i = 0; i < *k; ++i) interior = interior && lambda[i] > kWeightZero;
+    if (interior) {
+      *x = y;
+      std::copy(lambda, lambda + *k, weight);
+      return true;
+    }
+    double theta = 1.0;
+    for (int i = 0; i < *k; ++i) {
+      if (lambda[i] <= kWeightZero && weight[i] - lambda[i] > 0.0) {
+        theta = std::min(theta, weight[i] / (weight[i] - lambda[i]));
+      }
+    }
+    *x = (1.0 - theta) * *x + theta * y;
+    int kept = 0;
+    int weakest = 0;
+    for (int i = 0; i < *k; ++i) {
+      weight[i] = (1.0 - theta) * weight[i] + theta * lambda[i];
+      if (weight[i] < weight[weakest]) weakest = i;
+    }
+    for (int i = 0; i < *k; ++i) {
+      if (i != weakest && weight[i] > kWeightZero) {
+        corral[kept] = corral[i];
+        weight[kept] = weight[i];
+        ++kept;
+      }
+    }
+    *k = std::max(kept, 1);
+    if (kept == 0) {
+      corral[0] = *x;
+      weight[0] = 1.0;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+MinNormPoint min_norm_point(const double* points, int count) {
+  MinNormPoint result;
   Eigen::Vector3d corral[4];
   double weight[4];
-  double lambda[4];
   int k = 1;
-  corral[0] = point(best);
+  corral[0] = PointAt(points + 3 * nearest_to_origin(points, count));
   weight[0] = 1.0;
   Eigen::Vector3d x = corral[0];
   bool stalled = false;
@@ -83,60 +151,12 @@ MinNormPoint min_norm_point(const double* points, int count) {
       result.contains_origin = true;
       return result;
     }
-    int j = -1;
-    double lowest = xx - kOptimality;
-    for (int i = 0; i < count; ++i) {
-      const double v = x.dot(point(i));
-      if (v < lowest) {
-        lowest = v;
-        j = i;
-      }
-    }
+    const int j = most_violating(x, xx, points, count);
     if (j < 0 || k == 4 || stalled) break;
-    corral[k] = point(j);
+    corral[k] = PointAt(points + 3 * j);
     weight[k] = 0.0;
     ++k;
-    for (int minor = 0; minor < 8; ++minor) {
-      Eigen::Vector3d y;
-      if (!affine_min_norm(corral, k, lambda, &y)) {
-        // Affinely dependent corral (only from rounding): keep x, which is in the hull.
-        --k;
-        stalled = true;
-        break;
-      }
-      bool interior = true;
-      for (int i = 0; i < k; ++i) interior = interior && lambda[i] > kWeightZero;
-      if (interior) {
-        x = y;
-        std::copy(lambda, lambda + k, weight);
-        break;
-      }
-      double theta = 1.0;
-      for (int i = 0; i < k; ++i) {
-        if (lambda[i] <= kWeightZero && weight[i] - lambda[i] > 0.0) {
-          theta = std::min(theta, weight[i] / (weight[i] - lambda[i]));
-        }
-      }
-      x = (1.0 - theta) * x + theta * y;
-      int kept = 0;
-      int weakest = 0;
-      for (int i = 0; i < k; ++i) {
-        weight[i] = (1.0 - theta) * weight[i] + theta * lambda[i];
-        if (weight[i] < weight[weakest]) weakest = i;
-      }
-      for (int i = 0; i < k; ++i) {
-        if (i != weakest && weight[i] > kWeightZero) {
-          corral[kept] = corral[i];
-          weight[kept] = weight[i];
-          ++kept;
-        }
-      }
-      k = std::max(kept, 1);
-      if (kept == 0) {
-        corral[0] = x;
-        weight[0] = 1.0;
-      }
-    }
+    stalled = !minor_cycles(corral, weight, &k, &x);
   }
   result.x = x;
   result.contains_origin = x.squaredNorm() <= kOriginSquared;

@@ -51,44 +51,54 @@ bool parse_direction(const std::string& text, Eigen::Vector3d* direction) {
   return true;
 }
 
+// The command line's values.
+struct ViewerArgs {
+  std::string layout_path;
+  std::string size = "1400x900";
+  std::string view = "iso";
+  std::string pin;
+  int place = 0;
+  vantage::viewer::PlaceSettings place_settings;
+  WindowOptions window;
+};
+
+void add_viewer_options(CLI::App& cli, ViewerArgs* args) {
+  cli.add_option("LAYOUT", args->layout_path,
+                 "layout file (.json, .csv markers, .yaml AprilTag bundle); default: the "
+                 "orthogonal triad");
+  cli.add_option("--screenshot", args->window.screenshot_path,
+                 "render, save the window to this PNG and exit (headless use, e.g. xvfb-run -a)");
+  cli.add_option("--frames", args->window.frames,
+                 "with --screenshot: frames drawn after the analysis is ready (>= 1)")
+      ->check(CLI::Range(1, 1000));
+  cli.add_option("--size", args->size, "window size WxH in pixels (320..8192 each)");
+  cli.add_option("--view", args->view, "starting view: " + vantage::viewer::view_preset_names());
+  cli.add_option("--pin", args->pin,
+                 "pin the viewpoint AX,AY,AZ (object frame, body -> camera; normalised): the "
+                 "readout and the inset show it");
+  cli.add_option("--timeout", args->window.timeout_seconds,
+                 "with --screenshot: seconds to wait for the analysis (>= 1)")
+      ->check(CLI::Range(1, 86400));
+  cli.add_option("--place", args->place,
+                 "at start-up, place K markers on the layout's body (as the design panel's "
+                 "button; the layout needs normals and a body mesh); with --screenshot the PNG "
+                 "shows the placed layout")
+      ->check(CLI::Range(3, 200));
+  cli.add_option("--candidates", args->place_settings.candidates,
+                 "with --place: sites sampled on the body")
+      ->check(CLI::Range(1, 20000))
+      ->capture_default_str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App cli{
       "vantage-viewer: orbit a fiducial layout's sphere of viewpoints, see its worst "
       "viewpoints and error surface, and improve it with the augmenter"};
-  std::string layout_path;
-  std::string size = "1400x900";
-  std::string view = "iso";
-  WindowOptions options;
-  cli.add_option("LAYOUT", layout_path,
-                 "layout file (.json, .csv markers, .yaml AprilTag bundle); default: the "
-                 "orthogonal triad");
-  cli.add_option("--screenshot", options.screenshot_path,
-                 "render, save the window to this PNG and exit (headless use, e.g. xvfb-run -a)");
-  cli.add_option("--frames", options.frames,
-                 "with --screenshot: frames drawn after the analysis is ready (>= 1)")
-      ->check(CLI::Range(1, 1000));
-  cli.add_option("--size", size, "window size WxH in pixels (320..8192 each)");
-  cli.add_option("--view", view, "starting view: " + vantage::viewer::view_preset_names());
-  std::string pin;
-  cli.add_option("--pin", pin,
-                 "pin the viewpoint AX,AY,AZ (object frame, body -> camera; normalised): the "
-                 "readout and the inset show it");
-  cli.add_option("--timeout", options.timeout_seconds,
-                 "with --screenshot: seconds to wait for the analysis (>= 1)")
-      ->check(CLI::Range(1, 86400));
-  int place = 0;
-  vantage::viewer::PlaceSettings place_settings;
-  cli.add_option("--place", place,
-                 "at start-up, place K markers on the layout's body (as the design panel's "
-                 "button; the layout needs normals and a body mesh); with --screenshot the PNG "
-                 "shows the placed layout")
-      ->check(CLI::Range(3, 200));
-  cli.add_option("--candidates", place_settings.candidates,
-                 "with --place: sites sampled on the body")
-      ->check(CLI::Range(1, 20000))
-      ->capture_default_str();
+  ViewerArgs args;
+  add_viewer_options(cli, &args);
+  WindowOptions& options = args.window;
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -97,40 +107,40 @@ int main(int argc, char** argv) {
     std::cerr << "vantage-viewer: " << e.what() << "\n";
     return 2;
   }
-  if (!parse_size(size, &options.width, &options.height)) {
-    std::cerr << "vantage-viewer: --size: expected WxH with 320..8192 pixels each, got '" << size
-              << "'\n";
+  if (!parse_size(args.size, &options.width, &options.height)) {
+    std::cerr << "vantage-viewer: --size: expected WxH with 320..8192 pixels each, got '"
+              << args.size << "'\n";
     return 2;
   }
   const std::optional<vantage::viewer::ViewPreset> preset =
-      vantage::viewer::parse_view_preset(view);
+      vantage::viewer::parse_view_preset(args.view);
   if (!preset) {
     std::cerr << "vantage-viewer: --view: expected one of " << vantage::viewer::view_preset_names()
-              << ", got '" << view << "'\n";
+              << ", got '" << args.view << "'\n";
     return 2;
   }
   options.view = *preset;
   Eigen::Vector3d pinned = Eigen::Vector3d::UnitZ();
-  if (!pin.empty() && !parse_direction(pin, &pinned)) {
-    std::cerr << "vantage-viewer: --pin: expected AX,AY,AZ, a non-zero direction, got '" << pin
+  if (!args.pin.empty() && !parse_direction(args.pin, &pinned)) {
+    std::cerr << "vantage-viewer: --pin: expected AX,AY,AZ, a non-zero direction, got '" << args.pin
               << "'\n";
     return 2;
   }
 
   std::optional<vantage::viewer::LayoutDocument> document;
   try {
-    document.emplace(layout_path.empty() ? vantage::viewer::LayoutDocument::default_layout()
-                                         : vantage::io::load_layout(layout_path),
-                     layout_path);
+    document.emplace(args.layout_path.empty() ? vantage::viewer::LayoutDocument::default_layout()
+                                              : vantage::io::load_layout(args.layout_path),
+                     args.layout_path);
   } catch (const std::exception& e) {
     std::cerr << "vantage-viewer: " << e.what() << "\n";
     return 2;
   }
   vantage::viewer::ViewerSession session(std::move(*document));
-  if (!pin.empty()) session.pinned_viewpoint = pinned;
-  if (place > 0) {
-    place_settings.markers = place;
-    if (!session.place_markers(place_settings)) {
+  if (!args.pin.empty()) session.pinned_viewpoint = pinned;
+  if (args.place > 0) {
+    args.place_settings.markers = args.place;
+    if (!session.place_markers(args.place_settings)) {
       std::cerr << "vantage-viewer: --place: " << session.message() << "\n";
       return 2;
     }

@@ -62,18 +62,57 @@ void build_frame(ViewerSession& session, SceneView& scene, Panels& panels, bool 
   ImGui::Render();
 }
 
-}  // namespace
-
-int run_window(ViewerSession& session, const WindowOptions& options) {
-  const bool screenshot = !options.screenshot_path.empty();
-  GLFWwindow* window = open_window(options, "vantage-viewer: " + session.layout().name);
-  if (window == nullptr) return 1;
+// Dear ImGui on the window: context, fonts and style, GLFW and OpenGL back ends.
+void start_imgui(GLFWwindow* window) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
   setup_fonts_and_style();
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 130");
+}
+
+// Draws the frame built by ImGui into the framebuffer, whose size it returns, and waits for it.
+void render(GLFWwindow* window, int* fb_width, int* fb_height) {
+  glfwGetFramebufferSize(window, fb_width, fb_height);
+  glViewport(0, 0, *fb_width, *fb_height);
+  glClearColor(0.11f, 0.12f, 0.14f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  glFinish();  // so that each frame's time includes its own drawing
+}
+
+// Saves the framebuffer to --screenshot and prints what it shows; 0, or 1 if it cannot.
+int save_screenshot(ViewerSession& session, const WindowOptions& options, int fb_width,
+                    int fb_height, int frames_timed, double longest_frame_ms) {
+  if (!save_framebuffer_png(options.screenshot_path, fb_width, fb_height)) {
+    std::cerr << "vantage-viewer: " << options.screenshot_path << ": cannot write PNG\n";
+    return 1;
+  }
+  const AnalysisSnapshot& snap = *session.analysis();
+  std::printf(
+      "vantage-viewer: wrote %s (%dx%d); analysis of %d data vectors took %.3f s "
+      "on the worker thread; UI frames after the first: %d, longest %.1f ms\n",
+      options.screenshot_path.c_str(), fb_width, fb_height,
+      static_cast<int>(snap.data.vectors.cols()), snap.seconds, frames_timed, longest_frame_ms);
+  return 0;
+}
+
+void close_window(GLFWwindow* window) {
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window);
+  glfwTerminate();
+}
+
+}  // namespace
+
+int run_window(ViewerSession& session, const WindowOptions& options) {
+  const bool screenshot = !options.screenshot_path.empty();
+  GLFWwindow* window = open_window(options, "vantage-viewer: " + session.layout().name);
+  if (window == nullptr) return 1;
+  start_imgui(window);
 
   SceneView scene;
   Panels panels;
@@ -99,12 +138,7 @@ int run_window(ViewerSession& session, const WindowOptions& options) {
     build_frame(session, scene, panels, !screenshot, window);
     int fb_width = 0;
     int fb_height = 0;
-    glfwGetFramebufferSize(window, &fb_width, &fb_height);
-    glViewport(0, 0, fb_width, fb_height);
-    glClearColor(0.11f, 0.12f, 0.14f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    glFinish();               // so that each frame's time includes its own drawing
+    render(window, &fb_width, &fb_height);
     if (frame_count++ > 0) {  // the first frame builds the font atlas and shaders
       ++frames_timed;
       longest_frame_ms = std::max(
@@ -116,18 +150,8 @@ int run_window(ViewerSession& session, const WindowOptions& options) {
       const bool ready = session.analysis_current() && !session.augmenting() &&
                          !session.placing() && !view_pending;
       if (ready && ++frames_ready >= options.frames) {
-        if (!save_framebuffer_png(options.screenshot_path, fb_width, fb_height)) {
-          std::cerr << "vantage-viewer: " << options.screenshot_path << ": cannot write PNG\n";
-          status = 1;
-        } else {
-          const AnalysisSnapshot& snap = *session.analysis();
-          std::printf(
-              "vantage-viewer: wrote %s (%dx%d); analysis of %d data vectors took %.3f s "
-              "on the worker thread; UI frames after the first: %d, longest %.1f ms\n",
-              options.screenshot_path.c_str(), fb_width, fb_height,
-              static_cast<int>(snap.data.vectors.cols()), snap.seconds, frames_timed,
-              longest_frame_ms);
-        }
+        status =
+            save_screenshot(session, options, fb_width, fb_height, frames_timed, longest_frame_ms);
         break;
       }
       const double waited =
@@ -140,11 +164,7 @@ int run_window(ViewerSession& session, const WindowOptions& options) {
     }
     glfwSwapBuffers(window);
   }
-  ImGui_ImplOpenGL3_Shutdown();
-  ImGui_ImplGlfw_Shutdown();
-  ImGui::DestroyContext();
-  glfwDestroyWindow(window);
-  glfwTerminate();
+  close_window(window);
   return status;
 }
 

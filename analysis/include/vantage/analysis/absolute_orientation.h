@@ -14,7 +14,9 @@
 /// one positive entry per column; an empty vector means all weights are 1.
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "vantage/analysis/quaternion.h"
 
@@ -29,6 +31,9 @@ enum class OrientationMethod {
 
 /// "qmethod", "svd" or "foam".
 const char* to_string(OrientationMethod method);
+
+/// The method named `name` (as to_string() spells it), or nullopt.
+std::optional<OrientationMethod> parse_orientation_method(std::string_view name);
 
 /// Outcome of an orientation or pose solve.
 enum class OrientationStatus {

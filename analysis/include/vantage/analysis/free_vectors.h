@@ -7,7 +7,9 @@
 /// layout analysis (data_vectors in layout.h) and by the affine pose estimators.
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace vantage {
 
@@ -19,6 +21,10 @@ enum class PairWeighting {
 
 /// "geometric_mean" or "arithmetic_mean".
 const char* to_string(PairWeighting weighting);
+
+/// The weighting named as the front ends' option spells it (--pair-weighting, pair_weighting=):
+/// "geometric" or "arithmetic"; nullopt for any other name.
+std::optional<PairWeighting> parse_pair_weighting(std::string_view name);
 
 /// The weight of the pair (i, j) under `weighting`.
 double pair_weight(double w_i, double w_j, PairWeighting weighting);

@@ -21,9 +21,6 @@ Json rows(const Eigen::Matrix3d& m);
 /// A 3-vector as a list.
 Json list(const Eigen::Vector3d& v);
 
-/// A number, or null when it is not finite (NaN and infinities are never printed).
-Json number(double x);
-
 /// A vector with null for each entry that is not finite (an unknown depth p_z).
 Json finite_list(const Eigen::VectorXd& v);
 
