@@ -138,11 +138,10 @@ design::PlaceOptions tracker_options() {
   return o;
 }
 
-// `vantage place --objective camera`: greedy and swaps over N sites.
-void BM_Place_Camera(benchmark::State& state) {
-  const Sites s =
-      workspace_sites(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
-  const design::PlaceOptions o = camera_options(s);
+// One placement (greedy and swaps) over N sites with the objective of `o`; `counter` names its
+// value.
+void run_placement(benchmark::State& state, const Sites& s, const design::PlaceOptions& o,
+                   const char* counter) {
   double value = 0.0;
   long evaluations = 0;
   for (auto _ : state) {
@@ -150,14 +149,24 @@ void BM_Place_Camera(benchmark::State& state) {
     value = r.value.objective;
     evaluations = r.evaluations;
   }
-  state.counters["rot_rms_deg"] = value;
+  state.counters[counter] = value;
   state.counters["evaluations"] = static_cast<double>(evaluations);
 }
 
-// Its baseline: `vantage crb`'s map of an 8-marker answer (the objective once, as crb runs it).
+Sites workspace_sites(const benchmark::State& state) {
+  return workspace_sites(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+}
+
+// `vantage place --objective camera`.
+void BM_Place_Camera(benchmark::State& state) {
+  const Sites s = workspace_sites(state);
+  run_placement(state, s, camera_options(s), "rot_rms_deg");
+}
+
+// Its baseline: `vantage crb`'s map of K of the same sites (the first K; the objective of one
+// layout, as crb runs it).
 void BM_Place_CameraOneMap(benchmark::State& state) {
-  const Sites s =
-      workspace_sites(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+  const Sites s = workspace_sites(state);
   const design::PlaceOptions o = camera_options(s);
   vantage::Layout answer = s.layout;
   const int k = static_cast<int>(state.range(1));
@@ -172,26 +181,14 @@ void BM_Place_CameraOneMap(benchmark::State& state) {
   }
 }
 
-// `vantage place --objective tracker`: greedy and swaps over N sites.
+// `vantage place --objective tracker`.
 void BM_Place_Tracker(benchmark::State& state) {
-  const Sites s =
-      workspace_sites(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
-  const design::PlaceOptions o = tracker_options();
-  double value = 0.0;
-  long evaluations = 0;
-  for (auto _ : state) {
-    const design::PlacementResult r = design::place_markers(s.problem, o);
-    value = r.value.objective;
-    evaluations = r.evaluations;
-  }
-  state.counters["rms_tre"] = value;
-  state.counters["evaluations"] = static_cast<double>(evaluations);
+  run_placement(state, workspace_sites(state), tracker_options(), "rms_tre");
 }
 
 // Its baseline: one certified worst TRE of the tracker placement's answer.
 void BM_Place_TrackerOneSearch(benchmark::State& state) {
-  const Sites s =
-      workspace_sites(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+  const Sites s = workspace_sites(state);
   const design::PlaceOptions o = tracker_options();
   const design::PlacementResult answer = design::place_markers(s.problem, o);
   const visibility::VisibilityProblem problem = answer_problem(s, answer.chosen);

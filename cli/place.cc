@@ -82,7 +82,12 @@ Command add_place_command(CLI::App& root) {
   sub->add_option("--out", args->out, "the placed layout (.json)")->required();
   args->input.add_options(sub);
   sub->add_option("--min-separation", args->min_separation,
-                  "least distance between chosen markers (also thins the sampled sites)")
+                  "least distance between chosen markers (also thins the sampled sites); at "
+                  "least --marker-diameter")
+      ->capture_default_str();
+  sub->add_option("--marker-diameter", args->marker_diameter,
+                  "spherical markers of this diameter: each centre sits half of it off the "
+                  "surface along the site normal (0: point markers)")
       ->capture_default_str();
   sub->add_option("--keep", args->keep,
                   "markers already on the body: a layout of points with normals (3 or more): "
@@ -108,7 +113,7 @@ Command add_place_command(CLI::App& root) {
       ->capture_default_str();
   sub->add_option("--objective", args->objective,
                   "affine: the paper's scale-free bound under visibility; camera: the pinhole "
-                  "pose CRB (docs/math.md §21)")
+                  "pose CRB; tracker: the RMS TRE at --target (docs/math.md §21)")
       ->capture_default_str();
   sub->add_option("--distance", args->distance,
                   "camera objective: distance of the camera from the aim point, layout units");

@@ -90,7 +90,14 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
   if (args.sites.empty())
     std::cout << " (" << drawn << " drawn area-uniformly, seed " << args.seed << ")";
   std::cout << ", min_visible " << v.min_visible << ", " << (v.with_body ? "cone+mesh" : "cone")
-            << " visibility, search " << r.search << "\n\n";
+            << " visibility, search " << r.search << "\n";
+  if (args.marker_diameter > 0.0) {
+    std::cout << "  spheres of diameter " << format_number(args.marker_diameter, 6)
+              << ", centres half of it off the surface; ";
+  } else {
+    std::cout << "  point markers; ";
+  }
+  std::cout << "min separation " << format_number(args.separation(), 6) << "\n\n";
   if (!r.steps.empty()) {
     std::cout << (placed.crb   ? "greedy construction (k markers: coverage, the objective on the "
                                  "search's lattice):\n"

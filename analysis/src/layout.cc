@@ -47,19 +47,12 @@ void check_point(const Eigen::Vector3d& p, const std::string& field, Eigen::Inde
   }
 }
 
-// Points closer than kCoincidenceRelative times the largest coordinate magnitude (or than
-// Layout::kMinLength) coincide: their free vector is at the rounding level of the coordinates
-// (2^-52 relative), so its direction is noise. Relative, so that scaling a layout by 1e-100 or
-// 1e100 changes nothing.
-constexpr double kCoincidenceRelative = 1e-12;
-
 // Sweeps the points in order of their coordinate of largest spread, comparing each with the
 // following ones within the threshold along that axis: O(n log n) for spread-out layouts instead
 // of all n^2 / 2 pairs. Reports the coinciding pair (i < j) with the smallest j, then i.
 void check_coincidence(const Eigen::Matrix3Xd& points, const std::string& field) {
   const Eigen::Index n = points.cols();
-  const double scale = points.cwiseAbs().maxCoeff();
-  const double threshold = std::max(kCoincidenceRelative * scale, Layout::kMinLength);
+  const double threshold = Layout::coincidence_distance(points);
   Eigen::Index axis = 0;
   (points.rowwise().maxCoeff() - points.rowwise().minCoeff()).maxCoeff(&axis);
   std::vector<Eigen::Index> order(static_cast<std::size_t>(n));
@@ -103,6 +96,14 @@ void check_names(const std::vector<std::string>& names, Eigen::Index n, bool poi
 }
 
 }  // namespace
+
+// Relative, so that scaling a layout by 1e-100 or 1e100 changes nothing: the free vector of two
+// points this close is at the rounding level of the coordinates (2^-52 relative), so its
+// direction is noise.
+double Layout::coincidence_distance(const Eigen::Matrix3Xd& points) {
+  const double scale = points.size() == 0 ? 0.0 : points.cwiseAbs().maxCoeff();
+  return std::max(kCoincidenceRelative * scale, kMinLength);
+}
 
 void Layout::validate() const {
   const std::string field = entries_field();

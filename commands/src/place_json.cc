@@ -12,6 +12,7 @@
 #include "vantage/io/layout_formats.h"
 #include "vantage/io/mesh_file.h"
 #include "vantage/io/text_file.h"
+#include "vantage/report/json_number.h"
 #include "vantage/visibility/visibility_model.h"
 
 namespace vantage::place_json {
@@ -70,8 +71,8 @@ Layout place_sampled_sites(const Request& request, int* drawn) {
   }
   design::SurfaceSites sampled;
   try {
-    sampled = design::sample_surface_sites(mesh, request.candidates, request.min_separation,
-                                           request.seed);
+    sampled =
+        design::sample_surface_sites(mesh, request.candidates, request.separation(), request.seed);
   } catch (const InvalidArgument& e) {
     place_refuse("BODY", request.body + ": " + e.what());
   }
@@ -328,15 +329,12 @@ double crb_statistic(const camera::PoseCrbMap& map, design::CrbStatistic statist
   return map.worst.rot_rms_deg;
 }
 
-// A value, or null when it is infinite (nothing trackable).
-Json place_degrees(double value) { return std::isfinite(value) ? Json(value) : Json(); }
-
 Json place_vector(const Eigen::Vector3d& v) { return Json{v.x(), v.y(), v.z()}; }
 
 // The tracker objective's block: `vantage tre`'s worst of each target on the placed layout.
 void place_tracker_json(const Outcome& outcome, Json* out) {
   const tracker::TreReport& tre = *outcome.placed.tre;
-  (*out)["search_value"] = place_degrees(outcome.result.value.objective);
+  (*out)["search_value"] = report::json_number(outcome.result.value.objective);
   Json fle = {{"sigma_perp", tre.fle.sigma_perp}, {"sigma_axial", tre.fle.sigma_axial}};
   if (tre.fle.from_rms) fle["rms"] = tre.fle.rms();
   (*out)["fle"] = fle;
@@ -358,9 +356,9 @@ Json place_objective_json(const Request& request, const Outcome& outcome) {
   out["name"] = request.objective;
   if (outcome.placed.tre) {
     // A length in the layout's unit, not degrees.
-    out["value"] = place_degrees(outcome.objective_value);
+    out["value"] = report::json_number(outcome.objective_value);
   } else {
-    out["value_deg"] = place_degrees(outcome.objective_value);
+    out["value_deg"] = report::json_number(outcome.objective_value);
   }
   out["min_coverage"] = request.min_coverage == -1.0 ? Json("all lattice directions but one")
                                                      : Json(request.min_coverage);
@@ -375,7 +373,7 @@ Json place_objective_json(const Request& request, const Outcome& outcome) {
   const camera::PoseCrbOptions& c = *outcome.placed.camera;
   const camera::PoseCrbMap& map = *outcome.placed.crb;
   out["statistic"] = request.statistic;
-  out["search_value_deg"] = place_degrees(r.value.objective);
+  out["search_value_deg"] = report::json_number(r.value.objective);
   out["camera"] = {{"distance", c.distance},
                    {"focal_px", c.focal_length},
                    {"noise_px", c.noise_px},
@@ -444,6 +442,12 @@ void check_request(const Request& request) {
   if (!(request.min_separation >= 0.0) || !std::isfinite(request.min_separation)) {
     place_refuse("--min-separation", "must be a finite number >= 0");
   }
+  if (!(request.marker_diameter >= 0.0) || !std::isfinite(request.marker_diameter)) {
+    place_refuse("--marker-diameter", "must be a finite number >= 0");
+  }
+  if (request.min_separation > 0.0 && request.min_separation < request.marker_diameter) {
+    place_refuse("--min-separation", "below --marker-diameter: two markers would overlap");
+  }
   if (!(request.min_distance_difference >= 0.0) ||
       !std::isfinite(request.min_distance_difference)) {
     place_refuse("--min-distance-difference", "must be a finite number >= 0");
@@ -493,6 +497,9 @@ Sites candidate_sites(const Request& request,
     out.layout = place_sampled_sites(request, &out.drawn);
     apply_visibility(&out.layout);
   }
+  if (request.marker_diameter > 0.0) {
+    out.layout = design::sphere_centres(std::move(out.layout), request.marker_diameter);
+  }
   out.n_candidates = static_cast<int>(out.layout.entries.cols());
   out.keep = place_append_kept(request, &out.layout);
   place_check_problem(request, out.layout, out.keep.size());
@@ -510,7 +517,7 @@ Outcome place(const Request& request, const Sites& sites,
   problem.sites = model.problem();
   problem.keep = sites.keep;
   problem.markers = request.markers;
-  problem.min_separation = request.min_separation;
+  problem.min_separation = request.separation();
   problem.min_distance_difference = request.min_distance_difference;
   design::PlaceOptions options;
   options.robust_dropout = request.robust_dropout;
@@ -565,6 +572,8 @@ PlacedLayout placed_layout(const Request& request, const Layout& sites, int n_ca
   record.sites = request.source();
   record.n_candidates = n_candidates;
   record.robust_dropout = request.robust_dropout;
+  record.min_separation = request.separation();
+  record.marker_diameter = request.marker_diameter;
   if (camera) record.objective = camera_words(request, *camera);
   if (tracker) record.objective = tracker_words(*tracker);
   out.layout = design::placed_layout(sites, result, record);
@@ -631,6 +640,8 @@ Json report(const Request& request, const Sites& sites, const Outcome& outcome, 
   out["n_candidates"] = n_candidates;
   if (request.sites.empty()) out["drawn"] = sites.drawn;
   out["markers"] = request.markers;
+  out["min_separation"] = request.separation();
+  out["marker_diameter"] = request.marker_diameter;
   out["search"] = r.search;
   const Json analysis = Json::parse(report::to_json(placed.report));
   out["visibility"] = analysis.contains("visibility") ? analysis["visibility"] : Json();
@@ -651,7 +662,7 @@ Json report(const Request& request, const Sites& sites, const Outcome& outcome, 
          placed.site_names[static_cast<std::size_t>(r.robust->worst_lost_marker)]},
         {"coverage", r.robust->coverage}};
     if (outcome.placed.crb || outcome.placed.tre) {
-      out["robust"]["objective"] = place_degrees(r.robust->objective);
+      out["robust"]["objective"] = report::json_number(r.robust->objective);
     }
   }
   out["swaps"] = r.swaps;

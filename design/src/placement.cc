@@ -46,6 +46,10 @@ RobustValue robust_value(internal::PlacementSearch& search, const std::vector<in
 
 }  // namespace
 
+double PlacementProblem::least_separation() const {
+  return std::max(min_separation, Layout::coincidence_distance(sites.points));
+}
+
 void PlacementProblem::validate() const {
   sites.validate();
   const long n = static_cast<long>(sites.points.cols());
@@ -82,11 +86,10 @@ void PlacementProblem::validate() const {
   for (std::size_t i = 0; i < keep.size(); ++i) {
     for (std::size_t j = i + 1; j < keep.size(); ++j) {
       const double d = (sites.points.col(keep[i]) - sites.points.col(keep[j])).norm();
-      if (d < min_separation) {
-        throw InvalidArgument("min_separation", "kept sites " + std::to_string(keep[i]) + " and " +
-                                                    std::to_string(keep[j]) +
-                                                    " are closer than it");
-      }
+      const std::string pair =
+          "kept sites " + std::to_string(keep[i]) + " and " + std::to_string(keep[j]);
+      if (d < min_separation) throw InvalidArgument("min_separation", pair + " are closer than it");
+      if (d < least_separation()) throw InvalidArgument("keep", pair + " coincide");
     }
   }
 }

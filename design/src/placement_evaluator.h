@@ -49,6 +49,8 @@ class PlacementEvaluator {
                        const std::vector<Eigen::Vector3d>& witnesses, double tolerance = 0.0) const;
 
  private:
+  std::vector<visibility::VisibilityProblem> subproblems(
+      const std::vector<std::vector<int>>& family) const;
   FamilyValue camera_family(const std::vector<std::vector<int>>& family, double level) const;
   FamilyValue tracker_family(const std::vector<std::vector<int>>& family, double level,
                              const std::vector<Eigen::Vector3d>& witnesses) const;
@@ -56,6 +58,7 @@ class PlacementEvaluator {
   const PlacementProblem& problem_;
   const PlaceOptions& options_;
   const CameraSiteObjective* camera_;
+  const double separation_;  // PlacementProblem::least_separation()
   // The camera's worst direction last found: tried first (it only speeds the rejections up).
   mutable std::atomic<int> camera_hint_{0};
 };

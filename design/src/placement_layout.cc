@@ -1,5 +1,6 @@
 #include "vantage/design/placement_layout.h"
 
+#include <cmath>
 #include <utility>
 
 #include "vantage/analysis/common.h"
@@ -29,6 +30,15 @@ Layout surface_sites_layout(const SurfaceSites& sites, const Mesh& body,
   visibility.body_path = body_path;
   layout.visibility = std::move(visibility);
   return layout;
+}
+
+Layout sphere_centres(Layout sites, double diameter) {
+  if (!sites.visibility) throw InvalidArgument("sites", "the sites need normals");
+  if (!(diameter >= 0.0) || !std::isfinite(diameter)) {
+    throw InvalidArgument("marker_diameter", "must be a finite number >= 0");
+  }
+  sites.entries += 0.5 * diameter * sites.visibility->normals;
+  return sites;
 }
 
 std::string site_name(const Layout& sites, int s) {
@@ -73,6 +83,8 @@ Layout placed_layout(const Layout& sites, const PlacementResult& result,
   }
   placement.site_points = sites.entries.leftCols(n_candidates);
   placement.site_normals = from.normals.leftCols(n_candidates);
+  placement.min_separation = record.min_separation;
+  placement.marker_diameter = record.marker_diameter;
   for (const PlacementStep& s : result.steps) {
     placement.steps.push_back({s.k, s.value.pbar_min, s.value.coverage});
   }

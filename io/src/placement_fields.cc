@@ -1,5 +1,6 @@
 #include "placement_fields.h"
 
+#include <cmath>
 #include <string>
 
 #include "json_fields.h"
@@ -25,6 +26,16 @@ void read_random_baseline(const nlohmann::json& b, const std::string& source,
   out->random_median_pbar_min = b["median_pbar_min"].get<double>();
 }
 
+// placement.<name>: a finite length >= 0, or 0 when absent.
+double read_length(const nlohmann::json& p, const std::string& source, const std::string& name) {
+  if (!p.contains(name)) return 0.0;
+  const nlohmann::json& v = p[name];
+  if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < 0.0) {
+    fail(source, "placement." + name + ": expected a finite length >= 0");
+  }
+  return v.get<double>();
+}
+
 }  // namespace
 
 std::optional<LayoutPlacement> read_placement(const nlohmann::json& root, const std::string& source,
@@ -32,9 +43,9 @@ std::optional<LayoutPlacement> read_placement(const nlohmann::json& root, const 
   if (!root.contains("placement")) return std::nullopt;
   const nlohmann::json& p = root["placement"];
   if (!p.is_object()) fail(source, "placement: expected an object");
-  reject_unknown_fields(
-      p, source,
-      {"sites", "chosen", "objective", "site_points", "site_normals", "steps", "random_baseline"});
+  reject_unknown_fields(p, source,
+                        {"sites", "chosen", "objective", "site_points", "site_normals",
+                         "min_separation", "marker_diameter", "steps", "random_baseline"});
   LayoutPlacement out;
   if (p.contains("sites")) out.sites = read_string(p["sites"], source, "placement.sites");
   if (p.contains("objective")) {
@@ -50,6 +61,8 @@ std::optional<LayoutPlacement> read_placement(const nlohmann::json& root, const 
     fail(source, "placement.site_normals: expected one per site (" +
                      std::to_string(out.site_points.cols()) + ")");
   }
+  out.min_separation = read_length(p, source, "min_separation");
+  out.marker_diameter = read_length(p, source, "marker_diameter");
   if (!p.contains("chosen") || !p["chosen"].is_array()) {
     fail(source, "placement.chosen: expected a list of site indices");
   }
@@ -94,6 +107,8 @@ void write_placement(const Layout& layout, nlohmann::ordered_json* out) {
   block["sites"] = p.sites;
   block["chosen"] = p.chosen;
   block["objective"] = p.objective;
+  block["min_separation"] = p.min_separation;
+  block["marker_diameter"] = p.marker_diameter;
   nlohmann::ordered_json steps = nlohmann::ordered_json::array();
   for (const LayoutPlacement::Step& step : p.steps) {
     steps.push_back({{"k", step.k}, {"pbar_min", step.pbar_min}, {"coverage", step.coverage}});

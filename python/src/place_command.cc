@@ -116,7 +116,8 @@ py::object place(const py::object& body, const py::object& sites, int markers,
                  const std::string& statistic, const std::optional<int>& crb_samples,
                  const py::object& aim, const py::object& targets,
                  const std::optional<double>& fle_rms, const py::object& fle_sigma,
-                 const std::optional<double>& min_coverage, bool allow_partial) {
+                 const std::optional<double>& min_coverage, bool allow_partial,
+                 double marker_diameter) {
   try {
     place_json::Request request;
     request.body = place_path(body, "body");
@@ -149,6 +150,7 @@ py::object place(const py::object& body, const py::object& sites, int markers,
     if (fle_rms || !fle_sigma.is_none()) request.fle = tre_fle(fle_rms, fle_sigma);
     request.min_coverage = min_coverage.value_or(request.min_coverage);
     request.allow_partial = allow_partial;
+    request.marker_diameter = marker_diameter;
     commands::VisibilityOptions visibility;
     visibility.cone_deg = cone_deg;
     visibility.min_visible = min_visible;
@@ -176,7 +178,7 @@ void bind_place_command(py::module_& module) {
              py::arg("crb_samples") = py::none(), py::arg("aim") = py::none(),
              py::arg("targets") = py::none(), py::arg("fle_rms") = py::none(),
              py::arg("fle_sigma") = py::none(), py::arg("min_coverage") = py::none(),
-             py::arg("allow_partial") = false,
+             py::arg("allow_partial") = false, py::arg("marker_diameter") = 0.0,
              "K marker sites on a body mesh or among given sites: every workspace direction "
              "trackable, then the best certified worst case under visibility (as `vantage place "
              "--json`; docs/math.md §21).");

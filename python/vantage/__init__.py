@@ -227,7 +227,7 @@ def place(body: Optional[PathArg] = None, *, sites: Optional[PathArg] = None, ma
           crb_samples: Optional[int] = None, aim: Optional[Sequence[float]] = None,
           targets: Optional[npt.ArrayLike] = None, fle_rms: Optional[float] = None,
           fle_sigma: Optional[Sequence[float]] = None, min_coverage: Optional[float] = None,
-          allow_partial: bool = False) -> PlaceReport:
+          allow_partial: bool = False, marker_diameter: float = 0.0) -> PlaceReport:
     """Choose ``markers`` (K) marker sites on a body so that every workspace direction is
     trackable and the certified worst case under visibility is best (as ``vantage place
     --json``; docs/math.md §21); the result's ``layout`` is the placed vantage.Layout.
@@ -235,7 +235,9 @@ def place(body: Optional[PathArg] = None, *, sites: Optional[PathArg] = None, ma
     body: a mesh (STL, OBJ, PLY, glTF, ...) to sample ``candidates`` sites on (default 500),
     or sites: a point layout file with normals (its cones, min_visible, body and workspace
     apply); exactly one. cone_deg, min_visible, workspace (ax, ay, az, deg): as ``--cone-deg``,
-    ``--min-visible``, ``--workspace``. min_separation (default 0), keep (a layout file of the
+    ``--min-visible``, ``--workspace``. marker_diameter: spheres whose centres sit half of it
+    off the surface along the site normals (default 0: point markers). min_separation (default
+    0; at least marker_diameter), keep (a layout file of the
     markers already on the body), robust_dropout, min_distance_difference, seed (1), threads (0:
     all cores), random_trials (1000), exhaustive_limit (5000): as the CLI's flags. out: write
     the placed layout (.json) there, all or nothing, only when the placement is complete;
@@ -263,7 +265,7 @@ def place(body: Optional[PathArg] = None, *, sites: Optional[PathArg] = None, ma
         exhaustive_limit=exhaustive_limit, out=out, overwrite=overwrite, objective=objective,
         distance=distance, focal=focal, noise_px=noise_px, statistic=statistic,
         crb_samples=crb_samples, aim=aim, targets=targets, fle_rms=fle_rms, fle_sigma=fle_sigma,
-        min_coverage=min_coverage, allow_partial=allow_partial))
+        min_coverage=min_coverage, allow_partial=allow_partial, marker_diameter=marker_diameter))
 
 
 def _design_result(fields: Any) -> DesignResult:

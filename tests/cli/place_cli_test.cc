@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "support/cli_runner.h"
+#include "support/cube_mesh.h"
 
 namespace vantage {
 namespace {
@@ -93,6 +94,60 @@ TEST(PlaceCli, SatelliteWritesALayoutThatAnalysesToTheReportedNumbers) {
   const std::string csv = testing::read_file(scratch.path("figs/placement.csv"));
   EXPECT_THAT(csv, HasSubstr("series,k,pbar_min,coverage"));
   EXPECT_THAT(csv, HasSubstr("answer,6,"));
+}
+
+// The unit cube [0, 1]^3 as an OBJ file.
+std::string cube_obj() {
+  const Mesh cube = testing::unit_cube();
+  std::ostringstream obj;
+  for (Eigen::Index v = 0; v < cube.vertices.cols(); ++v) {
+    obj << "v " << cube.vertices(0, v) << " " << cube.vertices(1, v) << " " << cube.vertices(2, v)
+        << "\n";
+  }
+  for (Eigen::Index t = 0; t < cube.triangles.cols(); ++t) {
+    obj << "f " << cube.triangles(0, t) + 1 << " " << cube.triangles(1, t) + 1 << " "
+        << cube.triangles(2, t) + 1 << "\n";
+  }
+  return obj.str();
+}
+
+Eigen::Vector3d vector_of(const nlohmann::json& xyz) {
+  return {xyz[0].get<double>(), xyz[1].get<double>(), xyz[2].get<double>()};
+}
+
+// Issue 35 item 3: spheres of diameter D rest on the faces: each centre minus D/2 times its
+// normal lies on a face of the cube whose outward normal that is, and the centres are at least
+// D apart (the default separation); analyze on the written file sees the same layout.
+TEST(PlaceCli, MarkerDiameterPutsSphereCentresOffTheSurface) {
+  constexpr double kDiameter = 0.1;
+  constexpr double kOnFace = 1e-12;
+  ScratchDir scratch;
+  scratch.write("cube.obj", cube_obj());
+  const nlohmann::json json = testing::run_json(
+      "place cube.obj --markers 5 --candidates 80 --marker-diameter 0.1 --workspace 0,0,1,60 "
+      "--random-trials 20 --out c.json",
+      scratch);
+  EXPECT_EQ(json["marker_diameter"], kDiameter);
+  EXPECT_EQ(json["min_separation"], kDiameter);
+  const nlohmann::json file = nlohmann::json::parse(testing::read_file(scratch.path("c.json")));
+  EXPECT_EQ(file["placement"]["marker_diameter"], kDiameter);
+  EXPECT_EQ(file["placement"]["min_separation"], kDiameter);
+  const nlohmann::json& points = file["points"];
+  ASSERT_EQ(points.size(), 5u);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3d p = vector_of(points[i]);
+    const Eigen::Vector3d n = vector_of(file["normals"][i]);
+    const Eigen::Vector3d q = p - 0.5 * kDiameter * n;
+    Eigen::Index axis = 0;
+    EXPECT_NEAR(n.cwiseAbs().maxCoeff(&axis), 1.0, kOnFace) << i;
+    EXPECT_NEAR(q(axis), n(axis) > 0 ? 1.0 : 0.0, kOnFace) << i;
+    EXPECT_TRUE((q.array() >= -kOnFace).all() && (q.array() <= 1.0 + kOnFace).all()) << i;
+    for (std::size_t j = 0; j < i; ++j) {
+      EXPECT_GE((p - vector_of(points[j])).norm(), kDiameter) << i << " " << j;
+    }
+  }
+  const nlohmann::json analysed = testing::run_json("analyze c.json", scratch);
+  EXPECT_EQ(analysed["visibility"]["pbar_min"], json["visibility"]["pbar_min"]);
 }
 
 TEST(PlaceCli, SixteenSitesFourMarkersIsExhaustive) {
@@ -306,6 +361,12 @@ TEST(PlaceCli, BadInputGetsOneLineAndWritesNothing) {
        "--min-coverage"},
       {"--min-coverage above 1", nullptr,
        "--sites sites.json --markers 4 --out o.json --min-coverage 1.5", "--min-coverage"},
+      // Issue 35 item 3: physical markers.
+      {"a negative diameter", nullptr,
+       "--sites sites.json --markers 4 --out o.json --marker-diameter -0.1", "--marker-diameter"},
+      {"a separation below the diameter", nullptr,
+       "--sites sites.json --markers 4 --out o.json --marker-diameter 0.1 --min-separation 0.05",
+       "--min-separation: below --marker-diameter"},
   };
   for (const BadCall& call : calls) {
     SCOPED_TRACE(call.name);

@@ -8,9 +8,9 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
-#include <random>
 
 #include "support/message_of.h"
+#include "support/placement_sites.h"
 #include "vantage/analysis/common.h"
 #include "vantage/camera/pose_crb.h"
 #include "vantage/design/placement.h"
@@ -19,8 +19,11 @@
 namespace vantage::design {
 namespace {
 
+using testing::as_problem;
+using testing::box_sites;
 using ::testing::HasSubstr;
 using testing::message_of;
+using testing::subset;
 
 constexpr unsigned kSeed = 20261204;
 // The lattice of the camera objective: small, so that the enumeration stays quick.
@@ -29,64 +32,6 @@ constexpr int kSamples = 600;
 // rounding.
 constexpr double kSameValue = 1e-12;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-// n sites on a 2 x 1 x 0.5 box's top and sides (seeded), normals of their faces, cones 75 deg,
-// min_visible 3, the workspace 60 deg about +z.
-Layout box_sites(int n, unsigned seed) {
-  std::mt19937 engine(seed);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Layout out;
-  out.mode = LayoutMode::kPoints;
-  out.entries.resize(3, n);
-  MarkerVisibility v;
-  v.normals.resize(3, n);
-  for (int i = 0; i < n; ++i) {
-    const int face = i % 3;  // top, +x side, -y side
-    if (face == 0) {
-      out.entries.col(i) = Eigen::Vector3d(u(engine), 0.5 * u(engine), 0.25);
-      v.normals.col(i) = Eigen::Vector3d::UnitZ();
-    } else if (face == 1) {
-      out.entries.col(i) = Eigen::Vector3d(1.0, 0.5 * u(engine), 0.25 * u(engine));
-      v.normals.col(i) = Eigen::Vector3d::UnitX();
-    } else {
-      out.entries.col(i) = Eigen::Vector3d(u(engine), -0.5, 0.25 * u(engine));
-      v.normals.col(i) = -Eigen::Vector3d::UnitY();
-    }
-  }
-  out.weights = Eigen::VectorXd::Ones(n);
-  v.cone_half_angle_deg = Eigen::VectorXd::Constant(n, 75.0);
-  out.visibility = v;
-  out.workspace = LayoutWorkspace{Eigen::Vector3d::UnitZ(), 60.0};
-  return out;
-}
-
-// The sites as place_markers() takes them.
-visibility::VisibilityProblem as_problem(const Layout& sites) {
-  visibility::VisibilityProblem out;
-  out.points = sites.entries;
-  out.normals = sites.visibility->normals;
-  out.cos_cone = (sites.visibility->cone_half_angle_deg * kPi / 180.0).array().cos();
-  out.min_visible = sites.visibility->min_visible;
-  out.workspace = visibility::Workspace{sites.workspace->axis,
-                                        std::cos(sites.workspace->half_angle_deg * kPi / 180.0)};
-  return out;
-}
-
-Layout subset(const Layout& sites, const std::vector<int>& chosen) {
-  Layout out = sites;
-  const Eigen::Index k = static_cast<Eigen::Index>(chosen.size());
-  out.entries.resize(3, k);
-  out.weights = Eigen::VectorXd::Ones(k);
-  out.visibility->normals.resize(3, k);
-  out.visibility->cone_half_angle_deg.resize(k);
-  for (Eigen::Index j = 0; j < k; ++j) {
-    const int s = chosen[static_cast<std::size_t>(j)];
-    out.entries.col(j) = sites.entries.col(s);
-    out.visibility->normals.col(j) = sites.visibility->normals.col(s);
-    out.visibility->cone_half_angle_deg(j) = sites.visibility->cone_half_angle_deg(s);
-  }
-  return out;
-}
 
 camera::PoseCrbOptions camera_options() {
   camera::PoseCrbOptions o;
@@ -117,28 +62,11 @@ double crb_value(const Layout& sites, const std::vector<int>& chosen, CrbStatist
   return values[rank - 1];
 }
 
-struct Best {
-  double value = kInfinity;
-  std::vector<int> chosen;
-};
-
 // Every K-subset, lexicographic; the first of the least value.
-Best enumerate(const Layout& sites, int k, CrbStatistic statistic) {
-  const int n = static_cast<int>(sites.entries.cols());
-  std::vector<int> idx(static_cast<std::size_t>(k));
-  for (int i = 0; i < k; ++i) idx[static_cast<std::size_t>(i)] = i;
-  Best best;
-  while (true) {
-    const double v = crb_value(sites, idx, statistic);
-    if (v < best.value) best = {v, idx};
-    int i = k - 1;
-    while (i >= 0 && idx[static_cast<std::size_t>(i)] == n - k + i) --i;
-    if (i < 0) break;
-    ++idx[static_cast<std::size_t>(i)];
-    for (int j = i + 1; j < k; ++j)
-      idx[static_cast<std::size_t>(j)] = idx[static_cast<std::size_t>(j - 1)] + 1;
-  }
-  return best;
+testing::BestSubset enumerate(const Layout& sites, int k, CrbStatistic statistic) {
+  return testing::enumerate_subsets(
+      static_cast<int>(sites.entries.cols()), k,
+      [&](const std::vector<int>& chosen) { return crb_value(sites, chosen, statistic); });
 }
 
 PlaceOptions camera_place_options(const Layout& sites, CrbStatistic statistic) {
@@ -160,7 +88,7 @@ TEST(PlaceCamera, FindsTheExhaustiveOptimumOfEachStatistic) {
   problem.markers = 4;
   for (CrbStatistic statistic : {CrbStatistic::kWorst, CrbStatistic::kP95, CrbStatistic::kMedian}) {
     SCOPED_TRACE(to_string(statistic));
-    const Best truth = enumerate(sites, 4, statistic);
+    const testing::BestSubset truth = enumerate(sites, 4, statistic);
     ASSERT_TRUE(std::isfinite(truth.value));
     const PlacementResult result = place_markers(problem, camera_place_options(sites, statistic));
     EXPECT_EQ(result.search, "exhaustive");
@@ -180,7 +108,7 @@ TEST(PlaceCamera, GreedyWithSwapsAgainstTheOptimum) {
   PlaceOptions options = camera_place_options(sites, CrbStatistic::kWorst);
   options.exhaustive_limit = 0;
   const PlacementResult result = place_markers(problem, options);
-  const Best truth = enumerate(sites, 5, CrbStatistic::kWorst);
+  const testing::BestSubset truth = enumerate(sites, 5, CrbStatistic::kWorst);
   EXPECT_EQ(result.search, "greedy+swap");
   EXPECT_GE(result.value.objective, truth.value * (1.0 - kSameValue));
   EXPECT_LE(result.value.objective, truth.value * (1.0 + kGreedyGap));

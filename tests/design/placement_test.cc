@@ -337,6 +337,35 @@ TEST(PlaceMarkers, RobustGreedyStartsFromTooFewMarkersToLoseOne) {
   EXPECT_EQ(result.chosen.size(), 5u);
 }
 
+// Every site twice (the same point and normal): a layout file refuses two markers at one point,
+// so no answer holds both copies, exhaustive or greedy, and keeping both is refused.
+TEST(PlaceMarkers, NeverChoosesCoincidentSites) {
+  const visibility::VisibilityProblem once = sphere_sites(8, 100.0, kSeed + 5);
+  PlacementProblem problem;
+  problem.sites = once;
+  problem.sites.points = Eigen::Matrix3Xd(3, 16);
+  problem.sites.normals = Eigen::Matrix3Xd(3, 16);
+  problem.sites.points << once.points, once.points;
+  problem.sites.normals << once.normals, once.normals;
+  problem.sites.cos_cone = Eigen::VectorXd::Constant(16, once.cos_cone(0));
+  problem.markers = 5;
+  for (const int exhaustive_limit : {100000, 0}) {
+    PlaceOptions options = small_options();
+    options.exhaustive_limit = exhaustive_limit;
+    options.random_trials = 20;
+    const PlacementResult result = place_markers(problem, options);
+    ASSERT_EQ(result.chosen.size(), 5u) << exhaustive_limit;
+    std::vector<int> points;
+    for (int c : result.chosen) points.push_back(c % 8);
+    std::sort(points.begin(), points.end());
+    EXPECT_TRUE(std::adjacent_find(points.begin(), points.end()) == points.end())
+        << "search " << result.search;
+  }
+  problem.keep = {2, 10};
+  EXPECT_THAT(message_of([&] { place_markers(problem); }),
+              HasSubstr("kept sites 2 and 10 coincide"));
+}
+
 TEST(PlaceMarkers, RejectsBadProblemsNamingTheField) {
   PlacementProblem problem = larger_problem();
   problem.markers = 61;

@@ -9,9 +9,9 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
-#include <random>
 
 #include "support/message_of.h"
+#include "support/placement_sites.h"
 #include "vantage/analysis/common.h"
 #include "vantage/design/placement.h"
 #include "vantage/tracker/tre_report.h"
@@ -20,8 +20,11 @@
 namespace vantage::design {
 namespace {
 
+using testing::as_problem;
+using testing::box_sites;
 using ::testing::HasSubstr;
 using testing::message_of;
+using testing::subset;
 
 constexpr unsigned kSeed = 20261205;
 constexpr int kCoverageSamples = 2000;
@@ -30,64 +33,6 @@ constexpr int kCoverageSamples = 2000;
 // to twice that.
 constexpr double kCertified = 2e-6;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-// n sites on a 2 x 1 x 0.5 box's top and sides (seeded), normals of their faces, cones 75 deg,
-// min_visible 3, the workspace 60 deg about +z.
-Layout box_sites(int n, unsigned seed) {
-  std::mt19937 engine(seed);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Layout out;
-  out.mode = LayoutMode::kPoints;
-  out.entries.resize(3, n);
-  MarkerVisibility v;
-  v.normals.resize(3, n);
-  for (int i = 0; i < n; ++i) {
-    const int face = i % 3;  // top, +x side, -y side
-    if (face == 0) {
-      out.entries.col(i) = Eigen::Vector3d(u(engine), 0.5 * u(engine), 0.25);
-      v.normals.col(i) = Eigen::Vector3d::UnitZ();
-    } else if (face == 1) {
-      out.entries.col(i) = Eigen::Vector3d(1.0, 0.5 * u(engine), 0.25 * u(engine));
-      v.normals.col(i) = Eigen::Vector3d::UnitX();
-    } else {
-      out.entries.col(i) = Eigen::Vector3d(u(engine), -0.5, 0.25 * u(engine));
-      v.normals.col(i) = -Eigen::Vector3d::UnitY();
-    }
-  }
-  out.weights = Eigen::VectorXd::Ones(n);
-  v.cone_half_angle_deg = Eigen::VectorXd::Constant(n, 75.0);
-  out.visibility = v;
-  out.workspace = LayoutWorkspace{Eigen::Vector3d::UnitZ(), 60.0};
-  return out;
-}
-
-// The sites as place_markers() takes them.
-visibility::VisibilityProblem as_problem(const Layout& sites) {
-  visibility::VisibilityProblem out;
-  out.points = sites.entries;
-  out.normals = sites.visibility->normals;
-  out.cos_cone = (sites.visibility->cone_half_angle_deg * kPi / 180.0).array().cos();
-  out.min_visible = sites.visibility->min_visible;
-  out.workspace = visibility::Workspace{sites.workspace->axis,
-                                        std::cos(sites.workspace->half_angle_deg * kPi / 180.0)};
-  return out;
-}
-
-Layout subset(const Layout& sites, const std::vector<int>& chosen) {
-  Layout out = sites;
-  const Eigen::Index k = static_cast<Eigen::Index>(chosen.size());
-  out.entries.resize(3, k);
-  out.weights = Eigen::VectorXd::Ones(k);
-  out.visibility->normals.resize(3, k);
-  out.visibility->cone_half_angle_deg.resize(k);
-  for (Eigen::Index j = 0; j < k; ++j) {
-    const int s = chosen[static_cast<std::size_t>(j)];
-    out.entries.col(j) = sites.entries.col(s);
-    out.visibility->normals.col(j) = sites.visibility->normals.col(s);
-    out.visibility->cone_half_angle_deg(j) = sites.visibility->cone_half_angle_deg(s);
-  }
-  return out;
-}
 
 // Every workspace direction of the coverage lattice sees min_visible markers of `layout` inside
 // their cones (no body: the cones decide).
@@ -124,29 +69,13 @@ double tre_value(const Layout& sites, const std::vector<int>& chosen,
   return out;
 }
 
-struct Best {
-  double value = kInfinity;
-  std::vector<int> chosen;
-};
-
 // Every K-subset, lexicographic; the first of the least value.
-Best enumerate(const Layout& sites, int k, const std::vector<Eigen::Vector3d>& targets,
-               const tracker::FleModel& fle) {
-  const int n = static_cast<int>(sites.entries.cols());
-  std::vector<int> idx(static_cast<std::size_t>(k));
-  for (int i = 0; i < k; ++i) idx[static_cast<std::size_t>(i)] = i;
-  Best best;
-  while (true) {
-    const double v = tre_value(sites, idx, targets, fle);
-    if (v < best.value) best = {v, idx};
-    int i = k - 1;
-    while (i >= 0 && idx[static_cast<std::size_t>(i)] == n - k + i) --i;
-    if (i < 0) break;
-    ++idx[static_cast<std::size_t>(i)];
-    for (int j = i + 1; j < k; ++j)
-      idx[static_cast<std::size_t>(j)] = idx[static_cast<std::size_t>(j - 1)] + 1;
-  }
-  return best;
+testing::BestSubset enumerate(const Layout& sites, int k,
+                              const std::vector<Eigen::Vector3d>& targets,
+                              const tracker::FleModel& fle) {
+  return testing::enumerate_subsets(
+      static_cast<int>(sites.entries.cols()), k,
+      [&](const std::vector<int>& chosen) { return tre_value(sites, chosen, targets, fle); });
 }
 
 PlaceOptions tracker_place_options(const std::vector<Eigen::Vector3d>& targets,
@@ -169,7 +98,7 @@ TEST(PlaceTracker, FindsTheExhaustiveOptimum) {
   problem.markers = 4;
   const std::vector<Eigen::Vector3d> targets = {Eigen::Vector3d(0.0, 0.0, -1.5)};
   const tracker::FleModel fle = tracker::FleModel::isotropic(0.25);
-  const Best truth = enumerate(sites, 4, targets, fle);
+  const testing::BestSubset truth = enumerate(sites, 4, targets, fle);
   ASSERT_TRUE(std::isfinite(truth.value));
   const PlacementResult result = place_markers(problem, tracker_place_options(targets, fle));
   EXPECT_EQ(result.search, "exhaustive");
@@ -193,7 +122,7 @@ TEST(PlaceTracker, TwoTargetsAndAnAnisotropicFleGreedyAgainstTheOptimum) {
   PlaceOptions options = tracker_place_options(targets, fle);
   options.exhaustive_limit = 0;
   const PlacementResult result = place_markers(problem, options);
-  const Best truth = enumerate(sites, 5, targets, fle);
+  const testing::BestSubset truth = enumerate(sites, 5, targets, fle);
   ASSERT_TRUE(std::isfinite(truth.value));
   EXPECT_EQ(result.search, "greedy+swap");
   EXPECT_GE(result.value.objective, truth.value * (1.0 - kCertified));

@@ -20,6 +20,8 @@ constexpr const char* kPlaced = R"({
     "sites": "cube.obj",
     "chosen": [0, 2, -1],
     "objective": "coverage, then certified p-bar_min",
+    "min_separation": 0.012,
+    "marker_diameter": 0.01,
     "steps": [{"k": 3, "pbar_min": 0.5, "coverage": 0.25}],
     "random_baseline": {"trials": 10, "best_pbar_min": 0.4, "median_pbar_min": 0.1},
     "site_points": [[0.5, 0.1, 0.0], [-0.5, 0, 0], [0.0, 0.5, 0.1], [0, -0.5, 0]],
@@ -60,6 +62,17 @@ TEST(PlacementFields, SurviveAWriteAndARead) {
   EXPECT_EQ(again.placement->steps[0].pbar_min, 0.5);
   EXPECT_EQ(again.placement->random_median_pbar_min, 0.1);
   EXPECT_EQ(again.placement->sites, "cube.obj");
+  EXPECT_EQ(again.placement->min_separation, 0.012);
+  EXPECT_EQ(again.placement->marker_diameter, 0.01);
+}
+
+// A file written before the sizes were recorded: point markers, no separation.
+TEST(PlacementFields, SizesDefaultToPointMarkers) {
+  const Layout layout = parse_layout(
+      with("    \"min_separation\": 0.012,\n    \"marker_diameter\": 0.01,\n", ""), "old.json");
+  ASSERT_TRUE(layout.placement.has_value());
+  EXPECT_EQ(layout.placement->min_separation, 0.0);
+  EXPECT_EQ(layout.placement->marker_diameter, 0.0);
 }
 
 TEST(PlacementFields, BadBlocksNameTheirField) {
@@ -74,6 +87,10 @@ TEST(PlacementFields, BadBlocksNameTheirField) {
   EXPECT_THAT(error_of(with("\"site_normals\": [[1, 0, 0], ", "\"site_normals\": [")),
               HasSubstr("placement.site_normals"));
   EXPECT_THAT(error_of(with("\"objective\"", "\"purpose\"")), HasSubstr("purpose"));
+  EXPECT_THAT(error_of(with("\"marker_diameter\": 0.01", "\"marker_diameter\": -0.01")),
+              HasSubstr("placement.marker_diameter: expected a finite length >= 0"));
+  EXPECT_THAT(error_of(with("\"min_separation\": 0.012", "\"min_separation\": \"1\"")),
+              HasSubstr("placement.min_separation"));
 }
 
 }  // namespace

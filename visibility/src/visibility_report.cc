@@ -132,7 +132,9 @@ VisibilityReport analyze_visibility(const Layout& layout, const VisibilityReport
     const Mesh& mesh = *layout.visibility->body;
     report.with_body = true;
     report.occlusion_resolution_deg = model.resolution_deg();
-    const double far = VisibilityReport::kOffSurface * mesh.size();
+    // Spheres (a placement's marker_diameter) have their centres half of it off the surface.
+    const double radius = layout.placement ? 0.5 * layout.placement->marker_diameter : 0.0;
+    const double far = VisibilityReport::kOffSurface * mesh.size() + radius;
     for (Eigen::Index i = 0; i < layout.entries.cols(); ++i) {
       report.distance_to_body.push_back(distance_to_mesh(mesh, layout.entries.col(i)));
       if (report.distance_to_body.back() > far) report.off_body.push_back(static_cast<int>(i));

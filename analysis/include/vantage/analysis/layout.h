@@ -34,6 +34,10 @@ struct LayoutPlacement {
   std::string objective;    ///< what was optimised, in words
   Eigen::Matrix3Xd site_points;   ///< every candidate site
   Eigen::Matrix3Xd site_normals;  ///< their outward unit normals
+  double min_separation = 0.0;    ///< least distance between the chosen markers (centres)
+  /// The markers' diameter (0: points): spheres whose centres sit half of it off the surface
+  /// along the site normals; the entries and site_points are the centres.
+  double marker_diameter = 0.0;
   /// One greedy step: k markers chosen, the trackable fraction of the workspace and the
   /// certified p-bar_min under visibility over its trackable part.
   struct Step {
@@ -56,6 +60,13 @@ struct Layout {
   static constexpr double kMaxWeight = 1e100;   ///< weighted sums of squares stay finite
   /// Most free vectors data_vectors() builds (about 4 500 points; 240 MB of vectors).
   static constexpr Eigen::Index kMaxFreeVectors = 10'000'000;
+  /// Points closer than this times the largest coordinate magnitude (or than kMinLength)
+  /// coincide: their free vector is at the rounding level of the coordinates.
+  static constexpr double kCoincidenceRelative = 1e-12;
+
+  /// The distance below which two of `points` coincide (scale-invariant, see
+  /// kCoincidenceRelative).
+  static double coincidence_distance(const Eigen::Matrix3Xd& points);
 
   std::string name;
   std::string description;  ///< free text, kept when the layout is written back

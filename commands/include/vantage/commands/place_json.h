@@ -7,6 +7,7 @@
 // fields are defined once. Errors name the CLI's flags ("--markers", "BODY/--sites"); Python
 // renames them to its keywords.
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -34,6 +35,9 @@ struct Request {
   int markers = 0;
   std::string out;  ///< the placed layout's file, or empty (Python: not written)
   double min_separation = 0.0;
+  /// --marker-diameter: spheres of this diameter whose centres sit half of it off the surface
+  /// along the site normals (0: point markers at the sites).
+  double marker_diameter = 0.0;
   std::string keep;
   bool robust_dropout = false;
   double min_distance_difference = 0.0;
@@ -62,6 +66,9 @@ struct Request {
   double min_coverage = -1.0;
   /// --allow-partial: an incomplete placement is written (with a warning), not refused.
   bool allow_partial = false;
+
+  /// The least distance between chosen markers: --min-separation, at least the diameter.
+  double separation() const { return std::max(min_separation, marker_diameter); }
 
   /// The body mesh or the sites file, as given.
   const std::string& source() const { return sites.empty() ? body : sites; }

@@ -40,6 +40,11 @@ struct PlacementProblem {
   /// §24).
   double min_distance_difference = 0.0;
 
+  /// The least distance of two chosen sites: min_separation, or the distance below which two
+  /// sites coincide (Layout::coincidence_distance) when that is larger. Two coincident sites are
+  /// never both chosen: a layout file refuses coincident markers.
+  double least_separation() const;
+
   /// Throws InvalidArgument naming the field: "markers" (K above the sites, below
   /// min_visible, below the kept markers), "keep", "min_separation" (also when kept markers
   /// violate it), "min_distance_difference", and the sites' own fields.

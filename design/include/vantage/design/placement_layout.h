@@ -24,11 +24,18 @@ std::string site_name(const Layout& sites, int s);
 
 /// How placed_layout() records the placement.
 struct PlacedLayoutRecord {
-  std::string sites;            ///< the candidates' source (a mesh or a sites file), as given
-  int n_candidates = 0;         ///< the leading columns of the sites that are candidates
-  bool robust_dropout = false;  ///< the objective of the search
-  std::string objective;        ///< the objective in words; empty: the affine objective's
+  std::string sites;             ///< the candidates' source (a mesh or a sites file), as given
+  int n_candidates = 0;          ///< the leading columns of the sites that are candidates
+  bool robust_dropout = false;   ///< the objective of the search
+  std::string objective;         ///< the objective in words; empty: the affine objective's
+  double min_separation = 0.0;   ///< the least distance between chosen markers
+  double marker_diameter = 0.0;  ///< the spheres' diameter (0: point markers)
 };
+
+/// The sites (points on a surface with outward unit normals) moved to the centres of spheres of
+/// `diameter` resting on it: each point diameter / 2 along its normal (docs/math.md §21,
+/// "Physical markers"). Visibility and occlusion are then those of the centres.
+Layout sphere_centres(Layout sites, double diameter);
 
 /// The layout of result.chosen (in index order) on the sites' body, named "<sites' name>
 /// (placed)" (once: a placed layout placed again keeps its name): each marker the site's

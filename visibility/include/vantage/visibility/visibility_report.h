@@ -48,7 +48,8 @@ struct VisibilityReport {
   VisibilityCoverage coverage;
   std::optional<double> occlusion_resolution_deg;  ///< with a body
   /// With a body: each marker's distance to the mesh surface, and the markers farther than
-  /// kOffSurface of the mesh's size (a warning: the mesh may not be the markers' body).
+  /// kOffSurface of the mesh's size (plus the radius of a placement's spherical markers) (a
+  /// warning: the mesh may not be the markers' body).
   std::vector<double> distance_to_body;
   std::vector<int> off_body;
   std::vector<VisibilityDropoutEntry> dropout;  ///< by marker, when asked
