@@ -9,6 +9,7 @@
 #include <random>
 
 #include "support/message_of.h"
+#include "support/placement_sites.h"
 #include "vantage/analysis/common.h"
 
 namespace vantage::design {
@@ -73,22 +74,15 @@ Truth enumerate(const visibility::VisibilityProblem& all, int k) {
     visibility::VisibilityWorstViewpoint coarse;
   };
   std::vector<Candidate> candidates;
-  const int n = static_cast<int>(all.points.cols());
-  std::vector<int> idx(static_cast<std::size_t>(k));
-  for (int i = 0; i < k; ++i) idx[static_cast<std::size_t>(i)] = i;
   double top = -1.0;
-  while (true) {
-    const visibility::VisibilityProblem p = subset(all, idx);
-    const double coverage = visibility::visibility_coverage(p, kLattice).trackable_fraction;
-    top = std::max(top, coverage);
-    candidates.push_back({idx, coverage, visibility::visibility_worst_viewpoint(p)});
-    int i = k - 1;
-    while (i >= 0 && idx[static_cast<std::size_t>(i)] == n - k + i) --i;
-    if (i < 0) break;
-    ++idx[static_cast<std::size_t>(i)];
-    for (int j = i + 1; j < k; ++j)
-      idx[static_cast<std::size_t>(j)] = idx[static_cast<std::size_t>(j - 1)] + 1;
-  }
+  testing::enumerate_subsets(
+      static_cast<int>(all.points.cols()), k, [&](const std::vector<int>& idx) {
+        const visibility::VisibilityProblem p = subset(all, idx);
+        const double coverage = visibility::visibility_coverage(p, kLattice).trackable_fraction;
+        top = std::max(top, coverage);
+        candidates.push_back({idx, coverage, visibility::visibility_worst_viewpoint(p)});
+        return 0.0;
+      });
   using Status = visibility::VisibilityWorstViewpoint::Status;
   double least_upper = 1.0;
   for (const Candidate& c : candidates) {
