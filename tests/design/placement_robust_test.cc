@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
+
+#include "support/sanitized.h"
 
 #include "vantage/analysis/common.h"
 #include "vantage/design/placement.h"
@@ -65,7 +68,8 @@ double t_of(const visibility::VisibilityProblem& p) {
 
 TEST(PlaceRobust, TheRobustValueIsTheWorstSingleLoss) {
   const visibility::VisibilityProblem sites = tilted_plate();
-  for (int markers : {4, 5}) {
+  // Under the sanitizers K = 4 alone (the same code, a third of the time).
+  for (int markers : testing::kUnderSanitizer ? std::vector<int>{4} : std::vector<int>{4, 5}) {
     SCOPED_TRACE(markers);
     PlacementProblem problem;
     problem.sites = sites;
