@@ -7,10 +7,15 @@
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Core>
+#include <chrono>
+#include <cmath>
+#include <thread>
 
 #include "ellipsoid_layout.h"
+#include "placement_anneal.h"
 #include "vantage/camera/pose_crb.h"
 #include "vantage/design/placement.h"
+#include "vantage/design/placement_layout.h"
 #include "vantage/tracker/tre_search.h"
 #include "vantage/visibility/visibility.h"
 #include "vantage/visibility/visibility_model.h"
@@ -199,6 +204,146 @@ void BM_Place_TrackerOneSearch(benchmark::State& state) {
   }
 }
 
+// ---- Against a plain simulated annealing at equal wall time (docs/math.md §21, "Search") -----
+
+// The objectives as the annealer sees them, computed here from the public searches on the chosen
+// sites alone: a subset that leaves more than one workspace lattice direction untrackable scores
+// above every complete one (by its uncovered fraction); a complete one scores t_upper (affine) or
+// log of the worst RMS TRE bound (tracker).
+constexpr double kIncomplete = 100.0;
+
+double coverage_energy(const visibility::VisibilityProblem& problem, int samples, bool* complete) {
+  const visibility::VisibilityCoverage c = visibility::visibility_coverage(problem, samples);
+  const double missing = std::round((1.0 - c.trackable_fraction) * c.samples);
+  *complete = missing <= 1.0;
+  return kIncomplete + (1.0 - c.trackable_fraction);
+}
+
+double affine_energy(const Sites& s, const design::PlaceOptions& o,
+                     const std::vector<int>& chosen) {
+  const visibility::VisibilityProblem problem = answer_problem(s, chosen);
+  bool complete = false;
+  const double incomplete = coverage_energy(problem, o.coverage_samples, &complete);
+  if (!complete) return incomplete;
+  return visibility::visibility_worst_viewpoint(problem, o.search).t_upper;
+}
+
+double tracker_energy(const Sites& s, const design::PlaceOptions& o,
+                      const std::vector<int>& chosen) {
+  const visibility::VisibilityProblem problem = answer_problem(s, chosen);
+  bool complete = false;
+  const double incomplete = coverage_energy(problem, o.coverage_samples, &complete);
+  if (!complete) return incomplete;
+  double worst = 0.0;
+  for (const Eigen::Vector3d& target : o.tracker->targets) {
+    worst = std::max(worst, vantage::tracker::tre_worst(problem, target, o.tracker->fle).rms_bound);
+  }
+  return std::log(worst);
+}
+
+// place_markers() on the sites, then two annealing chains (one per core, as place uses both) for
+// `multiple` times its wall time, each from its own seed; counters: both energies by the function
+// above, the place run's seconds and the chains' evaluations.
+template <class Energy>
+void against_annealing(benchmark::State& state, const Sites& s, const design::PlaceOptions& o,
+                       const vantage_bench::AnnealSchedule& schedule, double multiple,
+                       Energy energy) {
+  double place_energy = 0.0;
+  double anneal_energy = 0.0;
+  double seconds = 0.0;
+  long evaluations = 0;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    const design::PlacementResult r = design::place_markers(s.problem, o);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    place_energy = energy(r.chosen);
+    const double budget = multiple * seconds;
+    vantage_bench::AnnealResult chains[2];
+    std::thread second([&] {
+      vantage_bench::AnnealSchedule two = schedule;
+      two.seconds = budget;
+      two.seed = schedule.seed + 1;
+      chains[1] = vantage_bench::anneal(static_cast<int>(s.problem.sites.points.cols()),
+                                        s.problem.markers, two, energy);
+    });
+    vantage_bench::AnnealSchedule one = schedule;
+    one.seconds = budget;
+    chains[0] = vantage_bench::anneal(static_cast<int>(s.problem.sites.points.cols()),
+                                      s.problem.markers, one, energy);
+    second.join();
+    anneal_energy = std::min(chains[0].energy, chains[1].energy);
+    evaluations = chains[0].evaluations + chains[1].evaluations;
+  }
+  state.counters["place_energy"] = place_energy;
+  state.counters["anneal_energy"] = anneal_energy;
+  state.counters["place_s"] = seconds;
+  state.counters["anneal_evaluations"] = static_cast<double>(evaluations);
+}
+
+// An L-shaped prism (the L of [0,2]x[0,1] and [0,1]x[0,2], height 1): a non-convex body whose
+// faces shadow each other, as 20 triangles wound outward.
+vantage::Mesh l_prism() {
+  const double xy[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  vantage::Mesh mesh;
+  mesh.vertices.resize(3, 12);
+  for (int i = 0; i < 6; ++i) {
+    mesh.vertices.col(i) = Eigen::Vector3d(xy[i][0], xy[i][1], 0.0);
+    mesh.vertices.col(i + 6) = Eigen::Vector3d(xy[i][0], xy[i][1], 1.0);
+  }
+  std::vector<Eigen::Vector3i> triangles = {
+      {0, 2, 1}, {0, 3, 2}, {0, 5, 4},   {0, 4, 3},    // bottom, facing -z
+      {6, 7, 8}, {6, 8, 9}, {6, 10, 11}, {6, 9, 10}};  // top, facing +z
+  for (int i = 0; i < 6; ++i) {
+    const int j = (i + 1) % 6;
+    triangles.emplace_back(i, j, j + 6);
+    triangles.emplace_back(i, j + 6, i + 6);
+  }
+  mesh.triangles.resize(3, static_cast<Eigen::Index>(triangles.size()));
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    mesh.triangles.col(static_cast<Eigen::Index>(t)) = triangles[t];
+  }
+  return mesh;
+}
+
+// N sites sampled on the L-shaped prism (seeded), 80-degree cones, K markers, the workspace 75
+// degrees about +z.
+Sites l_prism_sites(int n, int markers) {
+  const vantage::Mesh mesh = l_prism();
+  vantage::Layout layout =
+      design::surface_sites_layout(design::sample_surface_sites(mesh, n, 0.0, 7), mesh, "l-prism");
+  layout.visibility->cone_half_angle_deg.setConstant(kConeDeg);
+  layout.workspace = vantage::LayoutWorkspace{Eigen::Vector3d::UnitZ(), kWorkspaceDeg};
+  Sites out{layout, visibility::VisibilityModel::of(layout), {}};
+  out.problem.sites = out.model.problem();
+  out.problem.markers = markers;
+  return out;
+}
+
+// `vantage place` (affine) against the annealer, energy t_upper, on the ellipsoid's sites
+// (range(2) 0) or the L-shaped prism's (1), the annealer running range(3) times place's time.
+void BM_Place_AffineAgainstAnnealing(benchmark::State& state) {
+  const Sites s = state.range(2) == 0 ? workspace_sites(state)
+                                      : l_prism_sites(static_cast<int>(state.range(0)),
+                                                      static_cast<int>(state.range(1)));
+  const design::PlaceOptions o = options();
+  vantage_bench::AnnealSchedule schedule;
+  schedule.start = 0.05;
+  schedule.end = 0.0005;
+  against_annealing(state, s, o, schedule, static_cast<double>(state.range(3)),
+                    [&](const std::vector<int>& chosen) { return affine_energy(s, o, chosen); });
+}
+
+// `vantage place --objective tracker` against the annealer, energy log(worst RMS TRE).
+void BM_Place_TrackerAgainstAnnealing(benchmark::State& state) {
+  const Sites s = workspace_sites(state);
+  const design::PlaceOptions o = tracker_options();
+  vantage_bench::AnnealSchedule schedule;
+  schedule.start = 0.3;
+  schedule.end = 0.003;
+  against_annealing(state, s, o, schedule, 1.0,
+                    [&](const std::vector<int>& chosen) { return tracker_energy(s, o, chosen); });
+}
+
 BENCHMARK(BM_Place_OneSearch)->Args({200, 12})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Place_Greedy)->Args({200, 12})->Unit(benchmark::kMillisecond)->Iterations(2);
 BENCHMARK(BM_Place_Exhaustive)->Unit(benchmark::kMillisecond);
@@ -206,5 +351,15 @@ BENCHMARK(BM_Place_CameraOneMap)->Args({1000, 8})->Unit(benchmark::kMillisecond)
 BENCHMARK(BM_Place_Camera)->Args({1000, 8})->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_Place_TrackerOneSearch)->Args({1000, 8})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Place_Tracker)->Args({1000, 8})->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_Place_AffineAgainstAnnealing)
+    ->Args({300, 8, 0, 1})
+    ->Args({300, 8, 1, 1})
+    ->Args({300, 8, 1, 20})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK(BM_Place_TrackerAgainstAnnealing)
+    ->Args({1000, 8})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 }  // namespace

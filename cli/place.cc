@@ -45,7 +45,7 @@ int run_place(const PlaceArgs& args) {
   if (args.json) {
     print_json(place_json::report(args, sites, outcome, write));
   } else {
-    print_place_report(args, sites.n_candidates, sites.drawn, outcome, write);
+    print_place_report(args, sites.n_candidates, sites.drawn, sites.excluded, outcome, write);
   }
   if (!outcome.complete) {
     const std::string why = place_json::failure_message(outcome.result, outcome.placed);
@@ -89,6 +89,14 @@ Command add_place_command(CLI::App& root) {
                   "spherical markers of this diameter: each centre sits half of it off the "
                   "surface along the site normal (0: point markers)")
       ->capture_default_str();
+  sub->add_option("--exclude", args->exclude,
+                  "keep-out volume: a mesh in the body's frame (propellers, battery, ...); sites "
+                  "inside it or within --marker-diameter of it are dropped (repeatable)")
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  sub->add_option("--region", args->region,
+                  "sample sites only on this part of BODY (a mesh on its surface); visibility "
+                  "and occlusion stay the whole body's");
   sub->add_option("--keep", args->keep,
                   "markers already on the body: a layout of points with normals (3 or more): "
                   "always chosen, counted in K");

@@ -79,7 +79,7 @@ std::string objective_text(const place_json::PlacedLayout& placed, double value)
 
 }  // namespace
 
-void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
+void print_place_report(const PlaceArgs& args, int n_candidates, int drawn, int excluded,
                         const place_json::Outcome& outcome, bool written) {
   const design::PlacementResult& r = outcome.result;
   const PlacedLayout& placed = outcome.placed;
@@ -87,8 +87,13 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
   std::cout << "vantage place: " << args.markers << " markers on "
             << (args.sites.empty() ? args.body : args.sites) << "\n  " << n_candidates
             << " candidate sites";
-  if (args.sites.empty())
-    std::cout << " (" << drawn << " drawn area-uniformly, seed " << args.seed << ")";
+  if (args.sites.empty()) {
+    std::cout << " (" << drawn << " drawn area-uniformly";
+    if (!args.region.empty()) std::cout << " on " << args.region;
+    std::cout << ", seed " << args.seed;
+    if (excluded > 0) std::cout << "; " << excluded << " in keep-out volumes dropped";
+    std::cout << ")";
+  }
   std::cout << ", min_visible " << v.min_visible << ", " << (v.with_body ? "cone+mesh" : "cone")
             << " visibility, search " << r.search << "\n";
   if (args.marker_diameter > 0.0) {

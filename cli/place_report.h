@@ -22,7 +22,7 @@ struct PlaceArgs : place_json::Request {
 
 using place_json::PlacedLayout;
 
-void print_place_report(const PlaceArgs& args, int n_candidates, int drawn,
+void print_place_report(const PlaceArgs& args, int n_candidates, int drawn, int excluded,
                         const place_json::Outcome& outcome, bool written);
 
 }  // namespace vantage::cli

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "vantage/analysis/common.h"
+#include "vantage/design/site_filters.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/io/layout_formats.h"
 #include "vantage/io/mesh_file.h"
@@ -61,22 +62,60 @@ int place_site_at(const Layout& sites, const Eigen::Vector3d& p) {
   return -1;
 }
 
-// The sites sampled on the body mesh, as a point layout on it.
-Layout place_sampled_sites(const Request& request, int* drawn) {
-  Mesh mesh;
+// A mesh named by `option` (BODY, --region, --exclude), read or refused naming the option.
+Mesh place_read_mesh(const std::string& option, const std::string& path) {
   try {
-    mesh = io::read_mesh(request.body);
+    return io::read_mesh(path);
   } catch (const InvalidArgument& e) {
-    place_refuse("BODY", e.what());
+    place_refuse(option, e.what());
   }
+}
+
+// Region sites farther than this fraction of the body's size from the body: the region is not
+// on the body (another frame or unit).
+constexpr double kRegionOffBody = 1e-3;
+
+// The sites sampled on the body mesh (or on its --region), oriented per site by the whole body,
+// without the sites the --exclude volumes drop, as a point layout on the body.
+Layout place_sampled_sites(const Request& request, int* drawn, int* excluded) {
+  const Mesh mesh = place_read_mesh("BODY", request.body);
+  const std::string sampled_option = request.region.empty() ? "BODY" : "--region";
+  const std::string sampled_path = request.region.empty() ? request.body : request.region;
+  const Mesh part = request.region.empty() ? mesh : place_read_mesh("--region", request.region);
   design::SurfaceSites sampled;
   try {
     sampled =
-        design::sample_surface_sites(mesh, request.candidates, request.separation(), request.seed);
+        design::sample_surface_sites(part, request.candidates, request.separation(), request.seed);
+    if (!request.region.empty()) {
+      sampled.normals = design::outward_normals(mesh, sampled.points, sampled.normals);
+    }
   } catch (const InvalidArgument& e) {
-    place_refuse("BODY", request.body + ": " + e.what());
+    place_refuse(sampled_option, sampled_path + ": " + e.what());
+  }
+  if (!request.region.empty()) {
+    const double tolerance = kRegionOffBody * mesh.size();
+    for (Eigen::Index i = 0; i < sampled.points.cols(); ++i) {
+      if (distance_to_mesh(mesh, sampled.points.col(i)) > tolerance) {
+        place_refuse("--region", request.region + ": not on the body " + request.body +
+                                     " (a point of it is farther than 1e-3 of the body's size "
+                                     "from its surface: another frame or unit?)");
+      }
+    }
+  }
+  std::vector<design::KeepOut> volumes;
+  for (const std::string& path : request.exclude) {
+    const Mesh volume = place_read_mesh("--exclude", path);
+    try {
+      volumes.emplace_back(volume, request.marker_diameter);
+    } catch (const InvalidArgument& e) {
+      place_refuse("--exclude", path + ": " + e.what());
+    }
   }
   *drawn = sampled.drawn;
+  *excluded = design::drop_excluded_sites(volumes, &sampled);
+  if (sampled.points.cols() == 0) {
+    place_refuse("--exclude", "the keep-out volumes hold every sampled site");
+  }
   Layout sites = design::surface_sites_layout(
       sampled, mesh, std::filesystem::absolute(request.body).lexically_normal().string());
   sites.name = std::filesystem::path(request.body).stem().string();
@@ -428,6 +467,10 @@ void check_request(const Request& request) {
   if (request.body.empty() == request.sites.empty()) {
     place_refuse("BODY/--sites", "give a body mesh or --sites SITES.json, not both or neither");
   }
+  if (!request.sites.empty() && (!request.exclude.empty() || !request.region.empty())) {
+    place_refuse(request.region.empty() ? "--exclude" : "--region",
+                 "applies to the sites sampled on a body mesh, not to --sites");
+  }
   if (!request.sites.empty() && request.candidates_given) {
     place_refuse("--candidates", "samples the body mesh; --sites gives the candidates itself");
   }
@@ -494,7 +537,7 @@ Sites candidate_sites(const Request& request,
     }
     out.drawn = static_cast<int>(out.layout.entries.cols());
   } else {
-    out.layout = place_sampled_sites(request, &out.drawn);
+    out.layout = place_sampled_sites(request, &out.drawn, &out.excluded);
     apply_visibility(&out.layout);
   }
   if (request.marker_diameter > 0.0) {
@@ -638,7 +681,10 @@ Json report(const Request& request, const Sites& sites, const Outcome& outcome, 
   out["chosen"] = chosen;
   out["kept"] = kept;
   out["n_candidates"] = n_candidates;
-  if (request.sites.empty()) out["drawn"] = sites.drawn;
+  if (request.sites.empty()) {
+    out["drawn"] = sites.drawn;
+    out["excluded"] = sites.excluded;
+  }
   out["markers"] = request.markers;
   out["min_separation"] = request.separation();
   out["marker_diameter"] = request.marker_diameter;

@@ -10,6 +10,7 @@
 #include "placement_random.h"
 #include "vantage/analysis/common.h"
 #include "vantage/design/placement.h"
+#include "vantage/design/site_filters.h"
 
 namespace vantage::design {
 namespace {
@@ -114,6 +115,7 @@ SurfaceSites sample_surface_sites(const Mesh& mesh, int count, double min_separa
   }
   out.points.conservativeResize(3, kept);
   out.normals.conservativeResize(3, kept);
+  out.normals = outward_normals(mesh, out.points, out.normals);
   return out;
 }
 

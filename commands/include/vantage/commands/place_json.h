@@ -66,6 +66,12 @@ struct Request {
   double min_coverage = -1.0;
   /// --allow-partial: an incomplete placement is written (with a warning), not refused.
   bool allow_partial = false;
+  /// --exclude: keep-out volumes (meshes in the body's frame); the sampled sites inside one, or
+  /// within the marker diameter of its surface, are dropped.
+  std::vector<std::string> exclude;
+  /// --region: the part of the body to sample (a mesh on the body's surface), or empty for the
+  /// whole body; visibility and occlusion stay the whole body's.
+  std::string region;
 
   /// The least distance between chosen markers: --min-separation, at least the diameter.
   double separation() const { return std::max(min_separation, marker_diameter); }
@@ -83,6 +89,7 @@ struct Sites {
   Layout layout;          ///< the candidates, then the kept markers not at a site
   int n_candidates = 0;   ///< the leading columns of `layout` that are candidates
   int drawn = 0;          ///< the samples drawn on the body (the sites' count when read)
+  int excluded = 0;       ///< sampled sites dropped by the --exclude volumes
   std::vector<int> keep;  ///< the kept markers' columns
 };
 

@@ -199,8 +199,8 @@ struct SurfaceSites {
 };
 
 /// `count` area-uniform samples of `mesh` from an engine seeded with `seed`, thinned to
-/// `min_separation` (>= 0) in the order drawn; normals flipped outward when the mesh's signed
-/// volume is negative. Throws InvalidArgument ("body: ...") for a bad mesh, count < 1, or a
+/// `min_separation` (>= 0) in the order drawn; normals flipped when the mesh's signed volume is
+/// negative, then turned outward one site at a time by outward_normals() (site_filters.h). Throws InvalidArgument ("body: ...") for a bad mesh, count < 1, or a
 /// mesh of zero area.
 SurfaceSites sample_surface_sites(const Mesh& mesh, int count, double min_separation,
                                   std::uint64_t seed);
