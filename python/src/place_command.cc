@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "arrays.h"
 #include "layouts.h"
@@ -44,6 +45,27 @@ std::string place_path(const py::object& value, const char* field) {
     throw InvalidArgument(field, "expected a file path");
   }
   return py::module_::import("os").attr("fspath")(value).cast<std::string>();
+}
+
+// exclude=: one path or a sequence of paths (--exclude, repeatable); None for none.
+std::vector<std::string> place_paths(const py::object& value, const char* field) {
+  if (value.is_none()) return {};
+  if (py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__")) {
+    return {place_path(value, field)};
+  }
+  if (!py::isinstance<py::sequence>(value)) {
+    throw InvalidArgument(field, "expected a file path or a sequence of file paths");
+  }
+  std::vector<std::string> out;
+  int index = 0;
+  for (const py::handle item : value) {
+    if (!py::isinstance<py::str>(item) && !py::hasattr(item, "__fspath__")) {
+      throw InvalidArgument(field, index, "expected a file path");
+    }
+    out.push_back(place_path(py::reinterpret_borrow<py::object>(item), field));
+    ++index;
+  }
+  return out;
 }
 
 // workspace=(ax, ay, az, deg) as --workspace's "AX,AY,AZ,DEG" (each number exactly).
@@ -117,7 +139,7 @@ py::object place(const py::object& body, const py::object& sites, int markers,
                  const py::object& aim, const py::object& targets,
                  const std::optional<double>& fle_rms, const py::object& fle_sigma,
                  const std::optional<double>& min_coverage, bool allow_partial,
-                 double marker_diameter) {
+                 double marker_diameter, const py::object& exclude, const py::object& region) {
   try {
     place_json::Request request;
     request.body = place_path(body, "body");
@@ -151,6 +173,8 @@ py::object place(const py::object& body, const py::object& sites, int markers,
     request.min_coverage = min_coverage.value_or(request.min_coverage);
     request.allow_partial = allow_partial;
     request.marker_diameter = marker_diameter;
+    request.exclude = place_paths(exclude, "exclude");
+    request.region = place_path(region, "region");
     commands::VisibilityOptions visibility;
     visibility.cone_deg = cone_deg;
     visibility.min_visible = min_visible;
@@ -179,6 +203,7 @@ void bind_place_command(py::module_& module) {
              py::arg("targets") = py::none(), py::arg("fle_rms") = py::none(),
              py::arg("fle_sigma") = py::none(), py::arg("min_coverage") = py::none(),
              py::arg("allow_partial") = false, py::arg("marker_diameter") = 0.0,
+             py::arg("exclude") = py::none(), py::arg("region") = py::none(),
              "K marker sites on a body mesh or among given sites: every workspace direction "
              "trackable, then the best certified worst case under visibility (as `vantage place "
              "--json`; docs/math.md §21).");

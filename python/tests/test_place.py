@@ -6,6 +6,7 @@ p-bar_min), and bad input naming the keyword."""
 import inspect
 import itertools
 import json
+import warnings
 
 import pytest
 
@@ -160,3 +161,52 @@ def test_objective_settings_name_their_keyword(vantage, tmp_path):
         with pytest.raises(ValueError) as error:
             vantage.place(sites=CUBE_SITES, markers=4, **kwargs)
         assert error.value.field == field, (field, str(error.value))
+
+
+def box_obj(path, lo, hi):
+    """An axis-aligned box [lo, hi] as a closed OBJ mesh (outward winding)."""
+    corners = [(x, y, z) for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])]
+    faces = [(1, 2, 4, 3), (5, 7, 8, 6), (1, 5, 6, 2), (3, 4, 8, 7), (1, 3, 7, 5), (2, 6, 8, 4)]
+    lines = ["v %r %r %r" % c for c in corners]
+    lines += ["f %d %d %d\nf %d %d %d" % (a, b, c, a, c, d) for a, b, c, d in faces]
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def test_exclude_matches_the_cli_and_keeps_markers_out(vantage, tmp_path):
+    """Issue 35 item 4: exclude= is --exclude (the same JSON), no marker is in the keep-out box
+    (the capsule's top half, z > 0.2, widened past the body) and the dropped sites are counted."""
+    keep_out = box_obj(tmp_path / "top.obj", (-1.0, -1.0, 0.2), (1.0, 1.0, 2.0))
+    args = dict(markers=6, candidates=120, random_trials=30, seed=5, min_coverage=0.5,
+                allow_partial=True)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        report = vantage.place(CAPSULE, exclude=[keep_out], **args)
+    cli = cli_json("place", CAPSULE, "--exclude", keep_out, "--markers", 6, "--candidates", 120,
+                   "--random-trials", 30, "--seed", 5, "--min-coverage", 0.5, "--allow-partial",
+                   "--out", tmp_path / "cli.json")
+    assert_same(without_written(report.to_dict()), without_written(cli))
+    assert report.excluded > 0 and report.excluded == cli["excluded"]
+    assert report.n_candidates + report.excluded == report.drawn
+    assert all(point[2] <= 0.2 for point in report.layout.entries)
+    # One path alone is the same as a list of one.
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        single = vantage.place(CAPSULE, exclude=keep_out, **args)
+    assert single.chosen.tolist() == report.chosen.tolist()
+
+
+def test_exclude_and_region_bad_input_names_the_keyword(vantage, tmp_path):
+    out = tmp_path / "o.json"
+    box = box_obj(tmp_path / "box.obj", (-1.0, -1.0, 0.5), (1.0, 1.0, 2.0))
+    calls = [
+        ("exclude", dict(sites=CUBE_SITES, exclude=box)),
+        ("exclude", dict(body=CAPSULE, exclude=[box, 3])),
+        ("exclude", dict(body=CAPSULE, exclude=tmp_path / "none.obj")),
+        ("region", dict(body=CAPSULE, region=tmp_path / "none.obj")),
+    ]
+    for field, kwargs in calls:
+        with pytest.raises(ValueError) as error:
+            vantage.place(markers=4, out=out, **kwargs)
+        assert error.value.field == field, (field, str(error.value))
+    assert not out.exists()

@@ -227,7 +227,9 @@ def place(body: Optional[PathArg] = None, *, sites: Optional[PathArg] = None, ma
           crb_samples: Optional[int] = None, aim: Optional[Sequence[float]] = None,
           targets: Optional[npt.ArrayLike] = None, fle_rms: Optional[float] = None,
           fle_sigma: Optional[Sequence[float]] = None, min_coverage: Optional[float] = None,
-          allow_partial: bool = False, marker_diameter: float = 0.0) -> PlaceReport:
+          allow_partial: bool = False, marker_diameter: float = 0.0,
+          exclude: Union[None, PathArg, Sequence[PathArg]] = None,
+          region: Optional[PathArg] = None) -> PlaceReport:
     """Choose ``markers`` (K) marker sites on a body so that every workspace direction is
     trackable and the certified worst case under visibility is best (as ``vantage place
     --json``; docs/math.md §21); the result's ``layout`` is the placed vantage.Layout.
@@ -253,6 +255,11 @@ def place(body: Optional[PathArg] = None, *, sites: Optional[PathArg] = None, ma
     but one); allow_partial: return (and write) the best answer even when it covers less, with
     a RuntimeWarning, instead of raising.
 
+    exclude: one mesh or a sequence of meshes, keep-out volumes (propellers, a battery): sampled
+    sites inside one or within marker_diameter of it are dropped (the report's ``excluded``
+    counts them). region: a mesh on the body's surface, the only part sampled (normals oriented
+    by the whole body). Both only with a body mesh (docs/math.md §21, "Where markers may go").
+
     Raises ValueError on bad input (its ``field`` the keyword, e.g. 'markers', 'body') and
     NumericalError (its ``result`` the PlaceReport, with the best ``layout`` found) when the
     placement leaves a workspace direction untracked or its analysis is not certified.
@@ -265,7 +272,8 @@ def place(body: Optional[PathArg] = None, *, sites: Optional[PathArg] = None, ma
         exhaustive_limit=exhaustive_limit, out=out, overwrite=overwrite, objective=objective,
         distance=distance, focal=focal, noise_px=noise_px, statistic=statistic,
         crb_samples=crb_samples, aim=aim, targets=targets, fle_rms=fle_rms, fle_sigma=fle_sigma,
-        min_coverage=min_coverage, allow_partial=allow_partial, marker_diameter=marker_diameter))
+        min_coverage=min_coverage, allow_partial=allow_partial, marker_diameter=marker_diameter,
+        exclude=exclude, region=region))
 
 
 def _design_result(fields: Any) -> DesignResult:

@@ -269,6 +269,9 @@ class PlaceReport(_JsonView):
         self.n_candidates: int = int(fields["n_candidates"])
         #: Sampled on a body mesh: the samples drawn; None for a sites file.
         self.drawn: Optional[int] = int(fields["drawn"]) if "drawn" in fields else None
+        #: Sampled on a body mesh: the sampled sites the exclude volumes dropped; None for a
+        #: sites file.
+        self.excluded: Optional[int] = int(fields["excluded"]) if "excluded" in fields else None
         self.markers: int = int(fields["markers"])
         self.search: str = str(fields["search"])
         visibility = fields["visibility"]

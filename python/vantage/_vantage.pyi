@@ -114,4 +114,6 @@ def place(body: Optional[_Path] = None, *, sites: Optional[_Path] = None, marker
           crb_samples: Optional[int] = None, aim: Optional[Sequence[float]] = None,
           targets: Optional[Any] = None, fle_rms: Optional[float] = None,
           fle_sigma: Optional[Sequence[float]] = None, min_coverage: Optional[float] = None,
-          allow_partial: bool = False, marker_diameter: float = 0.0) -> Dict[str, Any]: ...
+          allow_partial: bool = False, marker_diameter: float = 0.0,
+          exclude: Union[None, _Path, Sequence[_Path]] = None,
+          region: Optional[_Path] = None) -> Dict[str, Any]: ...
