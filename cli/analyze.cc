@@ -213,6 +213,18 @@ std::string off_body_warning(const report::LayoutReport& report) {
          " % of the body's size): is the mesh the markers' body, in their units and frame?";
 }
 
+// Markers whose cones face the workspace but which the body hides from every lattice direction
+// there (docs/math.md §20, "Markers the body hides").
+std::string hidden_warning(const report::LayoutReport& report) {
+  const visibility::VisibilityReport& v = *report.visibility;
+  std::string names;
+  for (int i : v.hidden_by_body) names += (names.empty() ? "" : ", ") + report.entry_label(i);
+  return "visibility.body: " + std::to_string(v.hidden_by_body.size()) +
+         " marker(s) face the workspace but the body hides them from all " +
+         std::to_string(v.coverage.samples) + " lattice directions of the workspace (" + names +
+         "): inside the body, or just under its surface?";
+}
+
 int run_analyze(const AnalyzeArgs& args) {
   if (args.swaps < 1) throw InvalidArgument("--swaps", "must be >= 1");
   const Layout layout = args.input.read(args.file, args.allow_large);
@@ -242,6 +254,9 @@ int run_analyze(const AnalyzeArgs& args) {
   }
   if (report.visibility && !report.visibility->off_body.empty()) {
     std::cerr << "vantage: warning: " << off_body_warning(report) << std::endl;
+  }
+  if (report.visibility && !report.visibility->hidden_by_body.empty()) {
+    std::cerr << "vantage: warning: " << hidden_warning(report) << std::endl;
   }
   if (args.json) {
     std::cout << report::to_json(report) << std::endl;

@@ -281,6 +281,10 @@ class LayoutVisibility(_JsonView):
             _floats(fields["distance_to_body"]) if "distance_to_body" in fields else None)
         self.off_body: Optional[IntArray] = (
             _ints(fields["off_body"]) if "off_body" in fields else None)
+        #: With a body: the markers whose cones face the workspace but which the body hides
+        #: from every direction of the coverage lattice there (docs/math.md §20).
+        self.hidden_by_body: Optional[IntArray] = (
+            _ints(fields["hidden_by_body"]) if "hidden_by_body" in fields else None)
         self.dropout: Optional[List[VisibilityDropoutEntry]] = (
             [VisibilityDropoutEntry(e) for e in fields["dropout"]] if "dropout" in fields
             else None)

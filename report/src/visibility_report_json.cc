@@ -71,6 +71,7 @@ nlohmann::ordered_json visibility_json(const visibility::VisibilityReport& r) {
   if (r.with_body) {
     out["distance_to_body"] = r.distance_to_body;
     out["off_body"] = r.off_body;
+    out["hidden_by_body"] = r.hidden_by_body;
   }
   if (!r.dropout.empty()) {
     out["dropout"] = dropout(r);

@@ -1,5 +1,6 @@
 // `vantage analyze` on markers with normals (docs/math.md §20): both answers, the issue's field
-// names, the overrides, the off-body warning, and bad input (one line, exit 2, nothing written).
+// names, the overrides, the off-body and hidden-marker warnings, and bad input (one line, exit 2,
+// nothing written).
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -110,6 +111,41 @@ TEST(VisibilityCli, MarkersOffTheBodyAreWarnedAbout) {
   const CliRun run = run_vantage("analyze far.json", scratch);
   EXPECT_THAT(run.err, HasSubstr("vantage: warning: visibility.body: 4 marker(s) lie off"));
   EXPECT_THAT(run.out, HasSubstr("on its body"));
+}
+
+TEST(VisibilityCli, MarkersUnderTheSurfaceAreNamedAsHidden) {
+  // The closed unit box [0,1]^3; four markers on its top face and one 5 micrometres under it,
+  // all facing +z. The one under the face is inside the box: no direction sees it (geometry),
+  // although its cone faces the workspace; those on the face are seen from straight above.
+  ScratchDir scratch;
+  scratch.write("box.obj",
+                "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
+  scratch.write("under.json",
+                R"({"points": [[0.2, 0.2, 1], [0.8, 0.2, 1], [0.8, 0.8, 1], [0.5, 0.5, 0.999995],
+                               [0.2, 0.7, 1]],
+                    "names": ["a", "b", "c", "under", "d"],
+                    "normals": [[0, 0, 1], [0, 0, 1], [0, 0, 1], [0, 0, 1], [0, 0, 1]],
+                    "visibility": {"cone_half_angle_deg": 60, "body": "box.obj"},
+                    "workspace": {"axis": [0, 0, 1], "half_angle_deg": 40}})");
+  const CliRun json_run = run_vantage("analyze under.json --json", scratch);
+  ASSERT_EQ(json_run.status, 0) << json_run.err;
+  EXPECT_EQ(nlohmann::json::parse(json_run.out)["visibility"]["hidden_by_body"],
+            nlohmann::json::array({3}));
+  const CliRun run = run_vantage("analyze under.json", scratch);
+  EXPECT_EQ(run.err, json_run.err);
+  EXPECT_THAT(run.err, HasSubstr("vantage: warning: visibility.body: 1 marker(s) face the "
+                                 "workspace but the body hides them"));
+  EXPECT_THAT(run.err, HasSubstr("(under)"));
+  // On the face it is seen: nothing is hidden and nothing is said.
+  scratch.write("on.json",
+                R"({"points": [[0.2, 0.2, 1], [0.8, 0.2, 1], [0.8, 0.8, 1], [0.5, 0.5, 1]],
+                    "normals": [[0, 0, 1], [0, 0, 1], [0, 0, 1], [0, 0, 1]],
+                    "visibility": {"cone_half_angle_deg": 60, "body": "box.obj"},
+                    "workspace": {"axis": [0, 0, 1], "half_angle_deg": 40}})");
+  EXPECT_TRUE(
+      testing::run_json("analyze on.json", scratch)["visibility"]["hidden_by_body"].empty());
+  EXPECT_EQ(run_vantage("analyze on.json", scratch).err, "");
 }
 
 const BadCall kBadCalls[] = {

@@ -81,6 +81,31 @@ void add_dropout(const VisibilityProblem& problem, const VisibilityReportOptions
                    });
 }
 
+/// The markers whose cones admit a lattice direction of the workspace, at every one of which
+/// the body hides them (docs/math.md §20, "Markers the body hides").
+std::vector<int> hidden_by_body(const VisibilityProblem& problem, int samples) {
+  const std::size_t n = static_cast<std::size_t>(problem.points.cols());
+  std::vector<char> faced(n, 0);
+  std::vector<char> seen(n, 0);
+  const Eigen::Matrix3Xd a = fibonacci_directions(samples);
+  for (Eigen::Index k = 0; k < a.cols(); ++k) {
+    const Eigen::Vector3d d = a.col(k);
+    if (problem.workspace && d.dot(problem.workspace->axis) < problem.workspace->cos_half_angle) {
+      continue;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const Eigen::Index c = static_cast<Eigen::Index>(i);
+      if (problem.normals.col(c).dot(d) >= problem.cos_cone(c)) faced[i] = 1;
+    }
+    for (int i : direction_visibility(problem, d).visible) seen[static_cast<std::size_t>(i)] = 1;
+  }
+  std::vector<int> out;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (faced[i] && !seen[i]) out.push_back(static_cast<int>(i));
+  }
+  return out;
+}
+
 }  // namespace
 
 bool VisibilityReportOptions::is_valid(std::string* why) const {
@@ -145,6 +170,7 @@ VisibilityReport analyze_visibility(const Layout& layout, const VisibilityReport
   report.worst = visibility_worst_viewpoint(problem, options.search);
   report.max_worst_case_error_deg = error_deg(report.worst);
   report.coverage = visibility_coverage(problem, options.coverage_samples);
+  if (model.has_body()) report.hidden_by_body = hidden_by_body(problem, options.coverage_samples);
   if (options.dropout) add_dropout(problem, options, grid, &report);
   return report;
 }

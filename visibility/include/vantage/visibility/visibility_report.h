@@ -52,6 +52,10 @@ struct VisibilityReport {
   /// warning: the mesh may not be the markers' body).
   std::vector<double> distance_to_body;
   std::vector<int> off_body;
+  /// With a body: the markers whose cones admit a direction of the coverage lattice in the
+  /// workspace but which the body hides at every such direction (docs/math.md §20, "Markers the
+  /// body hides"), increasing. Sampled on coverage.samples directions, not certified.
+  std::vector<int> hidden_by_body;
   std::vector<VisibilityDropoutEntry> dropout;  ///< by marker, when asked
   /// Markers by decreasing harm when lost: largest worst-case error, then smallest trackable
   /// fraction, then index.
