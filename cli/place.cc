@@ -113,6 +113,10 @@ Command add_place_command(CLI::App& root) {
   sub->add_option("--random-trials", args->random_trials,
                   "random feasible K-subsets of the baseline")
       ->capture_default_str();
+  sub->add_option("--perturbations", args->perturbations,
+                  "rounds of iterated local search after the swaps (a third of the markers, at "
+                  "least two, replaced at random, then swaps; the better answer kept)")
+      ->capture_default_str();
   sub->add_option("--exhaustive-limit", args->exhaustive_limit,
                   "search every subset when there are at most this many (0: never)")
       ->capture_default_str();

@@ -123,7 +123,12 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn, int 
                   << format_number(error_deg(s.value.pbar_min), 4) << " deg\n";
       }
     }
-    std::cout << "swaps after the greedy: " << r.swaps << "\n\n";
+    std::cout << "swaps after the greedy: " << r.swaps << "\n";
+    if (args.perturbations > 0) {
+      std::cout << "perturbation rounds: " << args.perturbations << ", "
+                << r.improving_perturbations << " of them improving\n";
+    }
+    std::cout << "\n";
   } else {
     std::cout << "exhaustive over " << r.subsets << " feasible subsets\n\n";
   }

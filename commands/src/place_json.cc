@@ -497,6 +497,7 @@ void check_request(const Request& request) {
   }
   if (request.threads < 0) place_refuse("--threads", "must be >= 0 (0: all cores)");
   if (request.random_trials < 0) place_refuse("--random-trials", "must be >= 0");
+  if (request.perturbations < 0) place_refuse("--perturbations", "must be >= 0");
   if (request.exhaustive_limit < 0) place_refuse("--exhaustive-limit", "must be >= 0");
   if (!(request.certificate_tolerance >= 1e-15 && request.certificate_tolerance <= 1e-3)) {
     place_refuse("--certificate-tolerance", "must be in [1e-15, 1e-3]");
@@ -565,6 +566,7 @@ Outcome place(const Request& request, const Sites& sites,
   design::PlaceOptions options;
   options.robust_dropout = request.robust_dropout;
   options.random_trials = request.random_trials;
+  options.perturbations = request.perturbations;
   options.exhaustive_limit = request.exhaustive_limit;
   options.seed = request.seed;
   options.threads = request.threads;
@@ -712,6 +714,10 @@ Json report(const Request& request, const Sites& sites, const Outcome& outcome, 
     }
   }
   out["swaps"] = r.swaps;
+  if (r.search != "exhaustive") {
+    out["perturbations"] = request.perturbations;
+    out["improving_perturbations"] = r.improving_perturbations;
+  }
   out["evaluations"] = r.evaluations;
   if (r.search == "exhaustive") out["subsets"] = r.subsets;
   if (r.status == design::PlacementResult::Status::kIncomplete) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
 
 #include "placement_search.h"
@@ -42,6 +43,24 @@ RobustValue robust_value(internal::PlacementSearch& search, const std::vector<in
         std::min(out.coverage, directions == 0 ? 0.0 : static_cast<double>(covered) / directions);
   }
   return out;
+}
+
+// The iterated local search after the swaps (docs/math.md §21, "Search"): `options.perturbations`
+// rounds, each from the best answer so far, of a random perturbation and swaps from it.
+internal::Scored perturbed_search(internal::PlacementSearch& search, internal::Scored best,
+                                  const PlaceOptions& options, PlacementResult* out) {
+  std::seed_seq seeds{options.seed, std::uint64_t{2}};
+  std::mt19937_64 engine(seeds);
+  for (int round = 0; round < options.perturbations; ++round) {
+    const std::optional<internal::Scored> start = search.perturbed(best, &engine);
+    if (!start) continue;
+    const internal::Scored next = search.swaps(*start, &out->swaps);
+    if (search.better(next, best)) {
+      best = next;
+      ++out->improving_perturbations;
+    }
+  }
+  return best;
 }
 
 }  // namespace
@@ -157,6 +176,9 @@ bool PlaceOptions::is_valid(std::string* why) const {
   if (random_trials < 0) {
     return vantage::internal::invalid_option(why, "random_trials", "must be >= 0");
   }
+  if (perturbations < 0) {
+    return vantage::internal::invalid_option(why, "perturbations", "must be >= 0");
+  }
   if (threads < 0) return vantage::internal::invalid_option(why, "threads", "must be >= 0");
   return true;
 }
@@ -210,6 +232,7 @@ PlacementResult place_markers(const PlacementProblem& problem, const PlaceOption
       const internal::Scored from_random = search.swaps(*random_best, &out.swaps);
       if (!best || search.better(from_random, *best)) best = from_random;
     }
+    if (best) best = perturbed_search(search, *best, options, &out);
   }
   if (!best) {
     throw InvalidArgument("min_separation",

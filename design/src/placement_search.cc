@@ -309,6 +309,34 @@ std::optional<Scored> PlacementSearch::greedy(std::vector<PlacementStep>* steps)
   return score(chosen);
 }
 
+std::optional<Scored> PlacementSearch::perturbed(const Scored& from, std::mt19937_64* engine) {
+  std::vector<int> movable;
+  for (int s : from.chosen) {
+    if (!kept_[static_cast<std::size_t>(s)]) movable.push_back(s);
+  }
+  if (movable.empty()) return std::nullopt;
+  std::shuffle(movable.begin(), movable.end(), *engine);
+  const std::size_t moves = std::min(movable.size(), std::max<std::size_t>(2, movable.size() / 3));
+  std::vector<int> chosen = from.chosen;
+  const std::vector<int> free = free_sites();
+  for (std::size_t m = 0; m < moves; ++m) {
+    chosen.erase(std::find(chosen.begin(), chosen.end(), movable[m]));
+    std::vector<int> candidates;
+    for (int c : free) {
+      const bool taken = std::find(chosen.begin(), chosen.end(), c) != chosen.end();
+      const bool removed = std::find(movable.begin(), movable.begin() + static_cast<long>(m) + 1,
+                                     c) != movable.begin() + static_cast<long>(m) + 1;
+      if (!taken && !removed && evaluator_.feasible_with(sorted(chosen), c)) {
+        candidates.push_back(c);
+      }
+    }
+    if (candidates.empty()) return std::nullopt;
+    std::uniform_int_distribution<std::size_t> pick(0, candidates.size() - 1);
+    chosen.push_back(candidates[pick(*engine)]);
+  }
+  return score(std::move(chosen));
+}
+
 Scored PlacementSearch::swaps(Scored current, int* swaps) {
   const std::vector<int> free = free_sites();
   for (int pass = 1; pass <= kMaxPasses; ++pass) {

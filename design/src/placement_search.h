@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <optional>
+#include <random>
 #include <vector>
 
 #include "camera_objective.h"
@@ -59,6 +60,10 @@ class PlacementSearch {
   std::optional<Scored> greedy(std::vector<PlacementStep>* steps);
   /// Improving swaps from `start` until none improves; `*swaps` counts them.
   Scored swaps(Scored start, int* swaps);
+  /// A random neighbour of `from` for the iterated local search (docs/math.md §21, "Search"):
+  /// min(f, max(2, f/3)) of its f free markers, uniform, replaced one by one by uniform free sites
+  /// that keep the constraints; scored. nullopt when a replacement finds no feasible site.
+  std::optional<Scored> perturbed(const Scored& from, std::mt19937_64* engine);
   /// The random baseline.
   RandomBaseline baseline(std::optional<Scored>* best);
   /// Markers at which greedy by coverage alone covers every lattice direction, if it does.

@@ -139,7 +139,8 @@ py::object place(const py::object& body, const py::object& sites, int markers,
                  const py::object& aim, const py::object& targets,
                  const std::optional<double>& fle_rms, const py::object& fle_sigma,
                  const std::optional<double>& min_coverage, bool allow_partial,
-                 double marker_diameter, const py::object& exclude, const py::object& region) {
+                 double marker_diameter, const py::object& exclude, const py::object& region,
+                 int perturbations) {
   try {
     place_json::Request request;
     request.body = place_path(body, "body");
@@ -155,6 +156,7 @@ py::object place(const py::object& body, const py::object& sites, int markers,
     request.seed = seed.value_or(request.seed);
     request.threads = threads.value_or(request.threads);
     request.random_trials = random_trials.value_or(request.random_trials);
+    request.perturbations = perturbations;
     request.exhaustive_limit = exhaustive_limit.value_or(request.exhaustive_limit);
     request.overwrite = overwrite;
     request.objective = objective;
@@ -188,25 +190,25 @@ py::object place(const py::object& body, const py::object& sites, int markers,
 }  // namespace
 
 void bind_place_command(py::module_& module) {
-  module.def("place", &place, py::arg("body") = py::none(), py::kw_only(),
-             py::arg("sites") = py::none(), py::arg("markers"), py::arg("candidates") = py::none(),
-             py::arg("cone_deg") = py::none(), py::arg("min_visible") = py::none(),
-             py::arg("workspace") = py::none(), py::arg("min_separation") = py::none(),
-             py::arg("keep") = py::none(), py::arg("robust_dropout") = false,
-             py::arg("min_distance_difference") = 0.0, py::arg("seed") = py::none(),
-             py::arg("threads") = py::none(), py::arg("random_trials") = py::none(),
-             py::arg("exhaustive_limit") = py::none(), py::arg("out") = py::none(),
-             py::arg("overwrite") = false, py::arg("objective") = "affine",
-             py::arg("distance") = py::none(), py::arg("focal") = py::none(),
-             py::arg("noise_px") = py::none(), py::arg("statistic") = "worst",
-             py::arg("crb_samples") = py::none(), py::arg("aim") = py::none(),
-             py::arg("targets") = py::none(), py::arg("fle_rms") = py::none(),
-             py::arg("fle_sigma") = py::none(), py::arg("min_coverage") = py::none(),
-             py::arg("allow_partial") = false, py::arg("marker_diameter") = 0.0,
-             py::arg("exclude") = py::none(), py::arg("region") = py::none(),
-             "K marker sites on a body mesh or among given sites: every workspace direction "
-             "trackable, then the best certified worst case under visibility (as `vantage place "
-             "--json`; docs/math.md §21).");
+  module.def(
+      "place", &place, py::arg("body") = py::none(), py::kw_only(), py::arg("sites") = py::none(),
+      py::arg("markers"), py::arg("candidates") = py::none(), py::arg("cone_deg") = py::none(),
+      py::arg("min_visible") = py::none(), py::arg("workspace") = py::none(),
+      py::arg("min_separation") = py::none(), py::arg("keep") = py::none(),
+      py::arg("robust_dropout") = false, py::arg("min_distance_difference") = 0.0,
+      py::arg("seed") = py::none(), py::arg("threads") = py::none(),
+      py::arg("random_trials") = py::none(), py::arg("exhaustive_limit") = py::none(),
+      py::arg("out") = py::none(), py::arg("overwrite") = false, py::arg("objective") = "affine",
+      py::arg("distance") = py::none(), py::arg("focal") = py::none(),
+      py::arg("noise_px") = py::none(), py::arg("statistic") = "worst",
+      py::arg("crb_samples") = py::none(), py::arg("aim") = py::none(),
+      py::arg("targets") = py::none(), py::arg("fle_rms") = py::none(),
+      py::arg("fle_sigma") = py::none(), py::arg("min_coverage") = py::none(),
+      py::arg("allow_partial") = false, py::arg("marker_diameter") = 0.0,
+      py::arg("exclude") = py::none(), py::arg("region") = py::none(), py::arg("perturbations") = 0,
+      "K marker sites on a body mesh or among given sites: every workspace direction "
+      "trackable, then the best certified worst case under visibility (as `vantage place "
+      "--json`; docs/math.md §21).");
 }
 
 }  // namespace vantage::python

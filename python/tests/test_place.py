@@ -94,6 +94,7 @@ def test_bad_input_raises_naming_the_keyword(vantage, tmp_path):
         ("markers", dict(sites=str(CUBE_SITES), markers=17)),
         ("min_separation", dict(sites=str(CUBE_SITES), markers=4, min_separation=-1.0)),
         ("candidates", dict(sites=str(CUBE_SITES), markers=4, candidates=10)),
+        ("perturbations", dict(sites=str(CUBE_SITES), markers=4, perturbations=-1)),
         ("cone_deg", dict(sites=str(CUBE_SITES), markers=4, cone_deg=200.0)),
         ("workspace", dict(sites=str(CUBE_SITES), markers=4, workspace=(0.0, 0.0, 1.0))),
         ("out", dict(sites=str(CUBE_SITES), markers=4, out=tmp_path / "none" / "o.json")),
@@ -210,3 +211,11 @@ def test_exclude_and_region_bad_input_names_the_keyword(vantage, tmp_path):
             vantage.place(markers=4, out=out, **kwargs)
         assert error.value.field == field, (field, str(error.value))
     assert not out.exists()
+
+
+def test_perturbations_match_the_cli(vantage, tmp_path):
+    report = vantage.place(sites=CUBE_SITES, markers=6, exhaustive_limit=0, perturbations=5)
+    cli = cli_json("place", "--sites", CUBE_SITES, "--markers", 6, "--exhaustive-limit", 0,
+                   "--perturbations", 5, "--out", tmp_path / "cli.json")
+    assert_same(without_written(report.to_dict()), without_written(cli))
+    assert report.perturbations == 5 and report.improving_perturbations is not None

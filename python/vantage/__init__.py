@@ -229,7 +229,7 @@ def place(body: Optional[PathArg] = None, *, sites: Optional[PathArg] = None, ma
           fle_sigma: Optional[Sequence[float]] = None, min_coverage: Optional[float] = None,
           allow_partial: bool = False, marker_diameter: float = 0.0,
           exclude: Union[None, PathArg, Sequence[PathArg]] = None,
-          region: Optional[PathArg] = None) -> PlaceReport:
+          region: Optional[PathArg] = None, perturbations: int = 0) -> PlaceReport:
     """Choose ``markers`` (K) marker sites on a body so that every workspace direction is
     trackable and the certified worst case under visibility is best (as ``vantage place
     --json``; docs/math.md §21); the result's ``layout`` is the placed vantage.Layout.
@@ -259,6 +259,8 @@ def place(body: Optional[PathArg] = None, *, sites: Optional[PathArg] = None, ma
     sites inside one or within marker_diameter of it are dropped (the report's ``excluded``
     counts them). region: a mesh on the body's surface, the only part sampled (normals oriented
     by the whole body). Both only with a body mesh (docs/math.md §21, "Where markers may go").
+    perturbations: rounds of iterated local search after the swaps (``--perturbations``,
+    default 0).
 
     Raises ValueError on bad input (its ``field`` the keyword, e.g. 'markers', 'body') and
     NumericalError (its ``result`` the PlaceReport, with the best ``layout`` found) when the
@@ -273,7 +275,7 @@ def place(body: Optional[PathArg] = None, *, sites: Optional[PathArg] = None, ma
         distance=distance, focal=focal, noise_px=noise_px, statistic=statistic,
         crb_samples=crb_samples, aim=aim, targets=targets, fle_rms=fle_rms, fle_sigma=fle_sigma,
         min_coverage=min_coverage, allow_partial=allow_partial, marker_diameter=marker_diameter,
-        exclude=exclude, region=region))
+        exclude=exclude, region=region, perturbations=perturbations))
 
 
 def _design_result(fields: Any) -> DesignResult:

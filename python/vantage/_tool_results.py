@@ -288,6 +288,13 @@ class PlaceReport(_JsonView):
         self.robust: Optional[PlaceRobust] = (
             PlaceRobust(fields["robust"]) if "robust" in fields else None)
         self.swaps: int = int(fields["swaps"])
+        #: search 'greedy+swap': the perturbation rounds asked for and those that improved the
+        #: answer; else None.
+        self.perturbations: Optional[int] = (
+            int(fields["perturbations"]) if "perturbations" in fields else None)
+        self.improving_perturbations: Optional[int] = (
+            int(fields["improving_perturbations"]) if "improving_perturbations" in fields
+            else None)
         self.evaluations: int = int(fields["evaluations"])
         #: search 'exhaustive': the feasible subsets searched; else None.
         self.subsets: Optional[int] = int(fields["subsets"]) if "subsets" in fields else None

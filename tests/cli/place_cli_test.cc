@@ -255,6 +255,30 @@ TEST(PlaceCli, RobustDropoutIsWhatAnalyzeDropoutReportsOnTheWrittenFile) {
   }
 }
 
+// --perturbations (docs/math.md §21): reported in the JSON and the text, never worse than
+// greedy with swaps, and what `analyze` reports on the written file.
+TEST(PlaceCli, PerturbationsAreReportedAndNeverWorse) {
+  constexpr double kCertificate = 1e-7;
+  ScratchDir scratch;
+  scratch.write("sites.json", cube_sites());
+  const std::string place = "place --sites sites.json --markers 6 --exhaustive-limit 0 ";
+  const nlohmann::json plain = testing::run_json(place + "--out plain.json", scratch);
+  const nlohmann::json perturbed =
+      testing::run_json(place + "--perturbations 20 --out perturbed.json", scratch);
+  EXPECT_EQ(plain["perturbations"], 0);
+  EXPECT_EQ(plain["improving_perturbations"], 0);
+  EXPECT_EQ(perturbed["perturbations"], 20);
+  EXPECT_GE(perturbed["pbar_min"].get<double>(), plain["pbar_min"].get<double>() - kCertificate);
+  EXPECT_EQ(perturbed["improving_perturbations"].get<int>() > 0,
+            perturbed["chosen"] != plain["chosen"]);
+  const nlohmann::json analysed = testing::run_json("analyze perturbed.json", scratch);
+  EXPECT_NEAR(analysed["visibility"]["pbar_min"].get<double>(), perturbed["pbar_min"].get<double>(),
+              kCertificate);
+  const CliRun text = testing::run_vantage(place + "--perturbations 3 --out text.json", scratch);
+  EXPECT_EQ(text.status, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("perturbation rounds: 3, "));
+}
+
 TEST(PlaceCli, AllowPartialWritesTheBestIncompleteAnswer) {
   ScratchDir scratch;
   scratch.write("sites.json", cube_sites());
@@ -375,6 +399,8 @@ TEST(PlaceCli, BadInputGetsOneLineAndWritesNothing) {
       {"--min-coverage above 1", nullptr,
        "--sites sites.json --markers 4 --out o.json --min-coverage 1.5", "--min-coverage"},
       // Issue 35 item 3: physical markers.
+      {"negative perturbations", nullptr,
+       "--sites sites.json --markers 4 --out o.json --perturbations -1", "--perturbations"},
       {"a negative diameter", nullptr,
        "--sites sites.json --markers 4 --out o.json --marker-diameter -0.1", "--marker-diameter"},
       {"a separation below the diameter", nullptr,

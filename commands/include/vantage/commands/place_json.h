@@ -44,6 +44,7 @@ struct Request {
   std::uint64_t seed = 1;
   int threads = 0;
   int random_trials = 1000;
+  int perturbations = 0;  ///< --perturbations: iterated local search rounds after the swaps
   long exhaustive_limit = 5000;
   double certificate_tolerance = visibility::VisibilitySearchOptions{}.certificate_tolerance;
   bool overwrite = false;

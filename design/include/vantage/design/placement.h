@@ -108,8 +108,12 @@ struct PlaceOptions {
   /// sites, >= 0 (0: never).
   long exhaustive_limit = 5000;
   int random_trials = 1000;  ///< random feasible subsets of the baseline, >= 0
-  std::uint64_t seed = 1;    ///< the baseline's random engine
-  int threads = 0;           ///< >= 0 (0: all cores); the answer does not depend on it
+  /// Rounds of iterated local search after the swaps (docs/math.md §21, "Search"), >= 0: each
+  /// replaces a third of the answer's free markers (at least two) at random and swaps again; the
+  /// better answer is kept. 0: greedy and swaps only.
+  int perturbations = 0;
+  std::uint64_t seed = 1;  ///< the baseline's and the perturbations' random engines
+  int threads = 0;         ///< >= 0 (0: all cores); the answer does not depend on it
   /// Called with a stage ("greedy 3/12", "swaps, pass 2") from the calling thread, or empty.
   std::function<void(const std::string&)> progress;
 
@@ -173,6 +177,7 @@ struct PlacementResult {
   std::string search;                ///< "exhaustive" or "greedy+swap"
   std::vector<PlacementStep> steps;  ///< greedy construction (empty when exhaustive)
   int swaps = 0;                     ///< improving swaps made after the greedy
+  int improving_perturbations = 0;   ///< perturbation rounds that found a better answer
   long evaluations = 0;              ///< certified searches run (not counting the baseline)
   long subsets = 0;                  ///< feasible subsets searched exhaustively
   RandomBaseline random_baseline;
@@ -200,8 +205,8 @@ struct SurfaceSites {
 
 /// `count` area-uniform samples of `mesh` from an engine seeded with `seed`, thinned to
 /// `min_separation` (>= 0) in the order drawn; normals flipped when the mesh's signed volume is
-/// negative, then turned outward one site at a time by outward_normals() (site_filters.h). Throws InvalidArgument ("body: ...") for a bad mesh, count < 1, or a
-/// mesh of zero area.
+/// negative, then turned outward one site at a time by outward_normals() (site_filters.h). Throws
+/// InvalidArgument ("body: ...") for a bad mesh, count < 1, or a mesh of zero area.
 SurfaceSites sample_surface_sites(const Mesh& mesh, int count, double min_separation,
                                   std::uint64_t seed);
 
