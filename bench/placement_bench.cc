@@ -320,12 +320,14 @@ Sites l_prism_sites(int n, int markers) {
 }
 
 // `vantage place` (affine) against the annealer, energy t_upper, on the ellipsoid's sites
-// (range(2) 0) or the L-shaped prism's (1), the annealer running range(3) times place's time.
+// (range(2) 0) or the L-shaped prism's (1), the annealer running range(3) times place's time,
+// place with range(4) --perturbations.
 void BM_Place_AffineAgainstAnnealing(benchmark::State& state) {
   const Sites s = state.range(2) == 0 ? workspace_sites(state)
                                       : l_prism_sites(static_cast<int>(state.range(0)),
                                                       static_cast<int>(state.range(1)));
-  const design::PlaceOptions o = options();
+  design::PlaceOptions o = options();
+  o.perturbations = static_cast<int>(state.range(4));
   vantage_bench::AnnealSchedule schedule;
   schedule.start = 0.05;
   schedule.end = 0.0005;
@@ -352,9 +354,11 @@ BENCHMARK(BM_Place_Camera)->Args({1000, 8})->Unit(benchmark::kMillisecond)->Iter
 BENCHMARK(BM_Place_TrackerOneSearch)->Args({1000, 8})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Place_Tracker)->Args({1000, 8})->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_Place_AffineAgainstAnnealing)
-    ->Args({300, 8, 0, 1})
-    ->Args({300, 8, 1, 1})
-    ->Args({300, 8, 1, 20})
+    ->Args({300, 8, 0, 1, 0})
+    ->Args({300, 8, 1, 1, 0})
+    ->Args({300, 8, 1, 20, 0})
+    ->Args({300, 8, 0, 1, 20})
+    ->Args({300, 8, 1, 1, 20})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 BENCHMARK(BM_Place_TrackerAgainstAnnealing)
