@@ -62,10 +62,13 @@ bool OcclusionGrid::blocked(int marker, const Eigen::Vector3d& a) const {
   return blocked_[flag_at(marker, p.face, cell_index(p.u), cell_index(p.v))] != 0;
 }
 
+OcclusionGrid::Cells OcclusionGrid::cells(double u0, double u1, double v0, double v1) const {
+  return {cell_index(u0), cell_index(u1), cell_index(v0), cell_index(v1)};
+}
+
 OcclusionGrid::Span OcclusionGrid::span(int marker, int face, double u0, double u1, double v0,
                                         double v1) const {
-  const int i0 = cell_index(u0), i1 = cell_index(u1);
-  const int j0 = cell_index(v0), j1 = cell_index(v1);
+  const auto [i0, i1, j0, j1] = cells(u0, u1, v0, v1);
   const int count = sums_[sum_at(marker, face, i1 + 1, j1 + 1)] -
                     sums_[sum_at(marker, face, i0, j1 + 1)] -
                     sums_[sum_at(marker, face, i1 + 1, j0)] + sums_[sum_at(marker, face, i0, j0)];

@@ -13,12 +13,16 @@
 
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/cube_sphere.h"
+#include "vantage/visibility/internal/cone_classes.h"
 
 namespace vantage::tracker {
 namespace {
 
 constexpr int kTreMaxMarkers = 63;  // visible sets are bit masks of a 64-bit word
 constexpr double kTreInfinity = std::numeric_limits<double>::infinity();
+// A patch that meets at most this many cells of the occlusion grid is bounded cell by cell
+// (TreSearch::decide): at most 2 x 2 once patches are no wider than a cell.
+constexpr int kMaxPieces = 4;
 
 enum class TreSeen : std::uint8_t { kVisible, kHidden, kConeEdge, kMixed };
 
@@ -67,7 +71,8 @@ class TreSearch {
         fle_(fle),
         sign_(sign),
         options_(options),
-        n_(static_cast<int>(problem.points.cols())) {
+        n_(static_cast<int>(problem.points.cols())),
+        classes_(problem.normals, problem.cos_cone) {
     cone_angle_.resize(static_cast<std::size_t>(n_));
     for (int i = 0; i < n_; ++i)
       cone_angle_[static_cast<std::size_t>(i)] = std::acos(problem.cos_cone(i));
@@ -145,48 +150,105 @@ class TreSearch {
     }
   }
 
-  TreSeen decide(int i, const Eigen::Vector3d& c, double r, const Patch& p) const {
-    bool in_cone = problem_.cos_cone(i) <= -1.0;
-    if (!in_cone) {
-      const double delta =
-          std::atan2(c.cross(problem_.normals.col(i)).norm(), c.dot(problem_.normals.col(i)));
-      if (delta - r > cone_angle_[static_cast<std::size_t>(i)]) return TreSeen::kHidden;
-      in_cone = delta + r <= cone_angle_[static_cast<std::size_t>(i)];
-    }
-    if (problem_.occlusion == nullptr) return in_cone ? TreSeen::kVisible : TreSeen::kConeEdge;
-    switch (problem_.occlusion->span(problem_.occlusion_marker(i), p.face, p.u - p.h, p.u + p.h,
-                                     p.v - p.h, p.v + p.h)) {
-      case OcclusionGrid::Span::kBlocked:
-        return TreSeen::kHidden;
-      case OcclusionGrid::Span::kClear:
-        return in_cone ? TreSeen::kVisible : TreSeen::kConeEdge;
-      case OcclusionGrid::Span::kMixed:
-        break;
-    }
-    return TreSeen::kMixed;
+  // Marker i on the patch's cap by its cone alone: visible, hidden or at the cone's edge.
+  TreSeen decide_cone(int i, const Eigen::Vector3d& c, double r) const {
+    if (problem_.cos_cone(i) <= -1.0) return TreSeen::kVisible;
+    const double delta =
+        std::atan2(c.cross(problem_.normals.col(i)).norm(), c.dot(problem_.normals.col(i)));
+    if (delta - r > cone_angle_[static_cast<std::size_t>(i)]) return TreSeen::kHidden;
+    return delta + r <= cone_angle_[static_cast<std::size_t>(i)] ? TreSeen::kVisible
+                                                                 : TreSeen::kConeEdge;
   }
 
-  // The mixed markers grouped into units seen whole or not at all (§20): one normal and one
-  // cone, mixed at the cone's edge only.
-  std::vector<std::uint64_t> units(const std::vector<TreSeen>& seen) const {
-    std::vector<std::uint64_t> out;
-    std::vector<int> edge_of_unit;
+  // The cone's decisions with the occlusion grid's span of the whole patch.
+  std::vector<TreSeen> decide_spanned(const std::vector<TreSeen>& cone, const Patch& p) const {
+    std::vector<TreSeen> seen = cone;
+    for (int i = 0; i < n_; ++i) {
+      TreSeen& s = seen[static_cast<std::size_t>(i)];
+      if (s == TreSeen::kHidden) continue;
+      switch (problem_.occlusion->span(problem_.occlusion_marker(i), p.face, p.u - p.h, p.u + p.h,
+                                       p.v - p.h, p.v + p.h)) {
+        case OcclusionGrid::Span::kBlocked:
+          s = TreSeen::kHidden;
+          break;
+        case OcclusionGrid::Span::kClear:
+          break;
+        case OcclusionGrid::Span::kMixed:
+          s = TreSeen::kMixed;
+          break;
+      }
+    }
+    return seen;
+  }
+
+  // The markers' decisions on the patch: one vector for the whole patch, or, when the patch
+  // meets at most kMaxPieces cells of the occlusion grid, one per cell, each with that cell's
+  // flags. Every direction of the patch lies in one of the cells and is seen as its cell says,
+  // so the largest of the pieces' bounds bounds the patch; a marker blocked in one cell and clear
+  // in the next is then never counted as hidden together with another marker that is hidden only
+  // in the first (a combination no direction has, whose bound would never close).
+  std::vector<std::vector<TreSeen>> decide(const Eigen::Vector3d& c, double r,
+                                           const Patch& p) const {
+    std::vector<TreSeen> cone(static_cast<std::size_t>(n_));
+    for (int i = 0; i < n_; ++i) cone[static_cast<std::size_t>(i)] = decide_cone(i, c, r);
+    if (problem_.occlusion == nullptr) return {cone};
+    const OcclusionGrid::Cells cells =
+        problem_.occlusion->cells(p.u - p.h, p.u + p.h, p.v - p.h, p.v + p.h);
+    if ((cells.i1 - cells.i0 + 1) * (cells.j1 - cells.j0 + 1) > kMaxPieces) {
+      return {decide_spanned(cone, p)};
+    }
+    std::vector<std::vector<TreSeen>> pieces;
+    for (int i = cells.i0; i <= cells.i1; ++i) {
+      for (int j = cells.j0; j <= cells.j1; ++j) {
+        std::vector<TreSeen> seen = cone;
+        for (int m = 0; m < n_; ++m) {
+          if (problem_.occlusion->blocked_cell(problem_.occlusion_marker(m), p.face, i, j)) {
+            seen[static_cast<std::size_t>(m)] = TreSeen::kHidden;
+          }
+        }
+        pieces.push_back(std::move(seen));
+      }
+    }
+    return pieces;
+  }
+
+  // A unit of mixed markers, seen whole or not at all (§20): one marker mixed by the body, or the
+  // markers of one cone class mixed at their cone's edge only.
+  struct Unit {
+    std::uint64_t mask = 0;
+    int cone_class = -1;  ///< the class of a cone-edge unit, -1 for a marker mixed by the body
+  };
+
+  std::vector<Unit> units(const std::vector<TreSeen>& seen) const {
+    std::vector<Unit> out;
     for (int i = 0; i < n_; ++i) {
       const TreSeen s = seen[static_cast<std::size_t>(i)];
-      if (s == TreSeen::kMixed) out.push_back(std::uint64_t{1} << i);
+      const std::uint64_t bit = std::uint64_t{1} << i;
+      if (s == TreSeen::kMixed) out.push_back({bit, -1});
       if (s != TreSeen::kConeEdge) continue;
-      bool joined = false;
-      for (std::size_t u = 0; u < out.size() && !joined; ++u) {
-        const int j = edge_of_unit.size() > u ? edge_of_unit[u] : -1;
-        if (j >= 0 && problem_.normals.col(j) == problem_.normals.col(i) &&
-            problem_.cos_cone(j) == problem_.cos_cone(i)) {
-          out[u] |= std::uint64_t{1} << i;
-          joined = true;
+      const int k = classes_.of(i);
+      const auto same =
+          std::find_if(out.begin(), out.end(), [k](const Unit& u) { return u.cone_class == k; });
+      if (same != out.end()) {
+        same->mask |= bit;
+      } else {
+        out.push_back({bit, k});
+      }
+    }
+    return out;
+  }
+
+  // Pairs of choice bits (units) that cannot both be hidden: cone-edge units whose cones' hidden
+  // sides do not meet, so that every direction sees one of them.
+  std::vector<std::uint64_t> apart_pairs(const std::vector<Unit>& mixed) const {
+    std::vector<std::uint64_t> out;
+    for (std::size_t x = 0; x < mixed.size(); ++x) {
+      for (std::size_t y = x + 1; y < mixed.size(); ++y) {
+        const int a = mixed[x].cone_class, b = mixed[y].cone_class;
+        if (a >= 0 && b >= 0 && classes_.hidden_apart(a, b)) {
+          out.push_back(std::uint64_t{1} << x | std::uint64_t{1} << y);
         }
       }
-      if (!joined) out.push_back(std::uint64_t{1} << i);
-      edge_of_unit.resize(out.size(), -1);
-      if (!joined) edge_of_unit.back() = i;
     }
     return out;
   }
@@ -198,36 +260,19 @@ class TreSearch {
       const Eigen::Vector3d& w = problem_.workspace->axis;
       if (std::atan2(c.cross(w).norm(), c.dot(w)) - r > workspace_angle_) return;
     }
-    std::vector<TreSeen> seen(static_cast<std::size_t>(n_));
-    std::uint64_t certain = 0;
-    int possible = 0;
-    for (int i = 0; i < n_; ++i) {
-      seen[static_cast<std::size_t>(i)] = decide(i, c, r, p);
-      if (seen[static_cast<std::size_t>(i)] == TreSeen::kVisible) certain |= std::uint64_t{1} << i;
-      if (seen[static_cast<std::size_t>(i)] != TreSeen::kHidden) ++possible;
+    const std::vector<std::vector<TreSeen>> pieces = decide(c, r, p);
+    std::vector<const std::vector<TreSeen>*> possible;
+    for (const std::vector<TreSeen>& seen : pieces) {
+      const auto hidden = std::count(seen.begin(), seen.end(), TreSeen::kHidden);
+      if (n_ - hidden >= problem_.min_visible) possible.push_back(&seen);
     }
-    if (possible < problem_.min_visible) return;
+    if (possible.empty()) return;
     attain(c);
-    const std::vector<std::uint64_t> mixed = units(seen);
-    double bound = kTreInfinity;
-    if (static_cast<int>(mixed.size()) <= options_.max_enumerated_units) {
-      bound = -kTreInfinity;
-      const std::uint64_t choices = std::uint64_t{1} << mixed.size();
-      for (std::uint64_t choice = 0; choice < choices; ++choice) {
-        std::uint64_t mask = certain;
-        for (std::size_t u = 0; u < mixed.size(); ++u) {
-          if (choice >> u & 1u) mask |= mixed[u];
-        }
-        if (__builtin_popcountll(mask) < problem_.min_visible) continue;
-        const TreObjective& f = objective(mask);
-        if (!f.registrable) continue;
-        Eigen::Vector3d peak;
-        const double b = tre_cap_bound(f, c, r, &peak);
-        attain(peak);
-        bound = std::max(bound, b);
-      }
-      if (bound == -kTreInfinity) return;  // no registrable set: nothing tracked on the patch
+    double bound = -kTreInfinity;
+    for (const std::vector<TreSeen>* seen : possible) {
+      bound = std::max(bound, seen_bound(*seen, c, r));
     }
+    if (bound == -kTreInfinity) return;  // no registrable set: nothing tracked on the patch
     bound = std::min(bound, p.bound);
     if (have_best_ && bound <= best_value_ + tolerance()) {
       // Closed within the tolerance, not below the best: its bound stays part of the answer's.
@@ -238,6 +283,39 @@ class TreSearch {
     for (int k = 0; k < 4; ++k) {
       open_.push({p.face, p.u + ((k & 1) ? q : -q), p.v + ((k & 2) ? q : -q), q, bound});
     }
+  }
+
+  // The bound of s (c + a^T M a) on the cap (c, r) over every visible set that the decisions
+  // `seen` allow (the peaks attained on the way); -inf when none is registrable, +inf when the
+  // mixed units are too many to enumerate.
+  double seen_bound(const std::vector<TreSeen>& seen, const Eigen::Vector3d& c, double r) {
+    std::uint64_t certain = 0;
+    for (int i = 0; i < n_; ++i) {
+      if (seen[static_cast<std::size_t>(i)] == TreSeen::kVisible) certain |= std::uint64_t{1} << i;
+    }
+    const std::vector<Unit> mixed = units(seen);
+    if (static_cast<int>(mixed.size()) > options_.max_enumerated_units) return kTreInfinity;
+    const std::vector<std::uint64_t> apart = apart_pairs(mixed);
+    double bound = -kTreInfinity;
+    const std::uint64_t choices = std::uint64_t{1} << mixed.size();
+    for (std::uint64_t choice = 0; choice < choices; ++choice) {
+      if (std::any_of(apart.begin(), apart.end(),
+                      [choice](std::uint64_t pair) { return (choice & pair) == 0; })) {
+        continue;  // both hidden: no direction
+      }
+      std::uint64_t mask = certain;
+      for (std::size_t u = 0; u < mixed.size(); ++u) {
+        if (choice >> u & 1u) mask |= mixed[u].mask;
+      }
+      if (__builtin_popcountll(mask) < problem_.min_visible) continue;
+      const TreObjective& f = objective(mask);
+      if (!f.registrable) continue;
+      Eigen::Vector3d peak;
+      const double b = tre_cap_bound(f, c, r, &peak);
+      attain(peak);
+      bound = std::max(bound, b);
+    }
+    return bound;
   }
 
   TreExtreme result() {
@@ -266,6 +344,7 @@ class TreSearch {
   double sign_;
   TreSearchOptions options_;
   int n_;
+  visibility::internal::ConeClasses classes_;
   std::vector<double> cone_angle_;
   double workspace_angle_ = kPi;
   std::priority_queue<Patch> open_;

@@ -15,21 +15,6 @@ namespace {
 constexpr int kMaxFreeUnits = 48;
 // Up to this many mixed units, the bound takes the best of every choice of units (exact).
 constexpr int kMaxEnumeratedUnits = 12;
-// Two cones' hidden sides count as apart only this far (radians) beyond touching.
-constexpr double kApartMargin = 1e-12;
-
-// Open caps about -n of radius pi - theta, apart when their centres are at least the sum of the
-// radii apart. Opposite normals are decided exactly (n.a < c1 and n.a > -c2 never both hold
-// when c1 <= -c2).
-bool hidden_sides_apart(const Eigen::Vector3d& n1, double c1, const Eigen::Vector3d& n2,
-                        double c2) {
-  if (n1 == -n2) return c1 + c2 <= 0.0;
-  const double between = std::atan2(n1.cross(n2).norm(), n1.dot(n2));
-  const double t1 = std::acos(std::clamp(c1, -1.0, 1.0));
-  const double t2 = std::acos(std::clamp(c2, -1.0, 1.0));
-  return between >= 2.0 * kPi - t1 - t2 + kApartMargin;
-}
-
 // The mixed markers of a patch in units; unit index 0 stands for the certain markers.
 struct Units {
   int certain = 0;
@@ -153,27 +138,6 @@ double threshold(const Units& units, const Weights& w, int anchor, int size) {
 double sin_plus(double s, double cos_r, double sin_r) {
   if (s >= cos_r) return 1.0;
   return s * cos_r + std::sqrt(std::max(0.0, 1.0 - s * s)) * sin_r;
-}
-
-ConeClasses::ConeClasses(const Eigen::Matrix3Xd& normals, const Eigen::VectorXd& cos_cone) {
-  const auto n = static_cast<int>(normals.cols());
-  class_.resize(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    class_[i] = i;
-    for (int j = 0; j < i; ++j) {
-      if (normals.col(j) == normals.col(i) && cos_cone(j) == cos_cone(i)) {
-        class_[i] = class_[j];
-        break;
-      }
-    }
-  }
-  apart_.assign(static_cast<std::size_t>(n) * n, 0);
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) {
-      apart_[static_cast<std::size_t>(class_[i]) * n + class_[j]] =
-          hidden_sides_apart(normals.col(i), cos_cone(i), normals.col(j), cos_cone(j));
-    }
-  }
 }
 
 double needed_mixed_bound(const ConeClasses& classes, int min_visible, const PatchMarkers& patch) {

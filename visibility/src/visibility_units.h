@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "vantage/visibility/internal/cone_classes.h"
+
 namespace vantage::visibility::internal {
 
 /// A marker on a patch: certainly visible, certainly hidden, mixed, or mixed only at the edge
@@ -21,21 +23,6 @@ inline bool is_mixed(Seen s) { return s == Seen::kMixed || s == Seen::kConeEdge;
 /// sin(min(pi/2, asin s + r)) for s = |c.u| at a patch's centre and its radius r (cos r, sin r):
 /// the largest |a.u| on the patch (§14).
 double sin_plus(double s, double cos_r, double sin_r);
-
-/// The markers' cone classes (one normal and one cone, bit for bit) and which classes' hidden
-/// sides {a : n.a < cos theta} do not meet.
-class ConeClasses {
- public:
-  ConeClasses(const Eigen::Matrix3Xd& normals, const Eigen::VectorXd& cos_cone);
-  int of(int marker) const { return class_[static_cast<std::size_t>(marker)]; }
-  bool hidden_apart(int a, int b) const {
-    return apart_[static_cast<std::size_t>(a) * class_.size() + static_cast<std::size_t>(b)] != 0;
-  }
-
- private:
-  std::vector<int> class_;
-  std::vector<char> apart_;
-};
 
 /// What bound 2' reads on one patch.
 struct PatchMarkers {

@@ -45,6 +45,17 @@ class OcclusionGrid {
   enum class Span { kClear, kBlocked, kMixed };
   Span span(int marker, int face, double u0, double u1, double v0, double v1) const;
 
+  /// The cells [i0, i1] x [j0, j1] of a face that a rectangle of face coordinates touches, as
+  /// span() counts them.
+  struct Cells {
+    int i0, i1, j0, j1;
+  };
+  Cells cells(double u0, double u1, double v0, double v1) const;
+  /// The flag of cell (i, j) of a face.
+  bool blocked_cell(int marker, int face, int i, int j) const {
+    return blocked_[flag_at(marker, face, i, j)] != 0;
+  }
+
   /// The grid without marker `k` (the others keep their flags), for dropout analyses.
   OcclusionGrid without(int k) const;
 
