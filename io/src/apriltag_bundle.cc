@@ -78,7 +78,7 @@ void reject_unknown_fields(const YAML::Node& map, const std::string& where,
     if (std::find(allowed.begin(), allowed.end(), name) == allowed.end()) {
       std::string list;
       for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
-      fail(source, (where.empty() ? "" : where + ": ") + "unknown field \"" + name +
+      fail(source, (where.empty() ? "" : where + ": ") + "unknown field \"" + excerpt(name) +
                        "\" (expected " + list + ")");
     }
   }

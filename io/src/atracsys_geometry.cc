@@ -12,6 +12,7 @@
 #include "entry_labels.h"
 #include "json_fields.h"
 #include "vantage/analysis/common.h"
+#include "vantage/io/printable.h"
 
 namespace vantage::io {
 
@@ -72,8 +73,8 @@ IniSections read_sections(std::string_view text, const std::string& source) {
     const std::size_t equal = line.find('=');
     if (equal == std::string::npos) {
       fail(source, at_line(line_number) +
-                       ": expected a [section], a key=value line or a ';' comment, got \"" + line +
-                       "\"");
+                       ": expected a [section], a key=value line or a ';' comment, got \"" +
+                       excerpt(line) + "\"");
     }
     const std::string key = trim_blanks(std::string_view(line).substr(0, equal));
     if (current == nullptr) {
@@ -115,8 +116,8 @@ std::uint64_t read_integer(const IniSections::value_type& section, const std::st
   const std::uint64_t n = digits ? std::strtoull(text.c_str(), nullptr, 10) : 0;
   if (!digits || n < low || n > high) {
     fail(source, where(value, section.first, key) + ": expected an integer from " +
-                     std::to_string(low) + " to " + std::to_string(high) + ", got \"" + text +
-                     "\"");
+                     std::to_string(low) + " to " + std::to_string(high) + ", got \"" +
+                     excerpt(text) + "\"");
   }
   return n;
 }
@@ -134,7 +135,7 @@ Eigen::Vector3d read_point(const IniSections::value_type& section, const std::st
     if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE ||
         !std::isfinite(p(r))) {
       fail(source, where(value, section.first, axes[r]) +
-                       ": expected a finite number (mm), got \"" + text + "\"");
+                       ": expected a finite number (mm), got \"" + excerpt(text) + "\"");
     }
   }
   return p;

@@ -10,6 +10,7 @@
 #include "entry_labels.h"
 #include "json_fields.h"
 #include "vantage/analysis/common.h"
+#include "vantage/io/printable.h"
 
 namespace vantage::io {
 
@@ -139,8 +140,8 @@ void drop_header(std::vector<Row>& rows, const char* const* names, bool with_nor
     for (std::size_t c = 1; with_normals && c < rows.front().fields.size(); ++c) {
       if (lowercase(rows.front().fields[c]) != names[c]) {
         fail(source, where(rows.front(), "") + ": column " + std::to_string(c + 1) +
-                         " of the header is \"" + rows.front().fields[c] + "\", expected \"" +
-                         names[c] + "\" (name,x,y,z[,weight],nx,ny,nz)");
+                         " of the header is \"" + excerpt(rows.front().fields[c]) +
+                         "\", expected \"" + names[c] + "\" (name,x,y,z[,weight],nx,ny,nz)");
       }
     }
     rows.erase(rows.begin());
@@ -157,7 +158,7 @@ void read_values(const Row& row, const std::string& name, Eigen::Index column,
     double value = 0;
     if (!parse_number(row.fields[c], &value)) {
       fail(source, where(row, name) + ", " + names[c] + ": expected a finite number, got \"" +
-                       row.fields[c] + "\"");
+                       excerpt(row.fields[c]) + "\"");
     }
     if (c < 4) {
       layout->entries(static_cast<Eigen::Index>(c - 1), column) = value;

@@ -141,7 +141,7 @@ void reject_unknown_fields(const nlohmann::json& root, const std::string& source
   for (const auto& item : root.items()) {
     const bool known = std::any_of(allowed.begin(), allowed.end(),
                                    [&](const char* name) { return item.key() == name; });
-    if (!known) fail(source, "unknown field \"" + item.key() + "\"");
+    if (!known) fail(source, "unknown field \"" + excerpt(item.key()) + "\"");
   }
 }
 

@@ -19,4 +19,11 @@ std::string printable(const std::string& text) {
   return out;
 }
 
+std::string excerpt(const std::string& text) {
+  if (text.size() <= kExcerptBytes) return printable(text);
+  std::size_t cut = kExcerptBytes;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xc0) == 0x80) --cut;
+  return printable(text.substr(0, cut)) + "... (" + std::to_string(text.size()) + " bytes)";
+}
+
 }  // namespace vantage::io

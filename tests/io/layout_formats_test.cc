@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -157,6 +158,32 @@ TEST(LayoutFormats, SaveRefusesFormatsItCannotWriteAndWritesNothing) {
   }
   EXPECT_EQ(layout_write_format("a.json"), LayoutFormat::kJson);
   EXPECT_EQ(layout_write_format("a.Csv"), LayoutFormat::kCsv);
+}
+
+// Issue 36, item 8: a 50 MB single-line .ini value was echoed whole to stderr. A value quoted
+// from a file is cut to io::kExcerptBytes and its size said, in every reader.
+constexpr std::size_t kHugeValue = 5'000'000;
+constexpr std::size_t kShortMessage = 400;
+TEST(LayoutFormats, AHugeBadValueIsQuotedShort) {
+  Scratch scratch;
+  const std::string huge(kHugeValue, '7');
+  const std::pair<std::string, std::string> files[] = {
+      {"tool.ini", "[geometry]\ncount=" + huge + "x\n"},
+      {"tool.csv", "name,x,y,z\na,1,2," + huge + "x\nb,1,2,3\nc,3,4,5\n"},
+      {"tool.json", "{\"points\": [[0,0,0],[1,0,0],[0,1,0]], \"" + huge + "x\": 1}"},
+  };
+  for (const auto& [name, text] : files) {
+    std::ofstream(scratch.file(name)) << text;
+    try {
+      load_layout(scratch.file(name));
+      ADD_FAILURE() << name << " was read";
+    } catch (const InvalidArgument& e) {
+      const std::string message = e.what();
+      EXPECT_LT(message.size(), kShortMessage) << name;
+      EXPECT_THAT(message, HasSubstr("... (" + std::to_string(huge.size() + 1) + " bytes)"))
+          << name << ": " << message.substr(0, kShortMessage);
+    }
+  }
 }
 
 TEST(LayoutFormats, JsonStillReadsAsBefore) {

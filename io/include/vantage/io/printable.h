@@ -2,6 +2,7 @@
 
 /// User text quoted in an error message, kept on one line.
 
+#include <cstddef>
 #include <string>
 
 namespace vantage::io {
@@ -10,5 +11,13 @@ namespace vantage::io {
 /// (UTF-8 included) unchanged: file names, keys, option values and parser messages quoted in an
 /// InvalidArgument stay on one line.
 std::string printable(const std::string& text);
+
+/// Most bytes of file content that excerpt() quotes.
+constexpr std::size_t kExcerptBytes = 60;
+
+/// A value read from a file, quoted in an error message: printable(), and past kExcerptBytes its
+/// first kExcerptBytes bytes (never half a UTF-8 character) and "... (N bytes)", so that a
+/// 50 MB line does not become a 50 MB message.
+std::string excerpt(const std::string& text);
 
 }  // namespace vantage::io
