@@ -12,6 +12,7 @@
 #include "vantage/io/layout_file.h"
 #include "vantage/io/layout_formats.h"
 #include "vantage/io/mesh_file.h"
+#include "vantage/io/printable.h"
 #include "vantage/io/text_file.h"
 #include "vantage/report/json_number.h"
 #include "vantage/visibility/visibility_model.h"
@@ -34,6 +35,19 @@ auto place_against(const std::string& source, Call&& call) {
     return call();
   } catch (const InvalidArgument& e) {
     throw e.against(source);
+  }
+}
+
+// A file's own errors (cannot be read, cannot be parsed, bad content: every reader's message
+// starts with the file's name) named as the option that gave the file.
+template <typename Call>
+auto place_reading(const std::string& option, const std::string& path, Call&& call) {
+  try {
+    return call();
+  } catch (const InvalidArgument& e) {
+    const std::string message = e.what();
+    if (message.rfind(io::printable(path) + ": ", 0) == 0) place_refuse(option, message);
+    throw;
   }
 }
 
@@ -126,7 +140,8 @@ Layout place_sampled_sites(const Request& request, int* drawn, int* excluded) {
 // appended to the sites (their normals and cones from their file).
 std::vector<int> place_append_kept(const Request& request, Layout* sites) {
   if (request.keep.empty()) return {};
-  Layout kept = io::load_layout(request.keep);
+  Layout kept =
+      place_reading("--keep", request.keep, [&] { return io::load_layout(request.keep); });
   if (kept.mode != LayoutMode::kPoints || !kept.visibility) {
     place_refuse("--keep", request.keep +
                                ": expected points with \"normals\" (the markers already on "
@@ -528,7 +543,7 @@ Sites candidate_sites(const Request& request,
                       const std::function<void(Layout*)>& apply_visibility) {
   Sites out;
   if (!request.sites.empty()) {
-    out.layout = read_sites(request.sites);
+    out.layout = place_reading("--sites", request.sites, [&] { return read_sites(request.sites); });
     if (out.layout.mode != LayoutMode::kPoints) {
       place_refuse("--sites",
                    request.sites + ": expected a point layout (\"points\" with \"normals\")");

@@ -37,12 +37,12 @@ std::string shape_text(const Array& array) {
 
 }  // namespace
 
-std::string path_from(const py::object& path) {
+std::string path_from(const py::object& path, const char* keyword) {
   const py::object os = py::module_::import("os");
   try {
     return os.attr("fsdecode")(os.attr("fspath")(path)).cast<std::string>();
   } catch (const py::error_already_set&) {
-    throw InvalidArgument("path: expected a str or os.PathLike");
+    throw InvalidArgument(keyword, "expected a str or os.PathLike");
   }
 }
 

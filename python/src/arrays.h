@@ -15,8 +15,8 @@ namespace vantage::python {
 
 namespace py = pybind11;
 
-/// A str or os.PathLike as a path string; InvalidArgument otherwise.
-std::string path_from(const py::object& path);
+/// A str or os.PathLike as a path string; InvalidArgument naming `keyword` otherwise.
+std::string path_from(const py::object& path, const char* keyword);
 
 /// An n x Cols array (Cols = 2 or 3) as the Cols x n matrix the C++ library takes.
 template <int Cols>

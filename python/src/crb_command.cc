@@ -24,7 +24,13 @@ py::object crb(const py::object& layout_arg, const py::object& points, double di
                const py::object& tag_points, const py::object& bundle) {
   std::optional<camera::PoseCrbSweep> sweep;
   if (!sweep_distance.is_none()) {
-    const auto t = sweep_distance.cast<std::tuple<double, double, int>>();
+    std::tuple<double, double, int> t;
+    try {
+      t = sweep_distance.cast<std::tuple<double, double, int>>();
+    } catch (const py::cast_error&) {
+      throw InvalidArgument("sweep_distance",
+                            "expected (from, to, count): two distances and an int");
+    }
     sweep = camera::PoseCrbSweep{std::get<0>(t), std::get<1>(t), std::get<2>(t)};
     commands::check_limit("sweep_distance", sweep->count, commands::kMaxCrbSweepDistances, "crb",
                           allow_large, kPythonWords);

@@ -134,7 +134,7 @@ Layout layout_from_arguments(const py::object& layout, const py::object& vectors
         "layout: give a layout or vectors=/points= (with weights=, candidates=), not both");
   }
   if (py::isinstance<Layout>(layout)) return layout.cast<Layout>();
-  *source = path_from(layout);
+  *source = path_from(layout, "layout");
   const io::LayoutReadOptions options = read_options_from(read);
   try {
     return without_gil([&] { return io::load_layout(*source, options); });
@@ -217,7 +217,7 @@ void bind_layout_files(py::module_& module) {
   module.def(
       "save_layout",
       [](const Layout& layout, const py::object& path, bool overwrite) {
-        io::save_layout(path_from(path), layout, overwrite);
+        io::save_layout(path_from(path, "path"), layout, overwrite);
       },
       py::arg("layout"), py::arg("path"), py::kw_only(), py::arg("overwrite") = false,
       "Writes the layout in the format its extension names: .json (everything) or .csv "

@@ -40,11 +40,7 @@ InvalidArgument place_renamed(const InvalidArgument& e) {
 
 // A file path argument (str or os.PathLike), or "" for None.
 std::string place_path(const py::object& value, const char* field) {
-  if (value.is_none()) return "";
-  if (!py::isinstance<py::str>(value) && !py::hasattr(value, "__fspath__")) {
-    throw InvalidArgument(field, "expected a file path");
-  }
-  return py::module_::import("os").attr("fspath")(value).cast<std::string>();
+  return value.is_none() ? "" : path_from(value, field);
 }
 
 // exclude=: one path or a sequence of paths (--exclude, repeatable); None for none.

@@ -121,7 +121,7 @@ py::object orient(const py::object& model, const py::object& measured, const py:
 /// arguments of vantage.pose (absent fields left out), so that
 /// vantage.pose(**vantage.load_correspondences(path), method=...) works.
 py::dict load_correspondences(const py::object& path) {
-  const io::CorrespondenceFile file = io::read_correspondences(path_from(path));
+  const io::CorrespondenceFile file = io::read_correspondences(path_from(path, "path"));
   py::dict out;
   if (file.has_model) out["model"] = array_from_columns(file.model);
   if (file.has_measured) out["measured"] = array_from_columns(file.measured);

@@ -80,7 +80,8 @@ def test_weights_match_the_cli(vantage, name):
 @pytest.mark.parametrize("call, expected", [
     (lambda v: v.analyze(vectors=np.eye(3), swaps=0), "swaps: must be >= 1"),
     (lambda v: v.analyze(vectors=np.eye(3), pair_weighting="median"), "pair_weighting"),
-    (lambda v: v.analyze(np.eye(3)), "path: expected a str or os.PathLike"),
+    (lambda v: v.analyze(np.eye(3)), "layout: expected a str or os.PathLike"),
+    (lambda v: v.analyze(123), "layout: expected a str or os.PathLike"),
     (lambda v: v.analyze(str(LAYOUTS / "triad.json"), vectors=np.eye(3)), "not both"),
     (lambda v: v.design(vectors=np.eye(3), add=0), "add: must be >= 1"),
     (lambda v: v.design(vectors=np.eye(3), margin=-1), "margin"),

@@ -41,3 +41,7 @@ def test_crb_bad_input_names_the_argument(vantage):
     with pytest.raises(ValueError) as error:
         vantage.crb(CUBE, distance=2, focal=900, noise_px=0)
     assert error.value.field == "noise_px"
+    # Issue 36, item 8: a pair for the triple raised pybind11's "Unable to cast".
+    with pytest.raises(ValueError) as error:
+        vantage.crb(CUBE, distance=2, focal=900, noise_px=0.2, sweep_distance=(1, 2))
+    assert error.value.field == "sweep_distance"

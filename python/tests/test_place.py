@@ -98,6 +98,9 @@ def test_bad_input_raises_naming_the_keyword(vantage, tmp_path):
         ("cone_deg", dict(sites=str(CUBE_SITES), markers=4, cone_deg=200.0)),
         ("workspace", dict(sites=str(CUBE_SITES), markers=4, workspace=(0.0, 0.0, 1.0))),
         ("out", dict(sites=str(CUBE_SITES), markers=4, out=tmp_path / "none" / "o.json")),
+        # Issue 36, item 8: a directory given as a file named no argument.
+        ("keep", dict(sites=str(CUBE_SITES), markers=4, keep=tmp_path)),
+        ("sites", dict(sites=tmp_path, markers=4)),
     ]
     for field, kwargs in calls:
         with pytest.raises(ValueError) as error:

@@ -337,6 +337,11 @@ TEST(PlaceCli, BadInputGetsOneLineAndWritesNothing) {
       {"--out a directory", nullptr, "--sites sites.json --markers 4 --out adir --overwrite",
        "--out"},
       {"neither body nor sites", nullptr, "--markers 4 --out o.json", "BODY"},
+      // Issue 36, item 8: a directory given as a file named no option.
+      {"--sites a directory", nullptr, "--sites adir --markers 4 --out o.json",
+       "error: --sites: adir: is a directory"},
+      {"--keep a directory", nullptr, "--sites sites.json --markers 4 --keep adir --out o.json",
+       "error: --keep: adir: is a directory"},
       // Issue 36: said "points: need at least 3 points (2 free vectors)".
       {"one candidate", nullptr, one_candidate.c_str(), "--candidates: must be in [3, "},
       {"--out a CSV file (named once)", nullptr, "--sites sites.json --markers 4 --out o.csv",
