@@ -17,6 +17,7 @@
 #include "vantage/camera/pose_crb.h"
 #include "vantage/camera/pose_crb_tags.h"
 #include "vantage/commands/crb_json.h"
+#include "vantage/commands/point_text.h"
 
 namespace vantage::cli {
 
@@ -141,7 +142,7 @@ int run_crb(const CrbArgs& args) {
   }
   const Layout layout = args.input.read(args.file, args.allow_large);
   std::optional<Eigen::Vector3d> direction;
-  if (!args.direction.empty()) direction = parse_direction(args.direction, "--direction");
+  if (!args.direction.empty()) direction = commands::parse_direction(args.direction, "--direction");
   camera::PoseCrbReport report;
   try {
     report = camera::pose_crb_report(layout, args.camera.options(), direction, sweep);

@@ -49,18 +49,6 @@ std::optional<camera::PoseCrbSweep> CrbCameraArgs::sweep() const {
   return parse_sweep(sweep_distance);
 }
 
-Eigen::Vector3d parse_direction(const std::string& text, const std::string& option) {
-  std::istringstream in(text);
-  Eigen::Vector3d a;
-  char comma1 = 0, comma2 = 0;
-  if (!(in >> a.x() >> comma1 >> a.y() >> comma2 >> a.z()) || comma1 != ',' || comma2 != ',' ||
-      !(in >> std::ws).eof() || !a.allFinite() || a.norm() == 0.0) {
-    throw InvalidArgument(
-        option, "expected AX,AY,AZ, three finite numbers not all 0, got \"" + text + "\"");
-  }
-  return a.normalized();
-}
-
 camera::PoseCrbSweep parse_sweep(const std::string& text) {
   std::istringstream in(text);
   camera::PoseCrbSweep sweep;

@@ -36,9 +36,6 @@ struct CrbCameraArgs {
   std::optional<camera::PoseCrbSweep> sweep() const;
 };
 
-/// "AX,AY,AZ" as typed to a unit vector; InvalidArgument naming `option` otherwise.
-Eigen::Vector3d parse_direction(const std::string& text, const std::string& option);
-
 /// "D1:D2:N" as typed; InvalidArgument naming --sweep-distance otherwise.
 camera::PoseCrbSweep parse_sweep(const std::string& text);
 

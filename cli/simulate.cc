@@ -18,6 +18,7 @@
 #include "layout_input.h"
 #include "limits.h"
 #include "vantage/analysis/layout.h"
+#include "vantage/commands/point_text.h"
 #include "vantage/io/text_file.h"
 #include "vantage/simulate/layout_simulation.h"
 #include "vantage/simulate/visibility_json.h"
@@ -90,7 +91,7 @@ void check_args(const SimulateArgs& args) {
 /// The direction a of --viewpoint AX,AY,AZ (body toward the camera), or none for random|worst.
 std::optional<Eigen::Vector3d> fixed_viewpoint(const SimulateArgs& args) {
   if (args.viewpoint == "random" || args.viewpoint == "worst") return std::nullopt;
-  return parse_direction(args.viewpoint, "--viewpoint");
+  return commands::parse_direction(args.viewpoint, "--viewpoint");
 }
 
 simulate::LayoutSimulationOptions simulation_options(const SimulateArgs& args,

@@ -54,7 +54,7 @@ tracker::FleModel TreTargetArgs::parsed_fle() const {
 
 std::optional<Eigen::Vector3d> TreTargetArgs::parsed_direction() const {
   if (direction.empty()) return std::nullopt;
-  return parse_direction(direction, "--direction");
+  return commands::parse_direction(direction, "--direction");
 }
 
 InvalidArgument tre_option_error(const InvalidArgument& e, const std::string& file) {

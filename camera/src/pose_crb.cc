@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/scaling.h"
 #include "vantage/visibility/camera_visibility.h"
 #include "vantage/visibility/visibility.h"
 
@@ -15,12 +16,11 @@ namespace vantage::camera {
 
 namespace {
 
-Eigen::Vector3d unit_direction(const Eigen::Vector3d& a) {
-  const double norm = a.norm();
-  if (!(norm > 0.0) || !std::isfinite(norm)) {
-    throw InvalidArgument("direction", "must be a finite non-zero vector");
-  }
-  return a / norm;
+// a / |a| by its own scale (a 1e200 or 1e-300 long direction alike).
+Eigen::Vector3d checked_direction(const Eigen::Vector3d& a) {
+  const Eigen::Vector3d unit = unit_direction(a);
+  if (unit.isZero()) throw InvalidArgument("direction", "must be a finite non-zero vector");
+  return unit;
 }
 
 // A reference axis for the camera's x row: the coordinate axis least aligned with a.
@@ -125,7 +125,7 @@ bool PoseCrbModel::in_workspace(const Eigen::Vector3d& a) const {
 void camera_pose_toward(const Eigen::Vector3d& aim, const Eigen::Vector3d& direction,
                         double distance, Eigen::Matrix3d* R_camera_object,
                         Eigen::Vector3d* p_camera_object) {
-  const Eigen::Vector3d a = unit_direction(direction);
+  const Eigen::Vector3d a = checked_direction(direction);
   const Eigen::Vector3d z = -a;
   const Eigen::Vector3d reference = least_aligned_axis(a);
   const Eigen::Vector3d x = (reference - reference.dot(z) * z).normalized();
@@ -198,7 +198,7 @@ PoseCrbAt PoseCrbModel::at(const Eigen::Vector3d& direction, double distance) co
   const Impl& m = *impl_;
   m.check_distance(distance);
   PoseCrbAt out;
-  out.direction = unit_direction(direction);
+  out.direction = checked_direction(direction);
   out.rot_rms_deg = std::numeric_limits<double>::infinity();
   out.trans_rms = std::numeric_limits<double>::infinity();
   const Eigen::Vector3d c = m.centroid + distance * out.direction;

@@ -1,38 +1,27 @@
 #include "vantage/commands/visibility_options.h"
 
 #include <filesystem>
-#include <sstream>
+#include <optional>
 #include <vector>
 
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/scaling.h"
+#include "vantage/commands/point_text.h"
 #include "vantage/io/mesh_file.h"
 
 namespace vantage::commands {
 namespace {
 
 LayoutWorkspace visibility_parse_workspace(const std::string& text) {
-  std::vector<double> values;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    try {
-      std::size_t used = 0;
-      values.push_back(std::stod(item, &used));
-      if (used != item.size()) throw std::invalid_argument(item);
-    } catch (const std::exception&) {
-      throw InvalidArgument("--workspace",
-                            "expected AX,AY,AZ,DEG (four numbers), got \"" + text + "\"");
-    }
-  }
-  if (values.size() != 4) {
+  const std::optional<std::vector<double>> values = parse_numbers(text);
+  if (!values || values->size() != 4) {
     throw InvalidArgument("--workspace",
                           "expected AX,AY,AZ,DEG (four numbers), got \"" + text + "\"");
   }
   LayoutWorkspace out;
-  out.axis = unit_direction(Eigen::Vector3d(values[0], values[1], values[2]));
+  out.axis = unit_direction(Eigen::Vector3d((*values)[0], (*values)[1], (*values)[2]));
   if (out.axis.isZero()) throw InvalidArgument("--workspace", "the axis has zero length");
-  out.half_angle_deg = values[3];
+  out.half_angle_deg = (*values)[3];
   return out;
 }
 

@@ -300,6 +300,32 @@ TEST(HardeningCli, SkippedCrossCheckClaimsNothing) {
   EXPECT_THAT(run.out, Not(HasSubstr("agrees")));
 }
 
+// Issue 36, item 8: valid tiny and huge directions were refused by the command (std::stod
+// throws on a subnormal; |a|^2 of a 1e200 direction overflows) although files and Python take
+// them. Each now gives what the unit direction gives, byte for byte.
+TEST(HardeningCli, TinyAndHugeDirectionsAreTheUnitDirection) {
+  ScratchDir scratch;
+  const std::string drone = "analyze '" + kLayouts + "drone.json' --json --workspace ";
+  const std::string crb = "crb '" + kSatellite + "' --focal 1000 --noise-px 0.2 --distance 10 " +
+                          "--samples 500 --json --direction ";
+  const std::pair<std::string, std::string> same[] = {
+      {drone + "5e-324,0,0,30", drone + "1,0,0,30"},
+      {drone + "0,1e300,0,30", drone + "0,1,0,30"},
+      {crb + "1e200,0,0", crb + "1,0,0"},
+      {crb + "0,0,-1e-310", crb + "0,0,-1"},
+      {crb + "'0, 0 ,1'", crb + "0,0,1"},
+  };
+  for (const auto& [odd, unit] : same) {
+    const auto a = run_vantage(odd, scratch);
+    const auto b = run_vantage(unit, scratch);
+    EXPECT_EQ(a.status, 0) << odd << ": " << a.err;
+    EXPECT_EQ(a.out, b.out) << odd;
+  }
+  for (const char* bad : {"0,0,0", "1e400,0,0", "1,2", "1,2,3,4", "1,,2", "nan,0,1"}) {
+    expect_bad_input(run_vantage(crb + bad, scratch), "--direction: expected AX,AY,AZ");
+  }
+}
+
 TEST(HardeningCli, NoNegativeZeroInViewpoints) {
   // The fan's worst viewpoints lie in its plane: their z components are zero up to rounding
   // (of either sign) and must print as 0.000000.
