@@ -310,6 +310,14 @@ int run_design(const DesignArgs& args) {
   check_write_target(args);
   const Layout layout = args.input.read(args.file, args.allow_large);
   check_design_layout(args, layout);
+  if (layout.visibility || layout.workspace) {
+    // Issue 36, item 5: it augmented a body layout seen whole without a word.
+    std::cerr << "vantage: warning: design: " << args.file
+              << " has a visibility model (normals, cones, body or workspace) that design does "
+                 "not use: every marker counts as seen from every direction and the added "
+                 "markers have no normals (--seen-whole says so and silences this line)"
+              << std::endl;
+  }
   std::optional<io::WriteLock> lock;
   if (args.write_given) lock.emplace(args.write);
 #if VANTAGE_WITH_PLOT

@@ -286,7 +286,8 @@ TEST(DesignCli, LimitsComeFromTheEstimatedTimeNotFromCounts) {
 TEST(DesignCli, CandidatesOnlyPicksACandidateAndWritesItAsAMarker) {
   ScratchDir scratch;
   const auto json =
-      run_json("design '" + kSatellite + "' --add 1 --candidates-only --no-direct --write out.json",
+      run_json("design '" + kSatellite +
+                   "' --seen-whole --add 1 --candidates-only --no-direct --write out.json",
                scratch);
   expect_contract(json, 1);
   EXPECT_EQ(json["mode"], "points");
@@ -303,6 +304,22 @@ TEST(DesignCli, CandidatesOnlyPicksACandidateAndWritesItAsAMarker) {
   const auto again = run_json("design out.json --add 1 --candidates-only --no-direct", scratch);
   EXPECT_NEAR(again["initial"]["pbar_min"].get<double>(), json["final_pbar_min"].get<double>(),
               kSameLayout);
+}
+
+// Issue 36, item 5: design augmented a body layout seen whole (p-bar_min 0.931 where analyze
+// reports the body's value) and added markers without normals, saying neither.
+TEST(DesignCli, ABodyLayoutIsSaidToBeDesignedSeenWhole) {
+  ScratchDir scratch;
+  const std::string drone = "design '" + kLayouts + "drone.json' --add 1 --no-direct";
+  const auto run = run_vantage(drone, scratch);
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(testing::line_count(run.err), 1) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("vantage: warning: design: "));
+  EXPECT_THAT(run.err, HasSubstr("does not use"));
+  const auto seen_whole = run_vantage(drone + " --seen-whole", scratch);
+  EXPECT_EQ(seen_whole.status, 0);
+  EXPECT_EQ(seen_whole.err, "");
+  EXPECT_EQ(seen_whole.out, run.out);  // the same design: the warning says what was done
 }
 
 TEST(DesignCli, WriteRefusesToOverwriteUnlessTold) {
