@@ -18,6 +18,7 @@
 #include "vantage/commands/design_json.h"
 #include "vantage/design/augment.h"
 #include "vantage/io/layout_formats.h"
+#include "vantage/io/printable.h"
 #include "vantage/io/text_file.h"
 #include "vantage/tracker/identification.h"
 
@@ -312,10 +313,12 @@ int run_design(const DesignArgs& args) {
   check_design_layout(args, layout);
   if (layout.visibility || layout.workspace) {
     // Issue 36, item 5: it augmented a body layout seen whole without a word.
-    std::cerr << "vantage: warning: design: " << args.file
-              << " has a visibility model (normals, cones, body or workspace) that design does "
-                 "not use: every marker counts as seen from every direction and the added "
-                 "markers have no normals (--seen-whole says so and silences this line)"
+    std::cerr << "vantage: warning: design: " << io::printable(args.file)
+              << " has a visibility model (normals, cones, body or workspace) that the search "
+                 "does not use: every marker counts as seen from every direction, and an added "
+                 "marker gets a normal away from the markers' centroid and the widest cone, not "
+                 "a surface normal (--seen-whole drops the model, from --write's file too, and "
+                 "this line)"
               << std::endl;
   }
   std::optional<io::WriteLock> lock;

@@ -285,10 +285,14 @@ TEST(DesignCli, LimitsComeFromTheEstimatedTimeNotFromCounts) {
 
 TEST(DesignCli, CandidatesOnlyPicksACandidateAndWritesItAsAMarker) {
   ScratchDir scratch;
-  const auto json =
-      run_json("design '" + kSatellite +
-                   "' --seen-whole --add 1 --candidates-only --no-direct --write out.json",
-               scratch);
+  // The satellite has a body: design says in one line that it searches seen whole.
+  const auto run = run_vantage(
+      "design '" + kSatellite + "' --add 1 --candidates-only --no-direct --write out.json --json",
+      scratch);
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(testing::line_count(run.err), 1) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("vantage: warning: design: "));
+  const auto json = nlohmann::json::parse(run.out);
   expect_contract(json, 1);
   EXPECT_EQ(json["mode"], "points");
   const auto& step = json["steps"][0];
@@ -301,7 +305,8 @@ TEST(DesignCli, CandidatesOnlyPicksACandidateAndWritesItAsAMarker) {
   EXPECT_EQ(file["points"].back(), layout["candidates"][c]);
   // The used candidate is a marker now, not a place for another one.
   EXPECT_EQ(file["candidates"].size(), layout["candidates"].size() - 1);
-  const auto again = run_json("design out.json --add 1 --candidates-only --no-direct", scratch);
+  const auto again =
+      run_json("design out.json --seen-whole --add 1 --candidates-only --no-direct", scratch);
   EXPECT_NEAR(again["initial"]["pbar_min"].get<double>(), json["final_pbar_min"].get<double>(),
               kSameLayout);
 }
