@@ -12,6 +12,7 @@
 #include "layouts.h"
 #include "results.h"
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/scaling.h"
 #include "vantage/commands/tre_json.h"
 #include "vantage/tracker/tre_report.h"
 
@@ -77,7 +78,7 @@ py::object tre(const py::object& layout_arg, const py::object& points, const py:
   options.fle = tre_fle(fle_rms, fle_sigma);
   if (!direction.is_none()) {
     const Eigen::VectorXd d = vector_from_array(direction, "direction");
-    if (d.size() != 3 || !d.allFinite() || d.norm() == 0.0) {
+    if (d.size() != 3 || unit_direction(Eigen::Vector3d(d)).isZero()) {
       throw InvalidArgument("direction", "expected [ax, ay, az], finite, not all 0");
     }
     options.direction = Eigen::Vector3d(d);

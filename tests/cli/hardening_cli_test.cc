@@ -308,12 +308,17 @@ TEST(HardeningCli, TinyAndHugeDirectionsAreTheUnitDirection) {
   const std::string drone = "analyze '" + kLayouts + "drone.json' --json --workspace ";
   const std::string crb = "crb '" + kSatellite + "' --focal 1000 --noise-px 0.2 --distance 10 " +
                           "--samples 500 --json --direction ";
+  const std::string tre = "tre '" + std::string(VANTAGE_SOURCE_DIR) +
+                          "/examples/tools/ndi_like.json' --target 0,0,-150 --fle-rms 0.25 " +
+                          "--json --direction ";
   const std::pair<std::string, std::string> same[] = {
       {drone + "5e-324,0,0,30", drone + "1,0,0,30"},
       {drone + "0,1e300,0,30", drone + "0,1,0,30"},
       {crb + "1e200,0,0", crb + "1,0,0"},
       {crb + "0,0,-1e-310", crb + "0,0,-1"},
       {crb + "'0, 0 ,1'", crb + "0,0,1"},
+      {tre + "1e200,0,0", tre + "1,0,0"},
+      {tre + "0,-1e-200,0", tre + "0,-1,0"},
   };
   for (const auto& [odd, unit] : same) {
     const auto a = run_vantage(odd, scratch);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/scaling.h"
 
 namespace vantage::tracker {
 namespace {
@@ -40,7 +41,7 @@ bool TreOptions::is_valid(std::string* why) const {
     if (why != nullptr) *why = "fle." + inner;
     return false;
   }
-  if (direction && !(direction->allFinite() && direction->norm() > 0.0)) {
+  if (direction && unit_direction(*direction).isZero()) {
     if (why != nullptr) *why = "direction: must be finite and non-zero";
     return false;
   }
@@ -141,7 +142,7 @@ TreReport tre_report(const TreModel& model, const std::vector<Eigen::Vector3d>& 
       t.rms_isotropic = tre_rms_isotropic(problem.points, target, options.fle.rms());
     }
     if (options.direction) {
-      t.at_direction = model.at(target, options.direction->normalized());
+      t.at_direction = model.at(target, unit_direction(*options.direction));
     }
     t.extremes = tre_extremes(problem, target, options.fle, options.search);
     if (options.monte_carlo_trials > 0) {

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/scaling.h"
 
 namespace vantage::tracker {
 namespace {
@@ -118,7 +119,7 @@ TreSweeps tre_sweeps(const TreModel& model, const std::vector<Eigen::Vector3d>& 
   tip.curves.push_back(tre_extreme_curve(model, "best", first.extremes.best, tip_targets));
   if (options.direction) {
     tip.curves.push_back(
-        tre_sweep_curve(model, "direction", options.direction->normalized(), tip_targets));
+        tre_sweep_curve(model, "direction", unit_direction(*options.direction), tip_targets));
   }
   tip.rms_isotropic = tre_sweep_isotropic(model, tip_targets);
 
