@@ -38,15 +38,18 @@ auto place_against(const std::string& source, Call&& call) {
   }
 }
 
-// A file's own errors (cannot be read, cannot be parsed, bad content: every reader's message
-// starts with the file's name) named as the option that gave the file.
+// A file's own errors that name no field of it (cannot be read, a directory; every reader's
+// message starts with the file's name) named as the option that gave the file. Errors that name
+// a field of the file keep it (Python's ValueError.field, .index and .source).
 template <typename Call>
 auto place_reading(const std::string& option, const std::string& path, Call&& call) {
   try {
     return call();
   } catch (const InvalidArgument& e) {
     const std::string message = e.what();
-    if (message.rfind(io::printable(path) + ": ", 0) == 0) place_refuse(option, message);
+    if (e.field().empty() && message.rfind(io::printable(path) + ": ", 0) == 0) {
+      place_refuse(option, message);
+    }
     throw;
   }
 }

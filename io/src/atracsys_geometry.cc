@@ -64,8 +64,8 @@ IniSections read_sections(std::string_view text, const std::string& source) {
       if (current_name.empty()) fail(source, at_line(line_number) + ": empty section name");
       const auto [it, inserted] = sections.emplace(current_name, IniSection{line_number, {}});
       if (!inserted) {
-        fail(source, at_line(line_number) + ": [" + current_name + "] repeats the section of " +
-                         at_line(it->second.line));
+        fail(source, at_line(line_number) + ": [" + excerpt(current_name) +
+                         "] repeats the section of " + at_line(it->second.line));
       }
       current = &it->second;
       continue;
@@ -78,13 +78,16 @@ IniSections read_sections(std::string_view text, const std::string& source) {
     }
     const std::string key = trim_blanks(std::string_view(line).substr(0, equal));
     if (current == nullptr) {
-      fail(source, at_line(line_number) + ", " + key + ": a key before the first [section]");
+      fail(source,
+           at_line(line_number) + ", " + excerpt(key) + ": a key before the first [section]");
     }
-    if (key.empty()) fail(source, at_line(line_number) + ", [" + current_name + "]: empty key");
+    if (key.empty()) {
+      fail(source, at_line(line_number) + ", [" + excerpt(current_name) + "]: empty key");
+    }
     const auto [it, inserted] = current->keys.emplace(
         key, IniValue{line_number, trim_blanks(std::string_view(line).substr(equal + 1))});
     if (!inserted) {
-      fail(source, at_line(line_number) + ", [" + current_name + "] " + key +
+      fail(source, at_line(line_number) + ", [" + excerpt(current_name) + "] " + excerpt(key) +
                        ": repeats the key of " + at_line(it->second.line));
     }
   }
@@ -96,14 +99,14 @@ const IniValue& required_key(const IniSections::value_type& section, const std::
                              const std::string& source) {
   const auto it = section.second.keys.find(key);
   if (it == section.second.keys.end()) {
-    fail(source,
-         "[" + section.first + "] (" + at_line(section.second.line) + "): no " + key + " key");
+    fail(source, "[" + excerpt(section.first) + "] (" + at_line(section.second.line) + "): no " +
+                     key + " key");
   }
   return it->second;
 }
 
 std::string where(const IniValue& value, const std::string& section, const std::string& key) {
-  return at_line(value.line) + ", [" + section + "] " + key;
+  return at_line(value.line) + ", [" + excerpt(section) + "] " + excerpt(key);
 }
 
 /// A decimal integer in [low, high] (digits only).

@@ -129,7 +129,7 @@ bool is_header(const Row& row) {
 }
 
 std::string where(const Row& row, const std::string& name) {
-  return "line " + std::to_string(row.line) + (name.empty() ? "" : " (" + name + ")");
+  return "line " + std::to_string(row.line) + (name.empty() ? "" : " (" + excerpt(name) + ")");
 }
 
 /// Drops a header row (is_header()); with normals it must name the columns (names).

@@ -171,6 +171,9 @@ TEST(LayoutFormats, AHugeBadValueIsQuotedShort) {
       {"tool.ini", "[geometry]\ncount=" + huge + "x\n"},
       {"tool.csv", "name,x,y,z\na,1,2," + huge + "x\nb,1,2,3\nc,3,4,5\n"},
       {"tool.json", "{\"points\": [[0,0,0],[1,0,0],[0,1,0]], \"" + huge + "x\": 1}"},
+      {"key.ini", huge + "x=1\n[geometry]\ncount=3\n"},
+      {"section.ini", "[geometry]\ncount=3\n[" + huge + "x]\n[" + huge + "x]\n"},
+      {"name.csv", "name,x,y,z\n" + huge + "x,1,2,q\nb,1,2,3\nc,3,4,5\n"},
   };
   for (const auto& [name, text] : files) {
     std::ofstream(scratch.file(name)) << text;
