@@ -311,14 +311,9 @@ int run_design(const DesignArgs& args) {
   check_write_target(args);
   const Layout layout = args.input.read(args.file, args.allow_large);
   check_design_layout(args, layout);
-  if (layout.visibility || layout.workspace) {
-    // Issue 36, item 5: it augmented a body layout seen whole without a word.
-    std::cerr << "vantage: warning: design: " << io::printable(args.file)
-              << " has a visibility model (normals, cones, body or workspace) that the search "
-                 "does not use: every marker counts as seen from every direction, and an added "
-                 "marker gets a normal away from the markers' centroid and the widest cone, not "
-                 "a surface normal (--seen-whole drops the model, from --write's file too, and "
-                 "this line)"
+  if (const std::optional<std::string> warning = design_json::unused_visibility_warning(layout)) {
+    std::cerr << "vantage: warning: design: " << io::printable(args.file) << ": " << *warning
+              << " (--seen-whole drops the model, from --write's file too, and this line)"
               << std::endl;
   }
   std::optional<io::WriteLock> lock;

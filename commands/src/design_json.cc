@@ -157,4 +157,11 @@ Json weights(const Json& source, const Layout& layout, const design::Weights& w)
 
 Layout layout_to_write(const design::AugmentResult& result) { return result.augmented; }
 
+std::optional<std::string> unused_visibility_warning(const Layout& layout) {
+  if (!layout.visibility && !layout.workspace) return std::nullopt;
+  return "the layout has a visibility model (normals, cones, body or workspace) that the search "
+         "does not use: every marker counts as seen from every direction, and an added marker "
+         "gets a normal away from the markers' centroid and the widest cone, not a surface normal";
+}
+
 }  // namespace vantage::design_json

@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <optional>
 
 #include "arrays.h"
 #include "layouts.h"
@@ -109,6 +110,9 @@ py::object design_layout(const py::object& layout_arg, const py::object& vectors
   options.min_distance_difference = min_distance_difference;
   std::string why;
   if (!options.is_valid(&why)) throw InvalidArgument(why);
+  if (const std::optional<std::string> warning = design_json::unused_visibility_warning(layout)) {
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, warning->c_str(), 1) < 0) throw py::error_already_set();
+  }
   const design::AugmentResult r = without_gil([&] {
     try {
       return design::augment_layout(layout, options);

@@ -70,6 +70,12 @@ def test_design_matches_the_cli_and_its_layout_reanalyses(vantage, tmp_path):
     assert final.pbar_min == pytest.approx(result.final_pbar_min, abs=1e-9)
 
 
+def test_design_of_a_body_layout_warns_that_it_searches_seen_whole(vantage):
+    # Issue 36, item 5: the CLI's warning line, as a RuntimeWarning.
+    with pytest.warns(RuntimeWarning, match="does not use"):
+        vantage.design(str(LAYOUTS / "drone.json"), add=1, direct=False)
+
+
 @pytest.mark.parametrize("name", ["triad.json", "satellite.json", "mocap_rigid_body.csv",
                                   "apriltag_cube.yaml", "coplanar_fan.json"])
 def test_weights_match_the_cli(vantage, name):

@@ -6,6 +6,8 @@
 // (vantage.design, vantage.weights), so that both print exactly the same fields.
 
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
 
 #include "vantage/analysis/layout.h"
 #include "vantage/design/augment.h"
@@ -23,6 +25,11 @@ Json design(const Json& source, const Layout& layout, bool direct_asked,
 
 /// The report of the Prop. 3 weights `w` of `layout`; `source` as in design().
 Json weights(const Json& source, const Layout& layout, const design::Weights& w);
+
+/// What design says of a layout with a visibility model (normals, cones, body or workspace),
+/// which its search does not use (issue 36): the sentence the command prints as a warning line
+/// and Python raises as a RuntimeWarning; nullopt for a layout seen whole.
+std::optional<std::string> unused_visibility_warning(const Layout& layout);
 
 /// The augmented layout as written: the greedy additions appended, the candidates that were used
 /// dropped (they are markers or directions of the layout now): AugmentResult::augmented.
