@@ -160,14 +160,18 @@ visibility::VisibilityProblem capsule_sites() {
 
 // A certificate of a few thousand patches, not the budget.
 constexpr long kFewPatches = 100000;
-TEST(TreSearch, OppositeConesAreNeverHiddenTogether) {
-  const visibility::VisibilityProblem problem = capsule_sites();
-  ASSERT_EQ(problem.normals.col(3), -problem.normals.col(7));
-  const Eigen::Vector3d target(0.0, 0.0, -3.0);
+void expect_certified_in_few_patches(const visibility::VisibilityProblem& problem,
+                                     const Eigen::Vector3d& target) {
   const FleModel fle = FleModel::isotropic(0.25);
   const TreExtremes e = tre_extremes(problem, target, fle);
   EXPECT_LT(e.worst.patches, kFewPatches);
   expect_extremes_hold(problem, target, fle, e);
+}
+
+TEST(TreSearch, OppositeConesAreNeverHiddenTogether) {
+  const visibility::VisibilityProblem problem = capsule_sites();
+  ASSERT_EQ(problem.normals.col(3), -problem.normals.col(7));
+  expect_certified_in_few_patches(problem, Eigen::Vector3d(0.0, 0.0, -3.0));
 }
 
 // Two markers that the body hides in complementary cells of the occlusion grid (marker 4 where
@@ -190,11 +194,7 @@ TEST(TreSearch, ComplementaryShadowsAreNeverHiddenTogether) {
   }
   grid.finish();
   problem.occlusion = &grid;
-  const Eigen::Vector3d target(0.0, 0.0, -120.0);
-  const FleModel fle = FleModel::isotropic(0.25);
-  const TreExtremes e = tre_extremes(problem, target, fle);
-  EXPECT_LT(e.worst.patches, kFewPatches);
-  expect_extremes_hold(problem, target, fle, e);
+  expect_certified_in_few_patches(problem, Eigen::Vector3d(0.0, 0.0, -120.0));
 }
 
 // The TRE is homogeneous: markers, target and FLE all scaled by s scale every RMS by s. At the
