@@ -58,7 +58,8 @@ void print_report(const std::string& name, const camera::PoseCrbReport& r) {
             << format_number(map.trackable_fraction, 4) << "\n\n";
   if (r.at_direction) std::cout << "at direction     " << bound_line(*r.at_direction) << "\n";
   if (map.status != camera::PoseCrbMap::Status::kOk) {
-    std::cout << "no sampled direction is trackable\n";
+    std::cout << "not trackable    " << camera::to_string(map.status) << ": "
+              << camera::untrackable_reason(map, r.camera.distance) << "\n";
   } else {
     std::cout << "worst direction  " << bound_line(map.worst) << "\n"
               << "best direction   " << bound_line(map.best) << "\n"
@@ -169,6 +170,13 @@ int run_crb(const CrbArgs& args) {
   } else {
     print_report(layout.name.empty() ? args.file : layout.name, report);
     if (args.sweep_tags) print_tag_sweep(faces, tag_rows);
+  }
+  // Issue 36: nothing trackable exited 0, and ill-conditioning was called untrackable; as
+  // analyze and tre do, the report is printed and the reason given, exit 1.
+  if (report.map.status != camera::PoseCrbMap::Status::kOk) {
+    std::cerr << "vantage: crb: " << camera::untrackable_reason(report.map, report.camera.distance)
+              << std::endl;
+    return kExitFailure;
   }
   return kExitOk;
 }

@@ -32,7 +32,7 @@ void print_camera_objective(const PlaceArgs& args, const place_json::Outcome& ou
             << " --noise-px " << format_number(c.noise_px, 9) << " --samples " << c.samples
             << " --aim " << aim_option(*c.aim) << "):\n";
   if (map.status != camera::PoseCrbMap::Status::kOk) {
-    std::cout << "  untrackable from every sampled direction\n";
+    std::cout << "  not trackable: " << camera::untrackable_reason(map, c.distance) << "\n";
     return;
   }
   std::cout << "  " << args.statistic << " rot_rms   " << format_number(outcome.objective_value, 6)

@@ -202,7 +202,8 @@ void print_crb_plot(const PlotArgs& args, const Layout& layout, const plot::CrbF
     std::cout << "worst rot_rms " << format_number(map.worst.rot_rms_deg, 4) << " deg, p50 "
               << format_number(map.percentiles.p50, 4) << " deg\n";
   } else {
-    std::cout << "no sampled direction is trackable\n";
+    std::cout << "not trackable: "
+              << camera::untrackable_reason(map, figures.report.camera.distance) << "\n";
   }
   print_figure_files(figures.files, options.format);
 }

@@ -39,15 +39,17 @@ std::optional<CrbOptionViolation> first_violation(const PoseCrbOptions& o) {
   if (!(o.distance > 0.0) || !std::isfinite(o.distance)) {
     return CrbOptionViolation{"distance", "must be > 0 and finite"};
   }
-  if (!(o.focal_length > 0.0) || !std::isfinite(o.focal_length)) {
-    return CrbOptionViolation{"focal_length", "must be > 0 and finite"};
+  // F is a sum of f^2 terms over S^2: f and S in [1e-50, 1e50] keep every product finite.
+  if (!(o.focal_length >= PoseCrbOptions::kMinPixels) ||
+      !(o.focal_length <= PoseCrbOptions::kMaxPixels)) {
+    return CrbOptionViolation{"focal_length", "must be in [1e-50, 1e50] pixels"};
   }
   if (!o.principal_point.allFinite()) {
     return CrbOptionViolation{"principal_point", "must be finite"};
   }
   if (o.aim && !o.aim->allFinite()) return CrbOptionViolation{"aim", "must be finite"};
-  if (!(o.noise_px > 0.0) || !std::isfinite(o.noise_px)) {
-    return CrbOptionViolation{"noise_px", "must be > 0 and finite"};
+  if (!(o.noise_px >= PoseCrbOptions::kMinPixels) || !(o.noise_px <= PoseCrbOptions::kMaxPixels)) {
+    return CrbOptionViolation{"noise_px", "must be in [1e-50, 1e50] pixels"};
   }
   if (o.samples < 100 || o.samples > 10'000'000) {
     return CrbOptionViolation{"samples", "must be in [100, 10000000]"};
@@ -234,7 +236,10 @@ void complete_pose_crb(const Eigen::Matrix<double, 6, 6>& F1, double noise_px, d
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(F_scaled);
   const double largest = eig.eigenvalues()(5);
   const double smallest = eig.eigenvalues()(0);
-  if (!(smallest > 0.0) || largest > PoseCrbAt::kMaxCondition * smallest) return;
+  if (!(smallest > 0.0) || !(largest <= PoseCrbAt::kMaxCondition * smallest)) {
+    out->ill_conditioned = true;
+    return;
+  }
   const Eigen::Matrix<double, 6, 6> C_scaled = eig.eigenvectors() *
                                                eig.eigenvalues().cwiseInverse().asDiagonal() *
                                                eig.eigenvectors().transpose();

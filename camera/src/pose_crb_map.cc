@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <sstream>
+#include <string>
 
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/parallel.h"
@@ -137,7 +139,41 @@ double nearest_rank(const std::vector<double>& sorted, double q) {
 }
 
 const char* to_string(PoseCrbMap::Status status) {
-  return status == PoseCrbMap::Status::kOk ? "ok" : "untrackable";
+  switch (status) {
+    case PoseCrbMap::Status::kOk:
+      return "ok";
+    case PoseCrbMap::Status::kUntrackable:
+      return "untrackable";
+    case PoseCrbMap::Status::kIllConditioned:
+      return "ill_conditioned";
+  }
+  return "untrackable";
+}
+
+std::string untrackable_reason(const PoseCrbMap& map, double distance) {
+  switch (map.status) {
+    case PoseCrbMap::Status::kOk:
+      return "";
+    case PoseCrbMap::Status::kUntrackable:
+      if (map.samples.empty()) {
+        return "no sampled direction lies in the workspace (it is narrower than the lattice's "
+               "spacing; more --samples)";
+      }
+      return "no sampled direction of the workspace sees enough markers (" +
+             std::to_string(map.samples.size()) + " sampled)";
+    case PoseCrbMap::Status::kIllConditioned:
+      break;
+  }
+  static_assert(PoseCrbAt::kMaxCondition == 1e12, "the sentence below quotes it");
+  const auto ill = std::count_if(map.samples.begin(), map.samples.end(),
+                                 [](const PoseCrbAt& at) { return at.ill_conditioned; });
+  std::ostringstream out;
+  out << ill << " of the " << map.samples.size()
+      << " sampled directions of the workspace see enough markers, but at each the Fisher "
+         "information's condition number exceeds "
+      << "1e12: the pose is not determined to first order at distance " << distance
+      << " (the markers subtend too small an angle, or are degenerate)";
+  return out.str();
 }
 
 PoseCrbMap pose_crb_map(const PoseCrbModel& model) {
@@ -149,7 +185,12 @@ PoseCrbMap pose_crb_map(const PoseCrbModel& model, double distance) {
   PoseCrbMap map;
   map.samples = sample_workspace(model, distance);
   const std::vector<int> order = trackable_by_bound(map.samples);
-  if (map.samples.empty() || order.empty()) return map;
+  if (map.samples.empty() || order.empty()) {
+    const bool ill = std::any_of(map.samples.begin(), map.samples.end(),
+                                 [](const PoseCrbAt& at) { return at.ill_conditioned; });
+    if (ill) map.status = PoseCrbMap::Status::kIllConditioned;
+    return map;
+  }
   map.status = PoseCrbMap::Status::kOk;
   map.trackable_fraction =
       static_cast<double>(order.size()) / static_cast<double>(map.samples.size());

@@ -51,6 +51,7 @@ Json report(const camera::PoseCrbReport& r) {
   if (r.at_direction) out["at_direction"] = at_direction(*r.at_direction, true);
   const bool ok = r.map.status == camera::PoseCrbMap::Status::kOk;
   out["status"] = camera::to_string(r.map.status);
+  if (!ok) out["message"] = camera::untrackable_reason(r.map, r.camera.distance);
   out["worst"] = ok ? at_direction(r.map.worst, false) : Json(nullptr);
   out["best"] = ok ? at_direction(r.map.best, false) : Json(nullptr);
   out["trackable_fraction"] = r.map.trackable_fraction;

@@ -676,7 +676,8 @@ std::string failure_message(const design::PlacementResult& result, const PlacedL
                : "the placed layout's worst TRE is not certified at every target";
   }
   if (placed.crb) {
-    return "the placed layout is trackable from no sampled direction of the camera's workspace";
+    return "the placed layout is not trackable by the camera: " +
+           camera::untrackable_reason(*placed.crb, placed.camera->distance);
   }
   const visibility::VisibilityReport& v = *placed.report.visibility;
   return "the placed layout's analysis is not certified: " + v.message();

@@ -116,7 +116,10 @@ void draw_legends(Canvas& canvas, const camera::PoseCrbReport& report,
   const PoseCrbMap& map = report.map;
   std::vector<Entry> left;
   if (map.status != PoseCrbMap::Status::kOk) {
-    left.push_back(Entry::text_only("no sampled direction is trackable"));
+    left.push_back(Entry::text_only(
+        map.status == PoseCrbMap::Status::kIllConditioned
+            ? "no sampled direction is trackable: the pose is not determined to first order"
+            : "no sampled direction is trackable"));
   } else {
     left.push_back(Entry::marker("worst direction: " + at_summary(map.worst) + " (refined)",
                                  kWorstViewpointColour));

@@ -60,6 +60,8 @@ py::object crb(const py::object& layout_arg, const py::object& points, double di
     try {
       return camera::pose_crb_report(layout, options, a, sweep);
     } catch (const InvalidArgument& e) {
+      // The library's field is the option's: focal_length is the keyword focal.
+      if (e.field() == "focal_length") throw e.renamed("focal", std::nullopt);
       throw source.empty() || e.field() != "vectors" ? e : e.against(source);
     }
   });

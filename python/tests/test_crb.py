@@ -45,3 +45,17 @@ def test_crb_bad_input_names_the_argument(vantage):
     with pytest.raises(ValueError) as error:
         vantage.crb(CUBE, distance=2, focal=900, noise_px=0.2, sweep_distance=(1, 2))
     assert error.value.field == "sweep_distance"
+    # Issue 36, item 5: f^2 / S^2 overflowed and every direction was "untrackable".
+    with pytest.raises(ValueError) as error:
+        vantage.crb(CUBE, distance=2, focal=1e300, noise_px=0.3)
+    assert error.value.field == "focal"
+
+
+def test_crb_says_when_the_pose_is_not_determined(vantage):
+    # Issue 36, item 5: a camera 1e5 away sees the markers but cannot determine the pose; the
+    # status says so (the CLI's exit status 1), with the CLI's message.
+    result = vantage.crb(CUBE, distance=1e5, focal=900, noise_px=0.3, samples=500)
+    assert result.status == "ill_conditioned"
+    assert result.worst is None
+    assert "not determined to first order" in result.message
+    assert vantage.crb(CUBE, distance=2, focal=900, noise_px=0.3, samples=500).message is None

@@ -59,13 +59,15 @@ class CrbSweepRow(_JsonView):
 
 class CrbReport(_JsonView):
     """The pose Cramér–Rao bound over every viewpoint (``vantage crb --json``; C++
-    camera::PoseCrbReport; docs/math.md §22)."""
+    camera::PoseCrbReport; docs/math.md §22). status is 'ok', 'untrackable' or 'ill_conditioned'
+    (then ``message`` says why; None when ok)."""
 
     def __init__(self, fields: Mapping[str, Any]) -> None:
         super().__init__(fields)
         self.camera: Dict[str, Any] = dict(fields["camera"])
         self.markers: int = int(fields["markers"])
         self.status: str = str(fields["status"])
+        self.message: Optional[str] = _text(fields.get("message"))
         self.at_direction: Optional[CrbBound] = (
             CrbBound(fields["at_direction"]) if "at_direction" in fields else None)
         self.worst: Optional[CrbBound] = (

@@ -126,6 +126,38 @@ TEST(CrbCli, TagSweepHasOneRowPerTiling) {
               own["worst"]["rot_rms_deg"].get<double>(), 1e-9);
 }
 
+// Issue 36, item 5: at 1e5 (the cube is 1e-6 of the distance) every direction that sees enough
+// markers fails the condition test. That was reported as "no sampled direction is trackable",
+// exit 0, the same words as a layout that no direction sees; it is now said which, exit 1.
+TEST(CrbCli, IllConditioningIsToldApartFromVisibility) {
+  ScratchDir scratch;
+  const CliRun far =
+      run_vantage("crb " + kCube + " --distance 1e5 --focal 900 --noise-px 0.3", scratch);
+  EXPECT_EQ(far.status, 1);
+  EXPECT_THAT(far.out, HasSubstr("not trackable    ill_conditioned: "));
+  EXPECT_THAT(far.err, HasSubstr("condition number exceeds 1e12"));
+  EXPECT_EQ(testing::line_count(far.err), 1) << far.err;
+  const CliRun far_json =
+      run_vantage("crb " + kCube + " --distance 1e5 --focal 900 --noise-px 0.3 --json", scratch);
+  EXPECT_EQ(far_json.status, 1);
+  const nlohmann::json j = nlohmann::json::parse(far_json.out);
+  EXPECT_EQ(j["status"], "ill_conditioned");
+  EXPECT_THAT(j["message"].get<std::string>(), HasSubstr("not determined to first order"));
+  EXPECT_TRUE(j["worst"].is_null());
+
+  // Markers no direction sees (every cone faces away from the only direction the workspace
+  // holds): untrackable, and said so.
+  scratch.write("away.json", R"({"points": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]],
+      "normals": [[0, 0, -1], [0, 0, -1], [0, 0, -1], [0, 0, -1]],
+      "visibility": {"cone_half_angle_deg": 60, "min_visible": 3},
+      "workspace": {"axis": [0, 0, 1], "half_angle_deg": 20}})");
+  const CliRun away = run_vantage("crb " + scratch.path("away.json") + kCamera, scratch);
+  EXPECT_EQ(away.status, 1);
+  EXPECT_THAT(away.out, HasSubstr("not trackable    untrackable: "));
+  EXPECT_THAT(away.err, HasSubstr("sees enough markers"));
+  EXPECT_EQ(testing::line_count(away.err), 1) << away.err;
+}
+
 TEST(CrbCli, BadInputIsOneLineNamingTheOption) {
   ScratchDir scratch;
   const BadCall calls[] = {
@@ -157,6 +189,12 @@ TEST(CrbCli, BadInputIsOneLineNamingTheOption) {
        "--tag-fill: takes effect only with --sweep-tags"},
       {"not tag corners", R"({"points": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]})",
        "in.json --distance 5 --focal 900 --noise-px 1 --sweep-tags", "names"},
+      // Issue 36, item 5: f^2 / S^2 overflowed and the map said "no sampled direction is
+      // trackable", exit 0.
+      {"huge focal", nullptr, "--distance 2 --focal 1e300 --noise-px 0.3",
+       "--focal: must be in [1e-50, 1e50] pixels"},
+      {"tiny noise", nullptr, "--distance 2 --focal 900 --noise-px 1e-300",
+       "--noise-px: must be in [1e-50, 1e50] pixels"},
   };
   for (const BadCall& call : calls) {
     SCOPED_TRACE(call.name);

@@ -38,10 +38,10 @@ namespace vantage::camera {
 /// Options of the pose CRB (the camera and the search).
 struct PoseCrbOptions {
   double distance = 0.0;      ///< D, layout units, > the layout's radius about its centroid
-  double focal_length = 0.0;  ///< f, pixels, > 0
+  double focal_length = 0.0;  ///< f, pixels, in [kMinPixels, kMaxPixels]
   /// Principal point, pixels, finite (the bound does not depend on it; it is reported).
   Eigen::Vector2d principal_point = Eigen::Vector2d::Zero();
-  double noise_px = 0.0;  ///< S, pixels per coordinate, > 0
+  double noise_px = 0.0;  ///< S, pixels per coordinate, in [kMinPixels, kMaxPixels]
   /// o, the point the camera looks at (object frame, finite); none: the markers' centroid.
   std::optional<Eigen::Vector3d> aim;
   /// Fibonacci directions of the map over the whole sphere (those in the workspace count),
@@ -54,6 +54,10 @@ struct PoseCrbOptions {
 
   /// True when every field is in range; otherwise *why names the field and the constraint.
   bool is_valid(std::string* why = nullptr) const;
+
+  /// The range of f and S (F sums f^2 / S^2 terms: inside it no product overflows).
+  static constexpr double kMinPixels = 1e-50;
+  static constexpr double kMaxPixels = 1e50;
 };
 
 /// The bound at one viewing direction.
@@ -63,6 +67,9 @@ struct PoseCrbAt {
   /// In the workspace, at least max(3, min_visible) visible markers, and F not singular:
   /// cond(F~) <= kMaxCondition for F~ = F with its translation rows and columns scaled by D.
   bool trackable = false;
+  /// Not trackable only because F failed the condition test: in the workspace, enough visible
+  /// markers, but the pose is not determined to first order (too far, or a degenerate view).
+  bool ill_conditioned = false;
   double rot_rms_deg = 0.0;  ///< sqrt(tr C_rot), degrees (+inf when not trackable)
   double trans_rms = 0.0;    ///< sqrt(tr C_trans), layout units (+inf when not trackable)
   /// C, 6 x 6, ROS order (x, y, z, rx, ry, rz), camera frame, layout units and radians (zero
@@ -128,7 +135,8 @@ Eigen::Matrix<double, 6, 6> marker_information(const Eigen::Vector3d& x, const E
 
 /// Completes `out` from F1, the summed marker_information() of its visible markers: the condition
 /// test (§22, "Visibility"), C = S^2 F1^-1, rot_rms_deg and trans_rms. The caller has checked the
-/// workspace and the marker count; `out` is left untrackable when F is singular.
+/// workspace and the marker count; `out` is left untrackable, and marked ill_conditioned, when F
+/// is singular.
 void complete_pose_crb(const Eigen::Matrix<double, 6, 6>& F1, double noise_px, double distance,
                        PoseCrbAt* out);
 
@@ -147,7 +155,10 @@ struct PoseCrbPercentiles {
 struct PoseCrbMap {
   enum class Status {
     kOk,           ///< at least one sampled direction of the workspace is trackable
-    kUntrackable,  ///< no sampled direction of the workspace is trackable: worst/best mean nothing
+    kUntrackable,  ///< no sampled direction of the workspace sees enough markers
+    /// No sampled direction is trackable, and some see enough markers but every such F fails
+    /// the condition test: the pose is not determined to first order (worst/best mean nothing).
+    kIllConditioned,
   };
   Status status = Status::kUntrackable;
   std::vector<PoseCrbAt> samples;  ///< the Fibonacci directions inside the workspace
@@ -166,8 +177,13 @@ struct PoseCrbMap {
   static constexpr double kMaxSliverProbeDeg = 20.0;
 };
 
-/// "ok" or "untrackable".
+/// "ok", "untrackable" or "ill_conditioned".
 const char* to_string(PoseCrbMap::Status status);
+
+/// Why a map at distance D is not kOk, one sentence without a final full stop: no sampled
+/// direction in the workspace, none that sees enough markers, or how many saw enough markers but
+/// failed the condition test. Empty for kOk.
+std::string untrackable_reason(const PoseCrbMap& map, double distance);
 
 /// The map of `model` at its distance (docs/math.md §22).
 PoseCrbMap pose_crb_map(const PoseCrbModel& model);
