@@ -153,7 +153,10 @@ CellViewpoint solve_cell_lmi(const Eigen::Matrix3Xd& vectors, const Eigen::Vecto
   }
   const Eigen::Vector3d unit_a = a.normalized();
   result.t = (p.transpose() * unit_a).minCoeff();
-  result.pbar_at = pbar_from_t(std::max(0.0, result.t));
+  // Inside the cell p-bar(a) = sqrt(1 - t^2) = max_i |a x n_i|; the cross products keep their
+  // digits where t is within rounding of 1 (sqrt(1 - t^2) gave 0 for a near-degenerate layout
+  // whose p-bar is 5e-10), as the global pbar_min is computed.
+  result.pbar_at = result.t > 0.0 ? pbar_at(n, unit_a) : 1.0;
   result.viewpoint = upper_hemisphere(unit_a);
   result.status = CellViewpoint::Status::kOk;
   return result;

@@ -68,7 +68,7 @@ struct LayoutAnalysis {
   struct PaperLmi {
     Eigen::Vector3d viewpoint = Eigen::Vector3d::UnitZ();
     double t = 0.0;
-    double pbar_at = 1.0;  ///< p-bar(a) = sqrt(1 - t^2) at `viewpoint` (>= the global pbar_min)
+    double pbar_at = 1.0;  ///< p-bar(a) at `viewpoint`, as pbar_at() (>= the global pbar_min)
     /// kEmptyCell: the all-positive cell is empty and viewpoint/t/pbar mean nothing.
     CellViewpoint::Status status = CellViewpoint::Status::kSolverFailed;
   } paper_lmi;
