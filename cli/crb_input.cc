@@ -28,7 +28,9 @@ void CrbCameraArgs::add_options(CLI::App* sub, bool required) {
                   "D1:D2:N: the worst and median bound at N distances from D1 to D2 (N at most " +
                       std::to_string(kMaxCrbSweepDistances) +
                       ", README \"Limits\"; `crb --allow-large` lifts it)");
-  sub->add_option("--samples", samples, "Fibonacci directions of the CRB map")
+  sub->add_option("--samples", samples,
+                  "directions of the CRB map, as a density: this many on the whole sphere (a "
+                  "workspace gets its share, at least 100)")
       ->capture_default_str();
 }
 

@@ -136,7 +136,8 @@ Command add_place_command(CLI::App& root) {
                   "camera objective: worst, p95 or median of rot_rms over the workspace")
       ->capture_default_str();
   sub->add_option("--crb-samples", args->crb_samples,
-                  "camera objective: Fibonacci directions of the sphere (vantage crb --samples)")
+                  "camera objective: lattice density, directions on the whole sphere (vantage crb "
+                  "--samples)")
       ->capture_default_str();
   sub->add_option("--aim", args->aim_text,
                   "camera objective: X,Y,Z, the point the camera looks at (default: the centre "

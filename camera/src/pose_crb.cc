@@ -120,6 +120,10 @@ const PoseCrbOptions& PoseCrbModel::options() const { return impl_->options; }
 bool PoseCrbModel::with_body() const { return impl_->visibility->with_body(); }
 const visibility::CameraVisibility& PoseCrbModel::visibility() const { return *impl_->visibility; }
 
+const std::optional<visibility::Workspace>& PoseCrbModel::workspace() const {
+  return impl_->workspace;
+}
+
 bool PoseCrbModel::in_workspace(const Eigen::Vector3d& a) const {
   return !impl_->workspace || a.dot(impl_->workspace->axis) >= impl_->workspace->cos_half_angle;
 }

@@ -12,6 +12,7 @@
 #include "vantage/analysis/parallel.h"
 #include "vantage/camera/pose_crb.h"
 #include "vantage/visibility/visibility.h"
+#include "vantage/visibility/workspace_lattice.h"
 
 namespace vantage::camera {
 
@@ -100,17 +101,12 @@ std::vector<int> trackable_by_bound(const std::vector<PoseCrbAt>& samples) {
 }
 
 std::vector<PoseCrbAt> sample_workspace(const PoseCrbModel& model, double distance) {
-  const Eigen::Matrix3Xd all = visibility::fibonacci_directions(model.options().samples);
-  std::vector<int> inside;
-  for (int k = 0; k < static_cast<int>(all.cols()); ++k) {
-    if (model.in_workspace(all.col(k))) inside.push_back(k);
-  }
-  std::vector<PoseCrbAt> samples(inside.size());
-  parallel_blocks(static_cast<long>(inside.size()), model.options().threads,
+  const Eigen::Matrix3Xd all =
+      visibility::workspace_lattice(model.workspace(), model.options().samples).directions;
+  std::vector<PoseCrbAt> samples(static_cast<std::size_t>(all.cols()));
+  parallel_blocks(static_cast<long>(all.cols()), model.options().threads,
                   [&](long begin, long end) {
-                    for (long k = begin; k < end; ++k) {
-                      samples[k] = model.at(all.col(inside[k]), distance);
-                    }
+                    for (long k = begin; k < end; ++k) samples[k] = model.at(all.col(k), distance);
                   });
   return samples;
 }
@@ -198,7 +194,8 @@ PoseCrbMap pose_crb_map(const PoseCrbModel& model, double distance) {
   for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = map.samples[order[k]].rot_rms_deg;
   map.percentiles = {nearest_rank(sorted, 0.50), nearest_rank(sorted, 0.95),
                      nearest_rank(sorted, 0.99)};
-  const double spacing = std::sqrt(4.0 * kPi / model.options().samples);
+  const double spacing =
+      visibility::workspace_lattice(model.workspace(), model.options().samples).spacing;
   map.worst = refined_extreme(model, distance, map.samples, order, +1.0, spacing);
   map.best = refined_extreme(model, distance, map.samples, order, -1.0, spacing);
   map.worst_region_width_deg = worst_region_width_deg(model, distance, map.worst);

@@ -8,15 +8,17 @@
 
 #include "vantage/analysis/parallel.h"
 #include "vantage/visibility/visibility.h"
+#include "vantage/visibility/workspace_lattice.h"
 
 namespace vantage::design::internal {
 
 CameraSiteObjective::CameraSiteObjective(const CameraObjective& objective, int threads)
     : objective_(objective), model_(objective.sites, objective.crb) {
-  const Eigen::Matrix3Xd lattice = visibility::fibonacci_directions(objective.crb.samples);
+  const Eigen::Matrix3Xd lattice =
+      visibility::workspace_lattice(model_.workspace(), objective.crb.samples).directions;
   for (Eigen::Index k = 0; k < lattice.cols(); ++k) {
     // Normalised as `vantage crb` normalises each direction, so that both see the same cameras.
-    if (model_.in_workspace(lattice.col(k))) directions_.push_back(lattice.col(k).normalized());
+    directions_.push_back(lattice.col(k).normalized());
   }
   const double distance = objective.crb.distance;
   rotations_.resize(directions_.size());

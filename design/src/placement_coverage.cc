@@ -4,25 +4,22 @@
 
 #include <algorithm>
 
+#include "vantage/visibility/workspace_lattice.h"
+
 namespace vantage::design::internal {
 
 SiteCoverage::SiteCoverage(const visibility::VisibilityProblem& sites, int lattice_samples)
     : min_visible_(sites.min_visible) {
-  const Eigen::Matrix3Xd lattice = visibility::fibonacci_directions(lattice_samples);
-  std::vector<Eigen::Index> inside;
-  for (Eigen::Index k = 0; k < lattice.cols(); ++k) {
-    const Eigen::Vector3d d = lattice.col(k);
-    if (sites.workspace && d.dot(sites.workspace->axis) < sites.workspace->cos_half_angle) continue;
-    inside.push_back(k);
-  }
-  directions_ = static_cast<int>(inside.size());
+  const Eigen::Matrix3Xd lattice =
+      visibility::workspace_lattice(sites.workspace, lattice_samples).directions;
+  directions_ = static_cast<int>(lattice.cols());
   words_per_site_ = (directions_ + 63) / 64;
   const int n = static_cast<int>(sites.points.cols());
   words_.assign(static_cast<std::size_t>(n) * words_per_site_, 0);
   for (int s = 0; s < n; ++s) {
     std::uint64_t* w = words_.data() + static_cast<std::size_t>(s) * words_per_site_;
     for (int d = 0; d < directions_; ++d) {
-      const Eigen::Vector3d a = lattice.col(inside[static_cast<std::size_t>(d)]);
+      const Eigen::Vector3d a = lattice.col(d);
       if (sites.normals.col(s).dot(a) < sites.cos_cone(s)) continue;
       if (sites.occlusion != nullptr && sites.occlusion->blocked(sites.occlusion_marker(s), a)) {
         continue;

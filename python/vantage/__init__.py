@@ -142,8 +142,9 @@ def crb(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
     layout's radius); focal: pixels; noise_px: pixel noise per coordinate.
     direction: also the bound at this viewing direction (body toward camera), with its 6 x 6
     covariance. sweep_distance: (D1, D2, N), the worst and median bound at N distances (N
-    bounded, README "Limits"). samples: Fibonacci directions of the map. allow_large: lift the
-    size limits, as ``--allow-large``.
+    bounded, README "Limits"). samples: the map's lattice density (directions on the whole
+    sphere; a workspace gets its share, at least 100). allow_large: lift the size limits, as
+    ``--allow-large``.
 
     Raises ValueError on bad input.
     """

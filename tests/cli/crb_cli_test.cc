@@ -158,6 +158,19 @@ TEST(CrbCli, IllConditioningIsToldApartFromVisibility) {
   EXPECT_EQ(testing::line_count(away.err), 1) << away.err;
 }
 
+// Issue 36, item 4: a 0.2-degree workspace held none of the sphere's 10 000 sampled directions,
+// so crb said untrackable and simulate refused ("no direction ... in 0 sampled directions"),
+// although the cube is seen throughout it. It is sampled on its own cap (100 directions).
+TEST(CrbCli, ATinyWorkspaceIsSampledOnItsOwnCap) {
+  ScratchDir scratch;
+  const CliRun crb = run_vantage("crb " + kCube + kCamera + " --workspace 1,1,1,0.2", scratch);
+  EXPECT_EQ(crb.status, 0) << crb.err;
+  EXPECT_THAT(crb.out, HasSubstr("100 directions sampled, trackable fraction 1\n"));
+  const CliRun simulate =
+      run_vantage("simulate " + kCube + " --workspace 1,1,1,0.2 --trials 10", scratch);
+  EXPECT_EQ(simulate.status, 0) << simulate.err;
+}
+
 TEST(CrbCli, BadInputIsOneLineNamingTheOption) {
   ScratchDir scratch;
   const BadCall calls[] = {

@@ -14,7 +14,7 @@
 #include "vantage/analysis/common.h"
 #include "vantage/camera/pose_crb.h"
 #include "vantage/design/placement.h"
-#include "vantage/visibility/visibility.h"
+#include "vantage/visibility/workspace_lattice.h"
 
 namespace vantage::design {
 namespace {
@@ -47,10 +47,11 @@ camera::PoseCrbOptions camera_options() {
 // of the lattice is trackable (min_coverage 1).
 double crb_value(const Layout& sites, const std::vector<int>& chosen, CrbStatistic statistic) {
   const camera::PoseCrbModel model(subset(sites, chosen), camera_options());
-  const Eigen::Matrix3Xd lattice = visibility::fibonacci_directions(kSamples);
+  const Eigen::Matrix3Xd lattice =
+      visibility::workspace_lattice(model.workspace(), kSamples).directions;
   std::vector<double> values;
   for (Eigen::Index k = 0; k < lattice.cols(); ++k) {
-    if (!model.in_workspace(lattice.col(k))) continue;
+    EXPECT_TRUE(model.in_workspace(lattice.col(k)));
     const camera::PoseCrbAt at = model.at(lattice.col(k));
     if (!at.trackable) return kInfinity;
     values.push_back(at.rot_rms_deg);

@@ -10,6 +10,7 @@
 
 #include "vantage/analysis/common.h"
 #include "vantage/visibility/visibility.h"
+#include "vantage/visibility/workspace_lattice.h"
 
 namespace vantage::visibility {
 namespace {
@@ -38,16 +39,13 @@ Eigen::Matrix3Xd fibonacci_directions(int count) {
 VisibilityCoverage visibility_coverage(const VisibilityProblem& problem, int samples) {
   problem.validate();
   if (samples < 100) throw InvalidArgument("samples", "must be >= 100");
-  const Eigen::Matrix3Xd a = fibonacci_directions(samples);
+  const WorkspaceLattice lattice = workspace_lattice(problem.workspace, samples);
+  const Eigen::Matrix3Xd& a = lattice.directions;
   VisibilityCoverage out;
+  out.samples = static_cast<int>(a.cols());
   std::vector<int> lost;
-  for (int k = 0; k < samples; ++k) {
-    const Eigen::Vector3d d = a.col(k);
-    if (problem.workspace && d.dot(problem.workspace->axis) < problem.workspace->cos_half_angle) {
-      continue;
-    }
-    ++out.samples;
-    if (!direction_visibility(problem, d).trackable) lost.push_back(k);
+  for (int k = 0; k < out.samples; ++k) {
+    if (!direction_visibility(problem, a.col(k)).trackable) lost.push_back(k);
   }
   if (out.samples == 0) return out;
   out.lost_fraction = static_cast<double>(lost.size()) / out.samples;
@@ -55,8 +53,7 @@ VisibilityCoverage visibility_coverage(const VisibilityProblem& problem, int sam
   if (lost.empty()) return out;
 
   // Union-find over neighbours, found through a grid of cubes of the neighbour distance.
-  const double spacing = std::sqrt(4.0 * kPi / samples);
-  const double reach = kNeighbourSpacings * spacing;  // chord ~ angle at this scale
+  const double reach = kNeighbourSpacings * lattice.spacing;  // chord ~ angle at this scale
   std::map<std::tuple<int, int, int>, std::vector<int>> buckets;
   auto key = [&](const Eigen::Vector3d& p) {
     return std::make_tuple(static_cast<int>(std::floor(p.x() / reach)),

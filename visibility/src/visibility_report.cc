@@ -12,6 +12,7 @@
 #include "vantage/analysis/internal/checks.h"
 #include "vantage/analysis/parallel.h"
 #include "vantage/visibility/visibility_model.h"
+#include "vantage/visibility/workspace_lattice.h"
 
 namespace vantage::visibility {
 namespace {
@@ -87,12 +88,9 @@ std::vector<int> hidden_by_body(const VisibilityProblem& problem, int samples) {
   const std::size_t n = static_cast<std::size_t>(problem.points.cols());
   std::vector<char> faced(n, 0);
   std::vector<char> seen(n, 0);
-  const Eigen::Matrix3Xd a = fibonacci_directions(samples);
+  const Eigen::Matrix3Xd a = workspace_lattice(problem.workspace, samples).directions;
   for (Eigen::Index k = 0; k < a.cols(); ++k) {
     const Eigen::Vector3d d = a.col(k);
-    if (problem.workspace && d.dot(problem.workspace->axis) < problem.workspace->cos_half_angle) {
-      continue;
-    }
     for (std::size_t i = 0; i < n; ++i) {
       const Eigen::Index c = static_cast<Eigen::Index>(i);
       if (problem.normals.col(c).dot(d) >= problem.cos_cone(c)) faced[i] = 1;

@@ -32,6 +32,7 @@
 
 #include "vantage/analysis/layout.h"
 #include "vantage/visibility/camera_visibility.h"
+#include "vantage/visibility/visibility.h"
 
 namespace vantage::camera {
 
@@ -44,8 +45,8 @@ struct PoseCrbOptions {
   double noise_px = 0.0;  ///< S, pixels per coordinate, in [kMinPixels, kMaxPixels]
   /// o, the point the camera looks at (object frame, finite); none: the markers' centroid.
   std::optional<Eigen::Vector3d> aim;
-  /// Fibonacci directions of the map over the whole sphere (those in the workspace count),
-  /// in [100, 10'000'000].
+  /// Directions of the map at the density of this many on the whole sphere (the workspace's own
+  /// lattice, visibility::workspace_lattice), in [100, 10'000'000].
   int samples = 10000;
   /// Best samples from which the worst (and best) direction is refined, in [1, 1000].
   int refine_starts = 8;
@@ -112,6 +113,8 @@ class PoseCrbModel {
   const Eigen::Vector3d& centroid() const;
   double radius() const;  ///< max |p_i - o|
   bool in_workspace(const Eigen::Vector3d& a) const;
+  /// The layout's workspace (none: the whole sphere).
+  const std::optional<visibility::Workspace>& workspace() const;
   const PoseCrbOptions& options() const;
   bool with_body() const;
   /// Which markers a camera centre sees (§22, "Visibility").
@@ -161,7 +164,7 @@ struct PoseCrbMap {
     kIllConditioned,
   };
   Status status = Status::kUntrackable;
-  std::vector<PoseCrbAt> samples;  ///< the Fibonacci directions inside the workspace
+  std::vector<PoseCrbAt> samples;  ///< at the workspace's lattice directions
   /// Largest rot_rms_deg over the trackable directions: the best sample refined by compass
   /// search on the sphere (no certificate: F is smooth only between visibility changes).
   PoseCrbAt worst;
