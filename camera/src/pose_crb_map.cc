@@ -151,10 +151,6 @@ std::string untrackable_reason(const PoseCrbMap& map, double distance) {
     case PoseCrbMap::Status::kOk:
       return "";
     case PoseCrbMap::Status::kUntrackable:
-      if (map.samples.empty()) {
-        return "no sampled direction lies in the workspace (it is narrower than the lattice's "
-               "spacing; more --samples)";
-      }
       return "no sampled direction of the workspace sees enough markers (" +
              std::to_string(map.samples.size()) + " sampled)";
     case PoseCrbMap::Status::kIllConditioned:

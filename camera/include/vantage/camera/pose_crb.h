@@ -184,8 +184,8 @@ struct PoseCrbMap {
 const char* to_string(PoseCrbMap::Status status);
 
 /// Why a map at distance D is not kOk, one sentence without a final full stop: no sampled
-/// direction in the workspace, none that sees enough markers, or how many saw enough markers but
-/// failed the condition test. Empty for kOk.
+/// direction sees enough markers, or how many saw enough markers but failed the condition test.
+/// Empty for kOk.
 std::string untrackable_reason(const PoseCrbMap& map, double distance);
 
 /// The map of `model` at its distance (docs/math.md §22).
