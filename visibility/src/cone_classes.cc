@@ -17,13 +17,15 @@ constexpr double kApartMargin = 1e-12;
 
 // Open caps about -n of radius pi - theta, apart when their centres are at least the sum of the
 // radii apart. Opposite normals are decided exactly (n.a < c1 and n.a > -c2 never both hold
-// when c1 <= -c2).
+// when c1 <= -c2). A normal is unit only to the problem's tolerance (1e-9), and the visibility
+// test is n.a >= c with n as given, so the cap's true half-angle is acos(c / |n|): far more than
+// the margin when |n| is 1 - 1e-9.
 bool hidden_sides_apart(const Eigen::Vector3d& n1, double c1, const Eigen::Vector3d& n2,
                         double c2) {
   if (n1 == -n2) return c1 + c2 <= 0.0;
   const double between = std::atan2(n1.cross(n2).norm(), n1.dot(n2));
-  const double t1 = std::acos(std::clamp(c1, -1.0, 1.0));
-  const double t2 = std::acos(std::clamp(c2, -1.0, 1.0));
+  const double t1 = std::acos(std::clamp(c1 / n1.norm(), -1.0, 1.0));
+  const double t2 = std::acos(std::clamp(c2 / n2.norm(), -1.0, 1.0));
   return between >= 2.0 * kPi - t1 - t2 + kApartMargin;
 }
 
