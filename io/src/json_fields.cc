@@ -79,7 +79,7 @@ class TrackingSax {
     const std::string at = where();
     const std::string prefix = at.empty() ? "" : at + ": ";
     if (error.id == kNumberOverflow) {
-      fail(source_, prefix + "number out of range (" + token + ")");
+      fail(source_, prefix + "number out of range (" + excerpt(token) + ")");
     }
     if (spells_non_finite(token)) {
       fail(source_, prefix + "not a finite number (NaN and Infinity are not JSON numbers)");
@@ -88,6 +88,9 @@ class TrackingSax {
     std::string what = error.what();
     const auto bracket = what.find("] ");
     if (bracket != std::string::npos) what = what.substr(bracket + 2);
+    // Its "last read: '...'" quotes the token, which may be the rest of a huge line.
+    const auto quoted = last_read.size() > kExcerptBytes ? what.find(last_read) : std::string::npos;
+    if (quoted != std::string::npos) what.replace(quoted, last_read.size(), excerpt(last_read));
     fail(source_, "not valid JSON: " + prefix + what);
   }
 
@@ -115,7 +118,7 @@ class TrackingSax {
       } else {
         const std::string& name = last && !pending_key.empty() ? pending_key : f.key;
         if (name.empty()) continue;
-        out += (out.empty() ? "" : ".") + name;
+        out += (out.empty() ? "" : ".") + excerpt(name);
       }
     }
     return out;
