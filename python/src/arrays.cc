@@ -40,8 +40,12 @@ std::string shape_text(const Array& array) {
 std::string path_from(const py::object& path, const char* keyword) {
   const py::object os = py::module_::import("os");
   try {
-    return os.attr("fsdecode")(os.attr("fspath")(path)).cast<std::string>();
+    // The file system's own bytes: a name that is not UTF-8 (a str with surrogate escapes, or
+    // bytes) opens as it is; decoding it to a str first could not be cast.
+    return os.attr("fsencode")(os.attr("fspath")(path)).cast<std::string>();
   } catch (const py::error_already_set&) {
+    throw InvalidArgument(keyword, "expected a str or os.PathLike");
+  } catch (const py::cast_error&) {
     throw InvalidArgument(keyword, "expected a str or os.PathLike");
   }
 }

@@ -1,6 +1,8 @@
 """analyze, design and weights: the same numbers as the CLI's --json, from files and arrays;
 exceptions; the GIL is released during the computation."""
 
+import os
+import pathlib
 import threading
 import time
 
@@ -142,3 +144,17 @@ def test_concurrent_analyses_agree_with_a_serial_one(vantage):
         results = list(pool.map(lambda _: vantage.analyze(path).to_dict(), range(3)))
     for result in results:
         assert_same(result, serial)
+
+
+def test_a_file_name_that_is_not_utf8_is_read(vantage, tmp_path):
+    # Issue 36, item 8 (review): os.fsdecode gives such a name surrogate escapes, which could not
+    # be cast to the C++ string ("Unable to cast"); the file system's bytes are passed instead.
+    original = LAYOUTS / "triad.json"
+    name = os.path.join(os.fsencode(tmp_path), b"\xff-triad.json")
+    with open(name, "wb") as out:
+        out.write(original.read_bytes())
+    expected = vantage.analyze(str(original)).to_dict()
+    for path in (name, os.fsdecode(name), pathlib.Path(os.fsdecode(name))):
+        result = vantage.analyze(path).to_dict()
+        assert result["worst_viewpoint"] == expected["worst_viewpoint"]
+        assert result["pbar_min"] == expected["pbar_min"]
