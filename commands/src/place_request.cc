@@ -187,7 +187,11 @@ void check_request(const Request& request) {
     place_refuse("--min-distance-difference", "must be a finite number >= 0");
   }
   if (request.threads < 0) place_refuse("--threads", "must be >= 0 (0: all cores)");
-  if (request.random_trials < 0) place_refuse("--random-trials", "must be >= 0");
+  if (request.random_trials < 0 || request.random_trials > design::PlaceOptions::kMaxRandomTrials) {
+    place_refuse("--random-trials", "must be in [0, " +
+                                        std::to_string(design::PlaceOptions::kMaxRandomTrials) +
+                                        "] (every trial's subset is kept for the median)");
+  }
   if (request.perturbations < 0) place_refuse("--perturbations", "must be >= 0");
   if (request.exhaustive_limit < 0) place_refuse("--exhaustive-limit", "must be >= 0");
   if (!(request.certificate_tolerance >= 1e-15 && request.certificate_tolerance <= 1e-3)) {

@@ -173,8 +173,11 @@ bool PlaceOptions::is_valid(std::string* why) const {
   if (exhaustive_limit < 0) {
     return vantage::internal::invalid_option(why, "exhaustive_limit", "must be >= 0");
   }
-  if (random_trials < 0) {
-    return vantage::internal::invalid_option(why, "random_trials", "must be >= 0");
+  if (random_trials < 0 || random_trials > PlaceOptions::kMaxRandomTrials) {
+    return vantage::internal::invalid_option(
+        why, "random_trials",
+        "must be in [0, " + std::to_string(PlaceOptions::kMaxRandomTrials) +
+            "] (every trial's subset is kept for the median, about 140 bytes each)");
   }
   if (perturbations < 0) {
     return vantage::internal::invalid_option(why, "perturbations", "must be >= 0");

@@ -344,6 +344,10 @@ TEST(PlaceCli, BadInputGetsOneLineAndWritesNothing) {
        "error: --keep: adir: is a directory"},
       // Issue 36: said "points: need at least 3 points (2 free vectors)".
       {"one candidate", nullptr, one_candidate.c_str(), "--candidates: must be in [3, "},
+      // Issue 36, item 6: 1e9 trials ended in "internal error: std::bad_alloc".
+      {"a billion random trials", nullptr,
+       "--sites sites.json --markers 4 --random-trials 1000000000 --out o.json",
+       "--random-trials: must be in [0, 1000000]"},
       {"--out a CSV file (named once)", nullptr, "--sites sites.json --markers 4 --out o.csv",
        "error: --out: o.csv: write the placed layout as .json"},
       // Issue 35: the objective's settings, each named by its option.

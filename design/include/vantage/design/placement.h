@@ -95,7 +95,7 @@ struct PlaceOptions {
   /// The certified analysis of each subset (docs/math.md §20); its certificate_tolerance is the
   /// resolution at which two placements are told apart.
   visibility::VisibilitySearchOptions search;
-  int coverage_samples = 20000;  ///< whole-sphere Fibonacci lattice of the coverage, >= 100
+  int coverage_samples = 20000;  ///< the coverage lattice's density on the sphere, >= 100
   bool robust_dropout = false;   ///< objective 3 of docs/math.md §21
   /// The `camera` objective; none: the paper's bound under visibility (`affine`).
   std::optional<CameraObjective> camera;
@@ -107,7 +107,10 @@ struct PlaceOptions {
   /// Search every feasible subset when there are at most this many K-subsets of the free
   /// sites, >= 0 (0: never).
   long exhaustive_limit = 5000;
-  int random_trials = 1000;  ///< random feasible subsets of the baseline, >= 0
+  /// Random feasible subsets of the baseline, in [0, kMaxRandomTrials]: each is kept until the
+  /// median is taken (about 140 bytes), so 1e9 would need 140 GB.
+  int random_trials = 1000;
+  static constexpr int kMaxRandomTrials = 1'000'000;
   /// Rounds of iterated local search after the swaps (docs/math.md §21, "Search"), >= 0: each
   /// replaces a third of the answer's free markers (at least two) at random and swaps again; the
   /// better answer is kept. 0: greedy and swaps only.
