@@ -192,6 +192,7 @@ void print_crb_plot(const PlotArgs& args, const Layout& layout, const plot::CrbF
     out["format"] = plot::to_string(options.format);
     out["size"] = {options.width, options.height};
     out["status"] = camera::to_string(map.status);
+    if (!ok) out["message"] = camera::untrackable_reason(map, figures.report.camera.distance);
     if (ok) out["worst_rot_rms_deg"] = map.worst.rot_rms_deg;
     out["figures"] = figure_files_json(figures.files);
     print_json(out);

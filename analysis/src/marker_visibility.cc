@@ -50,8 +50,8 @@ void validate_workspace(const LayoutWorkspace& w) {
   if (!w.axis.allFinite() || !(std::abs(w.axis.norm() - 1.0) <= kUnit)) {
     throw InvalidArgument("workspace.axis", "must be a non-zero vector");
   }
-  if (!(w.half_angle_deg > 0.0 && w.half_angle_deg <= 180.0)) {
-    throw InvalidArgument("workspace.half_angle_deg", "must be in (0, 180] degrees");
+  if (!(w.half_angle_deg >= kMinWorkspaceHalfAngleDeg && w.half_angle_deg <= 180.0)) {
+    throw InvalidArgument("workspace.half_angle_deg", "must be in [0.001, 180] degrees");
   }
 }
 

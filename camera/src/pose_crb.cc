@@ -35,9 +35,13 @@ struct CrbOptionViolation {
   const char* problem;
 };
 
+bool in_length_range(double length) {
+  return length >= PoseCrbOptions::kMinLength && length <= PoseCrbOptions::kMaxLength;
+}
+
 std::optional<CrbOptionViolation> first_violation(const PoseCrbOptions& o) {
-  if (!(o.distance > 0.0) || !std::isfinite(o.distance)) {
-    return CrbOptionViolation{"distance", "must be > 0 and finite"};
+  if (!in_length_range(o.distance)) {
+    return CrbOptionViolation{"distance", "must be in [1e-50, 1e50] (layout units)"};
   }
   // F is a sum of f^2 terms over S^2: f and S in [1e-50, 1e50] keep every product finite.
   if (!(o.focal_length >= PoseCrbOptions::kMinPixels) ||
@@ -50,6 +54,14 @@ std::optional<CrbOptionViolation> first_violation(const PoseCrbOptions& o) {
   if (o.aim && !o.aim->allFinite()) return CrbOptionViolation{"aim", "must be finite"};
   if (!(o.noise_px >= PoseCrbOptions::kMinPixels) || !(o.noise_px <= PoseCrbOptions::kMaxPixels)) {
     return CrbOptionViolation{"noise_px", "must be in [1e-50, 1e50] pixels"};
+  }
+  // F ~ (f / (S z))^2 with z >= the distance's scale: the ratio and the lengths bounded keep
+  // every entry of F finite.
+  const double ratio = o.focal_length / o.noise_px;
+  if (!(ratio >= PoseCrbOptions::kMinFocalOverNoise &&
+        ratio <= PoseCrbOptions::kMaxFocalOverNoise)) {
+    return CrbOptionViolation{"noise_px",
+                              "the focal length over the noise must be in [1e-12, 1e12]"};
   }
   if (o.samples < 100 || o.samples > 10'000'000) {
     return CrbOptionViolation{"samples", "must be in [100, 10000000]"};
@@ -78,7 +90,10 @@ struct PoseCrbModel::Impl {
   std::optional<visibility::Workspace> workspace;
 
   void check_distance(double distance) const {
-    if (!(distance > radius) || !std::isfinite(distance)) {
+    if (!in_length_range(distance)) {
+      throw InvalidArgument("distance", "must be in [1e-50, 1e50] (layout units)");
+    }
+    if (!(distance > radius)) {
       throw InvalidArgument(
           "distance", "must exceed the layout's radius about " +
                           std::string(options.aim ? "the aim point" : "its centroid") + ", " +

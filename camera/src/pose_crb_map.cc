@@ -43,7 +43,9 @@ Eigen::Vector3d along(const Eigen::Vector3d& a, const Eigen::Vector3d& t, double
 PoseCrbAt refine(const PoseCrbModel& model, double distance, const PoseCrbAt& start, double step,
                  double sign) {
   PoseCrbAt best = start;
-  while (step > kRefineMinStep) {
+  // A workspace narrower than the lattice of the whole sphere has a finer spacing.
+  const double min_step = std::min(kRefineMinStep, step / 100.0);
+  while (step > min_step) {
     Eigen::Vector3d u, v;
     tangent_basis(best.direction, &u, &v);
     bool moved = false;
@@ -60,18 +62,28 @@ PoseCrbAt refine(const PoseCrbModel& model, double distance, const PoseCrbAt& st
   return best;
 }
 
-// How far (degrees) from the worst direction along t the bound stays >= half of it.
-double half_bound_reach_deg(const PoseCrbModel& model, double distance, const PoseCrbAt& worst,
-                            const Eigen::Vector3d& t) {
+// How far (degrees) from the worst direction along t the bound stays >= half of it, and whether
+// the cut left the workspace first (then the workspace ends it, not the bound).
+struct Reach {
+  double deg = 0.0;
+  bool workspace_edge = false;
+};
+Reach half_bound_reach(const PoseCrbModel& model, double distance, const PoseCrbAt& worst,
+                       const Eigen::Vector3d& t) {
   const double half = 0.5 * worst.rot_rms_deg;
-  double reached = 0.0;
+  Reach reach;
   for (double deg = kSliverFineStepDeg; deg <= PoseCrbMap::kMaxSliverProbeDeg + 1e-12;
        deg += deg < PoseCrbMap::kSliverWidthDeg ? kSliverFineStepDeg : kSliverCoarseStepDeg) {
-    const PoseCrbAt at = model.at(along(worst.direction, t, deg / kDegreesPerRadian), distance);
+    const Eigen::Vector3d a = along(worst.direction, t, deg / kDegreesPerRadian);
+    if (!model.in_workspace(a)) {
+      reach.workspace_edge = true;
+      break;
+    }
+    const PoseCrbAt at = model.at(a, distance);
     if (!at.trackable || at.rot_rms_deg < half) break;
-    reached = deg;
+    reach.deg = deg;
   }
-  return reached;
+  return reach;
 }
 
 // The narrowest of four cuts (0, 45, 90, 135 degrees in the tangent plane) through the worst.
@@ -82,9 +94,11 @@ double worst_region_width_deg(const PoseCrbModel& model, double distance, const 
   for (int k = 0; k < 4; ++k) {
     const double phi = k * kPi / 4.0;
     const Eigen::Vector3d t = std::cos(phi) * u + std::sin(phi) * v;
-    const double width = half_bound_reach_deg(model, distance, worst, t) +
-                         half_bound_reach_deg(model, distance, worst, -t);
-    narrowest = std::min(narrowest, width);
+    const Reach ahead = half_bound_reach(model, distance, worst, t);
+    const Reach behind = half_bound_reach(model, distance, worst, -t);
+    // A cut the workspace ends on both sides says nothing of the bound's region.
+    if (ahead.workspace_edge && behind.workspace_edge) continue;
+    narrowest = std::min(narrowest, ahead.deg + behind.deg);
   }
   return narrowest;
 }
@@ -201,9 +215,11 @@ PoseCrbMap pose_crb_map(const PoseCrbModel& model, double distance) {
 
 std::vector<PoseCrbSweepRow> pose_crb_distance_sweep(const PoseCrbModel& model, double d1,
                                                      double d2, int count) {
-  if (count < 2 || !(d1 < d2) || !std::isfinite(d2) || !(d1 > model.radius())) {
+  if (count < 2 || !(d1 < d2) || !(d2 <= PoseCrbOptions::kMaxLength) || !(d1 > model.radius()) ||
+      !(d1 >= PoseCrbOptions::kMinLength)) {
     throw InvalidArgument("sweep_distance", "needs D1 < D2, both above the layout's radius " +
-                                                std::to_string(model.radius()) + ", and N >= 2");
+                                                std::to_string(model.radius()) +
+                                                " and in [1e-50, 1e50], and N >= 2");
   }
   std::vector<PoseCrbSweepRow> rows;
   for (int k = 0; k < count; ++k) {

@@ -65,7 +65,11 @@ py::object crb(const py::object& layout_arg, const py::object& points, double di
       throw source.empty() || e.field() != "vectors" ? e : e.against(source);
     }
   });
-  return to_python(crb_json::report(report));
+  // As the CLI exits 1: nothing trackable raises NumericalError with the status and the reason.
+  const bool failed = report.map.status != camera::PoseCrbMap::Status::kOk;
+  return result_or_raise(failed, camera::to_string(report.map.status),
+                         failed ? camera::untrackable_reason(report.map, options.distance) : "",
+                         crb_json::report(report));
 }
 
 }  // namespace

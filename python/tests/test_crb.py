@@ -53,9 +53,14 @@ def test_crb_bad_input_names_the_argument(vantage):
 
 def test_crb_says_when_the_pose_is_not_determined(vantage):
     # Issue 36, item 5: a camera 1e5 away sees the markers but cannot determine the pose; the
-    # status says so (the CLI's exit status 1), with the CLI's message.
-    result = vantage.crb(CUBE, distance=1e5, focal=900, noise_px=0.3, samples=500)
+    # status says so with the CLI's message and, as the CLI exits 1, NumericalError is raised.
+    with pytest.raises(vantage.NumericalError) as error:
+        vantage.crb(CUBE, distance=1e5, focal=900, noise_px=0.3, samples=500)
+    assert error.value.status == "ill_conditioned"
+    result = error.value.result
+    assert isinstance(result, vantage.CrbReport)
     assert result.status == "ill_conditioned"
     assert result.worst is None
     assert "not determined to first order" in result.message
+    assert "not determined to first order" in str(error.value)
     assert vantage.crb(CUBE, distance=2, focal=900, noise_px=0.3, samples=500).message is None

@@ -127,6 +127,7 @@ def analyze(layout: LayoutArg = None, *, vectors: Optional[npt.ArrayLike] = None
     return LayoutReport(fields, brief)
 
 
+@_typed_errors(lambda error: CrbReport(error.result))
 def crb(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
         distance: float, focal: float, noise_px: float,
         principal_point: Optional[npt.ArrayLike] = None,
@@ -146,7 +147,9 @@ def crb(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
     sphere; a workspace gets its share, at least 100). allow_large: lift the size limits, as
     ``--allow-large``.
 
-    Raises ValueError on bad input.
+    Raises ValueError on bad input and NumericalError (its ``result`` the CrbReport) when no
+    sampled direction is trackable (status 'untrackable' or 'ill_conditioned', as the CLI's exit
+    status 1).
     """
     return CrbReport(_vantage.crb(
         layout, points=points, distance=distance, focal=focal, noise_px=noise_px,

@@ -166,6 +166,9 @@ TEST(CrbCli, ATinyWorkspaceIsSampledOnItsOwnCap) {
   const CliRun crb = run_vantage("crb " + kCube + kCamera + " --workspace 1,1,1,0.2", scratch);
   EXPECT_EQ(crb.status, 0) << crb.err;
   EXPECT_THAT(crb.out, HasSubstr("100 directions sampled, trackable fraction 1\n"));
+  // The bound is flat over 0.2 degrees: the workspace's edge, not the bound, ends every cut, so
+  // the worst is not a sliver (it was flagged, "0.14 deg across").
+  EXPECT_THAT(crb.out, HasSubstr("sliver           no"));
   const CliRun simulate =
       run_vantage("simulate " + kCube + " --workspace 1,1,1,0.2 --trials 10", scratch);
   EXPECT_EQ(simulate.status, 0) << simulate.err;
@@ -208,6 +211,11 @@ TEST(CrbCli, BadInputIsOneLineNamingTheOption) {
        "--focal: must be in [1e-50, 1e50] pixels"},
       {"tiny noise", nullptr, "--distance 2 --focal 900 --noise-px 1e-300",
        "--noise-px: must be in [1e-50, 1e50] pixels"},
+      // F ~ (f / (S D))^2 overflowed inside those ranges (review).
+      {"focal over noise", nullptr, "--distance 2 --focal 1e50 --noise-px 1e-50",
+       "--noise-px: the focal length over the noise must be in [1e-12, 1e12]"},
+      {"distance beyond 1e50", nullptr, "--distance 1e60 --focal 900 --noise-px 0.3",
+       "--distance: must be in [1e-50, 1e50]"},
   };
   for (const BadCall& call : calls) {
     SCOPED_TRACE(call.name);

@@ -181,7 +181,10 @@ const BadCall kBadCalls[] = {
     {"OptionWorkspaceThreeNumbers", kCorner, "in.json --workspace 0,0,1", "--workspace"},
     // Issue 36: named the library's workspace.half_angle_deg.
     {"OptionWorkspaceZeroAngle", kCorner, "in.json --workspace 0,0,1,0",
-     "--workspace: must be in (0, 180] degrees"},
+     "--workspace: must be in [0.001, 180] degrees"},
+    // Issue 36, item 4 (review): narrower caps are below the lattice's rounding.
+    {"OptionWorkspaceMicroDegree", kCorner, "in.json --workspace 0.3,-0.2,0.9,1e-6",
+     "--workspace: must be in [0.001, 180] degrees"},
     {"OptionNormalsUnknown", kCorner, "in.json --normals inward", "--normals"},
 };
 

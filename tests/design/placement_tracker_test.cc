@@ -17,6 +17,7 @@
 #include "vantage/design/placement.h"
 #include "vantage/tracker/tre_report.h"
 #include "vantage/visibility/visibility.h"
+#include "vantage/visibility/workspace_lattice.h"
 
 namespace vantage::design {
 namespace {
@@ -38,11 +39,13 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Every workspace direction of the coverage lattice sees min_visible markers of `layout` inside
 // their cones (no body: the cones decide).
 bool covers_everything(const Layout& layout) {
-  const Eigen::Matrix3Xd lattice = visibility::fibonacci_directions(kCoverageSamples);
   const double cos_workspace = std::cos(layout.workspace->half_angle_deg * kPi / 180.0);
+  const Eigen::Matrix3Xd lattice =
+      visibility::workspace_lattice(visibility::Workspace{layout.workspace->axis, cos_workspace},
+                                    kCoverageSamples)
+          .directions;
   for (Eigen::Index d = 0; d < lattice.cols(); ++d) {
     const Eigen::Vector3d a = lattice.col(d);
-    if (a.dot(layout.workspace->axis) < cos_workspace) continue;
     int seen = 0;
     for (Eigen::Index i = 0; i < layout.entries.cols(); ++i) {
       const double cone = layout.visibility->cone_half_angle_deg(i) * kPi / 180.0;

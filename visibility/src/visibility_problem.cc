@@ -7,6 +7,7 @@
 
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/internal/checks.h"
+#include "vantage/analysis/marker_visibility.h"
 #include "vantage/sdp/layout_analysis.h"
 #include "vantage/visibility/visibility.h"
 
@@ -42,8 +43,9 @@ void VisibilityProblem::validate() const {
   }
   if (workspace) {
     vantage::internal::check_unit_vector("workspace.axis", workspace->axis, kUnitNormal);
-    if (!(workspace->cos_half_angle >= -1.0 && workspace->cos_half_angle < 1.0)) {
-      throw InvalidArgument("workspace.half_angle_deg", "must be in (0, 180] degrees");
+    static const double narrowest = std::cos(kMinWorkspaceHalfAngleDeg / kDegreesPerRadian);
+    if (!(workspace->cos_half_angle >= -1.0 && workspace->cos_half_angle <= narrowest)) {
+      throw InvalidArgument("workspace.half_angle_deg", "must be in [0.001, 180] degrees");
     }
   }
   if (!occlusion_markers.empty()) {

@@ -20,6 +20,9 @@ WorkspaceLattice workspace_lattice(const std::optional<Workspace>& workspace, in
     out.spacing = std::sqrt(4.0 * kPi / count);
     return out;
   }
+  if (!(workspace->cos_half_angle > -1.0 && workspace->cos_half_angle < 1.0)) {
+    throw InvalidArgument("workspace.half_angle_deg", "must be in (0, 180] degrees");
+  }
   const double height = 1.0 - workspace->cos_half_angle;  // of the cap along w, in (0, 2)
   const double share = std::ceil(count * height / 2.0);
   const int m = static_cast<int>(

@@ -23,10 +23,14 @@ struct MarkerVisibility {
   std::optional<Mesh> body;  ///< the mesh read from body_path (when there is one)
 };
 
+/// The narrowest workspace, degrees: its lattice (docs/math.md §20, "Coverage") is still inside
+/// it after rounding (1 - cos of 1e-3 degrees is 1.5e-10; of 1e-6 degrees, one rounding).
+inline constexpr double kMinWorkspaceHalfAngleDeg = 1e-3;
+
 /// The directions a camera or tracker can take: {a : a.axis >= cos(half_angle)}.
 struct LayoutWorkspace {
   Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  ///< unit (normalised on reading)
-  double half_angle_deg = 180.0;                    ///< in (0, 180]
+  double half_angle_deg = 180.0;                    ///< in [kMinWorkspaceHalfAngleDeg, 180]
 };
 
 /// Throws InvalidArgument naming the file's field for visibility of a layout with `markers`

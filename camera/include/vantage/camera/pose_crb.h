@@ -38,7 +38,8 @@ namespace vantage::camera {
 
 /// Options of the pose CRB (the camera and the search).
 struct PoseCrbOptions {
-  double distance = 0.0;      ///< D, layout units, > the layout's radius about its centroid
+  double distance =
+      0.0;  ///< D, layout units, > the layout's radius about o, in [kMinLength, kMaxLength]
   double focal_length = 0.0;  ///< f, pixels, in [kMinPixels, kMaxPixels]
   /// Principal point, pixels, finite (the bound does not depend on it; it is reported).
   Eigen::Vector2d principal_point = Eigen::Vector2d::Zero();
@@ -56,9 +57,14 @@ struct PoseCrbOptions {
   /// True when every field is in range; otherwise *why names the field and the constraint.
   bool is_valid(std::string* why = nullptr) const;
 
-  /// The range of f and S (F sums f^2 / S^2 terms: inside it no product overflows).
+  /// The ranges of f and S, of f / S and of lengths (D): inside them no entry of F, a sum of
+  /// (f / (S z))^2 terms, overflows (docs/math.md §22).
   static constexpr double kMinPixels = 1e-50;
   static constexpr double kMaxPixels = 1e50;
+  static constexpr double kMinFocalOverNoise = 1e-12;
+  static constexpr double kMaxFocalOverNoise = 1e12;
+  static constexpr double kMinLength = 1e-50;
+  static constexpr double kMaxLength = 1e50;
 };
 
 /// The bound at one viewing direction.

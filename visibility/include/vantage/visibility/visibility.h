@@ -106,13 +106,13 @@ const char* to_string(VisibilityWorstViewpoint::Status status);
 VisibilityWorstViewpoint visibility_worst_viewpoint(const VisibilityProblem& problem,
                                                     const VisibilitySearchOptions& options = {});
 
-/// `count` directions of the Fibonacci lattice on the sphere (3 x count, unit): the lattice of
-/// the coverage estimate. count >= 1.
+/// `count` directions of the Fibonacci lattice on the sphere (3 x count, unit): the coverage's
+/// lattice without a workspace (workspace_lattice.h). count >= 1.
 Eigen::Matrix3Xd fibonacci_directions(int count);
 
 /// How much of the workspace is trackable (docs/math.md §20, "Coverage").
 struct VisibilityCoverage {
-  int samples = 0;                  ///< Fibonacci directions in the workspace
+  int samples = 0;                  ///< directions of the workspace's lattice
   double trackable_fraction = 0.0;  ///< of the workspace's area
   double lost_fraction = 0.0;       ///< 1 - trackable_fraction
   /// The largest connected untrackable region: its centre (unit) and angular radius.
@@ -120,8 +120,8 @@ struct VisibilityCoverage {
   double largest_region_radius_deg = 0.0;
 };
 
-/// Coverage estimated on `samples` Fibonacci directions of the whole sphere (those inside the
-/// workspace count), samples >= 100.
+/// Coverage estimated on the workspace's lattice at the density of `samples` directions on the
+/// whole sphere (workspace_lattice.h), samples >= 100.
 VisibilityCoverage visibility_coverage(const VisibilityProblem& problem, int samples = 20000);
 
 }  // namespace vantage::visibility

@@ -21,7 +21,7 @@ struct VisibilityReportOptions {
   VisibilitySearchOptions search;
   /// Occlusion grid cell size with a body, degrees, in [0.45, 30] (docs/math.md §20).
   double occlusion_resolution_deg = 1.0;
-  int coverage_samples = 20000;  ///< Fibonacci directions of the coverage estimate, >= 100
+  int coverage_samples = 20000;  ///< the coverage lattice's density on the sphere, >= 100
   bool dropout = false;          ///< also analyse the layout without each marker
   int threads = 0;               ///< ray casting and dropout threads, >= 0 (0: all cores)
 
