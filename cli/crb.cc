@@ -68,8 +68,11 @@ void print_report(const std::string& name, const camera::PoseCrbReport& r) {
               << format_number(map.percentiles.p95, 4) << ", p99 "
               << format_number(map.percentiles.p99, 4) << "\n"
               << "sliver           " << (map.sliver ? "yes" : "no") << " (the region within 2x "
-              << "of the worst is " << format_number(map.worst_region_width_deg, 3)
-              << " deg across)\n";
+              << "of the worst "
+              << (map.worst_region_fills_workspace
+                      ? std::string("reaches the workspace's edge along every cut")
+                      : "is " + format_number(map.worst_region_width_deg, 3) + " deg across")
+              << ")\n";
   }
   std::cout << "affine bound     " << format_number(r.affine_bound_deg, 4)
             << " deg (arccos pbar_min, the worst-case error of the affine camera)\n";

@@ -87,10 +87,12 @@ Reach half_bound_reach(const PoseCrbModel& model, double distance, const PoseCrb
 }
 
 // The narrowest of four cuts (0, 45, 90, 135 degrees in the tangent plane) through the worst.
-double worst_region_width_deg(const PoseCrbModel& model, double distance, const PoseCrbAt& worst) {
+double worst_region_width_deg(const PoseCrbModel& model, double distance, const PoseCrbAt& worst,
+                              bool* fills_workspace) {
   Eigen::Vector3d u, v;
   tangent_basis(worst.direction, &u, &v);
   double narrowest = 2.0 * PoseCrbMap::kMaxSliverProbeDeg;
+  *fills_workspace = true;
   for (int k = 0; k < 4; ++k) {
     const double phi = k * kPi / 4.0;
     const Eigen::Vector3d t = std::cos(phi) * u + std::sin(phi) * v;
@@ -98,6 +100,7 @@ double worst_region_width_deg(const PoseCrbModel& model, double distance, const 
     const Reach behind = half_bound_reach(model, distance, worst, -t);
     // A cut the workspace ends on both sides says nothing of the bound's region.
     if (ahead.workspace_edge && behind.workspace_edge) continue;
+    *fills_workspace = false;
     narrowest = std::min(narrowest, ahead.deg + behind.deg);
   }
   return narrowest;
@@ -208,7 +211,8 @@ PoseCrbMap pose_crb_map(const PoseCrbModel& model, double distance) {
       visibility::workspace_lattice(model.workspace(), model.options().samples).spacing;
   map.worst = refined_extreme(model, distance, map.samples, order, +1.0, spacing);
   map.best = refined_extreme(model, distance, map.samples, order, -1.0, spacing);
-  map.worst_region_width_deg = worst_region_width_deg(model, distance, map.worst);
+  map.worst_region_width_deg =
+      worst_region_width_deg(model, distance, map.worst, &map.worst_region_fills_workspace);
   map.sliver = map.worst_region_width_deg < PoseCrbMap::kSliverWidthDeg;
   return map;
 }

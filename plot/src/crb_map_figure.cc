@@ -141,7 +141,9 @@ void draw_legends(Canvas& canvas, const camera::PoseCrbReport& report,
                                      degrees(map.percentiles.p99)));
     right.push_back(Entry::text_only(
         std::string("sliver: ") + (map.sliver ? "yes" : "no") +
-        " (within 2× of the worst: " + fixed(map.worst_region_width_deg, 2) + "° across)"));
+        (map.worst_region_fills_workspace
+             ? std::string(" (within 2× of the worst: the whole workspace)")
+             : " (within 2× of the worst: " + fixed(map.worst_region_width_deg, 2) + "° across)")));
   }
   right.push_back(Entry::text_only("trackable: " + fixed(100.0 * map.trackable_fraction, 1) +
                                    " % (" + std::to_string(map.samples.size()) +

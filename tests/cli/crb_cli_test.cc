@@ -168,7 +168,8 @@ TEST(CrbCli, ATinyWorkspaceIsSampledOnItsOwnCap) {
   EXPECT_THAT(crb.out, HasSubstr("100 directions sampled, trackable fraction 1\n"));
   // The bound is flat over 0.2 degrees: the workspace's edge, not the bound, ends every cut, so
   // the worst is not a sliver (it was flagged, "0.14 deg across").
-  EXPECT_THAT(crb.out, HasSubstr("sliver           no"));
+  EXPECT_THAT(crb.out, HasSubstr("sliver           no (the region within 2x of the worst reaches "
+                                 "the workspace's edge along every cut)"));
   const CliRun simulate =
       run_vantage("simulate " + kCube + " --workspace 1,1,1,0.2 --trials 10", scratch);
   EXPECT_EQ(simulate.status, 0) << simulate.err;

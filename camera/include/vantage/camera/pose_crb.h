@@ -178,8 +178,12 @@ struct PoseCrbMap {
   double trackable_fraction = 0.0;  ///< of the workspace's area (sample count)
   PoseCrbPercentiles percentiles;
   /// Width (degrees) of the region around `worst` where rot_rms >= worst / 2, the narrowest of
-  /// four great-circle cuts through it (capped at kMaxSliverProbeDeg).
+  /// four great-circle cuts through it (capped at 2 kMaxSliverProbeDeg); a cut that the
+  /// workspace's edge ends on both sides is not counted.
   double worst_region_width_deg = 0.0;
+  /// No cut counted: the region reaches the workspace's edge along every cut (the width is then
+  /// the cap, and says nothing of the region).
+  bool worst_region_fills_workspace = false;
   bool sliver = false;  ///< worst_region_width_deg < kSliverWidthDeg
 
   static constexpr double kSliverWidthDeg = 1.0;
