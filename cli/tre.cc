@@ -123,13 +123,10 @@ int run_tre(const TreArgs& args) {
   }
   // Issue 36: nothing tracked exited 0 with nothing on stderr; as analyze does, the report is
   // printed and the reason given, exit 1.
-  for (const tracker::TreTargetReport& target : report.targets) {
-    if (target.extremes.worst.status == tracker::TreExtreme::Status::kUntracked) {
-      std::cerr << "vantage: tre: no direction of the workspace sees at least "
-                << report.min_visible << " markers that are not collinear: the TRE is not defined"
-                << std::endl;
-      return kExitFailure;
-    }
+  const std::string untracked = tre_json::untracked_reason(report);
+  if (!untracked.empty()) {
+    std::cerr << "vantage: tre: " << untracked << std::endl;
+    return kExitFailure;
   }
   return kExitOk;
 }

@@ -78,4 +78,14 @@ Json report(const tracker::TreReport& r) {
   return out;
 }
 
+std::string untracked_reason(const tracker::TreReport& report) {
+  for (const tracker::TreTargetReport& target : report.targets) {
+    if (target.extremes.worst.status == tracker::TreExtreme::Status::kUntracked) {
+      return "no direction of the workspace sees at least " + std::to_string(report.min_visible) +
+             " markers that are not collinear: the TRE is not defined";
+    }
+  }
+  return "";
+}
+
 }  // namespace vantage::tre_json

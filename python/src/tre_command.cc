@@ -102,7 +102,9 @@ py::object tre(const py::object& layout_arg, const py::object& points, const py:
       throw source.empty() || e.field() != "points" ? e : e.against(source);
     }
   });
-  return to_python(tre_json::report(report));
+  // As the CLI exits 1: a target tracked from no direction raises NumericalError "untracked".
+  const std::string untracked = tre_json::untracked_reason(report);
+  return result_or_raise(!untracked.empty(), "untracked", untracked, tre_json::report(report));
 }
 
 }  // namespace

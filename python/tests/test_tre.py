@@ -3,6 +3,7 @@
 West & Maurer's formula computed here with numpy, the covariance's trace is the RMS², and bad
 input raises ValueError naming the argument."""
 
+import json
 import math
 
 import numpy as np
@@ -110,3 +111,18 @@ def test_tre_needs_points(vantage):
         vantage.tre(str(SOURCE / "examples" / "layouts" / "triad.json"), targets=[0, 0, 1],
                     fle_rms=0.3)
     assert error.value.field == "points"
+
+
+def test_a_target_tracked_from_nowhere_raises_numerical_error(vantage, tmp_path):
+    # Issue 36, item 5: the CLI exits 1 with the reason; Python returned the report silently.
+    # The drone's markers face up; the workspace looks at it from below.
+    drone = json.loads((SOURCE / "examples" / "layouts" / "drone.json").read_text())
+    drone["workspace"] = {"axis": [0, 0, -1], "half_angle_deg": 10}
+    path = tmp_path / "from_below.json"
+    path.write_text(json.dumps(drone))
+    with pytest.raises(vantage.NumericalError) as error:
+        vantage.tre(str(path), targets=[0, 0, -1], fle_rms=0.1)
+    assert error.value.status == "untracked"
+    assert "the TRE is not defined" in str(error.value)
+    assert isinstance(error.value.result, vantage.TreReport)
+    assert error.value.result.targets[0].worst.status == "untracked"

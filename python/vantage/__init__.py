@@ -158,6 +158,7 @@ def crb(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
         tag_points=tag_points, bundle=bundle))
 
 
+@_typed_errors(lambda error: TreReport(error.result))
 def tre(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
         targets: Optional[npt.ArrayLike] = None, fle_rms: Optional[float] = None,
         fle_sigma: Optional[Tuple[float, float]] = None,
@@ -179,7 +180,8 @@ def tre(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
     threads: as ``--seed``, ``--threads``. allow_large: lift the size limits, as
     ``--allow-large``.
 
-    Raises ValueError on bad input.
+    Raises ValueError on bad input and NumericalError (status 'untracked', its ``result`` the
+    TreReport) when a target is tracked from no direction, as the CLI's exit status 1.
     """
     return TreReport(_vantage.tre(
         layout, points=points, targets=targets, fle_rms=fle_rms, fle_sigma=fle_sigma,

@@ -5,6 +5,7 @@
 // rms_isotropic, at_direction, worst, best, monte_carlo}], fle, model.
 
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "vantage/tracker/tre_report.h"
 
@@ -17,5 +18,9 @@ Json extreme(const tracker::TreExtreme& extreme);
 
 /// The whole report.
 Json report(const tracker::TreReport& report);
+
+/// Why the report is a failure, when a target is tracked from no direction (the command's exit
+/// status 1, Python's NumericalError "untracked"); empty otherwise.
+std::string untracked_reason(const tracker::TreReport& report);
 
 }  // namespace vantage::tre_json
