@@ -63,7 +63,8 @@ struct CellViewpoint {
   Status status = Status::kSolverFailed;
   Eigen::Vector3d viewpoint = Eigen::Vector3d::UnitZ();  ///< a / ||a||, upper hemisphere
   double t = 0.0;                                        ///< the LMI's optimal t (Eq. 28)
-  double pbar_at = 1.0;  ///< p-bar(a) = sqrt(1 - t^2) at `viewpoint`, the cell's optimum, as pbar_at()
+  double pbar_at =
+      1.0;  ///< p-bar(a) = sqrt(1 - t^2) at `viewpoint`, the cell's optimum, as pbar_at()
   /// The backend's raw result (y = [a; t]) of the last LMI solved: on lmi_vectors of the cell's
   /// vectors (see solve_cell_lmi()).
   SdpResult sdp;
