@@ -117,9 +117,8 @@ std::vector<int> trackable_by_bound(const std::vector<PoseCrbAt>& samples) {
   return order;
 }
 
-std::vector<PoseCrbAt> sample_workspace(const PoseCrbModel& model, double distance) {
-  const Eigen::Matrix3Xd all =
-      visibility::workspace_lattice(model.workspace(), model.options().samples).directions;
+std::vector<PoseCrbAt> sample_workspace(const PoseCrbModel& model, double distance,
+                                        const Eigen::Matrix3Xd& all) {
   std::vector<PoseCrbAt> samples(static_cast<std::size_t>(all.cols()));
   parallel_blocks(static_cast<long>(all.cols()), model.options().threads,
                   [&](long begin, long end) {
@@ -192,9 +191,11 @@ PoseCrbMap pose_crb_map(const PoseCrbModel& model) {
 PoseCrbMap pose_crb_map(const PoseCrbModel& model, double distance) {
   using namespace crb_sampling;
   PoseCrbMap map;
-  map.samples = sample_workspace(model, distance);
+  const visibility::WorkspaceLattice lattice =
+      visibility::workspace_lattice(model.workspace(), model.options().samples);
+  map.samples = sample_workspace(model, distance, lattice.directions);
   const std::vector<int> order = trackable_by_bound(map.samples);
-  if (map.samples.empty() || order.empty()) {
+  if (order.empty()) {
     const bool ill = std::any_of(map.samples.begin(), map.samples.end(),
                                  [](const PoseCrbAt& at) { return at.ill_conditioned; });
     if (ill) map.status = PoseCrbMap::Status::kIllConditioned;
@@ -207,10 +208,8 @@ PoseCrbMap pose_crb_map(const PoseCrbModel& model, double distance) {
   for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = map.samples[order[k]].rot_rms_deg;
   map.percentiles = {nearest_rank(sorted, 0.50), nearest_rank(sorted, 0.95),
                      nearest_rank(sorted, 0.99)};
-  const double spacing =
-      visibility::workspace_lattice(model.workspace(), model.options().samples).spacing;
-  map.worst = refined_extreme(model, distance, map.samples, order, +1.0, spacing);
-  map.best = refined_extreme(model, distance, map.samples, order, -1.0, spacing);
+  map.worst = refined_extreme(model, distance, map.samples, order, +1.0, lattice.spacing);
+  map.best = refined_extreme(model, distance, map.samples, order, -1.0, lattice.spacing);
   map.worst_region_width_deg =
       worst_region_width_deg(model, distance, map.worst, &map.worst_region_fills_workspace);
   map.sliver = map.worst_region_width_deg < PoseCrbMap::kSliverWidthDeg;
