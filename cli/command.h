@@ -14,6 +14,7 @@
 
 #include "vantage/analysis/absolute_orientation.h"
 #include "vantage/analysis/common.h"
+#include "vantage/commands/against_source.h"
 
 namespace vantage::cli {
 
@@ -44,24 +45,11 @@ Command add_crb_command(CLI::App& root);
 Command add_tre_command(CLI::App& root);
 Command add_ident_command(CLI::App& root);
 
-/// Runs a library call on data read from `source`; its InvalidArgument (too few points,
-/// coincident points, ...) is reported against the file: the same error, with the file as its
-/// source. The library names the fields as the file does, so nothing is renamed.
-template <typename Call>
-auto against_source(const std::string& source, Call&& call) {
-  try {
-    return call();
-  } catch (const InvalidArgument& e) {
-    throw e.against(source);
-  }
-}
+using commands::against_source;
 
 /// A matrix as nested JSON rows ([[..], [..]]), a vector as a flat list.
 Json json_rows(const Eigen::MatrixXd& m);
 Json json_list(const Eigen::VectorXd& v);
-
-/// True when `text` is well-formed UTF-8 (file names need not be).
-bool is_valid_utf8(const std::string& text);
 
 /// Prints one JSON object on stdout (two-space indented; invalid UTF-8 in strings, e.g. a file
 /// name, is replaced by U+FFFD instead of failing).

@@ -107,7 +107,7 @@ void check_distance_difference(const DesignArgs& args, const Layout& layout) {
 void check_write_target(const DesignArgs& args) {
   if (!args.write_given) return;
   if (args.write.empty()) bad("--write: empty file name");
-  if (!is_valid_utf8(args.write)) {
+  if (!io::is_valid_utf8(args.write)) {
     bad("--write: the file name is not valid UTF-8 (the report could not name it)");
   }
   if (!args.overwrite && io::same_file(args.write, args.file)) {

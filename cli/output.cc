@@ -23,15 +23,6 @@ Json json_list(const Eigen::VectorXd& v) {
   return list;
 }
 
-bool is_valid_utf8(const std::string& text) {
-  try {
-    static_cast<void>(Json(text).dump());
-  } catch (const Json::type_error&) {
-    return false;
-  }
-  return true;
-}
-
 namespace {
 
 // File names need not be UTF-8: replace invalid bytes (U+FFFD) rather than fail after the work.

@@ -14,16 +14,6 @@ namespace vantage::place_json::internal {
 /// Throws InvalidArgument naming `field` (a CLI option, e.g. "--markers") with `message`.
 [[noreturn]] void place_refuse(const std::string& field, const std::string& message);
 
-/// The library's InvalidArgument from data read from `source`, reported against the file.
-template <typename Call>
-auto place_against(const std::string& source, Call&& call) {
-  try {
-    return call();
-  } catch (const InvalidArgument& e) {
-    throw e.against(source);
-  }
-}
-
 /// The TRE's numeric range (docs/math.md §23) on the sites, before any search; refuses naming
 /// --target, the FLE's option or the sites' option.
 void check_tracker_range(const Request& request, const Eigen::Matrix3Xd& sites);

@@ -10,13 +10,13 @@
 
 #include "place_internal.h"
 #include "vantage/analysis/common.h"
+#include "vantage/commands/against_source.h"
 #include "vantage/report/json_number.h"
 #include "vantage/visibility/visibility_model.h"
 
 namespace vantage::place_json {
 
 using internal::check_tracker_range;
-using internal::place_against;
 using internal::place_refuse;
 
 namespace {
@@ -174,7 +174,7 @@ Json place_objective_json(const Request& request, const Outcome& outcome) {
 Outcome place(const Request& request, const Sites& sites,
               const std::function<void(const std::string&)>& progress) {
   if (progress) progress("occlusion grid");
-  const visibility::VisibilityModel model = place_against(request.source(), [&] {
+  const visibility::VisibilityModel model = commands::against_source(request.source(), [&] {
     return visibility::VisibilityModel::of(
         sites.layout, visibility::VisibilityModel::kDefaultResolutionDeg, request.threads);
   });

@@ -9,6 +9,7 @@
 #include "place_internal.h"
 #include "vantage/analysis/common.h"
 #include "vantage/io/layout_formats.h"
+#include "vantage/io/printable.h"
 #include "vantage/io/text_file.h"
 
 namespace vantage::place_json {
@@ -20,15 +21,6 @@ namespace {
 constexpr int kMaxCandidates = 20000;
 // The camera objective's lattice: each evaluation is linear in it.
 constexpr int kMaxCrbSamples = 1'000'000;
-
-bool place_valid_utf8(const std::string& text) {
-  try {
-    static_cast<void>(Json(text).dump());
-  } catch (const Json::type_error&) {
-    return false;
-  }
-  return true;
-}
 
 void check_positive(double value, const char* option) {
   if (!(value > 0.0) || !std::isfinite(value)) {
@@ -203,7 +195,7 @@ void check_request(const Request& request) {
     place_refuse("--min-coverage", "must be in (0, 1]");
   }
   if (request.out.empty()) return;
-  if (!place_valid_utf8(request.out)) place_refuse("--out", "the file name is not valid UTF-8");
+  if (!io::is_valid_utf8(request.out)) place_refuse("--out", "the file name is not valid UTF-8");
   bool json = false;
   try {
     json = io::layout_write_format(request.out) == io::LayoutFormat::kJson;

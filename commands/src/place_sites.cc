@@ -9,6 +9,7 @@
 
 #include "place_internal.h"
 #include "vantage/analysis/common.h"
+#include "vantage/commands/against_source.h"
 #include "vantage/design/site_filters.h"
 #include "vantage/io/layout_formats.h"
 #include "vantage/io/mesh_file.h"
@@ -16,7 +17,6 @@
 
 namespace vantage::place_json {
 
-using internal::place_against;
 using internal::place_refuse;
 
 namespace {
@@ -163,7 +163,7 @@ std::vector<int> place_append_kept(const Request& request, Layout* sites) {
   v.cone_half_angle_deg.conservativeResize(n + f);
   v.cone_half_angle_deg.tail(f) = kept.visibility->cone_half_angle_deg;
   sites->names = names;
-  place_against(request.keep, [&] { sites->validate(); });
+  commands::against_source(request.keep, [&] { sites->validate(); });
   for (Eigen::Index i = 0; i < f; ++i) out.push_back(static_cast<int>(n + i));
   return out;
 }

@@ -1,5 +1,7 @@
 #include "vantage/io/printable.h"
 
+#include <nlohmann/json.hpp>
+
 namespace vantage::io {
 
 std::string printable(const std::string& text) {
@@ -24,6 +26,15 @@ std::string excerpt(const std::string& text) {
   std::size_t cut = kExcerptBytes;
   while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xc0) == 0x80) --cut;
   return printable(text.substr(0, cut)) + "... (" + std::to_string(text.size()) + " bytes)";
+}
+
+bool is_valid_utf8(const std::string& text) {
+  try {
+    static_cast<void>(nlohmann::json(text).dump());
+  } catch (const nlohmann::json::type_error&) {
+    return false;
+  }
+  return true;
 }
 
 }  // namespace vantage::io

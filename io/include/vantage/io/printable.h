@@ -12,6 +12,9 @@ namespace vantage::io {
 /// InvalidArgument stay on one line.
 std::string printable(const std::string& text);
 
+/// True when `text` is well-formed UTF-8 (file names need not be; a JSON report needs it).
+bool is_valid_utf8(const std::string& text);
+
 /// Most bytes of file content that excerpt() quotes.
 constexpr std::size_t kExcerptBytes = 60;
 
