@@ -36,7 +36,24 @@ struct CrbArgs {
   bool allow_large = false;
 };
 
+// rot_rms of a direction in degrees, or "unbounded" (no figure past the first-order limit).
+std::string rot_text(const camera::PoseCrbAt& at) {
+  return at.unbounded ? std::string("unbounded") : format_number(at.rot_rms_deg, 4) + " deg";
+}
+
+// trans_rms of a direction, or "-" where rot_rms is unbounded.
+std::string trans_text(const camera::PoseCrbAt& at) {
+  return at.unbounded ? std::string("-") : format_number(at.trans_rms, 4);
+}
+
 std::string bound_line(const camera::PoseCrbAt& at) {
+  if (at.unbounded) {
+    return format_vector(at.direction, 4) + "  unbounded (" +
+           (at.ill_conditioned ? std::string("the Fisher information is singular")
+                               : "first-order rot_rms above " +
+                                     format_number(camera::PoseCrbAt::kMaxRotRmsDeg) + " deg") +
+           "; " + std::to_string(at.visible_markers.size()) + " visible markers)";
+  }
   if (!at.trackable) {
     return format_vector(at.direction, 4) + "  not trackable (" +
            std::to_string(at.visible_markers.size()) + " visible markers)";
@@ -55,7 +72,8 @@ void print_report(const std::string& name, const camera::PoseCrbReport& r) {
             << format_number(r.camera.noise_px) << " px per coordinate\n"
             << "  " << r.markers << " markers, visibility " << (r.with_body ? "cone+mesh" : "cone")
             << "; " << map.samples.size() << " directions sampled, trackable fraction "
-            << format_number(map.trackable_fraction, 4) << "\n\n";
+            << format_number(map.trackable_fraction, 4) << ", unbounded "
+            << format_number(map.unbounded_fraction, 4) << "\n\n";
   if (r.at_direction) std::cout << "at direction     " << bound_line(*r.at_direction) << "\n";
   if (map.status != camera::PoseCrbMap::Status::kOk) {
     std::cout << "not trackable    " << camera::to_string(map.status) << ": "
@@ -82,10 +100,9 @@ void print_report(const std::string& name, const camera::PoseCrbReport& r) {
       std::cout << "  not trackable\n";
       continue;
     }
-    std::cout << "  worst rot_rms " << format_number(row.worst.rot_rms_deg, 4) << " deg, trans_rms "
-              << format_number(row.worst.trans_rms, 4) << "  median rot_rms "
-              << format_number(row.median.rot_rms_deg, 4) << " deg, trans_rms "
-              << format_number(row.median.trans_rms, 4) << "\n";
+    std::cout << "  worst rot_rms " << rot_text(row.worst) << ", trans_rms "
+              << trans_text(row.worst) << "  median rot_rms " << rot_text(row.median)
+              << ", trans_rms " << trans_text(row.median) << "\n";
   }
 }
 
@@ -117,7 +134,7 @@ void print_tag_sweep(const std::vector<camera::TagFace>& faces,
     std::cout << cell(format_number(row.median.rot_rms_deg, 4) + " deg", 17)
               << cell(format_number(row.median.trans_rms, 4), 14)
               << cell(format_number(row.percentiles.p95, 4) + " deg", 14)
-              << cell(format_number(row.worst.rot_rms_deg, 4) + " deg", 15) << "\n";
+              << cell(rot_text(row.worst), 15) << "\n";
   }
   if (small) {
     std::cout << "   * under " << format_number(camera::TagSweepRow::kMinDetectablePixels)

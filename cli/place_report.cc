@@ -23,6 +23,14 @@ std::string aim_option(const Eigen::Vector3d& aim) {
   return out.str();
 }
 
+// A step's or a baseline's objective value with its unit.
+std::string objective_text(const place_json::PlacedLayout& placed, double value) {
+  if (placed.crb && std::isfinite(value) && value > camera::PoseCrbAt::kMaxRotRmsDeg) {
+    return "unbounded (first-order rot_rms past the 45 deg limit)";
+  }
+  return format_number(value, 6) + (placed.tre ? "" : " deg");
+}
+
 // The camera objective's lines: what `vantage crb` reports of the placed layout.
 void print_camera_objective(const PlaceArgs& args, const place_json::Outcome& outcome) {
   const camera::PoseCrbMap& map = *outcome.placed.crb;
@@ -35,16 +43,27 @@ void print_camera_objective(const PlaceArgs& args, const place_json::Outcome& ou
     std::cout << "  not trackable: " << camera::untrackable_reason(map, c.distance) << "\n";
     return;
   }
-  std::cout << "  " << args.statistic << " rot_rms   " << format_number(outcome.objective_value, 6)
-            << " deg (the search's lattice value "
-            << format_number(outcome.result.value.objective, 6) << " deg)\n"
-            << "  worst           " << format_number(map.worst.rot_rms_deg, 6) << " deg, trans_rms "
-            << format_number(map.worst.trans_rms, 6) << " at " << format_vector(map.worst.direction)
-            << "\n"
+  const std::string unbounded = "unbounded (first-order rot_rms past the 45 deg limit)";
+  std::cout << "  " << args.statistic << " rot_rms   "
+            << (std::isfinite(outcome.objective_value)
+                    ? format_number(outcome.objective_value, 6) + " deg"
+                    : unbounded)
+            << " (the search's lattice value "
+            << objective_text(outcome.placed, outcome.result.value.objective) << ")\n"
+            << "  worst           "
+            << (map.worst.unbounded ? unbounded
+                                    : format_number(map.worst.rot_rms_deg, 6) + " deg, trans_rms " +
+                                          format_number(map.worst.trans_rms, 6))
+            << " at " << format_vector(map.worst.direction) << "\n"
             << "  p50 / p95 / p99 " << format_number(map.percentiles.p50, 6) << " / "
             << format_number(map.percentiles.p95, 6) << " / "
             << format_number(map.percentiles.p99, 6) << " deg\n"
-            << "  trackable       " << percent(map.trackable_fraction) << " of the workspace\n";
+            << "  trackable       " << percent(map.trackable_fraction) << " of the workspace"
+            << (map.unbounded_fraction > 0.0 ? ", unbounded " + percent(map.unbounded_fraction) +
+                                                   " (first-order rot_rms "
+                                                   "above 45 deg or F singular: no figure)"
+                                             : std::string())
+            << "\n";
 }
 
 // The tracker objective's lines: what `vantage tre` reports of the placed layout.
@@ -70,11 +89,6 @@ void print_tracker_objective(const place_json::Outcome& outcome) {
               << ", " << tracker::to_string(w.status) << ") at " << format_vector(w.direction)
               << "\n";
   }
-}
-
-// A step's or a baseline's objective value with its unit.
-std::string objective_text(const place_json::PlacedLayout& placed, double value) {
-  return format_number(value, 6) + (placed.tre ? "" : " deg");
 }
 
 }  // namespace

@@ -222,6 +222,7 @@ PoseCrbAt PoseCrbModel::at(const Eigen::Vector3d& direction, double distance) co
   out.direction = checked_direction(direction);
   out.rot_rms_deg = std::numeric_limits<double>::infinity();
   out.trans_rms = std::numeric_limits<double>::infinity();
+  out.first_order_rot_rms_deg = std::numeric_limits<double>::infinity();
   const Eigen::Vector3d c = m.centroid + distance * out.direction;
   Eigen::Matrix3d R;
   Eigen::Vector3d p;
@@ -257,16 +258,23 @@ void complete_pose_crb(const Eigen::Matrix<double, 6, 6>& F1, double noise_px, d
   const double smallest = eig.eigenvalues()(0);
   if (!(smallest > 0.0) || !(largest <= PoseCrbAt::kMaxCondition * smallest)) {
     out->ill_conditioned = true;
+    out->unbounded = true;
     return;
   }
   const Eigen::Matrix<double, 6, 6> C_scaled = eig.eigenvectors() *
                                                eig.eigenvalues().cwiseInverse().asDiagonal() *
                                                eig.eigenvectors().transpose();
-  out->covariance = scale.asDiagonal() * C_scaled * scale.asDiagonal();
+  const Eigen::Matrix<double, 6, 6> C = scale.asDiagonal() * C_scaled * scale.asDiagonal();
+  const double rot_rms_deg = std::sqrt(C.bottomRightCorner<3, 3>().trace()) * kDegreesPerRadian;
+  out->first_order_rot_rms_deg = rot_rms_deg;
+  if (!(rot_rms_deg <= PoseCrbAt::kMaxRotRmsDeg)) {
+    out->unbounded = true;
+    return;
+  }
+  out->covariance = C;
   out->trackable = true;
-  out->trans_rms = std::sqrt(out->covariance.topLeftCorner<3, 3>().trace());
-  out->rot_rms_deg =
-      std::sqrt(out->covariance.bottomRightCorner<3, 3>().trace()) * kDegreesPerRadian;
+  out->trans_rms = std::sqrt(C.topLeftCorner<3, 3>().trace());
+  out->rot_rms_deg = rot_rms_deg;
 }
 
 }  // namespace vantage::camera

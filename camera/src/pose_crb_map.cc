@@ -38,20 +38,26 @@ Eigen::Vector3d along(const Eigen::Vector3d& a, const Eigen::Vector3d& t, double
   return (std::cos(angle) * a + std::sin(angle) * t).normalized();
 }
 
-// Compass search on the sphere for the largest (sign +1) or smallest (sign -1) rot_rms_deg among
-// trackable directions, from `start`, first step `step` radians.
+// Whether the worst may sit at `at`: the first-order bound exists there (trackable, or unbounded
+// past the rot_rms limit; not where F is singular).
+bool ranked(const PoseCrbAt& at) { return std::isfinite(at.first_order_rot_rms_deg); }
+
+// Compass search on the sphere from `start`, first step `step` radians: for the largest
+// first-order rot_rms among ranked directions (sign +1; it stops once past the limit, where the
+// worst is unbounded), or the smallest rot_rms among trackable ones (sign -1).
 PoseCrbAt refine(const PoseCrbModel& model, double distance, const PoseCrbAt& start, double step,
                  double sign) {
   PoseCrbAt best = start;
   // A workspace narrower than the lattice of the whole sphere has a finer spacing.
   const double min_step = std::min(kRefineMinStep, step / 100.0);
-  while (step > min_step) {
+  while (step > min_step && !best.unbounded) {
     Eigen::Vector3d u, v;
     tangent_basis(best.direction, &u, &v);
     bool moved = false;
     for (const Eigen::Vector3d& t : {u, v, Eigen::Vector3d(-u), Eigen::Vector3d(-v)}) {
       PoseCrbAt next = model.at(along(best.direction, t, step), distance);
-      if (next.trackable && sign * next.rot_rms_deg > sign * best.rot_rms_deg) {
+      const bool admitted = sign > 0 ? ranked(next) : next.trackable;
+      if (admitted && sign * next.first_order_rot_rms_deg > sign * best.first_order_rot_rms_deg) {
         best = std::move(next);
         moved = true;
         break;
@@ -62,15 +68,16 @@ PoseCrbAt refine(const PoseCrbModel& model, double distance, const PoseCrbAt& st
   return best;
 }
 
-// How far (degrees) from the worst direction along t the bound stays >= half of it, and whether
-// the cut left the workspace first (then the workspace ends it, not the bound).
+// How far (degrees) from the worst direction along t the first-order bound stays >= half of the
+// worst (of the rot_rms limit when the worst is unbounded), and whether the cut left the
+// workspace first (then the workspace ends it, not the bound).
 struct Reach {
   double deg = 0.0;
   bool workspace_edge = false;
 };
 Reach half_bound_reach(const PoseCrbModel& model, double distance, const PoseCrbAt& worst,
                        const Eigen::Vector3d& t) {
-  const double half = 0.5 * worst.rot_rms_deg;
+  const double half = 0.5 * std::min(worst.first_order_rot_rms_deg, PoseCrbAt::kMaxRotRmsDeg);
   Reach reach;
   for (double deg = kSliverFineStepDeg; deg <= PoseCrbMap::kMaxSliverProbeDeg + 1e-12;
        deg += deg < PoseCrbMap::kSliverWidthDeg ? kSliverFineStepDeg : kSliverCoarseStepDeg) {
@@ -80,7 +87,7 @@ Reach half_bound_reach(const PoseCrbModel& model, double distance, const PoseCrb
       break;
     }
     const PoseCrbAt at = model.at(a, distance);
-    if (!at.trackable || at.rot_rms_deg < half) break;
+    if (!ranked(at) || at.first_order_rot_rms_deg < half) break;
     reach.deg = deg;
   }
   return reach;
@@ -106,15 +113,22 @@ double worst_region_width_deg(const PoseCrbModel& model, double distance, const 
   return narrowest;
 }
 
-// Indices of the trackable samples, by rot_rms_deg increasing (ties by index).
-std::vector<int> trackable_by_bound(const std::vector<PoseCrbAt>& samples) {
+// Indices of the samples that `admit`, by first-order rot_rms increasing (ties by index).
+template <typename Admit>
+std::vector<int> by_bound(const std::vector<PoseCrbAt>& samples, Admit admit) {
   std::vector<int> order;
   for (int k = 0; k < static_cast<int>(samples.size()); ++k) {
-    if (samples[k].trackable) order.push_back(k);
+    if (admit(samples[k])) order.push_back(k);
   }
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return samples[a].rot_rms_deg < samples[b].rot_rms_deg; });
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return samples[a].first_order_rot_rms_deg < samples[b].first_order_rot_rms_deg;
+  });
   return order;
+}
+
+// Indices of the trackable samples, by rot_rms_deg increasing (ties by index).
+std::vector<int> trackable_by_bound(const std::vector<PoseCrbAt>& samples) {
+  return by_bound(samples, [](const PoseCrbAt& at) { return at.trackable; });
 }
 
 std::vector<PoseCrbAt> sample_workspace(const PoseCrbModel& model, double distance,
@@ -137,7 +151,9 @@ PoseCrbAt refined_extreme(const PoseCrbModel& model, double distance,
   for (int s = 0; s < starts; ++s) {
     const int k = sign > 0 ? order[order.size() - 1 - s] : order[s];
     PoseCrbAt refined = refine(model, distance, samples[k], step, sign);
-    if (s == 0 || sign * refined.rot_rms_deg > sign * best.rot_rms_deg) best = std::move(refined);
+    if (s == 0 || sign * refined.first_order_rot_rms_deg > sign * best.first_order_rot_rms_deg) {
+      best = std::move(refined);
+    }
   }
   return best;
 }
@@ -158,6 +174,8 @@ const char* to_string(PoseCrbMap::Status status) {
       return "untrackable";
     case PoseCrbMap::Status::kIllConditioned:
       return "ill_conditioned";
+    case PoseCrbMap::Status::kUnbounded:
+      return "unbounded";
   }
   return "untrackable";
 }
@@ -171,6 +189,18 @@ std::string untrackable_reason(const PoseCrbMap& map, double distance) {
              std::to_string(map.samples.size()) + " sampled)";
     case PoseCrbMap::Status::kIllConditioned:
       break;
+    case PoseCrbMap::Status::kUnbounded: {
+      static_assert(PoseCrbAt::kMaxRotRmsDeg == 45.0, "the sentence below quotes it");
+      const auto unbounded = std::count_if(map.samples.begin(), map.samples.end(),
+                                           [](const PoseCrbAt& at) { return at.unbounded; });
+      std::ostringstream out;
+      out << unbounded << " of the " << map.samples.size()
+          << " sampled directions of the workspace see enough markers, but at each the "
+             "first-order bound is unbounded (rot_rms above 45 deg, or the Fisher information "
+             "singular) at distance "
+          << distance;
+      return out.str();
+    }
   }
   static_assert(PoseCrbAt::kMaxCondition == 1e12, "the sentence below quotes it");
   const auto ill = std::count_if(map.samples.begin(), map.samples.end(),
@@ -195,10 +225,20 @@ PoseCrbMap pose_crb_map(const PoseCrbModel& model, double distance) {
       visibility::workspace_lattice(model.workspace(), model.options().samples);
   map.samples = sample_workspace(model, distance, lattice.directions);
   const std::vector<int> order = trackable_by_bound(map.samples);
+  const auto unbounded = std::count_if(map.samples.begin(), map.samples.end(),
+                                       [](const PoseCrbAt& at) { return at.unbounded; });
+  map.unbounded_fraction = static_cast<double>(unbounded) / static_cast<double>(map.samples.size());
   if (order.empty()) {
     const bool ill = std::any_of(map.samples.begin(), map.samples.end(),
                                  [](const PoseCrbAt& at) { return at.ill_conditioned; });
-    if (ill) map.status = PoseCrbMap::Status::kIllConditioned;
+    const bool past_limit =
+        std::any_of(map.samples.begin(), map.samples.end(),
+                    [](const PoseCrbAt& at) { return at.unbounded && !at.ill_conditioned; });
+    if (past_limit) {
+      map.status = PoseCrbMap::Status::kUnbounded;
+    } else if (ill) {
+      map.status = PoseCrbMap::Status::kIllConditioned;
+    }
     return map;
   }
   map.status = PoseCrbMap::Status::kOk;
@@ -208,7 +248,10 @@ PoseCrbMap pose_crb_map(const PoseCrbModel& model, double distance) {
   for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = map.samples[order[k]].rot_rms_deg;
   map.percentiles = {nearest_rank(sorted, 0.50), nearest_rank(sorted, 0.95),
                      nearest_rank(sorted, 0.99)};
-  map.worst = refined_extreme(model, distance, map.samples, order, +1.0, lattice.spacing);
+  // The worst starts from every direction where the first-order bound exists, unbounded ones
+  // included: the worst is unbounded when the bound passes its limit anywhere it is reached.
+  const std::vector<int> ranked_order = by_bound(map.samples, ranked);
+  map.worst = refined_extreme(model, distance, map.samples, ranked_order, +1.0, lattice.spacing);
   map.best = refined_extreme(model, distance, map.samples, order, -1.0, lattice.spacing);
   map.worst_region_width_deg =
       worst_region_width_deg(model, distance, map.worst, &map.worst_region_fills_workspace);
@@ -231,6 +274,7 @@ std::vector<PoseCrbSweepRow> pose_crb_distance_sweep(const PoseCrbModel& model, 
     PoseCrbMap map = pose_crb_map(model, row.distance);
     row.status = map.status;
     row.trackable_fraction = map.trackable_fraction;
+    row.unbounded_fraction = map.unbounded_fraction;
     if (map.status == PoseCrbMap::Status::kOk) {
       row.worst = map.worst;
       const std::vector<int> order = crb_sampling::trackable_by_bound(map.samples);

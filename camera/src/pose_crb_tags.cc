@@ -230,6 +230,7 @@ std::vector<TagSweepRow> pose_crb_tag_sweep(const Layout& layout, const PoseCrbO
       const PoseCrbMap map = pose_crb_map(model);
       row.status = map.status;
       row.trackable_fraction = map.trackable_fraction;
+      row.unbounded_fraction = map.unbounded_fraction;
       if (map.status == PoseCrbMap::Status::kOk) {
         row.worst = map.worst;
         row.percentiles = map.percentiles;

@@ -20,6 +20,7 @@ Json at_direction(const camera::PoseCrbAt& at, bool with_covariance) {
   Json out = Json::object();
   out["direction"] = vector3(at.direction);
   out["trackable"] = at.trackable;
+  out["unbounded"] = at.unbounded;
   out["rot_rms_deg"] = json_number(at.rot_rms_deg);
   out["trans_rms"] = json_number(at.trans_rms);
   if (with_covariance) {
@@ -55,6 +56,7 @@ Json report(const camera::PoseCrbReport& r) {
   out["worst"] = ok ? at_direction(r.map.worst, false) : Json(nullptr);
   out["best"] = ok ? at_direction(r.map.best, false) : Json(nullptr);
   out["trackable_fraction"] = r.map.trackable_fraction;
+  out["unbounded_fraction"] = r.map.unbounded_fraction;
   out["percentiles"] = {{"p50", ok ? Json(r.map.percentiles.p50) : Json(nullptr)},
                         {"p95", ok ? Json(r.map.percentiles.p95) : Json(nullptr)},
                         {"p99", ok ? Json(r.map.percentiles.p99) : Json(nullptr)}};
@@ -68,6 +70,7 @@ Json report(const camera::PoseCrbReport& r) {
       const bool row_ok = row.status == camera::PoseCrbMap::Status::kOk;
       rows.push_back({{"distance", row.distance},
                       {"trackable_fraction", row.trackable_fraction},
+                      {"unbounded_fraction", row.unbounded_fraction},
                       {"worst", row_ok ? at_direction(row.worst, false) : Json(nullptr)},
                       {"median", row_ok ? at_direction(row.median, false) : Json(nullptr)}});
     }
@@ -97,6 +100,7 @@ Json tag_sweep(const std::vector<camera::TagFace>& faces,
                         {"tag_pixels", row.tag_pixels},
                         {"status", camera::to_string(row.status)},
                         {"trackable_fraction", row.trackable_fraction},
+                        {"unbounded_fraction", row.unbounded_fraction},
                         {"worst", ok ? at_direction(row.worst, false) : Json(nullptr)},
                         {"median", ok ? at_direction(row.median, false) : Json(nullptr)},
                         {"percentiles",

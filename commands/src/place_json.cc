@@ -43,6 +43,12 @@ Json place_steps_json(const design::PlacementResult& r) {
   return steps;
 }
 
+// A camera objective's search value: null past the first-order limit (§22, "Unbounded"), as
+// when nothing is trackable; the search ranks by it, but it is not a figure.
+Json camera_search_number(double value_deg) {
+  return value_deg > camera::PoseCrbAt::kMaxRotRmsDeg ? Json() : report::json_number(value_deg);
+}
+
 // The camera objective in words, with the `vantage crb` options that reproduce its numbers.
 std::string camera_words(const Request& request, const camera::PoseCrbOptions& camera) {
   std::ostringstream out;
@@ -149,14 +155,15 @@ Json place_objective_json(const Request& request, const Outcome& outcome) {
   const camera::PoseCrbOptions& c = *outcome.placed.camera;
   const camera::PoseCrbMap& map = *outcome.placed.crb;
   out["statistic"] = request.statistic;
-  out["search_value_deg"] = report::json_number(r.value.objective);
+  out["search_value_deg"] = camera_search_number(r.value.objective);
   out["camera"] = {{"distance", c.distance},
                    {"focal_px", c.focal_length},
                    {"noise_px", c.noise_px},
                    {"samples", c.samples},
                    {"aim", {c.aim->x(), c.aim->y(), c.aim->z()}}};
   Json crb = {{"status", camera::to_string(map.status)},
-              {"trackable_fraction", map.trackable_fraction}};
+              {"trackable_fraction", map.trackable_fraction},
+              {"unbounded_fraction", map.unbounded_fraction}};
   if (map.status == camera::PoseCrbMap::Status::kOk) {
     crb["worst"] = {
         {"rot_rms_deg", map.worst.rot_rms_deg},
@@ -332,7 +339,8 @@ Json report(const Request& request, const Sites& sites, const Outcome& outcome, 
          placed.site_names[static_cast<std::size_t>(r.robust->worst_lost_marker)]},
         {"coverage", r.robust->coverage}};
     if (outcome.placed.crb || outcome.placed.tre) {
-      out["robust"]["objective"] = report::json_number(r.robust->objective);
+      out["robust"]["objective"] = outcome.placed.crb ? camera_search_number(r.robust->objective)
+                                                      : report::json_number(r.robust->objective);
     }
   }
   out["swaps"] = r.swaps;

@@ -4,6 +4,7 @@
 #include "camera_objective.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "vantage/analysis/parallel.h"
@@ -48,6 +49,7 @@ camera::PoseCrbAt CameraSiteObjective::at(const std::vector<int>& chosen, int d)
   out.direction = directions_[k];
   out.rot_rms_deg = std::numeric_limits<double>::infinity();
   out.trans_rms = std::numeric_limits<double>::infinity();
+  out.first_order_rot_rms_deg = std::numeric_limits<double>::infinity();
   Eigen::Matrix<double, 6, 6> F = Eigen::Matrix<double, 6, 6>::Zero();
   const Eigen::Matrix3Xd& points = objective_.sites.entries;
   for (std::size_t m = 0; m < chosen.size(); ++m) {
@@ -70,11 +72,13 @@ double CameraSiteObjective::value(const std::vector<int>& chosen, double level, 
   const int first = hint != nullptr && *hint >= 0 && *hint < n ? *hint : 0;
   for (int step = 0; step < n; ++step) {
     const int d = (first + step) % n;
-    const camera::PoseCrbAt at = this->at(chosen, d);
-    if (!at.trackable) continue;
-    if (!worst) values.push_back(at.rot_rms_deg);
-    if (at.rot_rms_deg > largest) {
-      largest = at.rot_rms_deg;
+    // The first-order value ranks past the reporting limit too (a 200 deg layout is better
+    // than a 6 000 deg one, though neither is a figure: docs/math.md §21, "Objectives").
+    const double rot_rms_deg = this->at(chosen, d).first_order_rot_rms_deg;
+    if (!std::isfinite(rot_rms_deg)) continue;
+    if (!worst) values.push_back(rot_rms_deg);
+    if (rot_rms_deg > largest) {
+      largest = rot_rms_deg;
       worst_at = d;
     }
     if (worst && largest >= level) break;

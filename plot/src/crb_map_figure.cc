@@ -52,7 +52,8 @@ LogScale log_scale(const internal::ValueCells& cells, const PoseCrbMap& map) {
   internal::widen_to_cells(cells, &lo, &hi);
   if (map.status == PoseCrbMap::Status::kOk) {
     lo = std::min(lo, map.best.rot_rms_deg);
-    hi = std::max(hi, map.worst.rot_rms_deg);
+    // An unbounded worst: the scale ends at the largest figure reported.
+    hi = std::max(hi, map.worst.unbounded ? PoseCrbAt::kMaxRotRmsDeg : map.worst.rot_rms_deg);
   }
   if (!(hi > 0.0) || !std::isfinite(lo)) return {};
   LogScale scale{std::floor(std::log10(lo) * 10.0) / 10.0, std::log10(hi)};
@@ -104,6 +105,9 @@ std::string degrees(double value) {
 }
 
 std::string at_summary(const PoseCrbAt& at) {
+  if (at.unbounded) {
+    return "unbounded (> 45°), " + std::to_string(at.visible_markers.size()) + " markers seen";
+  }
   return degrees(at.rot_rms_deg) + ", trans_rms " + internal::fixed(at.trans_rms, 4) + ", " +
          std::to_string(at.visible_markers.size()) + " markers seen";
 }
@@ -119,17 +123,17 @@ void draw_legends(Canvas& canvas, const camera::PoseCrbReport& report,
     left.push_back(Entry::text_only(
         map.status == PoseCrbMap::Status::kIllConditioned
             ? "no sampled direction is trackable: the pose is not determined to first order"
-            : "no sampled direction is trackable"));
+            : (map.status == PoseCrbMap::Status::kUnbounded
+                   ? "no sampled direction is trackable: the bound is unbounded (above 45°)"
+                   : "no sampled direction is trackable")));
   } else {
     left.push_back(Entry::marker("worst direction: " + at_summary(map.worst) + " (refined)",
                                  kWorstViewpointColour));
     left.push_back(Entry::marker("best direction: " + at_summary(map.best), kBestColour,
                                  Canvas::Shape::kDiamond));
   }
-  left.push_back(
-      Entry::marker("untrackable: fewer than 3 (or min_visible) markers seen, or F "
-                    "singular",
-                    kUntrackableColour, Canvas::Shape::kSquare));
+  left.push_back(Entry::marker("untrackable: < 3 (min_visible) seen, F singular, or unbounded",
+                               kUntrackableColour, Canvas::Shape::kSquare));
   left.push_back(
       Entry::line("visible-marker count changes (numbers: markers seen)", {25, 25, 25}, 1.0 * s));
   canvas.legend(0.02, 0.215, left, internal::kSmallSize * s, 0.0);
@@ -147,7 +151,8 @@ void draw_legends(Canvas& canvas, const camera::PoseCrbReport& report,
   }
   right.push_back(Entry::text_only("trackable: " + fixed(100.0 * map.trackable_fraction, 1) +
                                    " % (" + std::to_string(map.samples.size()) +
-                                   " directions); on this map " +
+                                   " directions), unbounded " +
+                                   fixed(100.0 * map.unbounded_fraction, 1) + " %; on this map " +
                                    fixed(100.0 * cells.samples.trackable_fraction(), 1) + " %"));
   right.push_back(
       Entry::text_only("affine bound arccos p̄_min: " + degrees(report.affine_bound_deg)));
@@ -164,9 +169,10 @@ void draw_extremes(Canvas& canvas, const PoseCrbMap& map) {
   internal::select_disc(canvas, p.disc);
   // Beside the marker, toward the disc's centre: the rim's axis names stay clear.
   const bool right_half = p.xy.x() > 0.0;
-  canvas.label(p.xy.x(), p.xy.y(), degrees(map.worst.rot_rms_deg), (right_half ? -12 : 12) * s,
-               (p.xy.y() > 0.0 ? 14 : -14) * s, right_half ? 1.0 : 0.0, internal::kSmallSize * s,
-               {25, 25, 25}, {255, 255, 255}, 0.85);
+  canvas.label(p.xy.x(), p.xy.y(),
+               map.worst.unbounded ? std::string("unbounded") : degrees(map.worst.rot_rms_deg),
+               (right_half ? -12 : 12) * s, (p.xy.y() > 0.0 ? 14 : -14) * s, right_half ? 1.0 : 0.0,
+               internal::kSmallSize * s, {25, 25, 25}, {255, 255, 255}, 0.85);
 }
 
 void draw_map(Canvas& canvas, const CrbMapData& data, const internal::ValueCells& cells,

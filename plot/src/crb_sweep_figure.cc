@@ -25,12 +25,18 @@ constexpr double kMarkerPx = 3.5;
 // The two panels (page fractions): side by side under the title.
 constexpr internal::Viewport kPanels[2] = {{0.08, 0.39, 0.12, 0.70}, {0.585, 0.39, 0.12, 0.70}};
 
+// A direction's columns; its values are empty where the bound is unbounded (§22).
 void write_direction(internal::CsvWriter& csv, const camera::PoseCrbAt& at, bool ok) {
-  if (ok) {
-    csv << at.direction.x() << at.direction.y() << at.direction.z() << at.rot_rms_deg
-        << at.trans_rms;
-  } else {
+  if (!ok) {
     for (int k = 0; k < 5; ++k) csv << "";
+    return;
+  }
+  csv << at.direction.x() << at.direction.y() << at.direction.z();
+  if (at.unbounded) {
+    csv << ""
+        << "";
+  } else {
+    csv << at.rot_rms_deg << at.trans_rms;
   }
 }
 
@@ -60,6 +66,7 @@ Series series(const std::vector<PoseCrbSweepRow>& rows, int which, int quantity)
   for (const PoseCrbSweepRow& row : rows) {
     if (row.status != PoseCrbMap::Status::kOk) continue;
     const camera::PoseCrbAt& at = which == 0 ? row.worst : row.median;
+    if (at.unbounded) continue;  // no figure past the first-order limit: a gap in the curve
     s.x.push_back(row.distance);
     s.ly.push_back(internal::log_clamped(quantity == 0 ? at.rot_rms_deg : at.trans_rms, kSmallest));
   }
@@ -105,8 +112,15 @@ void draw_panel(Canvas& canvas, const std::vector<PoseCrbSweepRow>& rows, int qu
   }
   internal::draw_axes(canvas, "bcnst", "bcnstlv", 0.0, 0, "camera distance D  [layout units]", 3.2,
                       quantity == 0 ? "rot_rms  [deg]" : "trans_rms  [layout units]", 4.6);
+  const auto unbounded = std::count_if(rows.begin(), rows.end(), [](const PoseCrbSweepRow& row) {
+    return row.status == PoseCrbMap::Status::kOk && row.worst.unbounded;
+  });
+  const std::string worst_label = unbounded == 0 ? std::string("worst direction (by rot_rms)")
+                                                 : "worst direction: unbounded at " +
+                                                       std::to_string(unbounded) + " of " +
+                                                       std::to_string(rows.size()) + " D";
   const std::vector<Entry> legend{
-      Entry::line_marker("worst direction", kWorstViewpointColour, 2.0 * s, Canvas::Shape::kCircle),
+      Entry::line_marker(worst_label, kWorstViewpointColour, 2.0 * s, Canvas::Shape::kCircle),
       Entry::line_marker("median direction", kMedianColour, 2.0 * s, Canvas::Shape::kCircle)};
   const auto [lx, ly] = placer.corner(canvas.legend_size(legend, internal::kSmallSize * s));
   canvas.legend(lx, ly, legend, internal::kSmallSize * s);

@@ -31,6 +31,21 @@ def test_crb_is_the_cli_report(vantage):
     assert result.percentiles["p50"] <= result.percentiles["p99"] <= result.worst.rot_rms_deg
 
 
+def test_past_45_degrees_the_bound_is_unbounded_not_a_figure(vantage):
+    # The satellite at 10 units: the worst direction's first-order rot_rms passes 45 degrees
+    # (docs/math.md §22, "Unbounded"): no figure, the flag, and the percentiles stay figures.
+    satellite = str(LAYOUTS / "satellite.json")
+    result = vantage.crb(satellite, distance=10, focal=1000, noise_px=0.3, samples=2000)
+    cli = cli_json("crb", satellite, "--distance", "10", "--focal", "1000", "--noise-px", "0.3",
+                   "--samples", "2000")
+    assert_same(result.to_dict(), cli)
+    assert result.status == "ok"
+    assert result.worst.unbounded and not result.worst.trackable
+    assert result.worst.rot_rms_deg is None and result.worst.trans_rms is None
+    assert result.unbounded_fraction == cli["unbounded_fraction"]
+    assert result.percentiles["p99"] <= 45.0
+
+
 def test_crb_sweep_has_one_row_per_distance(vantage):
     result = vantage.crb(CUBE, distance=2, focal=900, noise_px=0.3, sweep_distance=(1, 3, 3),
                          samples=500)

@@ -148,8 +148,8 @@ def crb(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
     ``--allow-large``.
 
     Raises ValueError on bad input and NumericalError (its ``result`` the CrbReport) when no
-    sampled direction is trackable (status 'untrackable' or 'ill_conditioned', as the CLI's exit
-    status 1).
+    sampled direction is trackable (status 'untrackable', 'ill_conditioned' or 'unbounded', as
+    the CLI's exit status 1).
     """
     return CrbReport(_vantage.crb(
         layout, points=points, distance=distance, focal=focal, noise_px=noise_px,

@@ -28,7 +28,8 @@ def _optional_float(value: Any) -> Optional[float]:
 class CrbBound(_JsonView):
     """The pose CRB at one viewing direction (``vantage crb --json``'s ``worst``, ``best``,
     ``at_direction``; C++ camera::PoseCrbAt). rot_rms_deg and trans_rms are None when the direction
-    is not trackable; ``covariance`` (6 x 6, ROS order x, y, z, rx, ry, rz, camera frame) only
+    is not trackable; ``unbounded`` when it sees enough markers but the first-order bound means
+    nothing there (F singular, or rot_rms past 45 degrees: no figure); ``covariance`` (6 x 6, ROS order x, y, z, rx, ry, rz, camera frame) only
     for ``at_direction``.
     """
 
@@ -36,6 +37,7 @@ class CrbBound(_JsonView):
         super().__init__(fields)
         self.direction: FloatArray = _floats(fields["direction"])
         self.trackable: bool = bool(fields["trackable"])
+        self.unbounded: bool = bool(fields["unbounded"])
         self.rot_rms_deg: Optional[float] = _optional_float(fields["rot_rms_deg"])
         self.trans_rms: Optional[float] = _optional_float(fields["trans_rms"])
         self.visible_markers: IntArray = _ints(fields["visible_markers"])
@@ -51,6 +53,7 @@ class CrbSweepRow(_JsonView):
         super().__init__(fields)
         self.distance: float = _float(fields["distance"])
         self.trackable_fraction: float = _float(fields["trackable_fraction"])
+        self.unbounded_fraction: float = _float(fields["unbounded_fraction"])
         self.worst: Optional[CrbBound] = (
             None if fields["worst"] is None else CrbBound(fields["worst"]))
         self.median: Optional[CrbBound] = (
@@ -59,8 +62,11 @@ class CrbSweepRow(_JsonView):
 
 class CrbReport(_JsonView):
     """The pose Cramér–Rao bound over every viewpoint (``vantage crb --json``; C++
-    camera::PoseCrbReport; docs/math.md §22). status is 'ok', 'untrackable' or 'ill_conditioned'
-    (then ``message`` says why; None when ok)."""
+    camera::PoseCrbReport; docs/math.md §22). status is 'ok', 'untrackable', 'ill_conditioned'
+    or 'unbounded' (then ``message`` says why; None when ok). ``unbounded_fraction``: the part of
+    the workspace where the first-order bound is unbounded; worst, best and percentiles are over
+    the trackable rest, and ``worst.unbounded`` when the bound passes 45 degrees anywhere the
+    search reaches."""
 
     def __init__(self, fields: Mapping[str, Any]) -> None:
         super().__init__(fields)
@@ -74,6 +80,7 @@ class CrbReport(_JsonView):
             None if fields["worst"] is None else CrbBound(fields["worst"]))
         self.best: Optional[CrbBound] = None if fields["best"] is None else CrbBound(fields["best"])
         self.trackable_fraction: float = _float(fields["trackable_fraction"])
+        self.unbounded_fraction: float = _float(fields["unbounded_fraction"])
         self.percentiles: Dict[str, Optional[float]] = {
             k: _optional_float(v) for k, v in fields["percentiles"].items()}
         self.sliver: bool = bool(fields["sliver"])

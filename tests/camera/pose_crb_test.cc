@@ -244,7 +244,7 @@ TEST(PoseCrb, MapExtremesBoundTheSamplesAndPercentilesAreOrdered) {
   for (const PoseCrbAt& s : map.samples) {
     if (!s.trackable) continue;
     ++trackable;
-    EXPECT_LE(s.rot_rms_deg, map.worst.rot_rms_deg);
+    EXPECT_LE(s.first_order_rot_rms_deg, map.worst.first_order_rot_rms_deg);
     EXPECT_GE(s.rot_rms_deg, map.best.rot_rms_deg);
   }
   ASSERT_GT(trackable, 0);
@@ -252,9 +252,64 @@ TEST(PoseCrb, MapExtremesBoundTheSamplesAndPercentilesAreOrdered) {
   EXPECT_LE(map.best.rot_rms_deg, map.percentiles.p50);
   EXPECT_LE(map.percentiles.p50, map.percentiles.p95);
   EXPECT_LE(map.percentiles.p95, map.percentiles.p99);
-  EXPECT_LE(map.percentiles.p99, map.worst.rot_rms_deg);
-  EXPECT_TRUE(map.worst.trackable);
+  EXPECT_LE(map.percentiles.p99, map.worst.first_order_rot_rms_deg);
+  EXPECT_LE(map.percentiles.p99, PoseCrbAt::kMaxRotRmsDeg);
+  // The worst is a figure, or unbounded and then no figure.
+  EXPECT_NE(map.worst.trackable, map.worst.unbounded);
+  EXPECT_EQ(std::isinf(map.worst.rot_rms_deg), map.worst.unbounded);
   EXPECT_EQ(map.sliver, map.worst_region_width_deg < PoseCrbMap::kSliverWidthDeg);
+}
+
+// docs/math.md §22, "Unbounded": against F from the numeric derivative, a direction whose
+// first-order rot_rms passes the limit is unbounded (no figure, not trackable), one below it is
+// the figure. Four markers seen whole, the camera moved away until the bound passes 45 deg.
+TEST(PoseCrb, PastTheFirstOrderLimitADirectionIsUnboundedNeverAFigure) {
+  // Independent and library values agree to this (relative); the limit is not tested closer.
+  constexpr double kAgreement = 1e-6;
+  std::mt19937 rng(kSeed);
+  std::normal_distribution<double> g;
+  const Layout layout = cube_points(4, rng);
+  int unbounded = 0, bounded = 0;
+  for (double distance = 2.0; distance < 2000.0; distance *= 1.5) {
+    PoseCrbOptions o = camera(distance);
+    o.noise_px = 2.0;
+    const PoseCrbModel model(layout, o);
+    const Eigen::Vector3d a = Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized();
+    const PoseCrbAt at = model.at(a);
+    Eigen::Matrix3d R;
+    Eigen::Vector3d p;
+    model.camera_pose(a, distance, &R, &p);
+    const Eigen::Matrix<double, 6, 6> C = numeric_fisher(layout.entries, R, p, o).inverse();
+    const double truth = std::sqrt(C.bottomRightCorner<3, 3>().trace()) * 180.0 / kPi;
+    if (std::abs(truth / PoseCrbAt::kMaxRotRmsDeg - 1.0) < kAgreement) continue;
+    if (truth > PoseCrbAt::kMaxRotRmsDeg) {
+      ++unbounded;
+      EXPECT_TRUE(at.unbounded) << distance;
+      EXPECT_FALSE(at.trackable) << distance;
+      EXPECT_FALSE(at.ill_conditioned) << distance;
+      EXPECT_TRUE(std::isinf(at.rot_rms_deg) && std::isinf(at.trans_rms)) << distance;
+      EXPECT_NEAR(at.first_order_rot_rms_deg, truth, 1e-4 * truth) << distance;
+    } else {
+      ++bounded;
+      EXPECT_TRUE(at.trackable) << distance;
+      EXPECT_FALSE(at.unbounded) << distance;
+      EXPECT_NEAR(at.rot_rms_deg, truth, 1e-4 * truth) << distance;
+    }
+  }
+  EXPECT_GT(unbounded, 2);
+  EXPECT_GT(bounded, 2);
+  // The map of a far camera: the unbounded fraction counts those samples, the percentiles are
+  // over the rest, and the worst is unbounded.
+  PoseCrbOptions far = camera(60.0);
+  far.noise_px = 2.0;
+  const PoseCrbMap map = pose_crb_map(PoseCrbModel(layout, far));
+  const auto count = std::count_if(map.samples.begin(), map.samples.end(),
+                                   [](const PoseCrbAt& at) { return at.unbounded; });
+  ASSERT_GT(count, 0);
+  ASSERT_EQ(map.status, PoseCrbMap::Status::kOk);
+  EXPECT_DOUBLE_EQ(map.unbounded_fraction, static_cast<double>(count) / map.samples.size());
+  EXPECT_TRUE(map.worst.unbounded);
+  EXPECT_LE(map.percentiles.p99, PoseCrbAt::kMaxRotRmsDeg);
 }
 
 TEST(PoseCrb, WorkspaceOutsideIsNotTrackable) {

@@ -77,6 +77,16 @@ TEST(CrbCli, TextReportShowsTheWorstBesideTheAffineBound) {
   EXPECT_THAT(run.out, HasSubstr("affine bound"));
 }
 
+// A row's worst is at least its median, or unbounded, and then no figure (docs/math.md §22).
+void expect_worst_at_least_median(const nlohmann::json& row) {
+  if (row["worst"]["unbounded"] == true) {
+    EXPECT_TRUE(row["worst"]["rot_rms_deg"].is_null()) << row;
+    EXPECT_FALSE(row["median"]["unbounded"].get<bool>()) << row;
+    return;
+  }
+  EXPECT_GE(row["worst"]["rot_rms_deg"].get<double>(), row["median"]["rot_rms_deg"].get<double>());
+}
+
 TEST(CrbCli, DistanceSweepHasOneRowPerDistance) {
   ScratchDir scratch;
   const nlohmann::json j = testing::run_json(
@@ -84,10 +94,7 @@ TEST(CrbCli, DistanceSweepHasOneRowPerDistance) {
   ASSERT_EQ(j["sweep_distance"].size(), 4u);
   EXPECT_EQ(j["sweep_distance"][0]["distance"].get<double>(), 1.0);
   EXPECT_EQ(j["sweep_distance"][3]["distance"].get<double>(), 4.0);
-  for (const auto& row : j["sweep_distance"]) {
-    EXPECT_GE(row["worst"]["rot_rms_deg"].get<double>(),
-              row["median"]["rot_rms_deg"].get<double>());
-  }
+  for (const auto& row : j["sweep_distance"]) expect_worst_at_least_median(row);
 }
 
 // The cube's three tagged faces, each tiled k x k: the rows' counts and sizes follow the face's
@@ -112,8 +119,7 @@ TEST(CrbCli, TagSweepHasOneRowPerTiling) {
     EXPECT_NEAR(row["tag_size"].get<double>(), fill[r] * extent / per_side[r], 1e-12);
     EXPECT_NEAR(row["tag_pixels"].get<double>(), row["tag_size"].get<double>() * 900 / 2, 1e-9);
     EXPECT_EQ(row["status"], "ok");
-    EXPECT_GE(row["worst"]["rot_rms_deg"].get<double>(),
-              row["median"]["rot_rms_deg"].get<double>());
+    expect_worst_at_least_median(row);
   }
   // Each face's extent is its own tag: fill 1 at one tag per side is the layout itself.
   const std::string flags = kCamera + " --samples 1000";
@@ -122,8 +128,11 @@ TEST(CrbCli, TagSweepHasOneRowPerTiling) {
       "crb " + kCube + flags + " --sweep-tags --tags-per-side 1 --tag-fill 1", scratch);
   EXPECT_NEAR(itself["sweep_tags"]["rows"][0]["median"]["rot_rms_deg"].get<double>(),
               own["percentiles"]["p50"].get<double>(), 1e-9);
-  EXPECT_NEAR(itself["sweep_tags"]["rows"][0]["worst"]["rot_rms_deg"].get<double>(),
-              own["worst"]["rot_rms_deg"].get<double>(), 1e-9);
+  EXPECT_EQ(itself["sweep_tags"]["rows"][0]["worst"]["unbounded"], own["worst"]["unbounded"]);
+  if (own["worst"]["unbounded"] == false) {
+    EXPECT_NEAR(itself["sweep_tags"]["rows"][0]["worst"]["rot_rms_deg"].get<double>(),
+                own["worst"]["rot_rms_deg"].get<double>(), 1e-9);
+  }
 }
 
 // Issue 36, item 5: at 1e5 (the cube is 1e-6 of the distance) every direction that sees enough
@@ -165,7 +174,7 @@ TEST(CrbCli, ATinyWorkspaceIsSampledOnItsOwnCap) {
   ScratchDir scratch;
   const CliRun crb = run_vantage("crb " + kCube + kCamera + " --workspace 1,1,1,0.2", scratch);
   EXPECT_EQ(crb.status, 0) << crb.err;
-  EXPECT_THAT(crb.out, HasSubstr("100 directions sampled, trackable fraction 1\n"));
+  EXPECT_THAT(crb.out, HasSubstr("100 directions sampled, trackable fraction 1, unbounded 0\n"));
   // The bound is flat over 0.2 degrees: the workspace's edge, not the bound, ends every cut, so
   // the worst is not a sliver (it was flagged, "0.14 deg across").
   EXPECT_THAT(crb.out, HasSubstr("sliver           no (the region within 2x of the worst reaches "

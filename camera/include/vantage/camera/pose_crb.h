@@ -19,7 +19,9 @@
 /// Bound. J_i = d q_i / d(dt, dtheta) (2 x 6, analytic), F = sum over visible markers of
 /// J_i^T J_i / S^2, C = F^-1. rot_rms_deg = sqrt(tr C_rot) in degrees (the RMS rotation angle of
 /// an efficient estimator), trans_rms = sqrt(tr C_trans) in layout units. Neither depends on the
-/// roll about the optical axis nor on the principal point (§22).
+/// roll about the optical axis nor on the principal point (§22). The bound is first order: where
+/// F is near singular or rot_rms passes PoseCrbAt::kMaxRotRmsDeg it means nothing, and the
+/// direction is `unbounded`, never a figure (§22, "Unbounded").
 ///
 /// Visibility. Marker i is visible iff n_i . unit(c - p_i) >= cos(cone_i) and, with a body, the
 /// segment from p_i to c meets no triangle; a layout without visibility sees every marker.
@@ -71,20 +73,31 @@ struct PoseCrbOptions {
 struct PoseCrbAt {
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  ///< a, unit, object frame
   std::vector<int> visible_markers;                      ///< increasing
-  /// In the workspace, at least max(3, min_visible) visible markers, and F not singular:
-  /// cond(F~) <= kMaxCondition for F~ = F with its translation rows and columns scaled by D.
+  /// In the workspace, at least max(3, min_visible) visible markers, F not singular
+  /// (cond(F~) <= kMaxCondition for F~ = F with its translation rows and columns scaled by D)
+  /// and rot_rms_deg <= kMaxRotRmsDeg: the first-order bound holds.
   bool trackable = false;
-  /// Not trackable only because F failed the condition test: in the workspace, enough visible
-  /// markers, but the pose is not determined to first order (too far, or a degenerate view).
+  /// Not trackable only because the first-order bound means nothing here: in the workspace and
+  /// enough visible markers, but F fails the condition test (ill_conditioned) or the first-order
+  /// rot_rms exceeds kMaxRotRmsDeg. No figure is reported (rot_rms_deg and trans_rms are +inf).
+  bool unbounded = false;
+  /// Unbounded because F failed the condition test: the pose is not determined to first order
+  /// (too far, or a degenerate view).
   bool ill_conditioned = false;
   double rot_rms_deg = 0.0;  ///< sqrt(tr C_rot), degrees (+inf when not trackable)
   double trans_rms = 0.0;    ///< sqrt(tr C_trans), layout units (+inf when not trackable)
+  /// sqrt(tr C_rot) in degrees whenever F passes the condition test, past kMaxRotRmsDeg too
+  /// (+inf otherwise): what a search ranks layouts by, never a reported figure.
+  double first_order_rot_rms_deg = 0.0;
   /// C, 6 x 6, ROS order (x, y, z, rx, ry, rz), camera frame, layout units and radians (zero
   /// when not trackable).
   Eigen::Matrix<double, 6, 6> covariance = Eigen::Matrix<double, 6, 6>::Zero();
 
   /// Largest condition number of the scaled Fisher information that counts as invertible.
   static constexpr double kMaxCondition = 1e12;
+  /// Largest first-order rot_rms (degrees) reported as a figure: beyond it the linearisation
+  /// behind the bound no longer describes the estimator (§22, "Unbounded").
+  static constexpr double kMaxRotRmsDeg = 45.0;
 };
 
 /// A layout's pose CRB problem: markers, visibility and camera; built once, asked many times.
@@ -168,6 +181,9 @@ struct PoseCrbMap {
     /// No sampled direction is trackable, and some see enough markers but every such F fails
     /// the condition test: the pose is not determined to first order (worst/best mean nothing).
     kIllConditioned,
+    /// No sampled direction is trackable, some see enough markers, and at each the bound is
+    /// unbounded, at least one by a first-order rot_rms above PoseCrbAt::kMaxRotRmsDeg.
+    kUnbounded,
   };
   Status status = Status::kUntrackable;
   std::vector<PoseCrbAt> samples;  ///< at the workspace's lattice directions
@@ -176,6 +192,9 @@ struct PoseCrbMap {
   PoseCrbAt worst;
   PoseCrbAt best;                   ///< smallest rot_rms_deg, found likewise
   double trackable_fraction = 0.0;  ///< of the workspace's area (sample count)
+  /// Of the workspace's area, the directions that see enough markers where the bound is
+  /// unbounded (PoseCrbAt::unbounded); worst, best and percentiles are over the trackable rest.
+  double unbounded_fraction = 0.0;
   PoseCrbPercentiles percentiles;
   /// Width (degrees) of the region around `worst` where rot_rms >= worst / 2, the narrowest of
   /// four great-circle cuts through it (capped at 2 kMaxSliverProbeDeg); a cut that the
@@ -190,12 +209,12 @@ struct PoseCrbMap {
   static constexpr double kMaxSliverProbeDeg = 20.0;
 };
 
-/// "ok", "untrackable" or "ill_conditioned".
+/// "ok", "untrackable", "ill_conditioned" or "unbounded".
 const char* to_string(PoseCrbMap::Status status);
 
 /// Why a map at distance D is not kOk, one sentence without a final full stop: no sampled
-/// direction sees enough markers, or how many saw enough markers but failed the condition test.
-/// Empty for kOk.
+/// direction sees enough markers, or how many saw enough markers but failed the condition test
+/// (or passed the rot_rms limit). Empty for kOk.
 std::string untrackable_reason(const PoseCrbMap& map, double distance);
 
 /// The map of `model` at its distance (docs/math.md §22).
@@ -211,6 +230,7 @@ struct PoseCrbSweepRow {
   /// The trackable sample whose rot_rms_deg is the median (p50) at this distance.
   PoseCrbAt median;
   double trackable_fraction = 0.0;
+  double unbounded_fraction = 0.0;  ///< as PoseCrbMap::unbounded_fraction
 };
 
 /// The distance sweep D_k = D1 + k (D2 - D1) / (N - 1), k < N (N >= 2, D1 < D2 both above the

@@ -62,6 +62,7 @@ struct TagSweepRow {
   PoseCrbAt median;  ///< the trackable sample whose rot_rms_deg is p50
   PoseCrbPercentiles percentiles;
   double trackable_fraction = 0.0;
+  double unbounded_fraction = 0.0;  ///< as PoseCrbMap::unbounded_fraction
 
   /// Below this many pixels across, a tag is unlikely to be decoded (docs/math.md §22).
   static constexpr double kMinDetectablePixels = 20.0;
