@@ -166,8 +166,9 @@ Json place_objective_json(const Request& request, const Outcome& outcome) {
               {"unbounded_fraction", map.unbounded_fraction}};
   if (map.status == camera::PoseCrbMap::Status::kOk) {
     crb["worst"] = {
-        {"rot_rms_deg", map.worst.rot_rms_deg},
-        {"trans_rms", map.worst.trans_rms},
+        {"unbounded", map.worst.unbounded},
+        {"rot_rms_deg", report::json_number(map.worst.rot_rms_deg)},
+        {"trans_rms", report::json_number(map.worst.trans_rms)},
         {"direction", {map.worst.direction.x(), map.worst.direction.y(), map.worst.direction.z()}}};
     crb["percentiles"] = {
         {"p50", map.percentiles.p50}, {"p95", map.percentiles.p95}, {"p99", map.percentiles.p99}};

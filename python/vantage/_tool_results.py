@@ -27,10 +27,11 @@ def _optional_float(value: Any) -> Optional[float]:
 
 class CrbBound(_JsonView):
     """The pose CRB at one viewing direction (``vantage crb --json``'s ``worst``, ``best``,
-    ``at_direction``; C++ camera::PoseCrbAt). rot_rms_deg and trans_rms are None when the direction
-    is not trackable; ``unbounded`` when it sees enough markers but the first-order bound means
-    nothing there (F singular, or rot_rms past 45 degrees: no figure); ``covariance`` (6 x 6, ROS order x, y, z, rx, ry, rz, camera frame) only
-    for ``at_direction``.
+    ``at_direction``; C++ camera::PoseCrbAt). rot_rms_deg and trans_rms are None when the
+    direction is not trackable; ``unbounded`` when it sees enough markers but the first-order
+    bound means nothing there (F singular, or rot_rms past 45 degrees: no figure);
+    ``covariance`` (6 x 6, ROS order x, y, z, rx, ry, rz, camera frame) only for
+    ``at_direction``.
     """
 
     def __init__(self, fields: Mapping[str, Any]) -> None:

@@ -5,8 +5,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -189,6 +191,57 @@ TEST(PlaceCli, CameraObjectiveIsWhatCrbReportsOnTheWrittenFile) {
   EXPECT_EQ(crb["worst"]["rot_rms_deg"], objective["value_deg"]);
   EXPECT_EQ(crb["worst"]["rot_rms_deg"], objective["crb"]["worst"]["rot_rms_deg"]);
   EXPECT_LE(objective["search_value_deg"].get<double>(), objective["value_deg"].get<double>());
+}
+
+// The least distance between two points of a layout file's "points".
+double closest_pair(const nlohmann::json& layout) {
+  double closest = std::numeric_limits<double>::infinity();
+  const nlohmann::json& p = layout["points"];
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t j = i + 1; j < p.size(); ++j) {
+      double d2 = 0.0;
+      for (int k = 0; k < 3; ++k) {
+        const double d = p[i][k].get<double>() - p[j][k].get<double>();
+        d2 += d * d;
+      }
+      closest = std::min(closest, std::sqrt(d2));
+    }
+  }
+  return closest;
+}
+
+// Issue 35, README ("Objectives"): on the bundled quadrotor, K = 4, the affine objective packs
+// the markers 1 cm apart and the camera objective spreads them; the camera's median rotation
+// error on the written file (vantage crb with the report's aim) is eight times smaller; its
+// objective is null where crb's worst is unbounded (past 45 degrees: docs/math.md §22).
+TEST(PlaceCli, OnTheQuadrotorTheCameraObjectiveSpreadsTheMarkers) {
+  ScratchDir scratch;
+  const std::string bodies = "'" + std::string(VANTAGE_SOURCE_DIR) + "/examples/bodies/";
+  const std::string place = "place " + bodies + "quadrotor.obj' --markers 4 --candidates 300 " +
+                            "--min-separation 0.01 --workspace 0,0,1,70 --cone-deg 80 " +
+                            "--exclude " + bodies + "quadrotor_props.obj' ";
+  const std::string camera = " --distance 3 --focal 1000 --noise-px 0.2";
+  const nlohmann::json affine = testing::run_json(place + "--out affine.json", scratch);
+  const nlohmann::json placed =
+      testing::run_json(place + "--out camera.json --objective camera" + camera, scratch);
+  ASSERT_EQ(affine["status"], "complete");
+  ASSERT_EQ(placed["status"], "complete");
+  const nlohmann::json& aim = placed["objective"]["camera"]["aim"];
+  std::ostringstream crb;
+  crb.precision(17);
+  crb << camera << " --samples 2000 --aim " << aim[0].get<double>() << "," << aim[1].get<double>()
+      << "," << aim[2].get<double>();
+  const nlohmann::json of_affine = testing::run_json("crb affine.json" + crb.str(), scratch);
+  const nlohmann::json of_camera = testing::run_json("crb camera.json" + crb.str(), scratch);
+  EXPECT_LE(of_camera["percentiles"]["p50"].get<double>(),
+            of_affine["percentiles"]["p50"].get<double>() / 8.0);
+  const auto file = [&](const char* name) {
+    return nlohmann::json::parse(testing::read_file(scratch.path(name)));
+  };
+  EXPECT_LT(closest_pair(file("affine.json")), 0.011);
+  EXPECT_GT(closest_pair(file("camera.json")), 0.07);
+  EXPECT_EQ(placed["objective"]["value_deg"].is_null(),
+            of_camera["worst"]["unbounded"].get<bool>());
 }
 
 // Issue 35: the tracker objective's value is what `vantage tre` reports on the written file with
