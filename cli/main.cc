@@ -39,6 +39,32 @@ std::string subcommand_names(CLI::App& app) {
   return names;
 }
 
+/// The option `name` of the deepest parsed subcommand that has it, or nullptr.
+const CLI::Option* parsed_option(const CLI::App& app, const std::string& name) {
+  for (const CLI::App* sub : app.get_subcommands()) {
+    if (const CLI::Option* deeper = parsed_option(*sub, name)) return deeper;
+  }
+  return app.get_option_no_throw(name);
+}
+
+/// CLI11's "Could not convert: --name = value" as what the option takes: a whole number (with
+/// an example of writing 1e5 as digits) or a number. Other messages stay as CLI11 words them.
+std::string conversion_message(const CLI::App& app, const CLI::ConversionError& error) {
+  const std::string text = error.what();
+  const std::string head = "Could not convert: ";
+  const std::size_t equals = text.find(" = ");
+  if (text.rfind(head, 0) != 0 || equals == std::string::npos) return text;
+  const std::string name = text.substr(head.size(), equals - head.size());
+  const std::string value = text.substr(equals + 3);
+  const CLI::Option* option = parsed_option(app, name);
+  const std::string type = option == nullptr ? "" : option->get_type_name();
+  if (type == "INT" || type == "UINT") {
+    return name + ": \"" + value + "\" is not a whole number (write its digits: 100000, not 1e5)";
+  }
+  if (type == "FLOAT") return name + ": \"" + value + "\" is not a number";
+  return text;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -68,6 +94,9 @@ int main(int argc, char** argv) {
   }
   try {
     app.parse(argc, argv);
+  } catch (const CLI::ConversionError& e) {
+    print_error("error", conversion_message(app, e));
+    return kExitBadInput;
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
     print_error("error", e.what());

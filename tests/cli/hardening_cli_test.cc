@@ -70,6 +70,24 @@ TEST(HardeningCli, UnknownSubcommandIsNamed) {
   EXPECT_THAT(run.err, HasSubstr("analyze"));
 }
 
+// Issue 36, item 6: "Could not convert: --monte-carlo = 1e15" (CLI11's words) named the option
+// but not what it takes; a whole-number option written as 1e5 or 2.5 now says so.
+TEST(HardeningCli, ANumberOfTheWrongKindNamesWhatTheOptionTakes) {
+  ScratchDir scratch;
+  scratch.write("in.json", kTriadText);
+  const std::string whole = "is not a whole number (write its digits: 100000, not 1e5)";
+  expect_bad_input(run_vantage("simulate in.json --trials 1e5", scratch),
+                   "--trials: \"1e5\" " + whole);
+  expect_bad_input(run_vantage("design in.json --add 2.5", scratch), "--add: \"2.5\" " + whole);
+  expect_bad_input(run_vantage("layout board --type chessboard --rows 2e1 --cols 3 --square 1 "
+                               "--out b.json",
+                               scratch),
+                   "--rows: \"2e1\" " + whole);
+  expect_bad_input(run_vantage("crb in.json --distance x --focal 900 --noise-px 0.3", scratch),
+                   "--distance: \"x\" is not a number");
+  EXPECT_FALSE(std::filesystem::exists(scratch.path("b.json")));
+}
+
 TEST(HardeningCli, FileNameTooLongIsBadInput) {
   ScratchDir scratch;
   const std::string name = std::string(300, 'n') + ".json";

@@ -43,8 +43,9 @@ camera::PoseCrbOptions camera_options() {
   return o;
 }
 
-// The statistic of `vantage crb`'s samples of a subset: +inf unless every workspace direction
-// of the lattice is trackable (min_coverage 1).
+// The statistic of `vantage crb`'s samples of a subset, first order (docs/math.md §21: the
+// search ranks past §22's 45 degree reporting limit too): +inf unless the first-order bound
+// exists at every workspace direction of the lattice (min_coverage 1).
 double crb_value(const Layout& sites, const std::vector<int>& chosen, CrbStatistic statistic) {
   const camera::PoseCrbModel model(subset(sites, chosen), camera_options());
   const Eigen::Matrix3Xd lattice =
@@ -53,8 +54,9 @@ double crb_value(const Layout& sites, const std::vector<int>& chosen, CrbStatist
   for (Eigen::Index k = 0; k < lattice.cols(); ++k) {
     EXPECT_TRUE(model.in_workspace(lattice.col(k)));
     const camera::PoseCrbAt at = model.at(lattice.col(k));
-    if (!at.trackable) return kInfinity;
-    values.push_back(at.rot_rms_deg);
+    if (!std::isfinite(at.first_order_rot_rms_deg)) return kInfinity;
+    EXPECT_EQ(at.trackable, at.first_order_rot_rms_deg <= camera::PoseCrbAt::kMaxRotRmsDeg);
+    values.push_back(at.first_order_rot_rms_deg);
   }
   std::sort(values.begin(), values.end());
   if (statistic == CrbStatistic::kWorst) return values.back();
