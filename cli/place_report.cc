@@ -165,7 +165,7 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn, int 
             << "  p-bar_min       " << format_number(v.worst.pbar_min, 6) << "\n"
             << "  worst error     " << format_number(v.max_worst_case_error_deg, 6) << " deg at "
             << format_vector(v.worst.viewpoint) << "\n"
-            << "  certificate     " << visibility::to_string(v.worst.status) << " (t in ["
+            << "  certificate     " << v.certificate_status() << " (t in ["
             << format_number(v.worst.t_lower, 9) << ", " << format_number(v.worst.t_upper, 9)
             << "])\n";
   if (r.robust && (placed.crb || placed.tre)) {

@@ -55,7 +55,9 @@ void draw_legends(Canvas& canvas, const VisibilityMapData& data, const SphereSam
     left.push_back(Entry::text_only("no direction of the workspace is trackable"));
   } else {
     left.push_back(
-        Entry::marker(std::string(report.worst.certified() ? "certified" : "NOT certified") +
+        Entry::marker(std::string(!report.worst.certified() ? "NOT certified"
+                                  : report.with_body        ? "grid-certified"
+                                                            : "certified") +
                           (ties > 1 ? " worst viewpoints (" + std::to_string(ties) + " tied)"
                                     : " worst viewpoint"),
                       kWorstViewpointColour));

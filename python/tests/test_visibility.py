@@ -33,7 +33,12 @@ def test_analyze_exposes_the_visibility_report_of_the_cli(vantage):
     np.testing.assert_array_equal(v.visible_markers, c["visible_markers"])
     assert v.certificate.t_upper == c["certificate"]["t_upper"]
     assert v.certificate.t_lower == c["certificate"]["t_lower"]
-    assert v.certificate.certified is c["certificate"]["certified"] is True
+    # On a body the certificate holds on the occlusion grid, not under exact rays.
+    assert v.certificate.certified is c["certificate"]["certified"] is False
+    assert v.certificate.certified_at_resolution is True
+    assert v.status == c["status"] == "certified_at_resolution"
+    assert v.exact_viewpoint is not None and v.exact_viewpoint.agrees
+    np.testing.assert_array_equal(v.exact_viewpoint.visible_markers, v.visible_markers)
     assert v.occlusion_resolution_deg == c["occlusion_resolution_deg"]
     assert v.lost.fraction == c["lost"]["fraction"]
     np.testing.assert_array_equal(v.lost.largest_region_center,

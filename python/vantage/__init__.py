@@ -30,7 +30,8 @@ import numpy.typing as npt
 from . import _vantage
 from ._results import (
     BoundCheck, Certificate, Crosscheck, DesignCoplanarity, DesignDirect, DesignResult, DesignState,
-    DesignStep, DistanceDifference, DropoutEntry, EstimatorStats, Identification, LayoutCoplanarity,
+    DesignStep, DistanceDifference, DropoutEntry, EstimatorStats, ExactViewpoint, Identification,
+    LayoutCoplanarity,
     LayoutReport, LayoutVisibility, LostRegion, Orientation, PaperLmi, PerTrial, PoseAlternative,
     PoseCamera, PoseEstimate, SimulationReport, SimulationVisibility, Solver, Statistic, Swap,
     VisibilityCertificate, VisibilityDropoutEntry, WeightsResult, WeightsSuggestion, Workspace,
@@ -53,7 +54,7 @@ from ._vantage import (
 
 __all__ = [
     "BoundCheck", "Certificate", "CrbBound", "CrbReport", "CrbSweepRow", "Crosscheck", "DesignCoplanarity", "DesignDirect",
-    "DesignResult", "DesignState", "DesignStep", "DistanceDifference", "DropoutEntry", "EstimatorStats", "IdentPair", "IdentReport",
+    "DesignResult", "DesignState", "DesignStep", "DistanceDifference", "DropoutEntry", "EstimatorStats", "ExactViewpoint", "IdentPair", "IdentReport",
     "IdentTool", "Identification", "Layout",
     "LayoutCoplanarity", "LayoutReport", "LayoutVisibility", "LostRegion", "NumericalError", "Orientation", "PaperLmi", "PerTrial",
     "PlaceBaseline", "PlaceReport", "PlaceRobust", "PlaceStep", "PoseAlternative", "PoseCamera", "PoseEstimate", "SimulationReport", "SimulationVisibility",

@@ -18,7 +18,8 @@ from ._vantage import Layout
 
 __all__ = [
     "BoundCheck", "Certificate", "Crosscheck", "DesignCoplanarity", "DesignDirect", "DesignResult",
-    "DesignState", "DesignStep", "DropoutEntry", "EstimatorStats", "LayoutCoplanarity",
+    "DesignState", "DesignStep", "DropoutEntry", "EstimatorStats", "ExactViewpoint",
+    "LayoutCoplanarity",
     "LayoutReport", "LayoutVisibility", "LostRegion", "Orientation", "PaperLmi", "PoseAlternative",
     "PerTrial", "PoseCamera", "PoseEstimate", "SimulationReport", "SimulationVisibility", "Solver",
     "Statistic", "Swap", "VisibilityCertificate", "VisibilityDropoutEntry", "WeightsResult",
@@ -218,13 +219,28 @@ def _workspace(value: Any) -> Optional[Workspace]:
 
 
 class VisibilityCertificate(_JsonView):
-    """t_lower (attained) <= the supremum of t over the trackable directions <= t_upper."""
+    """t_lower (attained) <= the supremum of t over the trackable directions <= t_upper.
+    ``certified``: proven without a body (cones are exact); ``certified_at_resolution``: proven
+    on the body's occlusion grid, not under exact rays (docs/math.md §20)."""
 
     def __init__(self, fields: Mapping[str, Any]) -> None:
         super().__init__(fields)
         self.t_upper: float = _float(fields["t_upper"])
         self.t_lower: float = _float(fields["t_lower"])
         self.certified: bool = bool(fields["certified"])
+        self.certified_at_resolution: bool = bool(fields["certified_at_resolution"])
+
+
+class ExactViewpoint(_JsonView):
+    """With a body: what the reported worst viewpoint sees under exact rays (``agrees``: the
+    same markers as the occlusion grid says)."""
+
+    def __init__(self, fields: Mapping[str, Any]) -> None:
+        super().__init__(fields)
+        self.visible_markers: IntArray = _ints(fields["visible_markers"])
+        self.trackable: bool = bool(fields["trackable"])
+        self.t: float = _float(fields["t"])
+        self.agrees: bool = bool(fields["agrees"])
 
 
 class LostRegion(_JsonView):
@@ -276,6 +292,8 @@ class LayoutVisibility(_JsonView):
         self.occlusion_resolution_deg: Optional[float] = (
             None if fields["occlusion_resolution_deg"] is None
             else _float(fields["occlusion_resolution_deg"]))
+        self.exact_viewpoint: Optional[ExactViewpoint] = (
+            ExactViewpoint(fields["exact_viewpoint"]) if "exact_viewpoint" in fields else None)
         self.lost = LostRegion(fields["lost"])
         self.distance_to_body: Optional[FloatArray] = (
             _floats(fields["distance_to_body"]) if "distance_to_body" in fields else None)

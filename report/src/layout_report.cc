@@ -42,11 +42,24 @@ std::string visibility_brief(const visibility::VisibilityReport& v) {
       << "  worst viewpoint a    " << vector_text(v.worst.viewpoint) << " ("
       << v.worst.visible_markers.size() << " markers visible)\n"
       << trackable << "  certificate          t in [" << number(v.worst.t_lower, 12) << ", "
-      << number(v.worst.t_upper, 12) << "], " << to_string(v.worst.status);
-  if (v.occlusion_resolution_deg) {
-    out << ", occlusion at " << number(*v.occlusion_resolution_deg, 3) << " deg";
+      << number(v.worst.t_upper, 12) << "], ";
+  if (v.worst.certified() && v.occlusion_resolution_deg) {
+    out << "certified on the occlusion grid at " << number(*v.occlusion_resolution_deg, 3)
+        << " deg, not under exact rays";
+  } else {
+    out << to_string(v.worst.status);
+    if (v.occlusion_resolution_deg) {
+      out << ", occlusion at " << number(*v.occlusion_resolution_deg, 3) << " deg";
+    }
   }
   out << "\n";
+  if (v.exact_viewpoint_disagrees()) {
+    out << "  exact rays           the worst viewpoint sees " << v.exact_viewpoint->visible.size()
+        << " markers, not " << v.worst.visible_markers.size() << ": "
+        << (v.exact_viewpoint->trackable ? "t " + number(v.exact_viewpoint->t, 9)
+                                         : std::string("not trackable"))
+        << " (the occlusion grid's cells decide its neighbourhood wrongly)\n";
+  }
   return out.str();
 }
 

@@ -44,7 +44,7 @@ nlohmann::ordered_json visibility_json(const visibility::VisibilityReport& r) {
     out["workspace"] = nullptr;
   }
   out["trackable_fraction"] = json_number(r.coverage.trackable_fraction);
-  out["status"] = to_string(r.worst.status);
+  out["status"] = r.certificate_status();
   const bool trackable =
       r.worst.status != visibility::VisibilityWorstViewpoint::Status::kUntrackable;
   out["t"] = trackable ? json_number(r.worst.t) : Json(nullptr);
@@ -59,10 +59,17 @@ nlohmann::ordered_json visibility_json(const visibility::VisibilityReport& r) {
   out["visible_markers"] = trackable ? Json(r.worst.visible_markers) : Json::array();
   out["certificate"] = {{"t_upper", json_number(r.worst.t_upper)},
                         {"t_lower", json_number(r.worst.t_lower)},
-                        {"certified", r.worst.certified()},
+                        {"certified", r.certified()},
+                        {"certified_at_resolution", r.worst.certified() && r.with_body},
                         {"patches", r.worst.patches}};
   out["occlusion_resolution_deg"] =
       r.occlusion_resolution_deg ? Json(*r.occlusion_resolution_deg) : Json(nullptr);
+  if (r.exact_viewpoint) {
+    out["exact_viewpoint"] = {{"visible_markers", r.exact_viewpoint->visible},
+                              {"trackable", r.exact_viewpoint->trackable},
+                              {"t", json_number(r.exact_viewpoint->t)},
+                              {"agrees", !r.exact_viewpoint_disagrees()}};
+  }
   out["lost"] = {{"fraction", json_number(r.coverage.lost_fraction)},
                  {"largest_region_center", r.coverage.largest_region_center
                                                ? direction(*r.coverage.largest_region_center)

@@ -45,7 +45,13 @@ TEST(VisibilityCli, SatelliteReportsBothAnswersWithTheIssuesFields) {
   }
   EXPECT_EQ(v["model"], "cone+mesh");
   EXPECT_TRUE(v["workspace"].is_null());
-  EXPECT_TRUE(v["certificate"]["certified"].get<bool>());
+  // On its body the certificate holds on the occlusion grid, not under exact rays (issue 36,
+  // item 3); the exact rays at the worst viewpoint see what the grid says.
+  EXPECT_FALSE(v["certificate"]["certified"].get<bool>());
+  EXPECT_TRUE(v["certificate"]["certified_at_resolution"].get<bool>());
+  EXPECT_EQ(v["status"], "certified_at_resolution");
+  EXPECT_TRUE(v["exact_viewpoint"]["agrees"].get<bool>());
+  EXPECT_EQ(v["exact_viewpoint"]["visible_markers"], v["visible_markers"]);
   EXPECT_LE(v["certificate"]["t_upper"].get<double>() - v["certificate"]["t_lower"].get<double>(),
             kCertificate);
   // The satellite's shadowed, one-sided markers make it worse on its body (not a theorem: the
@@ -111,6 +117,39 @@ TEST(VisibilityCli, MarkersOffTheBodyAreWarnedAbout) {
   const CliRun run = run_vantage("analyze far.json", scratch);
   EXPECT_THAT(run.err, HasSubstr("vantage: warning: visibility.body: 4 marker(s) lie off"));
   EXPECT_THAT(run.out, HasSubstr("on its body"));
+}
+
+// Issue 36, item 3: markers on opposite faces of a box, 100 degree cones, all four needed: no
+// direction sees them, yet the occlusion grid's half cells made a sliver that analyze certified
+// (t 0.1789, exit 0). The certificate on a body is now "certified_at_resolution", the exact rays
+// at its viewpoint are reported, and when they disagree the answer is refused: exit 1, one
+// warning line.
+TEST(VisibilityCli, AnAnswerThatExactRaysContradictIsNotGiven) {
+  ScratchDir scratch;
+  scratch.write("box.obj",
+                "v -0.5 -0.5 -0.5\nv -0.5 -0.5 0.5\nv -0.5 0.5 -0.5\nv -0.5 0.5 0.5\n"
+                "v 0.5 -0.5 -0.5\nv 0.5 -0.5 0.5\nv 0.5 0.5 -0.5\nv 0.5 0.5 0.5\n"
+                "f 1 2 4 3\nf 5 7 8 6\nf 1 5 6 2\nf 3 4 8 7\nf 1 3 7 5\nf 2 6 8 4\n");
+  scratch.write("opposite.json",
+                R"({"points": [[0.5, 0.2, 0.1], [0.5, -0.2, -0.15], [-0.5, 0.25, -0.1],
+                               [-0.5, -0.1, 0.2]],
+                    "normals": [[1, 0, 0], [1, 0, 0], [-1, 0, 0], [-1, 0, 0]],
+                    "visibility": {"cone_half_angle_deg": 100, "min_visible": 4,
+                                   "body": "box.obj"}})");
+  const CliRun text = run_vantage("analyze opposite.json", scratch);
+  EXPECT_EQ(text.status, 1);
+  EXPECT_THAT(text.out, HasSubstr("not under exact rays"));
+  EXPECT_THAT(text.out,
+              HasSubstr("exact rays           the worst viewpoint sees 2 markers, not 4"));
+  EXPECT_EQ(testing::line_count(text.err), 1) << text.err;
+  EXPECT_THAT(text.err, HasSubstr("the answer does not hold"));
+  const CliRun json = run_vantage("analyze opposite.json --json", scratch);
+  EXPECT_EQ(json.status, 1);
+  const nlohmann::json v = nlohmann::json::parse(json.out)["visibility"];
+  EXPECT_EQ(v["status"], "certified_at_resolution");
+  EXPECT_FALSE(v["certificate"]["certified"].get<bool>());
+  EXPECT_FALSE(v["exact_viewpoint"]["agrees"].get<bool>());
+  EXPECT_FALSE(v["exact_viewpoint"]["trackable"].get<bool>());
 }
 
 TEST(VisibilityCli, MarkersUnderTheSurfaceAreNamedAsHidden) {

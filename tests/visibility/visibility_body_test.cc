@@ -10,6 +10,7 @@
 #include <cmath>
 #include <vector>
 
+#include "support/box_mesh.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/layout.h"
 #include "vantage/analysis/mesh.h"
@@ -19,23 +20,7 @@
 namespace vantage::visibility {
 namespace {
 
-// An axis-aligned box from lo to hi as 12 triangles.
-Mesh box_mesh(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
-  Mesh mesh;
-  mesh.vertices.resize(3, 8);
-  for (int k = 0; k < 8; ++k) {
-    mesh.vertices.col(k) << ((k & 1) ? hi.x() : lo.x()), ((k & 2) ? hi.y() : lo.y()),
-        ((k & 4) ? hi.z() : lo.z());
-  }
-  const int quads[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
-                           {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
-  mesh.triangles.resize(3, 12);
-  for (int f = 0; f < 6; ++f) {
-    mesh.triangles.col(2 * f) << quads[f][0], quads[f][1], quads[f][2];
-    mesh.triangles.col(2 * f + 1) << quads[f][0], quads[f][2], quads[f][3];
-  }
-  return mesh;
-}
+using testing::box_mesh;
 
 // Eighteen markers on the faces of the box |x| <= 2, |y| <= 1.5, |z| <= 1, three per face,
 // each with its face's normal.

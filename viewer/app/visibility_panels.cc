@@ -55,8 +55,14 @@ void Panels::visibility_summary(const AnalysisSnapshot& snapshot) {
     ImGui::TextDisabled("largest lost region: radius %.1f\u00b0 around (%.2f, %.2f, %.2f)",
                         v.coverage.largest_region_radius_deg, c.x(), c.y(), c.z());
   }
-  ImGui::Text("certificate t \u2208 [%.9f, %.9f] %s", w.t_lower, w.t_upper,
-              w.certified() ? "certified" : "NOT certified");
+  ImGui::TextWrapped("certificate t \u2208 [%.9f, %.9f] %s", w.t_lower, w.t_upper,
+                     !w.certified() ? "NOT certified"
+                     : v.with_body  ? "certified on the occlusion grid, not under exact rays"
+                                    : "certified");
+  if (v.exact_viewpoint_disagrees()) {
+    ImGui::TextWrapped("exact rays: the worst viewpoint sees %zu markers, not %zu",
+                       v.exact_viewpoint->visible.size(), w.visible_markers.size());
+  }
   ImGui::TextWrapped("worst viewpoint (%.3f, %.3f, %.3f), body \u2192 camera%s", w.viewpoint.x(),
                      w.viewpoint.y(), w.viewpoint.z(),
                      w.viewpoints.size() > 1

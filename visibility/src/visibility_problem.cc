@@ -67,15 +67,22 @@ void VisibilityProblem::validate() const {
 
 DirectionVisibility direction_visibility(const VisibilityProblem& problem,
                                          const Eigen::Vector3d& a) {
-  DirectionVisibility out;
+  std::vector<int> visible;
   for (Eigen::Index i = 0; i < problem.points.cols(); ++i) {
     if (problem.normals.col(i).dot(a) < problem.cos_cone(i)) continue;
     if (problem.occlusion != nullptr &&
         problem.occlusion->blocked(problem.occlusion_marker(static_cast<int>(i)), a)) {
       continue;
     }
-    out.visible.push_back(static_cast<int>(i));
+    visible.push_back(static_cast<int>(i));
   }
+  return seen_set(problem, a, std::move(visible));
+}
+
+DirectionVisibility seen_set(const VisibilityProblem& problem, const Eigen::Vector3d& a,
+                             std::vector<int> visible) {
+  DirectionVisibility out;
+  out.visible = std::move(visible);
   const std::size_t k = out.visible.size();
   bool collinear = true;
   Eigen::Vector3d first = Eigen::Vector3d::Zero();

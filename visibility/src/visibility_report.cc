@@ -11,6 +11,7 @@
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/internal/checks.h"
 #include "vantage/analysis/parallel.h"
+#include "vantage/visibility/exact_visibility.h"
 #include "vantage/visibility/visibility_model.h"
 #include "vantage/visibility/workspace_lattice.h"
 
@@ -166,6 +167,10 @@ VisibilityReport analyze_visibility(const Layout& layout, const VisibilityReport
   report.min_visible = problem.min_visible;
   report.workspace = layout.workspace;
   report.worst = visibility_worst_viewpoint(problem, options.search);
+  if (model.has_body() && report.worst.status != VisibilityWorstViewpoint::Status::kUntrackable) {
+    report.exact_viewpoint =
+        ExactVisibility(problem, *layout.visibility->body).at(report.worst.viewpoint);
+  }
   report.max_worst_case_error_deg = error_deg(report.worst);
   report.coverage = visibility_coverage(problem, options.coverage_samples);
   if (model.has_body()) report.hidden_by_body = hidden_by_body(problem, options.coverage_samples);
@@ -174,16 +179,32 @@ VisibilityReport analyze_visibility(const Layout& layout, const VisibilityReport
 }
 
 bool VisibilityReport::is_usable() const {
-  if (!worst.certified()) return false;
+  if (!worst.certified() || exact_viewpoint_disagrees()) return false;
   for (const VisibilityDropoutEntry& e : dropout) {
     if (e.status == VisibilityWorstViewpoint::Status::kNotCertified) return false;
   }
   return true;
 }
 
+const char* VisibilityReport::certificate_status() const {
+  if (worst.certified() && with_body) return "certified_at_resolution";
+  return to_string(worst.status);
+}
+
+bool VisibilityReport::exact_viewpoint_disagrees() const {
+  return exact_viewpoint && exact_viewpoint->visible != worst.visible_markers;
+}
+
 std::string VisibilityReport::message() const {
   std::ostringstream out;
   if (!worst.certified()) out << "visibility: " << worst.message;
+  if (worst.certified() && exact_viewpoint_disagrees()) {
+    out << "visibility: under exact rays the worst viewpoint sees "
+        << exact_viewpoint->visible.size() << " markers, not the occlusion grid's "
+        << worst.visible_markers.size()
+        << (exact_viewpoint->trackable ? "" : ", and is not trackable")
+        << ": the grid's cells decide its neighbourhood wrongly, and the answer does not hold";
+  }
   int uncertified = 0;
   for (const VisibilityDropoutEntry& e : dropout) {
     uncertified += e.status == VisibilityWorstViewpoint::Status::kNotCertified;

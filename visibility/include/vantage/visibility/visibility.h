@@ -54,9 +54,15 @@ struct DirectionVisibility {
   double t = 1.0;
 };
 
-/// The exact visibility of direction a (unit): the cone test, the occlusion grid and t.
+/// The visibility of direction a (unit) in the search's model: the cone test, the occlusion
+/// grid and t (exact_visibility.h casts exact rays instead of the grid).
 DirectionVisibility direction_visibility(const VisibilityProblem& problem,
                                          const Eigen::Vector3d& a);
+
+/// What direction a (unit) gives when `visible` (increasing) are the markers it sees: t and
+/// whether it is trackable (min_visible, not collinear, inside the workspace).
+DirectionVisibility seen_set(const VisibilityProblem& problem, const Eigen::Vector3d& a,
+                             std::vector<int> visible);
 
 /// Options of visibility_worst_viewpoint().
 struct VisibilitySearchOptions {

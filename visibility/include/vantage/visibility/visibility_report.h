@@ -47,6 +47,9 @@ struct VisibilityReport {
   double max_worst_case_error_deg = 90.0;  ///< asin t of the worst viewpoint, degrees
   VisibilityCoverage coverage;
   std::optional<double> occlusion_resolution_deg;  ///< with a body
+  /// With a body and a trackable worst: what `worst.viewpoint` sees under exact rays
+  /// (exact_visibility.h). The search certifies on the occlusion grid; this checks its answer.
+  std::optional<DirectionVisibility> exact_viewpoint;
   /// With a body: each marker's distance to the mesh surface, and the markers farther than
   /// kOffSurface of the mesh's size (plus the radius of a placement's spherical markers) (a
   /// warning: the mesh may not be the markers' body).
@@ -66,6 +69,16 @@ struct VisibilityReport {
 
   /// Certified (or, with dropout, every entry certified or untrackable).
   bool is_usable() const;
+  /// The certificate in words (docs/math.md §20, "What the certificate covers"): "certified"
+  /// without a body (cones are exact), "certified_at_resolution" with one (certified on the
+  /// occlusion grid at occlusion_resolution_deg, not under exact rays), "not_certified" or
+  /// "untrackable".
+  const char* certificate_status() const;
+  /// Certified with nothing left to a resolution: certified and without a body.
+  bool certified() const { return worst.certified() && !with_body; }
+  /// With a body: the exact rays at the reported viewpoint see another set of markers than the
+  /// grid does (the grid's cells decided its neighbourhood wrongly).
+  bool exact_viewpoint_disagrees() const;
   std::string message() const;
 };
 
