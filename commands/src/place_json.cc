@@ -228,8 +228,9 @@ Outcome place(const Request& request, const Sites& sites,
     out.objective_value = out.placed.report.visibility
                               ? out.placed.report.visibility->max_worst_case_error_deg
                               : 90.0;
-    out.complete =
-        covered && out.placed.report.visibility && out.placed.report.visibility->worst.certified();
+    out.complete = covered && out.placed.report.visibility &&
+                   out.placed.report.visibility->worst.certified() &&
+                   !out.placed.report.visibility->exact_viewpoint_disagrees();
   }
   return out;
 }

@@ -21,8 +21,10 @@ Json direction(const Eigen::Vector3d& a) {
 Json dropout(const visibility::VisibilityReport& r) {
   Json out = Json::array();
   for (const visibility::VisibilityDropoutEntry& e : r.dropout) {
+    const bool at_resolution =
+        r.with_body && e.status == visibility::VisibilityWorstViewpoint::Status::kCertified;
     out.push_back({{"lost", e.lost},
-                   {"status", to_string(e.status)},
+                   {"status", at_resolution ? "certified_at_resolution" : to_string(e.status)},
                    {"t", json_number(e.t)},
                    {"pbar_min", json_number(e.pbar_min)},
                    {"max_worst_case_error_deg", json_number(e.max_worst_case_error_deg)},
