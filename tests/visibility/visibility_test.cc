@@ -133,6 +133,24 @@ TEST(VisibilityWorstViewpoint, BoxWithFaceMarkersAgainstDenseSampling) {
   expect_certified_against_sampling(half_spaces, 200000);
 }
 
+// Issue 36, item 3: three exactly collinear markers on a face (and two on the next face) left
+// the certificate open (t in [0.303, 1] after 4 M patches): a patch that may see only the three
+// was never pruned, though every set it can see is collinear and so untrackable.
+TEST(VisibilityWorstViewpoint, CollinearMarkersOnAFaceCertify) {
+  VisibilityProblem p;
+  p.points.resize(3, 5);
+  p.points << -0.3, 0.0, 0.3, 0.5, 0.5,  //
+      0.0, 0.0, 0.0, 0.1, -0.2,          //
+      0.5, 0.5, 0.5, 0.2, -0.1;
+  p.normals.resize(3, 5);
+  p.normals << 0, 0, 0, 1, 1, 0, 0, 0, 0, 0, 1, 1, 1, 0, 0;
+  for (double cone : {70.0, 89.0}) {
+    SCOPED_TRACE(cone);
+    p.cos_cone = Eigen::VectorXd::Constant(5, std::cos(cone * kPi / 180.0));
+    expect_certified_against_sampling(p, 200000);
+  }
+}
+
 TEST(VisibilityWorstViewpoint, RandomMarkersWithRandomNormalsAgainstDenseSampling) {
   std::mt19937 rng(kSeed + 70);
   for (int trial = 0; trial < 4; ++trial) {

@@ -260,10 +260,11 @@ class VisibilitySearch {
     }
     double bound = std::min(patch.bound, sin_plus(nearest, cos_r, sin_r));
     if (mixed) {
-      bound =
-          std::min(bound, internal::needed_mixed_bound(classes_, problem_.min_visible,
-                                                       {seen, pairs_, u_, pairs, c, cos_r, sin_r}));
+      bound = std::min(bound, internal::needed_mixed_bound(
+                                  classes_, problem_.min_visible,
+                                  {seen, pairs_, u_, pairs, c, cos_r, sin_r, &collinear_}));
     }
+    bound = std::min(bound, off_line_bound(seen, c, cos_r, sin_r));
     if (bound < level_ - options_.tie_tolerance) return;
 
     exact(c);
@@ -301,6 +302,69 @@ class VisibilitySearch {
     for (int k = 0; k < 4; ++k) {
       open_.push({face, u + ((k & 1) ? q : -q), v + ((k & 2) ? q : -q), q, bound, decided, kept});
     }
+  }
+
+  // Unit direction of the pair {i, j}, i != j, in either order.
+  Eigen::Vector3d pair_u(int i, int j) const {
+    return u_.col(i < j ? pair_index(i, j) : pair_index(j, i));
+  }
+
+  // The largest |a.u_ij| over the patch of centre c.
+  double pair_bound(int i, int j, const Eigen::Vector3d& c, double cos_r, double sin_r) const {
+    return sin_plus(std::abs(c.dot(pair_u(i, j))), cos_r, sin_r);
+  }
+
+  // The bound of collinearity (docs/math.md §20, "The search"): when the markers the patch
+  // certainly sees, L (two or more), lie on one line, a trackable direction of the patch also
+  // sees a marker m off that line, and then t(a) <= min over l in L of |a.u_lm|. So t <= the
+  // largest, over the markers m the patch may see off the line, of min_l sin(asin|c.u_lm| + r);
+  // -1 (nothing trackable) when there is no such m. 2 (no bound) when L is not collinear.
+  double off_line_bound(const std::vector<Seen>& seen, const Eigen::Vector3d& c, double cos_r,
+                        double sin_r) const {
+    std::vector<int> certain, possible;
+    for (int i = 0; i < n_; ++i) {
+      if (seen[i] == Seen::kVisible) certain.push_back(i);
+      if (seen[i] != Seen::kHidden) possible.push_back(i);
+    }
+    // Every marker the patch may see on one line: every visible set is collinear.
+    if (possible.size() >= 2) {
+      const Eigen::Vector3d along = pair_u(possible[0], possible[1]);
+      bool one_line = true;
+      for (std::size_t k = 2; k < possible.size() && one_line; ++k) {
+        one_line = pair_u(possible[0], possible[k]).cross(along).norm() <= sdp::kParallelTolerance;
+      }
+      if (one_line) return -1.0;
+    }
+    if (certain.size() < 2) return 2.0;
+    const Eigen::Vector3d line = pair_u(certain[0], certain[1]);
+    const auto on_line = [&](int i) {
+      return pair_u(certain[0], i).cross(line).norm() <= sdp::kParallelTolerance;
+    };
+    for (std::size_t k = 2; k < certain.size(); ++k) {
+      if (!on_line(certain[k])) return 2.0;
+    }
+    double largest = -1.0;
+    std::vector<int> unit;  // m and the markers seen whenever m is (its cone class at the edge)
+    for (int m = 0; m < n_; ++m) {
+      if (seen[m] == Seen::kHidden || seen[m] == Seen::kVisible || on_line(m)) continue;
+      unit.assign(1, m);
+      if (seen[m] == Seen::kConeEdge) {
+        for (int k = 0; k < n_; ++k) {
+          if (k != m && seen[k] == Seen::kConeEdge && classes_.of(k) == classes_.of(m)) {
+            unit.push_back(k);
+          }
+        }
+      }
+      double least = 1.0;
+      for (int y : unit) {
+        for (int x : certain) least = std::min(least, pair_bound(x, y, c, cos_r, sin_r));
+        for (int x : unit) {
+          if (x < y) least = std::min(least, pair_bound(x, y, c, cos_r, sin_r));
+        }
+      }
+      largest = std::max(largest, least);
+    }
+    return largest;
   }
 
   // Marker i on the patch of centre c and radius r: certainly visible, hidden or mixed.
@@ -413,6 +477,18 @@ class VisibilitySearch {
   std::vector<double> cone_angle_;
   double workspace_angle_ = kPi;
   std::vector<Candidate> candidates_;
+  // trackable()'s collinearity test on a set of markers (increasing), for bound 2'.
+  const internal::CollinearTest collinear_ = [this](const std::vector<int>& markers) {
+    if (markers.size() < 3) return true;
+    const Eigen::Vector3d first = u_.col(pair_index(markers[0], markers[1]));
+    for (std::size_t y = 2; y < markers.size(); ++y) {
+      if (u_.col(pair_index(markers[0], markers[y])).cross(first).norm() >
+          sdp::kParallelTolerance) {
+        return false;
+      }
+    }
+    return true;
+  };
   std::priority_queue<Patch> open_;
   double level_ = -1.0;
   double upper_ = 0.0;

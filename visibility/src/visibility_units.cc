@@ -83,7 +83,7 @@ class Weights {
 // bound among the certain markers' pairs with them and their own pairs, at its best. A choice
 // that is enough stops growing, since more units only add pairs.
 double best_choice(const Units& units, const Weights& w, int need,
-                   const std::vector<std::pair<int, int>>& apart) {
+                   const std::vector<std::pair<int, int>>& apart, const CollinearTest* collinear) {
   const int side = units.count() + 1;
   std::vector<int> chosen;
   std::vector<char> in(static_cast<std::size_t>(side), 0);
@@ -93,10 +93,24 @@ double best_choice(const Units& units, const Weights& w, int need,
     }
     return true;
   };
+  // The certain markers and those of the chosen units, increasing, on one line.
+  std::vector<int> markers;
+  auto on_one_line = [&] {
+    if (collinear == nullptr) return false;
+    markers.clear();
+    for (std::size_t i = 0; i < units.of.size(); ++i) {
+      const int x = units.of[i];
+      if (x == 0 || (x > 0 && in[static_cast<std::size_t>(x)]))
+        markers.push_back(static_cast<int>(i));
+    }
+    return (*collinear)(markers);
+  };
   double best = 0.0;
   std::function<void(int, int, double)> choose = [&](int next, int size, double value) {
     if (value <= best) return;
-    if (size >= need && covers()) {
+    // Enough markers, one of each pair that cannot both hide, and not on one line: trackable.
+    // More units only add pairs, so the choice stops growing.
+    if (size >= need && covers() && !on_one_line()) {
       best = value;
       return;
     }
@@ -152,10 +166,20 @@ double needed_mixed_bound(const ConeClasses& classes, int min_visible, const Pat
       if (a >= 0 && b >= 0 && classes.hidden_apart(a, b)) apart.emplace_back(x, y);
     }
   }
-  if (need <= 0 && (apart.empty() || count > kMaxEnumeratedUnits)) return 1.0;
+  // Certain markers on one line need a unit off it, as too few need more.
+  const bool certain_on_line = [&] {
+    if (patch.collinear == nullptr) return false;
+    std::vector<int> certain;
+    for (std::size_t i = 0; i < units.of.size(); ++i) {
+      if (units.of[i] == 0) certain.push_back(static_cast<int>(i));
+    }
+    return (*patch.collinear)(certain);
+  }();
+  if (need <= 0 && !certain_on_line && (apart.empty() || count > kMaxEnumeratedUnits)) return 1.0;
   if (units.certain == 0 && count > std::max(kMaxFreeUnits, kMaxEnumeratedUnits)) return 1.0;
   const Weights w(units, patch);
-  if (count <= kMaxEnumeratedUnits) return best_choice(units, w, need, apart);
+  if (count <= kMaxEnumeratedUnits) return best_choice(units, w, need, apart, patch.collinear);
+  if (need <= 0) return 1.0;  // on a line, with many units: no bound (sound)
   if (units.certain > 0) return threshold(units, w, 0, need);
   // No certain marker: some unit U is seen; the rest follows as above, U's pairs included.
   double best = 0.0;

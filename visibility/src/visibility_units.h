@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -24,6 +25,10 @@ inline bool is_mixed(Seen s) { return s == Seen::kMixed || s == Seen::kConeEdge;
 /// the largest |a.u| on the patch (§14).
 double sin_plus(double s, double cos_r, double sin_r);
 
+/// Whether markers (increasing) lie on one line by §20's test of trackability (fewer than three:
+/// true): then no direction that sees exactly them is trackable.
+using CollinearTest = std::function<bool(const std::vector<int>& markers)>;
+
 /// What bound 2' reads on one patch.
 struct PatchMarkers {
   const std::vector<Seen>& seen;                    ///< per marker
@@ -33,6 +38,9 @@ struct PatchMarkers {
   Eigen::Vector3d centre;
   double cos_r = 1.0;
   double sin_r = 0.0;
+  /// When given, a choice of units whose markers (with the certain ones) are collinear is not
+  /// trackable and does not count.
+  const CollinearTest* collinear = nullptr;
 };
 
 /// Bound 2' on t over the trackable directions of the patch (1 when it does not apply).
