@@ -8,7 +8,7 @@ void VisibilityInput::add_options(CLI::App* sub) {
                   "start for a convex body without normals)")
       ->check(CLI::IsMember({"radial"}));
   sub->add_option("--cone-deg", cone_deg,
-                  "every marker's cone half-angle in degrees, (0, 180] (overrides the file's "
+                  "every marker's cone half-angle in degrees, [0.001, 180] (overrides the file's "
                   "visibility.cone_half_angle_deg)");
   sub->add_option("--min-visible", min_visible,
                   "markers a direction must see to track the body, >= 3 (default 3)");

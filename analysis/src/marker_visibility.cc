@@ -33,9 +33,9 @@ void validate_visibility(const MarkerVisibility& v, Eigen::Index markers) {
   }
   for (Eigen::Index i = 0; i < markers; ++i) {
     const double cone = v.cone_half_angle_deg(i);
-    if (!(cone > 0.0 && cone <= 180.0)) {
+    if (!(cone >= kMinConeHalfAngleDeg && cone <= 180.0)) {
       throw InvalidArgument("visibility.cone_half_angle_deg", static_cast<long>(i),
-                            "must be in (0, 180] degrees");
+                            "must be in [0.001, 180] degrees");
     }
   }
   if (v.min_visible < 3 || v.min_visible > markers) {

@@ -62,8 +62,8 @@ void VisibilityOptions::apply(Layout* layout) const {
                           "--normals radial");
   }
   if (cone_deg) {
-    if (!(*cone_deg > 0.0 && *cone_deg <= 180.0)) {
-      throw InvalidArgument("--cone-deg", "must be in (0, 180]");
+    if (!(*cone_deg >= kMinConeHalfAngleDeg && *cone_deg <= 180.0)) {
+      throw InvalidArgument("--cone-deg", "must be in [0.001, 180] degrees");
     }
     layout->visibility->cone_half_angle_deg.setConstant(layout->entries.cols(), *cone_deg);
   }

@@ -99,7 +99,7 @@ TEST(LayoutDocument, ConeAndMinVisibleEditsAreUndoableAndBadOnesThrow) {
   doc.set_cone_half_angle_deg(45.0);
   EXPECT_EQ(doc.revision(), ++revision);
   EXPECT_TRUE((doc.layout().visibility->cone_half_angle_deg.array() == 45.0).all());
-  doc.set_cone_half_angle_deg(180.0);  // the closed end of (0, 180]
+  doc.set_cone_half_angle_deg(180.0);  // the closed end of [0.001, 180]
   doc.set_min_visible(12);             // every marker
   EXPECT_EQ(doc.layout().visibility->min_visible, 12);
   revision += 2;

@@ -71,10 +71,10 @@ void LayoutDocument::set_cone_half_angle_deg(double degrees) {
   constexpr const char* kField = "visibility.cone_half_angle_deg";
   Layout next = layout_;
   MarkerVisibility& visibility = visibility_of(next, kField);
-  if (!(degrees > 0.0 && degrees <= 180.0)) {
+  if (!(degrees >= kMinConeHalfAngleDeg && degrees <= 180.0)) {
     std::ostringstream got;
     got << degrees;
-    throw InvalidArgument(kField, "must be in (0, 180] degrees, got " + got.str());
+    throw InvalidArgument(kField, "must be in [0.001, 180] degrees, got " + got.str());
   }
   visibility.cone_half_angle_deg.setConstant(degrees);
   commit(std::move(next), true);

@@ -16,12 +16,16 @@ struct MarkerVisibility {
   static constexpr double kDefaultConeDeg = 90.0;  ///< NDI's default marker angle
 
   Eigen::Matrix3Xd normals;             ///< outward unit normals, one per marker
-  Eigen::VectorXd cone_half_angle_deg;  ///< one per marker, in (0, 180]
+  Eigen::VectorXd cone_half_angle_deg;  ///< one per marker, in [kMinConeHalfAngleDeg, 180]
   int min_visible = 3;                  ///< markers a tracked direction must see, >= 3
   /// The body mesh's path as the layout gives it (relative to the layout file), or empty.
   std::string body_path;
   std::optional<Mesh> body;  ///< the mesh read from body_path (when there is one)
 };
+
+/// The narrowest marker cone, degrees: the cone's cosine is still below 1 (1 - cos of 1e-3
+/// degrees is 1.5e-10; a cone of 1e-300 degrees would have cosine 1 and see nothing).
+inline constexpr double kMinConeHalfAngleDeg = 1e-3;
 
 /// The narrowest workspace, degrees: its lattice (docs/math.md §20, "Coverage") is still inside
 /// it after rounding (1 - cos of 1e-3 degrees is 1.5e-10; of 1e-6 degrees, one rounding).
@@ -35,7 +39,7 @@ struct LayoutWorkspace {
 
 /// Throws InvalidArgument naming the file's field for visibility of a layout with `markers`
 /// points: "normals" (count, finite, unit within 1e-9: the reader normalises),
-/// "visibility.cone_half_angle_deg[i]" in (0, 180], "visibility.min_visible" in [3, markers].
+/// "visibility.cone_half_angle_deg[i]" in [0.001, 180], "visibility.min_visible" in [3, markers].
 void validate_visibility(const MarkerVisibility& visibility, Eigen::Index markers);
 
 /// Throws InvalidArgument for a workspace axis that is not unit or a half-angle outside (0, 180].

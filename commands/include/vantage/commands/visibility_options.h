@@ -21,7 +21,7 @@ struct VisibilityOptions {
   bool seen_whole = false;  ///< --seen-whole: drop the file's normals, cones, body, workspace
 
   /// Applies the options to a layout read from `path`. Throws InvalidArgument naming the option
-  /// as typed (e.g. "--cone-deg: must be in (0, 180]", "--body: ...: not a mesh").
+  /// as typed (e.g. "--cone-deg: must be in [0.001, 180] degrees", "--body: ...: not a mesh").
   void apply(Layout* layout) const;
 };
 

@@ -50,7 +50,7 @@ class LayoutDocument {
   void remove_entry(int index);
   /// Gives every marker the cone half-angle `degrees` (the file's
   /// "visibility.cone_half_angle_deg" as one number). Throws InvalidArgument naming that field
-  /// for a layout without normals or a value outside (0, 180].
+  /// for a layout without normals or a value outside [kMinConeHalfAngleDeg, 180].
   void set_cone_half_angle_deg(double degrees);
   /// Sets "visibility.min_visible", the markers a tracked direction must see. Throws
   /// InvalidArgument naming that field for a layout without normals or k outside [3, markers].
