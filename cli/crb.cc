@@ -85,8 +85,9 @@ void print_report(const std::string& name, const camera::PoseCrbReport& r) {
               << format_number(map.percentiles.p50, 4) << ", p95 "
               << format_number(map.percentiles.p95, 4) << ", p99 "
               << format_number(map.percentiles.p99, 4) << "\n"
-              << "sliver           " << (map.sliver ? "yes" : "no") << " (the region within 2x "
-              << "of the worst "
+              << "sliver           " << (map.sliver ? "yes" : "no")
+              << (map.worst.unbounded ? " (the region above 22.5 deg about the worst "
+                                      : " (the region within 2x of the worst ")
               << (map.worst_region_fills_workspace
                       ? std::string("reaches the workspace's edge along every cut")
                       : "is " + format_number(map.worst_region_width_deg, 3) + " deg across")

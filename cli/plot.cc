@@ -26,6 +26,7 @@
 #include "vantage/plot/experiment_figures.h"
 #include "vantage/plot/layout_figures.h"
 #include "vantage/plot/tre_figures.h"
+#include "vantage/report/json_number.h"
 
 namespace vantage::cli {
 
@@ -193,15 +194,21 @@ void print_crb_plot(const PlotArgs& args, const Layout& layout, const plot::CrbF
     out["size"] = {options.width, options.height};
     out["status"] = camera::to_string(map.status);
     if (!ok) out["message"] = camera::untrackable_reason(map, figures.report.camera.distance);
-    if (ok) out["worst_rot_rms_deg"] = map.worst.rot_rms_deg;
+    if (ok) {
+      out["worst_rot_rms_deg"] = report::json_number(map.worst.rot_rms_deg);  // null: unbounded
+      out["worst_unbounded"] = map.worst.unbounded;
+    }
+    out["unbounded_fraction"] = map.unbounded_fraction;
     out["figures"] = figure_files_json(figures.files);
     print_json(out);
     return;
   }
   std::cout << "vantage plot --crb: " << (layout.name.empty() ? args.file : layout.name) << "\n";
   if (ok) {
-    std::cout << "worst rot_rms " << format_number(map.worst.rot_rms_deg, 4) << " deg, p50 "
-              << format_number(map.percentiles.p50, 4) << " deg\n";
+    std::cout << "worst rot_rms "
+              << (map.worst.unbounded ? std::string("unbounded (first-order rot_rms past 45 deg)")
+                                      : format_number(map.worst.rot_rms_deg, 4) + " deg")
+              << ", p50 " << format_number(map.percentiles.p50, 4) << " deg\n";
   } else {
     std::cout << "not trackable: "
               << camera::untrackable_reason(map, figures.report.camera.distance) << "\n";
@@ -384,7 +391,9 @@ void print_layout_plot(const PlotArgs& args, const Layout& layout,
           {"max_worst_case_error_deg", *figures.visibility_max_worst_case_error_deg},
           {"trackable_fraction", *figures.trackable_fraction}};
     }
-    out["status"] = certified ? "certified" : "not_certified";
+    out["status"] = !certified          ? "not_certified"
+                    : figures.with_body ? "certified_at_resolution"
+                                        : "certified";
     if (!figures.message.empty()) out["message"] = figures.message;
     out["figures"] = figure_files_json(figures.files);
     print_json(out);

@@ -252,6 +252,13 @@ PoseCrbMap pose_crb_map(const PoseCrbModel& model, double distance) {
   // included: the worst is unbounded when the bound passes its limit anywhere it is reached.
   const std::vector<int> ranked_order = by_bound(map.samples, ranked);
   map.worst = refined_extreme(model, distance, map.samples, ranked_order, +1.0, lattice.spacing);
+  // A sampled direction of the workspace that sees enough markers but whose F is singular has
+  // no finite bound: the worst is unbounded there.
+  if (!map.worst.unbounded) {
+    const auto singular = std::find_if(map.samples.begin(), map.samples.end(),
+                                       [](const PoseCrbAt& at) { return at.ill_conditioned; });
+    if (singular != map.samples.end()) map.worst = *singular;
+  }
   map.best = refined_extreme(model, distance, map.samples, order, -1.0, lattice.spacing);
   map.worst_region_width_deg =
       worst_region_width_deg(model, distance, map.worst, &map.worst_region_fills_workspace);

@@ -246,6 +246,7 @@ LayoutFigures write_layout_figures(const report::LayoutReport& report,
   if (on_body) {
     result.visibility_max_worst_case_error_deg = report.visibility->max_worst_case_error_deg;
     result.trackable_fraction = report.visibility->coverage.trackable_fraction;
+    result.with_body = report.visibility->with_body;
   }
   if (!report.is_usable()) result.message = report.message();
   const FigureOptions& figure = options.figure;

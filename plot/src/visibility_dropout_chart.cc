@@ -61,7 +61,7 @@ void write_csv(const VisibilityDropoutChartData& data, const std::filesystem::pa
   long rank = 1;
   for (int k : report.dropout_by_harm) {
     const visibility::VisibilityDropoutEntry& e = report.dropout[static_cast<std::size_t>(k)];
-    csv << entry_label(e.lost) << static_cast<long>(e.lost) << rank++ << to_string(e.status)
+    csv << entry_label(e.lost) << static_cast<long>(e.lost) << rank++ << report.entry_status(e)
         << e.pbar_min << e.max_worst_case_error_deg << e.trackable_fraction;
     const double whole = seen_whole(data, e.lost);
     if (whole >= 0.0) {
@@ -71,7 +71,7 @@ void write_csv(const VisibilityDropoutChartData& data, const std::filesystem::pa
     }
     csv.end_row();
   }
-  csv << "intact" << -1 << 0 << to_string(report.worst.status) << report.worst.pbar_min
+  csv << "intact" << -1 << 0 << report.certificate_status() << report.worst.pbar_min
       << report.max_worst_case_error_deg << report.coverage.trackable_fraction << "";
   csv.end_row();
   csv.commit();

@@ -66,11 +66,18 @@ py::tuple analyze(const py::object& layout_arg, const py::object& vectors, const
   const report::LayoutReport report =
       without_gil([&] { return report::analyze_layout(layout, options); });
   const sdp::LayoutAnalysis& r = report.analysis;
+  // Why the report is not usable, in the order LayoutReport::is_usable() asks.
   const bool certified = r.solver.status == sdp::WorstViewpoint::Status::kCertified;
-  const std::string status = r.degenerate        ? "degenerate"
-                             : r.near_degenerate ? "near_degenerate"
-                             : !certified        ? sdp::to_string(r.solver.status)
-                                                 : "crosscheck_disagrees";
+  const auto& v = report.visibility;
+  const std::string status =
+      r.degenerate        ? "degenerate"
+      : r.near_degenerate ? "near_degenerate"
+      : !certified        ? sdp::to_string(r.solver.status)
+      : !r.trusted()      ? "crosscheck_disagrees"
+      : report.dropout && report.dropout->status != report::DropoutAnalysis::Status::kCertified
+          ? "dropout_not_certified"
+      : v && v->exact_viewpoint_disagrees() ? "exact_rays_disagree"
+                                            : "visibility_not_certified";
   const std::string brief = report.brief_report();
   return py::make_tuple(result_or_raise(!report.is_usable(), status, report.message(),
                                         Json::parse(report::to_json(report)), brief),

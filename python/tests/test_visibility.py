@@ -103,3 +103,23 @@ def test_a_layout_built_in_python_on_its_body_is_the_files(vantage):
                        visibility={"min_visible": 2})
     with pytest.raises(ValueError, match="normals"):
         vantage.Layout(points=np.array(spec["points"]), visibility={"min_visible": 3})
+
+
+def test_an_answer_exact_rays_contradict_raises_with_that_status(vantage, tmp_path):
+    # Issue 36, item 3: markers on opposite faces of a box, all four needed: the occlusion grid
+    # makes a sliver that the exact rays at its viewpoint do not see (docs/math.md §20).
+    (tmp_path / "box.obj").write_text(
+        "v -0.5 -0.5 -0.5\nv -0.5 -0.5 0.5\nv -0.5 0.5 -0.5\nv -0.5 0.5 0.5\n"
+        "v 0.5 -0.5 -0.5\nv 0.5 -0.5 0.5\nv 0.5 0.5 -0.5\nv 0.5 0.5 0.5\n"
+        "f 1 2 4 3\nf 5 7 8 6\nf 1 5 6 2\nf 3 4 8 7\nf 1 3 7 5\nf 2 6 8 4\n")
+    layout = tmp_path / "opposite.json"
+    layout.write_text(
+        '{"points": [[0.5, 0.2, 0.1], [0.5, -0.2, -0.15], [-0.5, 0.25, -0.1], [-0.5, -0.1, 0.2]],'
+        ' "normals": [[1, 0, 0], [1, 0, 0], [-1, 0, 0], [-1, 0, 0]],'
+        ' "visibility": {"cone_half_angle_deg": 100, "min_visible": 4, "body": "box.obj"}}')
+    with pytest.raises(vantage.NumericalError) as caught:
+        vantage.analyze(str(layout))
+    assert caught.value.status == "exact_rays_disagree"
+    v = caught.value.result.visibility
+    assert v.status == "not_certified" and not v.certificate.certified_at_resolution
+    assert v.exact_viewpoint is not None and not v.exact_viewpoint.agrees

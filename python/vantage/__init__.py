@@ -119,7 +119,10 @@ def analyze(layout: LayoutArg = None, *, vectors: Optional[npt.ArrayLike] = None
     allow_large: lift the size limits (README "Limits"), as ``--allow-large``.
 
     Raises ValueError on bad input and NumericalError (its ``result`` the LayoutReport) when the
-    report is not usable: not certified, degenerate, the cross-check disagrees.
+    report is not usable; its status says why: 'degenerate', 'near_degenerate', the solver's
+    status when not certified, 'crosscheck_disagrees', 'dropout_not_certified',
+    'exact_rays_disagree' (on a body, the exact rays at the worst viewpoint contradict the
+    occlusion grid) or 'visibility_not_certified'.
     """
     fields, brief = _vantage.analyze(
         layout, vectors=vectors, points=points, weights=weights, swaps=swaps,

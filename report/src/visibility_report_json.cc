@@ -21,10 +21,8 @@ Json direction(const Eigen::Vector3d& a) {
 Json dropout(const visibility::VisibilityReport& r) {
   Json out = Json::array();
   for (const visibility::VisibilityDropoutEntry& e : r.dropout) {
-    const bool at_resolution =
-        r.with_body && e.status == visibility::VisibilityWorstViewpoint::Status::kCertified;
     out.push_back({{"lost", e.lost},
-                   {"status", at_resolution ? "certified_at_resolution" : to_string(e.status)},
+                   {"status", r.entry_status(e)},
                    {"t", json_number(e.t)},
                    {"pbar_min", json_number(e.pbar_min)},
                    {"max_worst_case_error_deg", json_number(e.max_worst_case_error_deg)},
@@ -62,7 +60,8 @@ nlohmann::ordered_json visibility_json(const visibility::VisibilityReport& r) {
   out["certificate"] = {{"t_upper", json_number(r.worst.t_upper)},
                         {"t_lower", json_number(r.worst.t_lower)},
                         {"certified", r.certified()},
-                        {"certified_at_resolution", r.worst.certified() && r.with_body},
+                        {"certified_at_resolution",
+                         r.worst.certified() && r.with_body && !r.exact_viewpoint_disagrees()},
                         {"patches", r.worst.patches}};
   out["occlusion_resolution_deg"] =
       r.occlusion_resolution_deg ? Json(*r.occlusion_resolution_deg) : Json(nullptr);

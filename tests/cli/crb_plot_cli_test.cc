@@ -16,6 +16,8 @@ namespace vantage {
 namespace {
 
 using testing::BadCall;
+using testing::CliRun;
+using ::testing::HasSubstr;
 using testing::run_vantage;
 using testing::ScratchDir;
 
@@ -54,6 +56,26 @@ TEST(CrbPlotCli, WritesTheMapAndTheSweepWithTheWorstOfVantageCrb) {
   EXPECT_NEAR(first_row_number(scratch.path("figs/crb_map.csv"), "rot_rms_deg"), worst,
               kRoundTrip * worst);
   EXPECT_NEAR(plot["worst_rot_rms_deg"].get<double>(), worst, kRoundTrip * worst);
+}
+
+// At 4 m the cube's worst first-order rot_rms passes 45 degrees: `plot --crb` printed
+// "worst rot_rms inf deg" (docs/math.md §22, "Unbounded": a word, not a number).
+TEST(CrbPlotCli, AnUnboundedWorstIsSaidNotPrinted) {
+  ScratchDir scratch;
+  const std::string args = "plot " + kCube +
+                           " --crb --distance 4 --focal 900 --noise-px 0.3 "
+                           "--samples 2000 --sweep-distance 3:4:2 --out ";
+  const nlohmann::json json = testing::run_json(args + "a", scratch);
+  EXPECT_TRUE(json["worst_rot_rms_deg"].is_null());
+  EXPECT_TRUE(json["worst_unbounded"].get<bool>());
+  const nlohmann::json crb = testing::run_json(
+      "crb " + kCube + " --distance 4 --focal 900 --noise-px 0.3 --samples 2000", scratch);
+  EXPECT_EQ(json["unbounded_fraction"], crb["unbounded_fraction"]);
+  EXPECT_TRUE(crb["worst"]["unbounded"].get<bool>());
+  const CliRun text = testing::run_vantage(args + "b", scratch);
+  EXPECT_EQ(text.status, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("worst rot_rms unbounded (first-order rot_rms past 45 deg)"));
+  EXPECT_THAT(text.out, ::testing::Not(HasSubstr("inf")));
 }
 
 TEST(CrbPlotCli, BadInputIsOneLineAndMakesNoDirectory) {

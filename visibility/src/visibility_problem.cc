@@ -33,7 +33,7 @@ void VisibilityProblem::validate() const {
   for (Eigen::Index i = 0; i < n; ++i) {
     if (!(cos_cone(i) >= -1.0 && cos_cone(i) < 1.0)) {
       throw InvalidArgument("visibility.cone_half_angle_deg", static_cast<long>(i),
-                            "must be in (0, 180] degrees");
+                            "must be in [0.001, 180] degrees");
     }
   }
   if (min_visible < 3 || min_visible > n) {

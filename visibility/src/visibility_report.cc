@@ -187,8 +187,16 @@ bool VisibilityReport::is_usable() const {
 }
 
 const char* VisibilityReport::certificate_status() const {
+  if (worst.certified() && exact_viewpoint_disagrees()) return "not_certified";
   if (worst.certified() && with_body) return "certified_at_resolution";
   return to_string(worst.status);
+}
+
+const char* VisibilityReport::entry_status(const VisibilityDropoutEntry& entry) const {
+  if (with_body && entry.status == VisibilityWorstViewpoint::Status::kCertified) {
+    return "certified_at_resolution";
+  }
+  return to_string(entry.status);
 }
 
 bool VisibilityReport::exact_viewpoint_disagrees() const {

@@ -157,8 +157,9 @@ Eigen::Matrix<double, 6, 6> marker_information(const Eigen::Vector3d& x, const E
 
 /// Completes `out` from F1, the summed marker_information() of its visible markers: the condition
 /// test (§22, "Visibility"), C = S^2 F1^-1, rot_rms_deg and trans_rms. The caller has checked the
-/// workspace and the marker count; `out` is left untrackable, and marked ill_conditioned, when F
-/// is singular.
+/// workspace and the marker count; `out` is left untrackable and unbounded when F is singular
+/// (also marked ill_conditioned) or when rot_rms passes PoseCrbAt::kMaxRotRmsDeg (then only
+/// first_order_rot_rms_deg is set).
 void complete_pose_crb(const Eigen::Matrix<double, 6, 6>& F1, double noise_px, double distance,
                        PoseCrbAt* out);
 
@@ -187,8 +188,9 @@ struct PoseCrbMap {
   };
   Status status = Status::kUntrackable;
   std::vector<PoseCrbAt> samples;  ///< at the workspace's lattice directions
-  /// Largest rot_rms_deg over the trackable directions: the best sample refined by compass
-  /// search on the sphere (no certificate: F is smooth only between visibility changes).
+  /// Largest first-order rot_rms where it exists: the largest samples refined by compass search
+  /// on the sphere (no certificate: F is smooth only between visibility changes); unbounded when
+  /// that passes kMaxRotRmsDeg or a sample's F is singular (§22, "Unbounded").
   PoseCrbAt worst;
   PoseCrbAt best;                   ///< smallest rot_rms_deg, found likewise
   double trackable_fraction = 0.0;  ///< of the workspace's area (sample count)

@@ -55,6 +55,9 @@ struct LayoutFigures {
   /// trackable fraction of the workspace.
   std::optional<double> visibility_max_worst_case_error_deg;
   std::optional<double> trackable_fraction;
+  /// The layout has a body mesh: a usable report is certified on its occlusion grid
+  /// ("certified_at_resolution", docs/math.md §20).
+  bool with_body = false;
   std::string message;
 };
 

@@ -71,9 +71,12 @@ struct VisibilityReport {
   bool is_usable() const;
   /// The certificate in words (docs/math.md §20, "What the certificate covers"): "certified"
   /// without a body (cones are exact), "certified_at_resolution" with one (certified on the
-  /// occlusion grid at occlusion_resolution_deg, not under exact rays), "not_certified" or
-  /// "untrackable".
+  /// occlusion grid at occlusion_resolution_deg, not under exact rays), "not_certified" (also
+  /// when the exact rays at the worst viewpoint contradict the grid) or "untrackable".
   const char* certificate_status() const;
+  /// A dropout entry's status in the same words (only the intact answer is checked by exact
+  /// rays).
+  const char* entry_status(const VisibilityDropoutEntry& entry) const;
   /// Certified with nothing left to a resolution: certified and without a body.
   bool certified() const { return worst.certified() && !with_body; }
   /// With a body: the exact rays at the reported viewpoint see another set of markers than the
