@@ -15,9 +15,6 @@
 namespace vantage::body {
 namespace {
 
-// Ray origins are moved off the surface by this fraction of the mesh's size: far above float
-// rounding of the hit distance (~1e-7 relative), far below any feature worth resolving.
-constexpr double kSurfaceOffset = 1e-6;
 constexpr double kMinResolution = 0.45 * kPi / 180.0;
 constexpr double kMaxResolution = 30.0 * kPi / 180.0;
 

@@ -19,9 +19,6 @@ namespace {
 // the face it leaves.
 constexpr int kLatticeDirections = 64;
 constexpr double kRayConeDeg = 60.0;
-// Rays start this fraction of the body's size off the face (as the occlusion grids' do): Embree
-// works in single precision.
-constexpr double kSurfaceOffset = 1e-6;
 
 Eigen::Matrix3Xd ray_pattern() {
   const Eigen::Matrix3Xd all = visibility::fibonacci_directions(kLatticeDirections);
@@ -81,7 +78,7 @@ Eigen::Matrix3Xd outward_normals(const Mesh& body, const Eigen::Matrix3Xd& point
   }
   const body::RayCaster caster(body);
   const Eigen::Matrix3Xd pattern = ray_pattern();
-  const double offset = kSurfaceOffset * std::max(body.size(), 1e-300);
+  const double offset = body::kSurfaceOffset * std::max(body.size(), 1e-300);
   Eigen::Matrix3Xd out = normals;
   for (Eigen::Index i = 0; i < points.cols(); ++i) {
     const Eigen::Vector3d n = normals.col(i);

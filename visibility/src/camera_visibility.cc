@@ -9,14 +9,6 @@
 
 namespace vantage::visibility {
 
-namespace {
-
-// A marker's segment to the camera starts this fraction of the mesh's size off its face along
-// the normal, so that the face the marker sits on does not hide it (as occlusion.h does).
-constexpr double kCameraSurfaceOffset = 1e-6;
-
-}  // namespace
-
 CameraVisibility::CameraVisibility(const Layout& layout) : points_(layout.entries) {
   if (!layout.visibility) return;
   const MarkerVisibility& v = *layout.visibility;
@@ -30,7 +22,8 @@ CameraVisibility::CameraVisibility(const Layout& layout) : points_(layout.entrie
   min_visible_ = v.min_visible;
   if (v.body) {
     caster_ = std::make_unique<body::RayCaster>(*v.body);
-    surface_offset_ = kCameraSurfaceOffset * v.body->size();
+    // The segment starts off the face, so that the face the marker sits on does not hide it.
+    surface_offset_ = body::kSurfaceOffset * v.body->size();
   }
 }
 

@@ -11,7 +11,7 @@ namespace vantage::visibility {
 ExactVisibility::ExactVisibility(const VisibilityProblem& problem, const Mesh& mesh)
     : problem_(problem),
       caster_(std::make_unique<body::RayCaster>(mesh)),
-      offset_(kSurfaceOffset * mesh.size()) {
+      offset_(body::kSurfaceOffset * mesh.size()) {
   problem_.occlusion = nullptr;
   problem_.occlusion_markers.clear();
 }

@@ -13,6 +13,12 @@
 
 namespace vantage::body {
 
+/// A ray that starts on the mesh's surface starts this fraction of the mesh's size off it, along
+/// the surface's normal: far above float rounding of the hit distance (~1e-7 relative, Embree
+/// works in single precision), far below any feature worth resolving. The occlusion grids, the
+/// exact visibility of a direction, a camera's lines of sight and the site filters share it.
+inline constexpr double kSurfaceOffset = 1e-6;
+
 /// An Embree scene of one mesh. Thread-safe for queries once built.
 class RayCaster {
  public:

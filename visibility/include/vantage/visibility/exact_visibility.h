@@ -30,9 +30,6 @@ class ExactVisibility {
   /// What unit direction a sees under exact rays: the visible markers, t and trackability.
   DirectionVisibility at(const Eigen::Vector3d& a) const;
 
-  /// The offset of each ray's origin along the marker's normal, a fraction of the mesh's size.
-  static constexpr double kSurfaceOffset = 1e-6;
-
  private:
   VisibilityProblem problem_;
   std::unique_ptr<body::RayCaster> caster_;
