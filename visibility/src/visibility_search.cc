@@ -149,14 +149,20 @@ class VisibilitySearch {
         a.dot(problem_.workspace->axis) < problem_.workspace->cos_half_angle) {
       return false;
     }
-    const Eigen::Vector3d first = u_.col(pair_index(visible[0], visible[1]));
-    for (std::size_t y = 2; y < visible.size(); ++y) {
-      if (u_.col(pair_index(visible[0], visible[y])).cross(first).norm() >
+    return !collinear(visible);
+  }
+
+  // Whether markers (increasing) lie on one line, §20's test (fewer than three: true).
+  bool collinear(const std::vector<int>& markers) const {
+    if (markers.size() < 3) return true;
+    const Eigen::Vector3d first = u_.col(pair_index(markers[0], markers[1]));
+    for (std::size_t y = 2; y < markers.size(); ++y) {
+      if (u_.col(pair_index(markers[0], markers[y])).cross(first).norm() >
           sdp::kParallelTolerance) {
-        return true;
+        return false;
       }
     }
-    return false;
+    return true;
   }
 
   // The column of pair (i, j), i < j, in the lexicographic pair order.
@@ -327,22 +333,12 @@ class VisibilitySearch {
       if (seen[i] != Seen::kHidden) possible.push_back(i);
     }
     // Every marker the patch may see on one line: every visible set is collinear.
-    if (possible.size() >= 2) {
-      const Eigen::Vector3d along = pair_u(possible[0], possible[1]);
-      bool one_line = true;
-      for (std::size_t k = 2; k < possible.size() && one_line; ++k) {
-        one_line = pair_u(possible[0], possible[k]).cross(along).norm() <= sdp::kParallelTolerance;
-      }
-      if (one_line) return -1.0;
-    }
-    if (certain.size() < 2) return 2.0;
+    if (collinear(possible)) return -1.0;
+    if (certain.size() < 2 || !collinear(certain)) return 2.0;
     const Eigen::Vector3d line = pair_u(certain[0], certain[1]);
     const auto on_line = [&](int i) {
       return pair_u(certain[0], i).cross(line).norm() <= sdp::kParallelTolerance;
     };
-    for (std::size_t k = 2; k < certain.size(); ++k) {
-      if (!on_line(certain[k])) return 2.0;
-    }
     double largest = -1.0;
     std::vector<int> unit;  // m and the markers seen whenever m is (its cone class at the edge)
     for (int m = 0; m < n_; ++m) {
@@ -477,17 +473,9 @@ class VisibilitySearch {
   std::vector<double> cone_angle_;
   double workspace_angle_ = kPi;
   std::vector<Candidate> candidates_;
-  // trackable()'s collinearity test on a set of markers (increasing), for bound 2'.
+  // collinear(), as bound 2' asks it.
   const internal::CollinearTest collinear_ = [this](const std::vector<int>& markers) {
-    if (markers.size() < 3) return true;
-    const Eigen::Vector3d first = u_.col(pair_index(markers[0], markers[1]));
-    for (std::size_t y = 2; y < markers.size(); ++y) {
-      if (u_.col(pair_index(markers[0], markers[y])).cross(first).norm() >
-          sdp::kParallelTolerance) {
-        return false;
-      }
-    }
-    return true;
+    return collinear(markers);
   };
   std::priority_queue<Patch> open_;
   double level_ = -1.0;

@@ -18,12 +18,13 @@ using Json = nlohmann::ordered_json;
 Json at_direction(const camera::PoseCrbAt& at, bool with_covariance);
 
 /// The whole report: camera, markers, visibility, at_direction (when asked), worst, best,
-/// trackable_fraction, unbounded_fraction, percentiles {p50, p95, p99}, sliver, worst_region_width_deg,
-/// affine_bound_deg, samples, status and sweep_distance (when asked).
+/// trackable_fraction, unbounded_fraction, percentiles {p50, p95, p99}, sliver,
+/// worst_region_width_deg, affine_bound_deg, samples, status and sweep_distance (when asked).
 Json report(const camera::PoseCrbReport& report);
 
 /// The tag sweep: {faces: [{centre, normal, extent, tags}], rows: [{tags_per_side, tags, fill,
-/// tag_size, tag_pixels, status, trackable_fraction, unbounded_fraction, worst, median, percentiles}]}.
+/// tag_size, tag_pixels, status, trackable_fraction, unbounded_fraction, worst, median,
+/// percentiles}]}.
 Json tag_sweep(const std::vector<camera::TagFace>& faces,
                const std::vector<camera::TagSweepRow>& rows);
 
