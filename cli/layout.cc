@@ -1,7 +1,8 @@
 // `vantage layout board --type chessboard|charuco|aprilgrid --rows R --cols C --square S
 // [--marker M] [--spacing G] --out FILE.json [--overwrite] [--json]`: writes the layout of the
 // points a detector measures on a standard calibration target, so the printed target can be
-// analysed like any other layout. `vantage layout convert` (layout_convert.cc) converts formats.
+// analysed like any other layout. `vantage layout convert` (layout_convert.cc) converts formats,
+// `vantage layout snap` (layout_snap.cc) moves markers onto their body.
 
 #include <algorithm>
 #include <cctype>
@@ -102,8 +103,11 @@ Command add_layout_command(CLI::App& root) {
   sub->add_flag("--overwrite", args->overwrite, "replace --out if it exists");
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
   const Command convert = add_layout_convert_subcommand(layout);
-  return {layout,
-          [args, convert] { return convert.app->parsed() ? convert.run() : run_board(*args); }};
+  const Command snap = add_layout_snap_subcommand(layout);
+  return {layout, [args, convert, snap] {
+            if (convert.app->parsed()) return convert.run();
+            return snap.app->parsed() ? snap.run() : run_board(*args);
+          }};
 }
 
 }  // namespace vantage::cli

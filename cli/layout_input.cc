@@ -6,7 +6,7 @@
 
 namespace vantage::cli {
 
-void LayoutInput::add_options(CLI::App* sub, const std::string& format_flag) {
+void LayoutInput::add_options(CLI::App* sub, const std::string& format_flag, bool body_options) {
   format_option = format_flag;
   sub->add_option(format_flag, format,
                   "layout file format; auto: by extension (.json, .csv name,x,y,z[,weight], "
@@ -21,7 +21,7 @@ void LayoutInput::add_options(CLI::App* sub, const std::string& format_flag) {
   sub->add_option("--bundle", bundle,
                   "AprilTag bundles: the name of the bundle to read (needed when the file has "
                   "several)");
-  visibility.add_options(sub);
+  if (body_options) visibility.add_options(sub);
 }
 
 Layout LayoutInput::read(const std::string& path, bool allow_large) const {

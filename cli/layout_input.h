@@ -23,8 +23,9 @@ struct LayoutInput {
   VisibilityInput visibility;
 
   /// Adds --format (or `format_flag`, for a subcommand whose --format is something else),
-  /// --tag-points and --bundle to `sub`.
-  void add_options(CLI::App* sub, const std::string& format_flag = "--format");
+  /// --tag-points and --bundle to `sub`, and with `body_options` the body options.
+  void add_options(CLI::App* sub, const std::string& format_flag = "--format",
+                   bool body_options = true);
 
   /// Reads the layout at `path` in the chosen (or detected) format, at most kMaxFileBytes (with
   /// allow_large kMaxFileBytesAllowLarge, limits.h); InvalidArgument names the file, field and

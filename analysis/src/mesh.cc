@@ -128,4 +128,21 @@ double distance_to_mesh(const Mesh& mesh, const Eigen::Vector3d& point) {
   return best;
 }
 
+MeshPoint nearest_mesh_point(const Mesh& mesh, const Eigen::Vector3d& point) {
+  MeshPoint best;
+  for (Eigen::Index k = 0; k < mesh.triangles.cols(); ++k) {
+    const Eigen::Vector3d a = mesh.vertices.col(mesh.triangles(0, k));
+    const Eigen::Vector3d b = mesh.vertices.col(mesh.triangles(1, k));
+    const Eigen::Vector3d c = mesh.vertices.col(mesh.triangles(2, k));
+    const Eigen::Vector3d cross = (b - a).cross(c - a);
+    const double longest =
+        std::max({(b - a).squaredNorm(), (c - a).squaredNorm(), (c - b).squaredNorm()});
+    if (!(cross.norm() > kSliverRatio * longest)) continue;
+    const Eigen::Vector3d q = closest_on_triangle(point, a, b, c);
+    const double distance = (q - point).norm();
+    if (distance < best.distance) best = {q, cross.normalized(), k, distance};
+  }
+  return best;
+}
+
 }  // namespace vantage

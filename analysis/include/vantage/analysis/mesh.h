@@ -4,6 +4,7 @@
 /// where markers may be placed. Read from STL, OBJ, PLY, glTF, ... by io::read_mesh().
 
 #include <Eigen/Core>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -39,5 +40,22 @@ void weld_identical_vertices(Mesh* mesh);
 /// The distance from `point` to the nearest point of the mesh's triangles (every triangle is
 /// tested: O(triangles)).
 double distance_to_mesh(const Mesh& mesh, const Eigen::Vector3d& point);
+
+/// A point of a mesh's surface and the triangle it lies on.
+struct MeshPoint {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  /// The unit normal of the triangle, signed by its winding (which may not point outward).
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  Eigen::Index triangle = -1;  ///< -1: the mesh has no triangle with a normal
+  double distance = std::numeric_limits<double>::infinity();  ///< from the point asked about
+};
+
+/// Below this ratio of |(b - a) x (c - a)| to the square of the longest edge a triangle is a
+/// sliver without a normal of its own (its sides are parallel to rounding).
+inline constexpr double kSliverRatio = 1e-12;
+
+/// The point nearest to `point` on the triangles that have a normal (not slivers, see
+/// kSliverRatio); of equally near triangles, the first. Every triangle is tested: O(triangles).
+MeshPoint nearest_mesh_point(const Mesh& mesh, const Eigen::Vector3d& point);
 
 }  // namespace vantage
