@@ -19,6 +19,8 @@ std::optional<std::vector<double>> parse_numbers(const std::string& text) {
     const std::size_t first = field.find_first_not_of(" \t");
     if (first == std::string::npos) return std::nullopt;
     field = field.substr(first, field.find_last_not_of(" \t") - first + 1);
+    // Decimal notation only: strtod also reads hexadecimal ("0x1p3"), "inf" and "nan".
+    if (field.find_first_not_of("0123456789+-.eE") != std::string::npos) return std::nullopt;
     char* end = nullptr;
     const double value = std::strtod(field.c_str(), &end);
     if (end != field.c_str() + field.size() || !std::isfinite(value)) return std::nullopt;

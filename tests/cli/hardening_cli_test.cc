@@ -86,6 +86,11 @@ TEST(HardeningCli, ANumberOfTheWrongKindNamesWhatTheOptionTakes) {
   expect_bad_input(run_vantage("crb in.json --distance x --focal 900 --noise-px 0.3", scratch),
                    "--distance: \"x\" is not a number");
   EXPECT_FALSE(std::filesystem::exists(scratch.path("b.json")));
+  // Issue 36, item 6: a comma list took C's hexadecimal floats ("0x1p3" as 8); decimals only.
+  const std::string tool = std::string(VANTAGE_SOURCE_DIR) + "/examples/tools/ndi_like.json";
+  expect_bad_input(run_vantage("tre " + tool + " --target 0x1p3,0,0 --fle-rms 0.25", scratch),
+                   "--target: expected X,Y,Z, three finite numbers, got \"0x1p3,0,0\"");
+  expect_bad_input(run_vantage("analyze in.json --workspace 0,0,1,0x3c", scratch), "--workspace");
 }
 
 TEST(HardeningCli, FileNameTooLongIsBadInput) {

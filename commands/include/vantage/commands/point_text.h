@@ -12,8 +12,9 @@
 
 namespace vantage::commands {
 
-/// The comma-separated numbers of `text`, each a whole field and finite (an underflow to a
-/// subnormal or to 0 is the correctly rounded value and is kept); nullopt otherwise.
+/// The comma-separated numbers of `text`, each a whole field in decimal notation ("-1.5e3";
+/// not hexadecimal, "inf" or "nan") and finite (an underflow to a subnormal or to 0 is the
+/// correctly rounded value and is kept); nullopt otherwise.
 std::optional<std::vector<double>> parse_numbers(const std::string& text);
 
 /// "X,Y,Z", three finite numbers; InvalidArgument naming `option` otherwise.
