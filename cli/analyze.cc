@@ -8,6 +8,7 @@
 #include <iostream>
 #include <memory>
 #include <numeric>
+#include <optional>
 
 #include "command.h"
 #include "layout_input.h"
@@ -16,6 +17,7 @@
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/free_vectors.h"
 #include "vantage/analysis/layout.h"
+#include "vantage/commands/sensor_json.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/report/layout_report.h"
 #include "vantage/tracker/identification.h"
@@ -225,6 +227,15 @@ std::string hidden_warning(const report::LayoutReport& report) {
          "): inside the body, or just under its surface?";
 }
 
+// The report's JSON, with "sensor" last when the layout names one.
+std::string analyze_json(const report::LayoutReport& report,
+                         const std::optional<sensor_json::Evaluation>& sensor) {
+  if (!sensor) return report::to_json(report);
+  sensor_json::Json out = sensor_json::Json::parse(report::to_json(report));
+  out["sensor"] = sensor_json::to_json(*sensor);
+  return out.dump(2, ' ', false, sensor_json::Json::error_handler_t::replace);
+}
+
 int run_analyze(const AnalyzeArgs& args) {
   if (args.swaps < 1) throw InvalidArgument("--swaps", "must be >= 1");
   const Layout layout = args.input.read(args.file, args.allow_large);
@@ -242,10 +253,15 @@ int run_analyze(const AnalyzeArgs& args) {
   options.analysis.run_crosscheck = args.crosscheck;
   options.dropout = args.dropout;
   report::LayoutReport report;
+  std::optional<sensor_json::Evaluation> sensor;
   {
     Progress progress("analyze", !args.json && !args.quiet);  // cleared before the report
     options.analysis.progress = progress.callback();
     report = against_source(args.file, [&] { return report::analyze_layout(layout, options); });
+    if (layout.sensor) {
+      if (const auto stage = progress.callback()) stage("sensor");
+      sensor = against_source(args.file, [&] { return sensor_json::evaluate(layout, 0); });
+    }
   }
   if (report.mesh) {
     const std::string name = std::filesystem::path(layout.visibility->body->source).filename();
@@ -259,9 +275,10 @@ int run_analyze(const AnalyzeArgs& args) {
     std::cerr << "vantage: warning: " << hidden_warning(report) << std::endl;
   }
   if (args.json) {
-    std::cout << report::to_json(report) << std::endl;
+    std::cout << analyze_json(report, sensor) << std::endl;
   } else {
     print_report(args, report);
+    if (sensor) std::cout << sensor_json::to_text(*sensor);
     if (report.dropout) print_dropout(report);
   }
   if (!report.is_usable()) {

@@ -17,6 +17,10 @@ const char* to_string(LayoutMode mode) {
   return mode == LayoutMode::kPoints ? "points" : "vectors";
 }
 
+const char* to_string(LayoutSensor::Kind kind) {
+  return kind == LayoutSensor::Kind::kTracker ? "tracker" : "camera";
+}
+
 const char* Layout::entries_field() const { return to_string(mode); }
 
 namespace {

@@ -11,6 +11,7 @@
 #include "place_internal.h"
 #include "vantage/analysis/common.h"
 #include "vantage/commands/against_source.h"
+#include "vantage/commands/sensor_json.h"
 #include "vantage/report/json_number.h"
 #include "vantage/visibility/visibility_model.h"
 
@@ -47,68 +48,6 @@ Json place_steps_json(const design::PlacementResult& r) {
 // when nothing is trackable; the search ranks by it, but it is not a figure.
 Json camera_search_number(double value_deg) {
   return value_deg > camera::PoseCrbAt::kMaxRotRmsDeg ? Json() : report::json_number(value_deg);
-}
-
-// The camera objective in words, with the `vantage crb` options that reproduce its numbers.
-std::string camera_words(const Request& request, const camera::PoseCrbOptions& camera) {
-  std::ostringstream out;
-  out.precision(17);
-  const Eigen::Vector3d& aim = *camera.aim;
-  out << "camera: the " << request.statistic
-      << " rot_rms over the workspace of vantage crb --distance " << camera.distance << " --focal "
-      << camera.focal_length << " --noise-px " << camera.noise_px << " --samples " << camera.samples
-      << " --aim " << aim.x() << "," << aim.y() << "," << aim.z();
-  return out.str();
-}
-
-// The tracker objective in words, with the `vantage tre` options that reproduce its numbers.
-std::string tracker_words(const design::TrackerObjective& tracker) {
-  std::ostringstream out;
-  out.precision(17);
-  out << "tracker: the largest worst.rms_bound over the targets of vantage tre";
-  for (const Eigen::Vector3d& t : tracker.targets) {
-    out << " --target " << t.x() << "," << t.y() << "," << t.z();
-  }
-  if (tracker.fle.from_rms) {
-    out << " --fle-rms " << tracker.fle.rms();
-  } else {
-    out << " --fle-sigma " << tracker.fle.sigma_perp << "," << tracker.fle.sigma_axial;
-  }
-  return out.str();
-}
-
-// The largest certified bound on the worst RMS TRE over the targets of a tre report (+inf when a
-// target is tracked from nowhere).
-double tre_objective(const tracker::TreReport& report) {
-  double out = 0.0;
-  for (const tracker::TreTargetReport& t : report.targets) {
-    if (t.extremes.worst.status == tracker::TreExtreme::Status::kUntracked) {
-      return std::numeric_limits<double>::infinity();
-    }
-    out = std::max(out, t.extremes.worst.rms_bound);
-  }
-  return out;
-}
-
-// Every target's worst is certified.
-bool tre_certified(const tracker::TreReport& report) {
-  return std::all_of(
-      report.targets.begin(), report.targets.end(),
-      [](const tracker::TreTargetReport& t) { return t.extremes.worst.certified(); });
-}
-
-// The camera's statistic of a crb map, degrees (+inf when untrackable).
-double crb_statistic(const camera::PoseCrbMap& map, design::CrbStatistic statistic) {
-  if (map.status != camera::PoseCrbMap::Status::kOk) return std::numeric_limits<double>::infinity();
-  switch (statistic) {
-    case design::CrbStatistic::kWorst:
-      return map.worst.rot_rms_deg;
-    case design::CrbStatistic::kP95:
-      return map.percentiles.p95;
-    case design::CrbStatistic::kMedian:
-      return map.percentiles.p50;
-  }
-  return map.worst.rot_rms_deg;
 }
 
 Json place_vector(const Eigen::Vector3d& v) { return Json{v.x(), v.y(), v.z()}; }
@@ -218,12 +157,9 @@ Outcome place(const Request& request, const Sites& sites,
   out.placed =
       placed_layout(request, sites.layout, sites.n_candidates, out.result, camera, options.tracker);
   const bool covered = out.result.status == design::PlacementResult::Status::kComplete;
-  if (out.placed.tre) {
-    out.objective_value = tre_objective(*out.placed.tre);
-    out.complete = covered && std::isfinite(out.objective_value) && tre_certified(*out.placed.tre);
-  } else if (out.placed.crb) {
-    out.objective_value = crb_statistic(*out.placed.crb, options.camera->statistic);
-    out.complete = covered && out.placed.crb->status == camera::PoseCrbMap::Status::kOk;
+  if (out.placed.sensor) {
+    out.objective_value = out.placed.sensor->value;
+    out.complete = covered && out.placed.sensor->complete;
   } else {
     out.objective_value = out.placed.report.visibility
                               ? out.placed.report.visibility->max_worst_case_error_deg
@@ -243,29 +179,30 @@ PlacedLayout placed_layout(const Request& request, const Layout& sites, int n_ca
   for (Eigen::Index i = 0; i < sites.entries.cols(); ++i) {
     out.site_names.push_back(design::site_name(sites, static_cast<int>(i)));
   }
+  std::optional<LayoutSensor> sensor;
+  if (camera)
+    sensor = sensor_json::camera_sensor(*camera, *design::parse_crb_statistic(request.statistic));
+  if (tracker) sensor = sensor_json::tracker_sensor(*tracker);
   design::PlacedLayoutRecord record;
   record.sites = request.source();
   record.n_candidates = n_candidates;
   record.robust_dropout = request.robust_dropout;
   record.min_separation = request.separation();
   record.marker_diameter = request.marker_diameter;
-  if (camera) record.objective = camera_words(request, *camera);
-  if (tracker) record.objective = tracker_words(*tracker);
+  if (sensor) record.objective = sensor_json::words(*sensor);
   out.layout = design::placed_layout(sites, result, record);
+  out.layout.sensor = sensor;
   report::LayoutReportOptions options;
   options.visibility.search.certificate_tolerance = request.certificate_tolerance;
   options.visibility.threads = request.threads;
   out.report = report::analyze_layout(out.layout, options);
-  if (camera) {
-    out.camera = camera;
-    out.crb = camera::pose_crb_map(camera::PoseCrbModel(out.layout, *camera));
-  }
-  if (tracker) {
-    tracker::TreOptions tre;
-    tre.fle = tracker->fle;
-    tre.search = tracker->search;
-    tre.threads = request.threads;
-    out.tre = tracker::tre_report(out.layout, tracker->targets, tre);
+  if (sensor) {
+    // As `vantage analyze` evaluates the written file's sensor block.
+    sensor_json::Evaluation evaluation = sensor_json::evaluate(out.layout, request.threads);
+    out.camera = evaluation.camera;
+    out.crb = evaluation.crb;
+    out.tre = evaluation.tre;
+    out.sensor = std::move(evaluation);
   }
   return out;
 }
@@ -283,7 +220,7 @@ std::string failure_message(const design::PlacementResult& result, const PlacedL
     return message;
   }
   if (placed.tre) {
-    return tre_objective(*placed.tre) == std::numeric_limits<double>::infinity()
+    return sensor_json::tre_objective(*placed.tre) == std::numeric_limits<double>::infinity()
                ? "the placed layout tracks a target from no direction of the workspace"
                : "the placed layout's worst TRE is not certified at every target";
   }

@@ -8,6 +8,7 @@
 
 #include "place_internal.h"
 #include "vantage/analysis/common.h"
+#include "vantage/commands/sensor_json.h"
 #include "vantage/io/layout_formats.h"
 #include "vantage/io/printable.h"
 #include "vantage/io/text_file.h"
@@ -143,6 +144,9 @@ std::optional<design::TrackerObjective> tracker_objective(const Request& request
   design::TrackerObjective out;
   out.targets = request.targets;
   out.fle = *request.fle;
+  // The FLE as the layout's sensor block records it (an RMS as its rms()), so that the search
+  // ranks by the value `vantage analyze` reports on the written file.
+  out.fle = sensor_json::fle_model(sensor_json::tracker_sensor(out));
   return out;
 }
 

@@ -34,6 +34,7 @@ std::vector<std::string> atracsys_dropped_fields(const Layout& layout) {
     dropped.push_back("visibility");
   }
   if (layout.workspace) dropped.push_back("workspace");
+  if (layout.sensor) dropped.push_back("sensor");
   if (!layout.description.empty()) dropped.push_back("description");
   return dropped;
 }

@@ -5,6 +5,7 @@
 
 #include "json_fields.h"
 #include "placement_fields.h"
+#include "sensor_fields.h"
 #include "vantage/analysis/common.h"
 #include "vantage/io/printable.h"
 #include "visibility_fields.h"
@@ -32,7 +33,7 @@ Layout parse_layout(std::string_view text, const std::string& source) {
   internal::reject_unknown_fields(
       root, source,
       {"name", "description", "vectors", "points", "names", "weights", "candidates", "normals",
-       "visibility", "workspace", "placement"});
+       "visibility", "workspace", "placement", "sensor"});
   const bool has_vectors = root.contains("vectors");
   const bool has_points = root.contains("points");
   if (has_vectors == has_points) {
@@ -59,6 +60,7 @@ Layout parse_layout(std::string_view text, const std::string& source) {
   layout.visibility = internal::read_visibility(root, source, layout.entries.cols());
   layout.workspace = internal::read_workspace(root, source);
   layout.placement = internal::read_placement(root, source, layout.entries.cols());
+  layout.sensor = internal::read_sensor(root, source);
   try {
     layout.validate();
   } catch (const InvalidArgument& e) {
@@ -82,6 +84,7 @@ std::string layout_to_json(const Layout& layout) {
   if (layout.candidates.cols() > 0) out["candidates"] = internal::vector_rows(layout.candidates);
   internal::write_visibility(layout, &out);
   internal::write_placement(layout, &out);
+  internal::write_sensor(layout, &out);
   // Names read from CSV or YAML files may not be UTF-8 (JSON requires it): such bytes are
   // written as U+FFFD instead of throwing.
   return out.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";

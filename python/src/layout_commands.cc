@@ -15,6 +15,7 @@
 #include "vantage/analysis/free_vectors.h"
 #include "vantage/commands/design_json.h"
 #include "vantage/commands/limits.h"
+#include "vantage/commands/sensor_json.h"
 #include "vantage/design/augment.h"
 #include "vantage/design/weights.h"
 #include "vantage/report/layout_report.h"
@@ -79,9 +80,13 @@ py::tuple analyze(const py::object& layout_arg, const py::object& vectors, const
       : v && v->exact_viewpoint_disagrees() ? "exact_rays_disagree"
                                             : "visibility_not_certified";
   const std::string brief = report.brief_report();
-  return py::make_tuple(result_or_raise(!report.is_usable(), status, report.message(),
-                                        Json::parse(report::to_json(report)), brief),
-                        brief);
+  Json fields = Json::parse(report::to_json(report));
+  if (layout.sensor) {
+    fields["sensor"] =
+        sensor_json::to_json(without_gil([&] { return sensor_json::evaluate(layout, 0); }));
+  }
+  return py::make_tuple(
+      result_or_raise(!report.is_usable(), status, report.message(), fields, brief), brief);
 }
 
 py::object design_layout(const py::object& layout_arg, const py::object& vectors,

@@ -131,6 +131,10 @@ def test_tracker_objective_matches_the_cli_and_is_what_tre_reports(vantage, tmp_
     assert report.objective["name"] == "tracker"
     tre = vantage.tre(report.layout, targets=targets, fle_sigma=(0.1, 0.3))
     assert report.objective["value"] == max(t.worst.rms_bound for t in tre.targets)
+    # The layout keeps its sensor block, which vantage.analyze evaluates to the same value.
+    sensor = vantage.analyze(report.layout, crosscheck=False).sensor
+    assert sensor["type"] == "tracker"
+    assert sensor["value"] == report.objective["value"]
 
 
 def test_incomplete_placement_keeps_its_layout_and_allow_partial_returns_it(vantage, tmp_path):

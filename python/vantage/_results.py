@@ -344,6 +344,9 @@ class LayoutReport(_JsonView):
             [DropoutEntry(e) for e in fields["dropout"]] if "dropout" in fields else None)
         self.visibility: Optional[LayoutVisibility] = (
             LayoutVisibility(fields["visibility"]) if "visibility" in fields else None)
+        # The layout's sensor evaluated (``vantage analyze --json``'s "sensor"), as a dict.
+        self.sensor: Optional[Json] = (
+            copy.deepcopy(fields["sensor"]) if "sensor" in fields else None)
         self.usable: bool = bool(fields["usable"])
         self.message: Optional[str] = _text(fields.get("message"))
 

@@ -191,6 +191,16 @@ TEST(PlaceCli, CameraObjectiveIsWhatCrbReportsOnTheWrittenFile) {
   EXPECT_EQ(crb["worst"]["rot_rms_deg"], objective["value_deg"]);
   EXPECT_EQ(crb["worst"]["rot_rms_deg"], objective["crb"]["worst"]["rot_rms_deg"]);
   EXPECT_LE(objective["search_value_deg"].get<double>(), objective["value_deg"].get<double>());
+  // The file's sensor block: `vantage analyze` evaluates it to the same value, to the bit.
+  const nlohmann::json file = nlohmann::json::parse(testing::read_file(scratch.path("cam.json")));
+  EXPECT_EQ(file["sensor"]["type"], "camera");
+  EXPECT_EQ(file["sensor"]["aim"], aim);
+  EXPECT_EQ(file["sensor"]["samples"].get<int>(), std::stoi(samples));
+  const nlohmann::json analyzed = testing::run_json("analyze cam.json --no-crosscheck", scratch);
+  EXPECT_EQ(analyzed["sensor"]["value_deg"], objective["value_deg"]);
+  EXPECT_EQ(analyzed["sensor"]["statistic"], "worst");
+  EXPECT_EQ(analyzed["sensor"]["crb"]["worst"], objective["crb"]["worst"]);
+  EXPECT_EQ(analyzed["sensor"]["objective"], file["placement"]["objective"]);
 }
 
 // The least distance between two points of a layout file's "points".
@@ -274,6 +284,30 @@ TEST(PlaceCli, TrackerObjectiveIsWhatTreReportsOnTheWrittenFile) {
   EXPECT_THAT(
       file["placement"]["objective"].get<std::string>(),
       HasSubstr("vantage tre --target 0,0,-2 --target 1,1,0 --fle-sigma 0.10000000000000001,"));
+  EXPECT_EQ(file["sensor"]["type"], "tracker");
+  EXPECT_EQ(file["sensor"]["fle_sigma"], nlohmann::json::parse("[0.1, 0.3]"));
+  const nlohmann::json analyzed = testing::run_json("analyze tool.json --no-crosscheck", scratch);
+  EXPECT_EQ(analyzed["sensor"]["value"], objective["value"]);
+  EXPECT_TRUE(analyzed["sensor"]["complete"].get<bool>());
+  EXPECT_EQ(analyzed["sensor"]["targets"][1]["worst"], tre["targets"][1]["worst"]);
+}
+
+// The FLE given as an RMS is recorded as one, and the search ranks by the FLE that analyze
+// rebuilds from the file: the value is analyze's to the bit.
+TEST(PlaceCli, TrackerObjectiveWithAnRmsIsWhatAnalyzeReportsOnTheWrittenFile) {
+  ScratchDir scratch;
+  scratch.write("sites.json", cube_sites());
+  const nlohmann::json json = testing::run_json(
+      "place --sites sites.json --markers 4 --out tool.json --objective tracker --target 0,0,-2 "
+      "--fle-rms 0.35",
+      scratch);
+  ASSERT_EQ(json["status"], "complete");
+  const nlohmann::json file = nlohmann::json::parse(testing::read_file(scratch.path("tool.json")));
+  EXPECT_NEAR(file["sensor"]["fle_rms"].get<double>(), 0.35, 1e-15);
+  EXPECT_FALSE(file["sensor"].contains("fle_sigma"));
+  const nlohmann::json analyzed = testing::run_json("analyze tool.json --no-crosscheck", scratch);
+  EXPECT_EQ(analyzed["sensor"]["value"], json["objective"]["value"]);
+  EXPECT_EQ(analyzed["sensor"]["value"], json["objective"]["search_value"]);
 }
 
 // Issue 35 item 6: the robust value is the worst entry of `vantage analyze --dropout` on the

@@ -53,6 +53,32 @@ struct LayoutPlacement {
   double random_median_pbar_min = 0.0;
 };
 
+/// The sensor a layout was placed for (`vantage place --objective camera|tracker`; docs/math.md
+/// §21, "Objectives"), kept in the file so that `vantage analyze` evaluates the layout for it.
+/// Kept through edits of the entries: it describes the sensor, not the markers.
+struct LayoutSensor {
+  enum class Kind {
+    kCamera,   ///< a pinhole camera: the pose CRB of §22 over the workspace
+    kTracker,  ///< a 3-D optical tracker: the certified worst RMS TRE of §23
+  };
+  Kind kind = Kind::kCamera;
+  // A camera (`vantage crb`'s options).
+  double distance = 0.0;                          ///< D, layout units
+  double focal_px = 0.0;                          ///< f, pixels
+  double noise_px = 0.0;                          ///< S, pixels per coordinate
+  int samples = 0;                                ///< directions of the lattice
+  Eigen::Vector3d aim = Eigen::Vector3d::Zero();  ///< the point the camera looks at
+  std::string statistic;  ///< "worst", "p95" or "median" of the rotation RMS
+  // A tracker (`vantage tre`'s options).
+  std::vector<Eigen::Vector3d> targets;
+  double fle_rms = 0.0;  ///< > 0: the FLE given as an RMS (`--fle-rms`); 0: the sigmas below
+  double fle_sigma_perp = 0.0;
+  double fle_sigma_axial = 0.0;
+};
+
+/// "camera" or "tracker".
+const char* to_string(LayoutSensor::Kind kind);
+
 /// A layout in the object frame.
 struct Layout {
   static constexpr double kMinLength = 1e-150;  ///< squares of lengths stay normal doubles
@@ -85,6 +111,8 @@ struct Layout {
   std::optional<LayoutWorkspace> workspace;
   /// How `vantage place` chose the markers, or none. Dropped by every edit of the entries.
   std::optional<LayoutPlacement> placement;
+  /// The sensor the layout was placed for, or none.
+  std::optional<LayoutSensor> sensor;
 
   /// Throws InvalidArgument naming the field and index of the first violation: fewer than 2
   /// vectors or 3 points (point mode needs at least 2 free vectors), non-finite values, a vector

@@ -17,6 +17,7 @@
 
 #include "vantage/analysis/layout.h"
 #include "vantage/camera/pose_crb.h"
+#include "vantage/commands/sensor_json.h"
 #include "vantage/design/placement.h"
 #include "vantage/design/placement_layout.h"
 #include "vantage/report/layout_report.h"
@@ -111,6 +112,9 @@ struct PlacedLayout {
   std::optional<camera::PoseCrbOptions> camera;
   /// The tracker objective: `vantage tre`'s report of the placed layout at the targets.
   std::optional<tracker::TreReport> tre;
+  /// The camera or tracker objective: the placed layout evaluated for its sensor block, as
+  /// `vantage analyze` evaluates the written file (crb, camera and tre are its parts).
+  std::optional<sensor_json::Evaluation> sensor;
   std::vector<std::string> site_names;  ///< the name of every site and kept marker
 };
 

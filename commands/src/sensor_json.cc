@@ -1,0 +1,227 @@
+#include "vantage/commands/sensor_json.h"
+
+#include <algorithm>
+#include <limits>
+#include <sstream>
+
+#include "vantage/analysis/common.h"
+#include "vantage/commands/tre_json.h"
+#include "vantage/report/json_number.h"
+
+namespace vantage::sensor_json {
+namespace {
+
+Json vector_json(const Eigen::Vector3d& v) { return Json{v.x(), v.y(), v.z()}; }
+
+// A library error on the sensor's settings, named as the file's "sensor" block names them.
+[[noreturn]] void refuse(const InvalidArgument& e) {
+  std::string field = e.field();
+  if (field == "focal_length") field = "focal_px";
+  if (field.rfind("fle.", 0) == 0) field = "fle_sigma";
+  throw e.renamed(field.empty() ? "sensor" : "sensor." + field, std::nullopt);
+}
+
+camera::PoseCrbOptions camera_options(const LayoutSensor& s, int threads) {
+  camera::PoseCrbOptions out;
+  out.distance = s.distance;
+  out.focal_length = s.focal_px;
+  out.noise_px = s.noise_px;
+  out.samples = s.samples;
+  out.aim = s.aim;
+  out.threads = threads;
+  return out;
+}
+
+void evaluate_camera(const Layout& layout, int threads, Evaluation* out) {
+  out->camera = camera_options(out->sensor, threads);
+  try {
+    out->crb = camera::pose_crb_map(camera::PoseCrbModel(layout, *out->camera));
+  } catch (const InvalidArgument& e) {
+    refuse(e);
+  }
+  out->value = crb_statistic(*out->crb, *design::parse_crb_statistic(out->sensor.statistic));
+  out->complete = out->crb->status == camera::PoseCrbMap::Status::kOk;
+}
+
+void evaluate_tracker(const Layout& layout, int threads, Evaluation* out) {
+  tracker::TreOptions options;
+  options.fle = fle_model(out->sensor);
+  options.threads = threads;
+  try {
+    out->tre = tracker::tre_report(layout, out->sensor.targets, options);
+  } catch (const InvalidArgument& e) {
+    refuse(e);
+  }
+  out->value = tre_objective(*out->tre);
+  out->complete = std::isfinite(out->value) && tre_certified(*out->tre);
+}
+
+Json camera_json(const Evaluation& e) {
+  const camera::PoseCrbMap& map = *e.crb;
+  Json out = {{"status", camera::to_string(map.status)},
+              {"trackable_fraction", map.trackable_fraction},
+              {"unbounded_fraction", map.unbounded_fraction}};
+  if (map.status == camera::PoseCrbMap::Status::kOk) {
+    out["worst"] = {{"unbounded", map.worst.unbounded},
+                    {"rot_rms_deg", report::json_number(map.worst.rot_rms_deg)},
+                    {"trans_rms", report::json_number(map.worst.trans_rms)},
+                    {"direction", vector_json(map.worst.direction)}};
+    out["percentiles"] = {
+        {"p50", map.percentiles.p50}, {"p95", map.percentiles.p95}, {"p99", map.percentiles.p99}};
+  } else {
+    out["reason"] = camera::untrackable_reason(map, e.sensor.distance);
+  }
+  return out;
+}
+
+Json tracker_json(const Evaluation& e) {
+  Json targets = Json::array();
+  for (const tracker::TreTargetReport& t : e.tre->targets) {
+    Json target = {{"target", vector_json(t.target)}};
+    target["worst"] = tre_json::extreme(t.extremes.worst);
+    targets.push_back(target);
+  }
+  return targets;
+}
+
+}  // namespace
+
+LayoutSensor camera_sensor(const camera::PoseCrbOptions& camera, design::CrbStatistic statistic) {
+  LayoutSensor out;
+  out.kind = LayoutSensor::Kind::kCamera;
+  out.distance = camera.distance;
+  out.focal_px = camera.focal_length;
+  out.noise_px = camera.noise_px;
+  out.samples = camera.samples;
+  out.aim = camera.aim.value_or(Eigen::Vector3d::Zero());
+  out.statistic = design::to_string(statistic);
+  return out;
+}
+
+LayoutSensor tracker_sensor(const design::TrackerObjective& tracker) {
+  LayoutSensor out;
+  out.kind = LayoutSensor::Kind::kTracker;
+  out.targets = tracker.targets;
+  if (tracker.fle.from_rms) {
+    out.fle_rms = tracker.fle.rms();
+  } else {
+    out.fle_sigma_perp = tracker.fle.sigma_perp;
+    out.fle_sigma_axial = tracker.fle.sigma_axial;
+  }
+  return out;
+}
+
+tracker::FleModel fle_model(const LayoutSensor& sensor) {
+  if (sensor.fle_rms > 0.0) return tracker::FleModel::isotropic(sensor.fle_rms);
+  tracker::FleModel out;
+  out.sigma_perp = sensor.fle_sigma_perp;
+  out.sigma_axial = sensor.fle_sigma_axial;
+  return out;
+}
+
+std::string words(const LayoutSensor& s) {
+  std::ostringstream out;
+  out.precision(17);
+  if (s.kind == LayoutSensor::Kind::kCamera) {
+    out << "camera: the " << s.statistic << " rot_rms over the workspace of vantage crb --distance "
+        << s.distance << " --focal " << s.focal_px << " --noise-px " << s.noise_px << " --samples "
+        << s.samples << " --aim " << s.aim.x() << "," << s.aim.y() << "," << s.aim.z();
+    return out.str();
+  }
+  out << "tracker: the largest worst.rms_bound over the targets of vantage tre";
+  for (const Eigen::Vector3d& t : s.targets) {
+    out << " --target " << t.x() << "," << t.y() << "," << t.z();
+  }
+  if (s.fle_rms > 0.0) {
+    out << " --fle-rms " << s.fle_rms;
+  } else {
+    out << " --fle-sigma " << s.fle_sigma_perp << "," << s.fle_sigma_axial;
+  }
+  return out.str();
+}
+
+Evaluation evaluate(const Layout& layout, int threads) {
+  Evaluation out;
+  out.sensor = *layout.sensor;
+  if (out.sensor.kind == LayoutSensor::Kind::kCamera) {
+    evaluate_camera(layout, threads, &out);
+  } else {
+    evaluate_tracker(layout, threads, &out);
+  }
+  return out;
+}
+
+double crb_statistic(const camera::PoseCrbMap& map, design::CrbStatistic statistic) {
+  if (map.status != camera::PoseCrbMap::Status::kOk) return std::numeric_limits<double>::infinity();
+  switch (statistic) {
+    case design::CrbStatistic::kWorst:
+      return map.worst.rot_rms_deg;
+    case design::CrbStatistic::kP95:
+      return map.percentiles.p95;
+    case design::CrbStatistic::kMedian:
+      return map.percentiles.p50;
+  }
+  return map.worst.rot_rms_deg;
+}
+
+double tre_objective(const tracker::TreReport& report) {
+  double out = 0.0;
+  for (const tracker::TreTargetReport& t : report.targets) {
+    if (t.extremes.worst.status == tracker::TreExtreme::Status::kUntracked) {
+      return std::numeric_limits<double>::infinity();
+    }
+    out = std::max(out, t.extremes.worst.rms_bound);
+  }
+  return out;
+}
+
+bool tre_certified(const tracker::TreReport& report) {
+  return std::all_of(
+      report.targets.begin(), report.targets.end(),
+      [](const tracker::TreTargetReport& t) { return t.extremes.worst.certified(); });
+}
+
+Json to_json(const Evaluation& e) {
+  const LayoutSensor& s = e.sensor;
+  Json out;
+  out["type"] = to_string(s.kind);
+  out["objective"] = words(s);
+  if (s.kind == LayoutSensor::Kind::kCamera) {
+    out["statistic"] = s.statistic;
+    out["value_deg"] = report::json_number(e.value);
+    out["complete"] = e.complete;
+    out["crb"] = camera_json(e);
+    return out;
+  }
+  out["value"] = report::json_number(e.value);
+  out["complete"] = e.complete;
+  out["targets"] = tracker_json(e);
+  return out;
+}
+
+std::string to_text(const Evaluation& e) {
+  std::ostringstream out;
+  out.precision(6);
+  out << "\nsensor (the layout's \"sensor\" block): " << words(e.sensor) << "\n";
+  if (e.sensor.kind == LayoutSensor::Kind::kCamera) {
+    const camera::PoseCrbMap& map = *e.crb;
+    if (map.status != camera::PoseCrbMap::Status::kOk) {
+      out << "  not trackable: " << camera::untrackable_reason(map, e.sensor.distance) << "\n";
+      return out.str();
+    }
+    out << "  " << e.sensor.statistic << " rot_rms " << e.value << " deg; worst "
+        << map.worst.rot_rms_deg << " deg (trans_rms " << map.worst.trans_rms << "), median "
+        << map.percentiles.p50 << " deg, trackable " << 100.0 * map.trackable_fraction
+        << " % of the workspace\n";
+    return out.str();
+  }
+  if (!std::isfinite(e.value)) {
+    out << "  a target is tracked from no direction of the workspace\n";
+    return out.str();
+  }
+  out << "  worst RMS TRE " << e.value << (e.complete ? " (certified)" : " (NOT certified)")
+      << "\n";
+  return out.str();
+}
+
+}  // namespace vantage::sensor_json
