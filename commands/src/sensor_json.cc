@@ -209,10 +209,19 @@ std::string to_text(const Evaluation& e) {
       out << "  not trackable: " << camera::untrackable_reason(map, e.sensor.distance) << "\n";
       return out.str();
     }
-    out << "  " << e.sensor.statistic << " rot_rms " << e.value << " deg; worst "
-        << map.worst.rot_rms_deg << " deg (trans_rms " << map.worst.trans_rms << "), median "
-        << map.percentiles.p50 << " deg, trackable " << 100.0 * map.trackable_fraction
-        << " % of the workspace\n";
+    out << "  ";
+    if (e.sensor.statistic != "worst") {
+      out << e.sensor.statistic << " rot_rms " << e.value << " deg; ";
+    }
+    if (map.worst.unbounded) {
+      // Past the first-order limit: no figure (docs/math.md §22, "Unbounded").
+      out << "worst rot_rms unbounded (the first-order bound means nothing there)";
+    } else {
+      out << "worst rot_rms " << map.worst.rot_rms_deg << " deg (trans_rms " << map.worst.trans_rms
+          << ")";
+    }
+    out << ", median " << map.percentiles.p50 << " deg, trackable "
+        << 100.0 * map.trackable_fraction << " % of the workspace\n";
     return out.str();
   }
   if (!std::isfinite(e.value)) {
