@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "support/eigen_testing.h"
+#include "vantage/analysis/mesh.h"
+#include "vantage/camera/pose_crb.h"
 #include "vantage/design/placement.h"
 #include "vantage/viewer/viewer_session.h"
 #include "vantage/visibility/visibility_model.h"
@@ -151,6 +153,56 @@ TEST(BodyPlacement, IncompleteResultLeavesTheLayout) {
   EXPECT_EQ(session.document().revision(), revision);
   EXPECT_EIGEN_NEAR(session.layout().entries, layout.entries, kExact);
   EXPECT_FALSE(session.layout().placement);
+}
+
+// Issue 35 item 8: the panel's camera objective, diameter and workspace go through `vantage
+// place`'s run. Truth: the camera's map of the placed layout by the library (pose_crb_map with
+// the settings and the aim the sensor block records), the sphere centres D/2 off the body.
+TEST(BodyPlacement, CameraObjectiveDiameterAndWorkspaceAreVantagePlaces) {
+  constexpr double kDiameter = 0.04;
+  const Layout layout = cube_layout(false);
+  PlaceSettings settings = small_settings();
+  settings.objective = "camera";
+  settings.distance = 6.0;
+  settings.focal = 900.0;
+  settings.noise_px = 0.3;
+  settings.marker_diameter = kDiameter;
+  settings.workspace = LayoutWorkspace{Eigen::Vector3d::UnitZ(), 30.0};
+  const PlaceOutcome outcome = place_on_body(layout, 0, settings);
+  ASSERT_EQ(outcome.error, "");
+  ASSERT_TRUE(outcome.complete) << outcome.failure;
+  const Layout& placed = outcome.placed;
+  ASSERT_TRUE(placed.sensor && placed.workspace);
+  EXPECT_EQ(placed.workspace->half_angle_deg, 30.0);
+  camera::PoseCrbOptions crb;
+  crb.distance = 6.0;
+  crb.focal_length = 900.0;
+  crb.noise_px = 0.3;
+  crb.samples = placed.sensor->samples;
+  crb.aim = placed.sensor->aim;
+  const camera::PoseCrbMap map = camera::pose_crb_map(camera::PoseCrbModel(placed, crb));
+  ASSERT_EQ(map.status, camera::PoseCrbMap::Status::kOk);
+  EXPECT_EQ(outcome.objective_value, map.worst.rot_rms_deg);
+  for (Eigen::Index j = 0; j < placed.entries.cols(); ++j) {
+    EXPECT_NEAR(distance_to_mesh(*layout.visibility->body, placed.entries.col(j)), kDiameter / 2,
+                1e-12);
+    for (Eigen::Index k = 0; k < j; ++k) {
+      EXPECT_GE((placed.entries.col(j) - placed.entries.col(k)).norm(), kDiameter);
+    }
+  }
+}
+
+// A missing camera setting is refused as `vantage place` refuses it, naming the option.
+TEST(BodyPlacement, MissingObjectiveSettingsAreNamed) {
+  PlaceSettings settings = small_settings();
+  settings.objective = "camera";
+  settings.distance = 6.0;
+  settings.noise_px = 0.3;
+  const PlaceOutcome outcome = place_on_body(cube_layout(true), 0, settings);
+  EXPECT_NE(outcome.error.find("--focal"), std::string::npos) << outcome.error;
+  settings.objective = "tracker";
+  const PlaceOutcome tracker = place_on_body(cube_layout(true), 0, settings);
+  EXPECT_NE(tracker.error.find("--fle-rms"), std::string::npos) << tracker.error;
 }
 
 TEST(BodyPlacement, RefusedWithoutABody) {

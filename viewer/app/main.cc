@@ -88,6 +88,16 @@ void add_viewer_options(CLI::App& cli, ViewerArgs* args) {
                  "with --place: sites sampled on the body")
       ->check(CLI::Range(1, 20000))
       ->capture_default_str();
+  vantage::viewer::PlaceSettings& s = args->place_settings;
+  cli.add_option("--objective", s.objective, "with --place: affine, camera or tracker")
+      ->check(CLI::IsMember({"affine", "camera", "tracker"}))
+      ->capture_default_str();
+  cli.add_option("--distance", s.distance, "with --place --objective camera: layout units");
+  cli.add_option("--focal", s.focal, "with --place --objective camera: pixels");
+  cli.add_option("--noise-px", s.noise_px, "with --place --objective camera: pixels");
+  cli.add_option("--marker-diameter", s.marker_diameter,
+                 "with --place: spheres of this diameter on the surface");
+  cli.add_option("--min-separation", s.min_separation, "with --place: layout units");
 }
 
 }  // namespace

@@ -61,6 +61,7 @@ class Panels {
   bool was_placing_ = false;                          // placing on the previous frame
   PlaceSettings place_settings_;                      // the placement controls
   std::uint64_t place_revision_ = ~std::uint64_t{0};  // the revision K was last read from
+  bool place_seeded_ = false;  // the controls took the settings of a start-up placement
 };
 
 }  // namespace vantage::viewer::app

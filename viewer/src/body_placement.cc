@@ -1,32 +1,44 @@
 #include "vantage/viewer/body_placement.h"
 
+#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <utility>
 
 #include "vantage/analysis/common.h"
+#include "vantage/commands/place_json.h"
 #include "vantage/design/placement_layout.h"
-#include "vantage/visibility/visibility_model.h"
+#include "vantage/design/site_filters.h"
 
 namespace vantage::viewer {
 namespace {
 
-design::PlacementProblem placement_problem(const visibility::VisibilityModel& model,
-                                           const PlaceSettings& settings) {
-  design::PlacementProblem problem;
-  problem.sites = model.problem();
-  problem.markers = settings.markers;
-  problem.min_separation = settings.min_separation;
-  return problem;
-}
-
-design::PlaceOptions place_options(const PlaceSettings& settings) {
-  design::PlaceOptions options;
-  options.robust_dropout = settings.robust_dropout;
-  options.random_trials = settings.random_trials;
-  options.seed = settings.seed;
-  options.threads = settings.threads;
-  return options;
+// `vantage place BODY`'s request for the settings (nothing written: no --out).
+place_json::Request place_request(const Layout& layout, const PlaceSettings& settings) {
+  place_json::Request request;
+  const std::string& path = layout.visibility->body_path;
+  request.body = path.empty() ? std::string("the layout's body") : path;
+  request.candidates = settings.candidates;
+  request.markers = settings.markers;
+  request.min_separation = settings.min_separation;
+  request.marker_diameter = settings.marker_diameter;
+  request.robust_dropout = settings.robust_dropout;
+  request.seed = settings.seed;
+  request.threads = settings.threads;
+  request.random_trials = settings.random_trials;
+  request.min_coverage = settings.min_coverage;
+  request.objective = settings.objective;
+  if (settings.objective == "camera") {
+    request.distance = settings.distance;
+    request.focal = settings.focal;
+    request.noise_px = settings.noise_px;
+    request.statistic = settings.statistic;
+  }
+  if (settings.objective == "tracker") {
+    request.targets = {settings.target};
+    if (settings.fle_rms > 0.0) request.fle = tracker::FleModel::isotropic(settings.fle_rms);
+  }
+  return request;
 }
 
 }  // namespace
@@ -40,14 +52,18 @@ Layout body_sites(const Layout& layout, const PlaceSettings& settings) {
     throw InvalidArgument("body", "the layout has no body mesh to place markers on");
   }
   const MarkerVisibility& v = *layout.visibility;
-  const design::SurfaceSites sampled = design::sample_surface_sites(
-      *v.body, settings.candidates, settings.min_separation, settings.seed);
+  const double separation = std::max(settings.min_separation, settings.marker_diameter);
+  const design::SurfaceSites sampled =
+      design::sample_surface_sites(*v.body, settings.candidates, separation, settings.seed);
   const double cone = v.cone_half_angle_deg.size() > 0 ? v.cone_half_angle_deg(0)
                                                        : MarkerVisibility::kDefaultConeDeg;
   Layout sites = design::surface_sites_layout(sampled, *v.body, v.body_path, cone);
   sites.name = layout.name;
   sites.visibility->min_visible = v.min_visible;
-  sites.workspace = layout.workspace;
+  sites.workspace = settings.workspace ? settings.workspace : layout.workspace;
+  if (settings.marker_diameter > 0.0) {
+    sites = design::sphere_centres(std::move(sites), settings.marker_diameter);
+  }
   return sites;
 }
 
@@ -59,22 +75,25 @@ PlaceOutcome place_on_body(const Layout& layout, std::uint64_t revision,
   outcome.revision = revision;
   outcome.settings = settings;
   try {
+    if (!is_on_body(layout)) {
+      throw InvalidArgument("body", "the layout has no body mesh to place markers on");
+    }
+    const place_json::Request request = place_request(layout, settings);
+    place_json::check_request(request);
     if (progress) progress("sampling sites");
-    const Layout sites = body_sites(layout, settings);
-    outcome.n_candidates = static_cast<int>(sites.entries.cols());
-    if (progress) progress("occlusion grid");
-    const visibility::VisibilityModel model = visibility::VisibilityModel::of(
-        sites, visibility::VisibilityModel::kDefaultResolutionDeg, settings.threads);
-    const design::PlacementProblem problem = placement_problem(model, settings);
-    design::PlaceOptions options = place_options(settings);
-    options.progress = progress;
-    outcome.result = design::place_markers(problem, options);
-    if (outcome.result.status == design::PlacementResult::Status::kComplete) {
-      design::PlacedLayoutRecord record;
-      record.sites = layout.visibility->body_path;
-      record.n_candidates = outcome.n_candidates;
-      record.robust_dropout = settings.robust_dropout;
-      outcome.placed = design::placed_layout(sites, outcome.result, record);
+    place_json::Sites sites;
+    sites.layout = body_sites(layout, settings);
+    sites.n_candidates = static_cast<int>(sites.layout.entries.cols());
+    sites.drawn = sites.n_candidates;
+    outcome.n_candidates = sites.n_candidates;
+    const place_json::Outcome placed = place_json::place(request, sites, progress);
+    outcome.result = placed.result;
+    outcome.complete = placed.complete;
+    outcome.objective_value = placed.objective_value;
+    if (placed.complete) {
+      outcome.placed = placed.placed.layout;
+    } else {
+      outcome.failure = place_json::failure_message(placed.result, placed.placed);
     }
   } catch (const std::exception& e) {
     outcome.error = e.what();

@@ -220,8 +220,8 @@ bool ViewerSession::apply_place(PlaceOutcome outcome) {
     fail("place: " + out.error);
     return false;
   }
-  if (out.result.status != design::PlacementResult::Status::kComplete) {
-    fail("place: incomplete: " + out.result.message + "; the layout is kept");
+  if (!out.complete) {
+    fail("place: incomplete: " + out.failure + "; the layout is kept");
     return false;
   }
   if (out.revision != document_.revision()) {
