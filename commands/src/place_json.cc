@@ -50,6 +50,28 @@ Json camera_search_number(double value_deg) {
   return value_deg > camera::PoseCrbAt::kMaxRotRmsDeg ? Json() : report::json_number(value_deg);
 }
 
+// A camera or tracker search value as the layout file records it: +inf (null) when the choice
+// covers nothing or, for a camera, past the first-order limit (no figure, §22 "Unbounded").
+double recorded_objective(double value, double coverage, LayoutSensor::Kind kind) {
+  const bool unbounded =
+      kind == LayoutSensor::Kind::kCamera && value > camera::PoseCrbAt::kMaxRotRmsDeg;
+  return coverage > 0.0 && !unbounded ? value : std::numeric_limits<double>::infinity();
+}
+
+// The objective's steps, random baseline and value in the placement record (the figure's chart).
+void record_objective(const design::PlacementResult& result,
+                      const sensor_json::Evaluation& evaluation, LayoutPlacement* placement) {
+  const LayoutSensor::Kind kind = evaluation.sensor.kind;
+  for (std::size_t i = 0; i < placement->steps.size(); ++i) {
+    const design::PlacementValue& v = result.steps[i].value;
+    placement->steps[i].objective = recorded_objective(v.objective, v.coverage, kind);
+  }
+  const design::RandomBaseline& b = result.random_baseline;
+  placement->random_best_objective = recorded_objective(b.best_objective, b.best_coverage, kind);
+  placement->random_median_objective = recorded_objective(b.median_objective, 1.0, kind);
+  placement->objective_value = evaluation.value;
+}
+
 Json place_vector(const Eigen::Vector3d& v) { return Json{v.x(), v.y(), v.z()}; }
 
 // The tracker objective's block: `vantage tre`'s worst of each target on the placed layout.
@@ -202,6 +224,7 @@ PlacedLayout placed_layout(const Request& request, const Layout& sites, int n_ca
     out.camera = evaluation.camera;
     out.crb = evaluation.crb;
     out.tre = evaluation.tre;
+    record_objective(result, evaluation, &*out.layout.placement);
     out.sensor = std::move(evaluation);
   }
   return out;

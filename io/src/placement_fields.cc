@@ -1,12 +1,28 @@
 #include "placement_fields.h"
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "json_fields.h"
 
 namespace vantage::io::internal {
 namespace {
+
+// An objective value of a camera or tracker placement: a finite number >= 0, or null for none
+// (+inf: tracks nothing, or past the camera's first-order limit).
+double read_objective(const nlohmann::json& v, const std::string& source,
+                      const std::string& field) {
+  if (v.is_null()) return std::numeric_limits<double>::infinity();
+  if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < 0.0) {
+    fail(source, field + ": expected a finite number >= 0, or null");
+  }
+  return v.get<double>();
+}
+
+nlohmann::ordered_json objective_json(double value) {
+  return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
+}
 
 void read_random_baseline(const nlohmann::json& b, const std::string& source,
                           LayoutPlacement* out) {
@@ -18,12 +34,22 @@ void read_random_baseline(const nlohmann::json& b, const std::string& source,
                      ": expected {\"trials\": integer, \"best_pbar_min\": number, "
                      "\"median_pbar_min\": number}");
   }
-  reject_unknown_fields(b, source, {"trials", "best_pbar_min", "median_pbar_min"});
+  reject_unknown_fields(
+      b, source,
+      {"trials", "best_pbar_min", "median_pbar_min", "best_objective", "median_objective"});
   const long long trials = b["trials"].get<long long>();
   if (trials < 0 || trials > 1'000'000'000) fail(source, field + ".trials: expected 0 or more");
   out->random_trials = static_cast<int>(trials);
   out->random_best_pbar_min = b["best_pbar_min"].get<double>();
   out->random_median_pbar_min = b["median_pbar_min"].get<double>();
+  if (b.contains("best_objective")) {
+    out->random_best_objective =
+        read_objective(b["best_objective"], source, field + ".best_objective");
+  }
+  if (b.contains("median_objective")) {
+    out->random_median_objective =
+        read_objective(b["median_objective"], source, field + ".median_objective");
+  }
 }
 
 // placement.<name>: a finite length >= 0, or 0 when absent.
@@ -43,9 +69,10 @@ std::optional<LayoutPlacement> read_placement(const nlohmann::json& root, const 
   if (!root.contains("placement")) return std::nullopt;
   const nlohmann::json& p = root["placement"];
   if (!p.is_object()) fail(source, "placement: expected an object");
-  reject_unknown_fields(p, source,
-                        {"sites", "chosen", "objective", "site_points", "site_normals",
-                         "min_separation", "marker_diameter", "steps", "random_baseline"});
+  reject_unknown_fields(
+      p, source,
+      {"sites", "chosen", "objective", "site_points", "site_normals", "min_separation",
+       "marker_diameter", "steps", "random_baseline", "objective_value"});
   LayoutPlacement out;
   if (p.contains("sites")) out.sites = read_string(p["sites"], source, "placement.sites");
   if (p.contains("objective")) {
@@ -91,12 +118,19 @@ std::optional<LayoutPlacement> read_placement(const nlohmann::json& root, const 
         fail(source,
              field + ": expected {\"k\": integer, \"pbar_min\": number, \"coverage\": number}");
       }
-      reject_unknown_fields(step, source, {"k", "pbar_min", "coverage"});
+      reject_unknown_fields(step, source, {"k", "pbar_min", "coverage", "objective"});
       out.steps.push_back(
           {step["k"].get<int>(), step["pbar_min"].get<double>(), step["coverage"].get<double>()});
+      if (step.contains("objective")) {
+        out.steps.back().objective =
+            read_objective(step["objective"], source, field + ".objective");
+      }
     }
   }
   if (p.contains("random_baseline")) read_random_baseline(p["random_baseline"], source, &out);
+  if (p.contains("objective_value")) {
+    out.objective_value = read_objective(p["objective_value"], source, "placement.objective_value");
+  }
   return out;
 }
 
@@ -109,15 +143,27 @@ void write_placement(const Layout& layout, nlohmann::ordered_json* out) {
   block["objective"] = p.objective;
   block["min_separation"] = p.min_separation;
   block["marker_diameter"] = p.marker_diameter;
+  // The objective's values only for a camera or tracker placement: affine files are unchanged.
+  const bool objective = layout.sensor.has_value();
+  if (objective && !std::isnan(p.objective_value)) {
+    block["objective_value"] = objective_json(p.objective_value);
+  }
   nlohmann::ordered_json steps = nlohmann::ordered_json::array();
   for (const LayoutPlacement::Step& step : p.steps) {
-    steps.push_back({{"k", step.k}, {"pbar_min", step.pbar_min}, {"coverage", step.coverage}});
+    nlohmann::ordered_json s = {
+        {"k", step.k}, {"pbar_min", step.pbar_min}, {"coverage", step.coverage}};
+    if (objective && !std::isnan(step.objective)) s["objective"] = objective_json(step.objective);
+    steps.push_back(s);
   }
   block["steps"] = steps;
   if (p.random_trials > 0) {
     block["random_baseline"] = {{"trials", p.random_trials},
                                 {"best_pbar_min", p.random_best_pbar_min},
                                 {"median_pbar_min", p.random_median_pbar_min}};
+    if (objective && !std::isnan(p.random_best_objective)) {
+      block["random_baseline"]["best_objective"] = objective_json(p.random_best_objective);
+      block["random_baseline"]["median_objective"] = objective_json(p.random_median_objective);
+    }
   }
   block["site_points"] = vector_rows(p.site_points);
   block["site_normals"] = vector_rows(p.site_normals);

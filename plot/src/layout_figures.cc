@@ -35,6 +35,7 @@ FigureFiles write_placement(const report::LayoutReport& report,
   PlacementFigureData data;
   data.layout_name = layout.name;
   data.placement = *layout.placement;
+  data.sensor = layout.sensor;
   data.markers = layout.entries;
   if (layout.visibility) {
     data.normals = layout.visibility->normals;

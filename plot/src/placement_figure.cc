@@ -204,24 +204,121 @@ void draw_k_chart(Canvas& canvas, const PlacementFigureData& data) {
                       "certified p̄_min", 4.6);
 }
 
+// A camera or tracker placement: its objective is charted instead of p-bar_min.
+bool charts_objective(const PlacementFigureData& data) {
+  return data.sensor && !std::isnan(data.placement.objective_value);
+}
+
+// The objective in a few words, and a value of it with its unit.
+std::string objective_name(const LayoutSensor& sensor) {
+  return sensor.kind == LayoutSensor::Kind::kCamera ? "camera, " + sensor.statistic + " rot_rms"
+                                                    : std::string("tracker, worst RMS TRE");
+}
+
+std::string objective_text(const LayoutSensor& sensor, double value) {
+  if (!std::isfinite(value)) {
+    return sensor.kind == LayoutSensor::Kind::kCamera ? "untracked or unbounded" : "untracked";
+  }
+  return internal::fixed(value, value < 10.0 ? 3 : 1) +
+         (sensor.kind == LayoutSensor::Kind::kCamera ? "°" : "");
+}
+
+// The objective against K: the greedy steps' search values, the answer and the random baseline
+// (only finite values: +inf is a choice that tracks nothing, or past the camera's limit).
+void draw_objective_chart(Canvas& canvas, const PlacementFigureData& data) {
+  const LayoutPlacement& p = data.placement;
+  const double s = internal::page_scale(canvas);
+  plstream& pls = canvas.pls();
+  const double k = static_cast<double>(data.markers.cols());
+  double k_lo = k, hi = 0.0;
+  const auto include = [&hi](double v) {
+    if (std::isfinite(v)) hi = std::max(hi, v);
+  };
+  for (const LayoutPlacement::Step& step : p.steps) {
+    k_lo = std::min(k_lo, static_cast<double>(step.k));
+    include(step.objective);
+  }
+  include(p.objective_value);
+  if (p.random_trials > 0) {
+    include(p.random_best_objective);
+    include(p.random_median_objective);
+  }
+  if (k_lo >= k) k_lo = k - 1.0;
+  hi = hi > 0.0 ? 1.15 * hi : 1.0;
+  const internal::Viewport viewport{0.09, 0.42, 0.08, 0.25};
+  pls.vpor(viewport.left, viewport.left + viewport.width, viewport.bottom,
+           viewport.bottom + viewport.height);
+  pls.wind(k_lo - 0.5, k + 0.5, 0.0, hi);
+  pls.col0(internal::kPenGrid);
+  pls.width(0.8 * s);
+  internal::set_text_size(canvas, internal::kSmallSize);
+  pls.box("g", 1.0, 0, "g", 0.0, 0);
+  std::vector<double> x, y;
+  for (const LayoutPlacement::Step& step : p.steps) {
+    if (!std::isfinite(step.objective)) continue;
+    x.push_back(step.k);
+    y.push_back(step.objective);
+  }
+  if (!x.empty()) {
+    pls.col0(internal::kPenWorst);
+    pls.width(2.0 * s);
+    pls.line(static_cast<int>(x.size()), x.data(), y.data());
+  }
+  for (const LayoutPlacement::Step& step : p.steps) {
+    if (!std::isfinite(step.objective)) continue;
+    canvas.marker(step.k, step.objective, 5.0 * s,
+                  step.coverage >= 1.0 ? kWorstViewpointColour : Rgb{255, 255, 255},
+                  Canvas::Shape::kCircle, kWorstViewpointColour);
+  }
+  if (p.random_trials > 0) {
+    if (std::isfinite(p.random_best_objective)) {
+      canvas.marker(k, p.random_best_objective, 6.0 * s, kRandomColour, Canvas::Shape::kSquare);
+    }
+    if (std::isfinite(p.random_median_objective)) {
+      canvas.marker(k, p.random_median_objective, 6.0 * s, {255, 255, 255}, Canvas::Shape::kSquare,
+                    kRandomColour);
+    }
+  }
+  if (std::isfinite(p.objective_value)) {
+    canvas.marker(k, p.objective_value, 8.0 * s, kChosenColour, Canvas::Shape::kDiamond);
+    canvas.label(k, p.objective_value, objective_text(*data.sensor, p.objective_value), -14 * s,
+                 14 * s, 1.0, internal::kSmallSize * s, kPlacementInk, {255, 255, 255}, 0.8);
+  }
+  const bool camera = data.sensor->kind == LayoutSensor::Kind::kCamera;
+  internal::draw_axes(canvas, "bcnst", "bcnstv", 0.0, 0, "K: markers placed", 2.6,
+                      camera ? data.sensor->statistic + " rot_rms (°)" : "worst RMS TRE", 4.6);
+}
+
 void draw_placement_legend(Canvas& canvas, const PlacementFigureData& data) {
   using internal::fixed;
   using Entry = Canvas::LegendEntry;
   const double s = internal::page_scale(canvas);
   const LayoutPlacement& p = data.placement;
   const double error_deg = std::acos(std::clamp(data.pbar_min, 0.0, 1.0)) * kDegreesPerRadian;
+  const bool objective = charts_objective(data);
+  const std::string answer =
+      objective
+          ? objective_name(*data.sensor) + " " + objective_text(*data.sensor, p.objective_value)
+          : "p̄_min " + fixed(data.pbar_min, 4) + " (" + fixed(error_deg, 2) + "°)";
   std::vector<Entry> legend{
       Entry::marker(std::to_string(p.site_points.cols()) + " candidate sites", kSiteColour),
       Entry::marker(std::to_string(data.markers.cols()) + " chosen sites, outward normals",
                     kChosenColour),
-      Entry::marker("answer: p̄_min " + fixed(data.pbar_min, 4) + " (" + fixed(error_deg, 2) +
-                        "°), coverage " + fixed(100.0 * data.coverage, 1) + " %",
+      Entry::marker("answer: " + answer + ", coverage " + fixed(100.0 * data.coverage, 1) + " %",
                     kChosenColour, Canvas::Shape::kDiamond)};
   if (!p.steps.empty()) {
     legend.push_back(Entry::line_marker("greedy steps (hollow: workspace not yet covered)",
                                         kWorstViewpointColour, 2.0 * s, Canvas::Shape::kCircle));
   }
-  if (p.random_trials > 0) {
+  if (p.random_trials > 0 && objective) {
+    legend.push_back(Entry::marker(
+        "best of " + std::to_string(p.random_trials) +
+            " random subsets: " + objective_text(*data.sensor, p.random_best_objective),
+        kRandomColour, Canvas::Shape::kSquare));
+    legend.push_back(Entry::text_only("  median " +
+                                      objective_text(*data.sensor, p.random_median_objective) +
+                                      " (hollow square)"));
+  } else if (p.random_trials > 0) {
     legend.push_back(Entry::marker("best of " + std::to_string(p.random_trials) +
                                        " random subsets: " + fixed(p.random_best_pbar_min, 4),
                                    kRandomColour, Canvas::Shape::kSquare));
@@ -237,19 +334,33 @@ void draw_placement_legend(Canvas& canvas, const PlacementFigureData& data) {
 }
 
 void write_csv(const PlacementFigureData& data, const std::filesystem::path& path) {
-  internal::CsvWriter csv(path, "series,k,pbar_min,coverage");
-  for (const LayoutPlacement::Step& step : data.placement.steps) {
-    csv << "step" << step.k << step.pbar_min << step.coverage;
+  // A camera or tracker placement adds its objective (empty: untracked or unbounded).
+  const bool objective = charts_objective(data);
+  const LayoutPlacement& p = data.placement;
+  internal::CsvWriter csv(
+      path, objective ? "series,k,pbar_min,coverage,objective" : "series,k,pbar_min,coverage");
+  const auto end_row = [&](double value) {
+    if (objective) {
+      if (std::isfinite(value)) {
+        csv << value;
+      } else {
+        csv << "";
+      }
+    }
     csv.end_row();
+  };
+  for (const LayoutPlacement::Step& step : p.steps) {
+    csv << "step" << step.k << step.pbar_min << step.coverage;
+    end_row(step.objective);
   }
   const int k = static_cast<int>(data.markers.cols());
   csv << "answer" << k << data.pbar_min << data.coverage;
-  csv.end_row();
-  if (data.placement.random_trials > 0) {
-    csv << "random_best" << k << data.placement.random_best_pbar_min << "";
-    csv.end_row();
-    csv << "random_median" << k << data.placement.random_median_pbar_min << "";
-    csv.end_row();
+  end_row(p.objective_value);
+  if (p.random_trials > 0) {
+    csv << "random_best" << k << p.random_best_pbar_min << "";
+    end_row(p.random_best_objective);
+    csv << "random_median" << k << p.random_median_pbar_min << "";
+    end_row(p.random_median_objective);
   }
   csv.commit();
 }
@@ -289,8 +400,9 @@ FigureFiles write_placement_figure(const PlacementFigureData& data,
       canvas,
       internal::figure_title(options, "Placement: " + internal::layout_label(data.layout_name)),
       std::to_string(data.markers.cols()) + " of " +
-          std::to_string(data.placement.site_points.cols()) +
-          " candidate sites (vantage place); orthographic views, +z up");
+          std::to_string(data.placement.site_points.cols()) + " candidate sites (vantage place" +
+          (charts_objective(data) ? ", objective " + objective_name(*data.sensor) : "") +
+          "); orthographic views, +z up");
   const double az = kPlacementAzimuthDeg, el = kPlacementElevationDeg;
   const std::vector<PlacementView> views{placement_view_from(az, el),
                                          placement_view_from(az + 180.0, el)};
@@ -299,7 +411,11 @@ FigureFiles write_placement_figure(const PlacementFigureData& data,
                  0.02, 0.49);
   draw_body_view(canvas, data, views[1], window,
                  "back: azimuth " + internal::fixed(az + 180.0, 0) + "°", 0.51, 0.98);
-  draw_k_chart(canvas, data);
+  if (charts_objective(data)) {
+    draw_objective_chart(canvas, data);
+  } else {
+    draw_k_chart(canvas, data);
+  }
   draw_placement_legend(canvas, data);
   canvas.finish();
   write_csv(data, files.csv);

@@ -201,6 +201,8 @@ TEST(PlaceCli, CameraObjectiveIsWhatCrbReportsOnTheWrittenFile) {
   EXPECT_EQ(analyzed["sensor"]["statistic"], "worst");
   EXPECT_EQ(analyzed["sensor"]["crb"]["worst"], objective["crb"]["worst"]);
   EXPECT_EQ(analyzed["sensor"]["objective"], file["placement"]["objective"]);
+  // The placement record keeps the value, for the figure.
+  EXPECT_EQ(file["placement"]["objective_value"], objective["value_deg"]);
 }
 
 // The least distance between two points of a layout file's "points".

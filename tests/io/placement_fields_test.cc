@@ -4,6 +4,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "vantage/analysis/common.h"
 #include "vantage/io/layout_file.h"
 
@@ -38,12 +40,13 @@ std::string error_of(const std::string& text) {
   return "no exception";
 }
 
-std::string with(const std::string& from, const std::string& to) {
-  std::string text = kPlaced;
+std::string with(std::string text, const std::string& from, const std::string& to) {
   const std::size_t at = text.find(from);
   EXPECT_NE(at, std::string::npos) << from;
   return text.replace(at, from.size(), to);
 }
+
+std::string with(const std::string& from, const std::string& to) { return with(kPlaced, from, to); }
 
 TEST(PlacementFields, SurviveAWriteAndARead) {
   const Layout layout = parse_layout(kPlaced, "placed.json");
@@ -73,6 +76,35 @@ TEST(PlacementFields, SizesDefaultToPointMarkers) {
   ASSERT_TRUE(layout.placement.has_value());
   EXPECT_EQ(layout.placement->min_separation, 0.0);
   EXPECT_EQ(layout.placement->marker_diameter, 0.0);
+}
+
+// A camera or tracker placement records its objective's values (null: none); an affine one does
+// not write them.
+TEST(PlacementFields, ObjectiveValuesSurviveWithASensor) {
+  std::string text = with("\"coverage\": 0.25}", "\"coverage\": 0.25, \"objective\": null}");
+  text = with(text, "\"median_pbar_min\": 0.1}",
+              "\"median_pbar_min\": 0.1, \"best_objective\": 3.5, \"median_objective\": null}");
+  text =
+      with(text, "\"sites\": \"cube.obj\",", "\"sites\": \"cube.obj\", \"objective_value\": 2.5,");
+  text = with(text, "  \"placement\": {",
+              "  \"sensor\": {\"type\": \"tracker\", \"targets\": [[0, 0, 1]], \"fle_rms\": 0.2},\n"
+              "  \"placement\": {");
+  const Layout layout = parse_layout(text, "placed.json");
+  const LayoutPlacement& p = *layout.placement;
+  EXPECT_EQ(p.steps[0].objective, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(p.random_best_objective, 3.5);
+  EXPECT_EQ(p.random_median_objective, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(p.objective_value, 2.5);
+  const Layout again = parse_layout(layout_to_json(layout), "again.json");
+  EXPECT_EQ(layout_to_json(again), layout_to_json(layout));
+  EXPECT_EQ(again.placement->objective_value, 2.5);
+  EXPECT_EQ(again.placement->steps[0].objective, std::numeric_limits<double>::infinity());
+  // Without a sensor the values are not written.
+  Layout affine = layout;
+  affine.sensor.reset();
+  EXPECT_EQ(layout_to_json(affine).find("objective_value"), std::string::npos);
+  EXPECT_THAT(error_of(with(text, "\"objective_value\": 2.5", "\"objective_value\": -1")),
+              HasSubstr("placement.objective_value: expected a finite number >= 0, or null"));
 }
 
 TEST(PlacementFields, BadBlocksNameTheirField) {

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <limits>
 
 #include "plot_testing.h"
 #include "vantage/plot/layout_figures.h"
@@ -70,6 +71,30 @@ TEST(PlacementFigure, WritesTheImageAndTheNumbersItWasGiven) {
   EXPECT_EQ(csv.text(3, "series"), "random_best");
   EXPECT_EQ(csv.number(3, "pbar_min"), 0.6);
   EXPECT_EQ(csv.number(4, "pbar_min"), 0.2);
+}
+
+// A camera placement charts its objective: the CSV gains the objective column, empty where a
+// step tracks nothing.
+TEST(PlacementFigure, ACameraPlacementChartsItsObjective) {
+  TempDir dir("placement_camera");
+  PlacementFigureData data = cube_data();
+  data.sensor = LayoutSensor{};
+  data.sensor->statistic = "worst";
+  data.placement.steps[0].objective = std::numeric_limits<double>::infinity();
+  data.placement.steps[1].objective = 7.5;
+  data.placement.objective_value = 6.25;
+  data.placement.random_best_objective = 9.0;
+  data.placement.random_median_objective = std::numeric_limits<double>::infinity();
+  const FigureFiles files = write_placement_figure(data, dir.path());
+  EXPECT_TRUE(std::filesystem::file_size(files.image) > 0);
+  const testing::Csv csv = testing::read_csv(files.csv);
+  ASSERT_EQ(csv.rows.size(), 5u);
+  EXPECT_EQ(csv.text(0, "objective"), "");
+  EXPECT_EQ(csv.number(1, "objective"), 7.5);
+  EXPECT_EQ(csv.number(2, "objective"), 6.25);
+  EXPECT_EQ(csv.number(3, "objective"), 9.0);
+  EXPECT_EQ(csv.text(4, "objective"), "");
+  EXPECT_EQ(csv.number(2, "pbar_min"), data.pbar_min);  // the p-bar_min columns stay
 }
 
 TEST(PlacementFigure, RefusesBadData) {

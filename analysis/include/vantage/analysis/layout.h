@@ -7,6 +7,7 @@
 /// pair weight (sqrt(w_i w_j) by default).
 
 #include <Eigen/Core>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -44,6 +45,10 @@ struct LayoutPlacement {
     int k = 0;
     double pbar_min = 0.0;
     double coverage = 0.0;
+    /// The camera or tracker objective's search value (degrees; layout units): +inf when the
+    /// choice tracks nothing (or, for a camera, past the first-order limit); NaN when not
+    /// recorded (the affine objective).
+    double objective = std::numeric_limits<double>::quiet_NaN();
   };
   std::vector<Step> steps;  ///< the greedy construction (empty when searched exhaustively)
   /// The random baseline of the same K: feasible subsets drawn (0: none recorded) and the best
@@ -51,6 +56,11 @@ struct LayoutPlacement {
   int random_trials = 0;
   double random_best_pbar_min = 0.0;
   double random_median_pbar_min = 0.0;
+  /// With a camera or tracker objective: the best and median objective of the random subsets
+  /// and the written layout's objective value (as Step::objective: +inf none, NaN not recorded).
+  double random_best_objective = std::numeric_limits<double>::quiet_NaN();
+  double random_median_objective = std::numeric_limits<double>::quiet_NaN();
+  double objective_value = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// The sensor a layout was placed for (`vantage place --objective camera|tracker`; docs/math.md

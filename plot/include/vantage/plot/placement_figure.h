@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,10 +32,14 @@ struct PlacementFigureData {
   Eigen::Matrix3Xd normals;    ///< their outward unit normals
   double pbar_min = 0.0;       ///< the answer's certified p-bar_min under visibility
   double coverage = 0.0;       ///< its trackable fraction of the workspace
+  /// The sensor of a camera or tracker placement (the layout's "sensor" block): with the
+  /// objective's values recorded in `placement`, the chart shows the objective, not p-bar_min.
+  std::optional<LayoutSensor> sensor;
 };
 
-/// Writes placement.<ext> and placement.csv (columns series,k,pbar_min,coverage: series "step"
-/// for each greedy step, "answer", "random_best" and "random_median" at K) into `directory`.
+/// Writes placement.<ext> and placement.csv (columns series,k,pbar_min,coverage, and objective
+/// for a camera or tracker placement: series "step" for each greedy step, "answer",
+/// "random_best" and "random_median" at K) into `directory`.
 /// Throws InvalidArgument on bad data (markers and normals of different sizes, a chosen index
 /// outside the sites, p-bar_min outside [0, 1]) or options, RenderError when drawing or writing
 /// fails.
