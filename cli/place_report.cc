@@ -25,7 +25,9 @@ std::string aim_option(const Eigen::Vector3d& aim) {
 
 // A step's or a baseline's objective value with its unit.
 std::string objective_text(const place_json::PlacedLayout& placed, double value) {
-  if (placed.crb && std::isfinite(value) && value > camera::PoseCrbAt::kMaxRotRmsDeg) {
+  // +inf: a choice (or, for the median, most choices) that tracks nothing: no figure.
+  if (!std::isfinite(value)) return "untracked";
+  if (placed.crb && value > camera::PoseCrbAt::kMaxRotRmsDeg) {
     return "unbounded (first-order rot_rms past the 45 deg limit)";
   }
   return format_number(value, 6) + (placed.tre ? "" : " deg");

@@ -291,6 +291,15 @@ Json report(const Request& request, const Sites& sites, const Outcome& outcome, 
                             {"best_coverage", r.random_baseline.best_coverage},
                             {"best_pbar_min", r.random_baseline.best_pbar_min},
                             {"median_pbar_min", r.random_baseline.median_pbar_min}};
+  if (outcome.placed.crb || outcome.placed.tre) {
+    // The objective's own values (null: untracked or, for a camera, past the 45 deg limit);
+    // the p-bar_min fields are the affine objective's, 0 here.
+    const auto value = [&](double v) {
+      return outcome.placed.crb ? camera_search_number(v) : report::json_number(v);
+    };
+    out["random_baseline"]["best_objective"] = value(r.random_baseline.best_objective);
+    out["random_baseline"]["median_objective"] = value(r.random_baseline.median_objective);
+  }
   out["objective"] = place_objective_json(request, outcome);
   out["steps"] = place_steps_json(r);
   if (r.robust) {

@@ -279,6 +279,8 @@ TEST(PlaceCli, TrackerObjectiveIsWhatTreReportsOnTheWrittenFile) {
   }
   EXPECT_EQ(objective["value"].get<double>(), worst);
   EXPECT_EQ(objective["search_value"].get<double>(), worst);
+  // The random baseline reports the objective's values (its p-bar_min fields are affine's).
+  EXPECT_TRUE(json["random_baseline"]["best_objective"].is_number());
   ASSERT_EQ(objective["targets"].size(), 2u);
   EXPECT_EQ(objective["targets"][0]["rms_bound"], tre["targets"][0]["worst"]["rms_bound"]);
   // The layout file says what it was placed for, with the command that reproduces the value.
