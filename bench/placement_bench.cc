@@ -241,6 +241,34 @@ double tracker_energy(const Sites& s, const design::PlaceOptions& o,
   return std::log(worst);
 }
 
+// The camera objective by `vantage crb`'s map of the chosen sites (the aim and lattice of the
+// objective): 100 + the uncovered fraction when more than one lattice direction of the workspace
+// sees too few markers, else log of the worst first-order rot_rms.
+double camera_energy(const Sites& s, const design::PlaceOptions& o,
+                     const std::vector<int>& chosen) {
+  vantage::Layout answer = s.layout;
+  const Eigen::Index k = static_cast<Eigen::Index>(chosen.size());
+  answer.entries.resize(3, k);
+  answer.weights = Eigen::VectorXd::Ones(k);
+  answer.visibility->normals.resize(3, k);
+  answer.visibility->cone_half_angle_deg.resize(k);
+  for (Eigen::Index j = 0; j < k; ++j) {
+    const int site = chosen[static_cast<std::size_t>(j)];
+    answer.entries.col(j) = s.layout.entries.col(site);
+    answer.visibility->normals.col(j) = s.layout.visibility->normals.col(site);
+    answer.visibility->cone_half_angle_deg(j) = s.layout.visibility->cone_half_angle_deg(site);
+  }
+  const vantage::camera::PoseCrbMap map =
+      vantage::camera::pose_crb_map(vantage::camera::PoseCrbModel(answer, o.camera->crb));
+  const double directions = static_cast<double>(map.samples.size());
+  const double covered = map.trackable_fraction + map.unbounded_fraction;
+  if (map.status != vantage::camera::PoseCrbMap::Status::kOk ||
+      std::round((1.0 - covered) * directions) > 1.0) {
+    return kIncomplete + (1.0 - covered);
+  }
+  return std::log(map.worst.first_order_rot_rms_deg);
+}
+
 // place_markers() on the sites, then two annealing chains (one per core, as place uses both) for
 // `multiple` times its wall time, each from its own seed; counters: both energies by the function
 // above, the place run's seconds and the chains' evaluations.
@@ -346,6 +374,17 @@ void BM_Place_TrackerAgainstAnnealing(benchmark::State& state) {
                     [&](const std::vector<int>& chosen) { return tracker_energy(s, o, chosen); });
 }
 
+// `vantage place --objective camera` against the annealer, energy log(worst rot_rms).
+void BM_Place_CameraAgainstAnnealing(benchmark::State& state) {
+  const Sites s = workspace_sites(state);
+  const design::PlaceOptions o = camera_options(s);
+  vantage_bench::AnnealSchedule schedule;
+  schedule.start = 0.3;
+  schedule.end = 0.003;
+  against_annealing(state, s, o, schedule, 1.0,
+                    [&](const std::vector<int>& chosen) { return camera_energy(s, o, chosen); });
+}
+
 BENCHMARK(BM_Place_OneSearch)->Args({200, 12})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Place_Greedy)->Args({200, 12})->Unit(benchmark::kMillisecond)->Iterations(2);
 BENCHMARK(BM_Place_Exhaustive)->Unit(benchmark::kMillisecond);
@@ -362,6 +401,10 @@ BENCHMARK(BM_Place_AffineAgainstAnnealing)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 BENCHMARK(BM_Place_TrackerAgainstAnnealing)
+    ->Args({1000, 8})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK(BM_Place_CameraAgainstAnnealing)
     ->Args({1000, 8})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
