@@ -25,8 +25,8 @@ std::string aim_option(const Eigen::Vector3d& aim) {
 
 // A step's or a baseline's objective value with its unit.
 std::string objective_text(const place_json::PlacedLayout& placed, double value) {
-  // +inf: a choice (or, for the median, most choices) that tracks nothing: no figure.
-  if (!std::isfinite(value)) return "untracked";
+  // +inf: no complete choice (below --min-coverage; for the median, most of the trials).
+  if (!std::isfinite(value)) return "incomplete";
   if (placed.crb && value > camera::PoseCrbAt::kMaxRotRmsDeg) {
     return "unbounded (first-order rot_rms past the 45 deg limit)";
   }
@@ -78,8 +78,9 @@ void print_tracker_objective(const place_json::Outcome& outcome) {
     std::cout << "sigma " << format_number(tre.fle.sigma_perp, 9) << ","
               << format_number(tre.fle.sigma_axial, 9);
   }
-  std::cout << "):\n  worst RMS TRE bound " << format_number(outcome.objective_value, 6)
-            << " (the search's value " << format_number(outcome.result.value.objective, 6) << ")\n";
+  std::cout << "):\n  worst RMS TRE bound "
+            << objective_text(outcome.placed, outcome.objective_value) << " (the search's value "
+            << objective_text(outcome.placed, outcome.result.value.objective) << ")\n";
   for (const tracker::TreTargetReport& t : tre.targets) {
     const tracker::TreExtreme& w = t.extremes.worst;
     std::cout << "  target " << format_vector(t.target) << ": ";
@@ -149,7 +150,9 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn, int 
     std::cout << "exhaustive over " << r.subsets << " feasible subsets\n\n";
   }
   const design::RandomBaseline& b = r.random_baseline;
-  if (placed.crb || placed.tre) {
+  if (b.trials == 0) {
+    std::cout << "random baseline: none (no feasible random subset drawn)\n";
+  } else if (placed.crb || placed.tre) {
     std::cout << "random baseline: " << b.trials << " feasible subsets, " << b.complete
               << " complete; best objective " << objective_text(placed, b.best_objective)
               << " (coverage " << percent(b.best_coverage) << "), median "

@@ -51,7 +51,8 @@ Json camera_search_number(double value_deg) {
 }
 
 // A camera or tracker search value as the layout file records it: +inf (null) when the choice
-// covers nothing or, for a camera, past the first-order limit (no figure, §22 "Unbounded").
+// is incomplete (the search's +inf) or covers nothing, or, for a camera, past the first-order
+// limit (no figure, §22 "Unbounded").
 double recorded_objective(double value, double coverage, LayoutSensor::Kind kind) {
   const bool unbounded =
       kind == LayoutSensor::Kind::kCamera && value > camera::PoseCrbAt::kMaxRotRmsDeg;
@@ -67,8 +68,11 @@ void record_objective(const design::PlacementResult& result,
     placement->steps[i].objective = recorded_objective(v.objective, v.coverage, kind);
   }
   const design::RandomBaseline& b = result.random_baseline;
-  placement->random_best_objective = recorded_objective(b.best_objective, b.best_coverage, kind);
-  placement->random_median_objective = recorded_objective(b.median_objective, 1.0, kind);
+  if (b.trials > 0) {
+    // The median's incomplete trials are +inf already: no coverage of its own to test.
+    placement->random_best_objective = recorded_objective(b.best_objective, b.best_coverage, kind);
+    placement->random_median_objective = recorded_objective(b.median_objective, 1.0, kind);
+  }
   placement->objective_value = evaluation.value;
 }
 
@@ -122,19 +126,7 @@ Json place_objective_json(const Request& request, const Outcome& outcome) {
                    {"noise_px", c.noise_px},
                    {"samples", c.samples},
                    {"aim", {c.aim->x(), c.aim->y(), c.aim->z()}}};
-  Json crb = {{"status", camera::to_string(map.status)},
-              {"trackable_fraction", map.trackable_fraction},
-              {"unbounded_fraction", map.unbounded_fraction}};
-  if (map.status == camera::PoseCrbMap::Status::kOk) {
-    crb["worst"] = {
-        {"unbounded", map.worst.unbounded},
-        {"rot_rms_deg", report::json_number(map.worst.rot_rms_deg)},
-        {"trans_rms", report::json_number(map.worst.trans_rms)},
-        {"direction", {map.worst.direction.x(), map.worst.direction.y(), map.worst.direction.z()}}};
-    crb["percentiles"] = {
-        {"p50", map.percentiles.p50}, {"p95", map.percentiles.p95}, {"p99", map.percentiles.p99}};
-  }
-  out["crb"] = crb;
+  out["crb"] = sensor_json::crb_json(map, c.distance);
   return out;
 }
 
@@ -204,7 +196,13 @@ PlacedLayout placed_layout(const Request& request, const Layout& sites, int n_ca
   std::optional<LayoutSensor> sensor;
   if (camera)
     sensor = sensor_json::camera_sensor(*camera, *design::parse_crb_statistic(request.statistic));
-  if (tracker) sensor = sensor_json::tracker_sensor(*tracker);
+  if (tracker) {
+    // From the request's FLE, as tracker_objective() made the search's: the same RMS, not the
+    // RMS of the search's isotropic model (which may differ in the last bit).
+    design::TrackerObjective given = *tracker;
+    given.fle = *request.fle;
+    sensor = sensor_json::tracker_sensor(given);
+  }
   design::PlacedLayoutRecord record;
   record.sites = request.source();
   record.n_candidates = n_candidates;
@@ -291,9 +289,9 @@ Json report(const Request& request, const Sites& sites, const Outcome& outcome, 
                             {"best_coverage", r.random_baseline.best_coverage},
                             {"best_pbar_min", r.random_baseline.best_pbar_min},
                             {"median_pbar_min", r.random_baseline.median_pbar_min}};
-  if (outcome.placed.crb || outcome.placed.tre) {
-    // The objective's own values (null: untracked or, for a camera, past the 45 deg limit);
-    // the p-bar_min fields are the affine objective's, 0 here.
+  if ((outcome.placed.crb || outcome.placed.tre) && r.random_baseline.trials > 0) {
+    // The objective's own values (null: no complete choice, or, for a camera, past the 45 deg
+    // limit); the p-bar_min fields are the affine objective's, 0 here.
     const auto value = [&](double v) {
       return outcome.placed.crb ? camera_search_number(v) : report::json_number(v);
     };

@@ -13,12 +13,19 @@ namespace {
 
 Json vector_json(const Eigen::Vector3d& v) { return Json{v.x(), v.y(), v.z()}; }
 
-// A library error on the sensor's settings, named as the file's "sensor" block names them.
-[[noreturn]] void refuse(const InvalidArgument& e) {
-  std::string field = e.field();
-  if (field == "focal_length") field = "focal_px";
-  if (field.rfind("fle.", 0) == 0) field = "fle_sigma";
-  throw e.renamed(field.empty() ? "sensor" : "sensor." + field, std::nullopt);
+// A library error named as the file names it: the camera's and tracker's settings as fields of
+// the "sensor" block, anything else (the layout's own fields) unchanged.
+[[noreturn]] void refuse(const InvalidArgument& e, const LayoutSensor& sensor) {
+  const std::string& field = e.field();
+  if (field == "distance" || field == "noise_px" || field == "samples" || field == "aim") {
+    throw e.renamed("sensor." + field, std::nullopt);
+  }
+  if (field == "focal_length") throw e.renamed("sensor.focal_px", std::nullopt);
+  if (field == "target") throw e.renamed("sensor.targets", e.index());
+  if (field.rfind("fle", 0) == 0) {
+    throw e.renamed(sensor.fle_rms > 0.0 ? "sensor.fle_rms" : "sensor.fle_sigma", std::nullopt);
+  }
+  throw e;
 }
 
 camera::PoseCrbOptions camera_options(const LayoutSensor& s, int threads) {
@@ -37,7 +44,7 @@ void evaluate_camera(const Layout& layout, int threads, Evaluation* out) {
   try {
     out->crb = camera::pose_crb_map(camera::PoseCrbModel(layout, *out->camera));
   } catch (const InvalidArgument& e) {
-    refuse(e);
+    refuse(e, out->sensor);
   }
   out->value = crb_statistic(*out->crb, *design::parse_crb_statistic(out->sensor.statistic));
   out->complete = out->crb->status == camera::PoseCrbMap::Status::kOk;
@@ -50,28 +57,10 @@ void evaluate_tracker(const Layout& layout, int threads, Evaluation* out) {
   try {
     out->tre = tracker::tre_report(layout, out->sensor.targets, options);
   } catch (const InvalidArgument& e) {
-    refuse(e);
+    refuse(e, out->sensor);
   }
   out->value = tre_objective(*out->tre);
   out->complete = std::isfinite(out->value) && tre_certified(*out->tre);
-}
-
-Json camera_json(const Evaluation& e) {
-  const camera::PoseCrbMap& map = *e.crb;
-  Json out = {{"status", camera::to_string(map.status)},
-              {"trackable_fraction", map.trackable_fraction},
-              {"unbounded_fraction", map.unbounded_fraction}};
-  if (map.status == camera::PoseCrbMap::Status::kOk) {
-    out["worst"] = {{"unbounded", map.worst.unbounded},
-                    {"rot_rms_deg", report::json_number(map.worst.rot_rms_deg)},
-                    {"trans_rms", report::json_number(map.worst.trans_rms)},
-                    {"direction", vector_json(map.worst.direction)}};
-    out["percentiles"] = {
-        {"p50", map.percentiles.p50}, {"p95", map.percentiles.p95}, {"p99", map.percentiles.p99}};
-  } else {
-    out["reason"] = camera::untrackable_reason(map, e.sensor.distance);
-  }
-  return out;
 }
 
 Json tracker_json(const Evaluation& e) {
@@ -85,6 +74,23 @@ Json tracker_json(const Evaluation& e) {
 }
 
 }  // namespace
+
+Json crb_json(const camera::PoseCrbMap& map, double distance) {
+  Json out = {{"status", camera::to_string(map.status)},
+              {"trackable_fraction", map.trackable_fraction},
+              {"unbounded_fraction", map.unbounded_fraction}};
+  if (map.status == camera::PoseCrbMap::Status::kOk) {
+    out["worst"] = {{"unbounded", map.worst.unbounded},
+                    {"rot_rms_deg", report::json_number(map.worst.rot_rms_deg)},
+                    {"trans_rms", report::json_number(map.worst.trans_rms)},
+                    {"direction", vector_json(map.worst.direction)}};
+    out["percentiles"] = {
+        {"p50", map.percentiles.p50}, {"p95", map.percentiles.p95}, {"p99", map.percentiles.p99}};
+  } else {
+    out["reason"] = camera::untrackable_reason(map, distance);
+  }
+  return out;
+}
 
 LayoutSensor camera_sensor(const camera::PoseCrbOptions& camera, design::CrbStatistic statistic) {
   LayoutSensor out;
@@ -190,7 +196,7 @@ Json to_json(const Evaluation& e) {
     out["statistic"] = s.statistic;
     out["value_deg"] = report::json_number(e.value);
     out["complete"] = e.complete;
-    out["crb"] = camera_json(e);
+    out["crb"] = crb_json(*e.crb, e.sensor.distance);
     return out;
   }
   out["value"] = report::json_number(e.value);

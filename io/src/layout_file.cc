@@ -61,6 +61,9 @@ Layout parse_layout(std::string_view text, const std::string& source) {
   layout.workspace = internal::read_workspace(root, source);
   layout.placement = internal::read_placement(root, source, layout.entries.cols());
   layout.sensor = internal::read_sensor(root, source);
+  if (layout.sensor && layout.mode != LayoutMode::kPoints) {
+    fail(source, "sensor: a camera or tracker tracks marker points; this layout has \"vectors\"");
+  }
   try {
     layout.validate();
   } catch (const InvalidArgument& e) {

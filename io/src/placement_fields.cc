@@ -42,6 +42,9 @@ void read_random_baseline(const nlohmann::json& b, const std::string& source,
   out->random_trials = static_cast<int>(trials);
   out->random_best_pbar_min = b["best_pbar_min"].get<double>();
   out->random_median_pbar_min = b["median_pbar_min"].get<double>();
+  if (b.contains("best_objective") != b.contains("median_objective")) {
+    fail(source, field + ": give best_objective and median_objective together, or neither");
+  }
   if (b.contains("best_objective")) {
     out->random_best_objective =
         read_objective(b["best_objective"], source, field + ".best_objective");

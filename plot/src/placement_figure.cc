@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "body_drawing.h"
 #include "canvas.h"
@@ -217,10 +218,13 @@ std::string objective_name(const LayoutSensor& sensor) {
 
 std::string objective_text(const LayoutSensor& sensor, double value) {
   if (!std::isfinite(value)) {
-    return sensor.kind == LayoutSensor::Kind::kCamera ? "untracked or unbounded" : "untracked";
+    return sensor.kind == LayoutSensor::Kind::kCamera ? "incomplete or unbounded" : "incomplete";
   }
-  return internal::fixed(value, value < 10.0 ? 3 : 1) +
-         (sensor.kind == LayoutSensor::Kind::kCamera ? "°" : "");
+  // Four significant digits: a TRE in metres is a few 1e-4.
+  std::ostringstream out;
+  out.precision(4);
+  out << value << (sensor.kind == LayoutSensor::Kind::kCamera ? "°" : "");
+  return out.str();
 }
 
 // The objective against K: the greedy steps' search values, the answer and the random baseline

@@ -172,6 +172,7 @@ TEST(PlaceQuadrotorCli, TheCameraObjectiveIsWithinTenPercentOfAnIndependentSearc
     const double of_search = independent_best(sites, markers, score);
     std::cout << "quadrotor K = " << markers << ": place " << placed_score.second
               << " deg, independent search " << of_search << " deg\n";
+    ASSERT_TRUE(std::isfinite(of_search)) << "the independent search found no covering choice";
     EXPECT_LE(placed_score.second, kWithin * of_search);
   }
 }

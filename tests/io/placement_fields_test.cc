@@ -103,6 +103,8 @@ TEST(PlacementFields, ObjectiveValuesSurviveWithASensor) {
   Layout affine = layout;
   affine.sensor.reset();
   EXPECT_EQ(layout_to_json(affine).find("objective_value"), std::string::npos);
+  EXPECT_THAT(error_of(with(text, ", \"median_objective\": null", "")),
+              HasSubstr("give best_objective and median_objective together, or neither"));
   EXPECT_THAT(error_of(with(text, "\"objective_value\": 2.5", "\"objective_value\": -1")),
               HasSubstr("placement.objective_value: expected a finite number >= 0, or null"));
 }

@@ -102,6 +102,9 @@ TEST(SensorFields, BadBlocksNameTheirField) {
               HasSubstr("sensor.targets"));
   EXPECT_THAT(error_of(with(kTracker, "{\"type\": \"tracker\", ", "{")),
               HasSubstr("sensor.type: required"));
+  EXPECT_THAT(error_of(R"({"vectors": [[1, 0, 0], [0, 1, 0], [0, 0, 1]],
+                          "sensor": {"type": "tracker", "targets": [[0, 0, 1]], "fle_rms": 0.2}})"),
+              HasSubstr("sensor: a camera or tracker tracks marker points"));
 }
 
 }  // namespace

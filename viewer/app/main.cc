@@ -13,6 +13,7 @@
 #include <iostream>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "vantage/analysis/common.h"
 #include "vantage/io/layout_formats.h"
@@ -59,6 +60,7 @@ struct ViewerArgs {
   std::string pin;
   int place = 0;
   vantage::viewer::PlaceSettings place_settings;
+  std::vector<double> target{0.0, 0.0, 0.0};  // --target, into place_settings.target
   WindowOptions window;
 };
 
@@ -95,6 +97,12 @@ void add_viewer_options(CLI::App& cli, ViewerArgs* args) {
   cli.add_option("--distance", s.distance, "with --place --objective camera: layout units");
   cli.add_option("--focal", s.focal, "with --place --objective camera: pixels");
   cli.add_option("--noise-px", s.noise_px, "with --place --objective camera: pixels");
+  cli.add_option("--target", args->target,
+                 "with --place --objective tracker: the target X,Y,Z (layout frame)")
+      ->delimiter(',')
+      ->expected(3);
+  cli.add_option("--fle-rms", s.fle_rms,
+                 "with --place --objective tracker: the isotropic FLE's RMS (layout units)");
   cli.add_option("--marker-diameter", s.marker_diameter,
                  "with --place: spheres of this diameter on the surface");
   cli.add_option("--min-separation", s.min_separation, "with --place: layout units");
@@ -150,6 +158,7 @@ int main(int argc, char** argv) {
   if (!args.pin.empty()) session.pinned_viewpoint = pinned;
   if (args.place > 0) {
     args.place_settings.markers = args.place;
+    args.place_settings.target = Eigen::Vector3d(args.target[0], args.target[1], args.target[2]);
     if (!session.place_markers(args.place_settings)) {
       std::cerr << "vantage-viewer: --place: " << session.message() << "\n";
       return 2;

@@ -21,11 +21,11 @@ namespace {
 constexpr int kMaxMarkers = 200;
 constexpr int kMaxCandidates = 20000;  // as `vantage place --candidates`
 
-// A search value of the camera or tracker objective: degrees or layout units, "untracked" when
-// nothing is tracked, and no figure past the camera's first-order limit (docs/math.md §22,
-// "Unbounded").
+// A search value of the camera or tracker objective: degrees or layout units, "incomplete" for
+// a choice below the least coverage, and no figure past the camera's first-order limit
+// (docs/math.md §22, "Unbounded").
 std::string search_value(double value, const std::string& objective) {
-  if (!std::isfinite(value)) return "untracked";
+  if (!std::isfinite(value)) return "incomplete";
   char text[48];
   if (objective == "camera") {
     if (value > camera::PoseCrbAt::kMaxRotRmsDeg) return "unbounded";
@@ -127,6 +127,9 @@ void outcome_summary(const PlaceOutcome& out) {
   objective_line(out);
   const std::string& objective = out.settings.objective;
   const design::RandomBaseline& b = r.random_baseline;
+  if (b.trials == 0) {
+    ImGui::TextDisabled("random baseline: none (no feasible random subset drawn)");
+  }
   if (objective == "affine") {
     ImGui::Text("certified p\u0304_min %.6f, coverage %.2f %%", r.value.pbar_min,
                 100.0 * r.value.coverage);
@@ -143,9 +146,11 @@ void outcome_summary(const PlaceOutcome& out) {
                          search_value(r.robust->objective, objective).c_str(),
                          100.0 * r.robust->coverage);
     }
-    ImGui::TextWrapped("random baseline (%d trials, %d complete): best %s, median %s", b.trials,
-                       b.complete, search_value(b.best_objective, objective).c_str(),
-                       search_value(b.median_objective, objective).c_str());
+    if (b.trials > 0) {
+      ImGui::TextWrapped("random baseline (%d trials, %d complete): best %s, median %s", b.trials,
+                         b.complete, search_value(b.best_objective, objective).c_str(),
+                         search_value(b.median_objective, objective).c_str());
+    }
   }
   steps_table(r, objective);
 }

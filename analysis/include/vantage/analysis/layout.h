@@ -46,8 +46,8 @@ struct LayoutPlacement {
     double pbar_min = 0.0;
     double coverage = 0.0;
     /// The camera or tracker objective's search value (degrees; layout units): +inf when the
-    /// choice tracks nothing (or, for a camera, past the first-order limit); NaN when not
-    /// recorded (the affine objective).
+    /// choice is incomplete (below the least coverage) or, for a camera, past the first-order
+    /// limit; NaN when not recorded (the affine objective).
     double objective = std::numeric_limits<double>::quiet_NaN();
   };
   std::vector<Step> steps;  ///< the greedy construction (empty when searched exhaustively)
@@ -57,7 +57,8 @@ struct LayoutPlacement {
   double random_best_pbar_min = 0.0;
   double random_median_pbar_min = 0.0;
   /// With a camera or tracker objective: the best and median objective of the random subsets
-  /// and the written layout's objective value (as Step::objective: +inf none, NaN not recorded).
+  /// and the written layout's objective value (as Step::objective: +inf none, NaN not recorded;
+  /// the baseline's are NaN when no trial was drawn).
   double random_best_objective = std::numeric_limits<double>::quiet_NaN();
   double random_median_objective = std::numeric_limits<double>::quiet_NaN();
   double objective_value = std::numeric_limits<double>::quiet_NaN();

@@ -60,6 +60,11 @@ double crb_statistic(const camera::PoseCrbMap& map, design::CrbStatistic statist
 double tre_objective(const tracker::TreReport& report);
 bool tre_certified(const tracker::TreReport& report);
 
+/// The camera's map in brief: status, trackable and unbounded fractions, and the worst
+/// direction and percentiles when trackable (otherwise why not): `place --json`'s
+/// objective.crb and analyze's sensor.crb.
+Json crb_json(const camera::PoseCrbMap& map, double distance);
+
 /// `vantage analyze --json`'s "sensor": the settings, the words, "value_deg" (camera) or
 /// "value" (tracker, layout units; null when +inf), complete, and the camera's worst direction
 /// and percentiles or the tracker's worst per target.
