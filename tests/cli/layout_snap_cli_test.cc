@@ -31,22 +31,6 @@ constexpr const char* kNearCube =
     R"({"points": [[0.53, 0.1, 0.2], [0.1, 0.47, -0.2], [-0.2, 0.1, 0.52], [0.3, -0.2, 0.49]],
         "names": ["m1", "m2", "m3", "m4"]})";
 
-std::string cube_obj() {
-  const Mesh cube = testing::unit_cube();
-  std::string out;
-  for (Eigen::Index v = 0; v < cube.vertices.cols(); ++v) {
-    out += "v";
-    for (int axis = 0; axis < 3; ++axis) out += " " + std::to_string(cube.vertices(axis, v) - 0.5);
-    out += "\n";
-  }
-  for (Eigen::Index k = 0; k < cube.triangles.cols(); ++k) {
-    out += "f " + std::to_string(cube.triangles(0, k) + 1) + " " +
-           std::to_string(cube.triangles(1, k) + 1) + " " +
-           std::to_string(cube.triangles(2, k) + 1) + "\n";
-  }
-  return out;
-}
-
 void expect_vector(const nlohmann::json& got, const Eigen::Vector3d& want,
                    const std::string& what) {
   ASSERT_EQ(got.size(), 3u) << what;
@@ -55,7 +39,7 @@ void expect_vector(const nlohmann::json& got, const Eigen::Vector3d& want,
 
 TEST(LayoutSnapCli, MarkersGoToTheNearestFaceWithItsOutwardNormal) {
   ScratchDir scratch;
-  scratch.write("cube.obj", cube_obj());
+  scratch.write("cube.obj", testing::obj_text(testing::centred_unit_cube()));
   scratch.write("near.json", kNearCube);
   std::filesystem::create_directory(scratch.dir() / "out");
   const nlohmann::json json = run_json(
@@ -96,7 +80,7 @@ TEST(LayoutSnapCli, MarkersGoToTheNearestFaceWithItsOutwardNormal) {
 
 TEST(LayoutSnapCli, AMarkerFarFromTheBodyIsNamedInOneWarning) {
   ScratchDir scratch;
-  scratch.write("cube.obj", cube_obj());
+  scratch.write("cube.obj", testing::obj_text(testing::centred_unit_cube()));
   std::string layout = kNearCube;
   layout.replace(layout.find("0.53, 0.1, 0.2"), 14, "3.00, 0.1, 0.2");
   scratch.write("far.json", layout);
@@ -123,13 +107,13 @@ TEST(LayoutSnapCli, BadInputIsOneLineAndNothingIsWritten) {
   for (const BadCall& call : calls) {
     SCOPED_TRACE(call.name);
     ScratchDir scratch;
-    scratch.write("cube.obj", cube_obj());
+    scratch.write("cube.obj", testing::obj_text(testing::centred_unit_cube()));
     testing::run_bad_call("layout snap", call, scratch);
     EXPECT_FALSE(std::filesystem::exists(scratch.path("s.json")));
     EXPECT_FALSE(std::filesystem::exists(scratch.path("s.csv")));
   }
   ScratchDir scratch;
-  scratch.write("cube.obj", cube_obj());
+  scratch.write("cube.obj", testing::obj_text(testing::centred_unit_cube()));
   scratch.write("in.json", kNearCube);
   scratch.write("s.json", "keep me");
   testing::expect_bad_input(

@@ -26,29 +26,9 @@ constexpr const char* kOnCube =
         "normals": [[1, 0, 0], [0, 1, 0], [0, 0, 1], [0, 0, 1]],
         "visibility": {"cone_half_angle_deg": 80, "body": "cube.obj"}})";
 
-/// The cube [-0.5, 0.5]^3 as an OBJ, without triangle `missing` and with triangle `flipped`
-/// wound the other way (-1: none).
-std::string cube_obj(int missing = -1, int flipped = -1) {
-  const Mesh cube = testing::unit_cube();
-  std::string out;
-  for (Eigen::Index v = 0; v < cube.vertices.cols(); ++v) {
-    out += "v";
-    for (int axis = 0; axis < 3; ++axis) out += " " + std::to_string(cube.vertices(axis, v) - 0.5);
-    out += "\n";
-  }
-  for (int k = 0; k < cube.triangles.cols(); ++k) {
-    if (k == missing) continue;
-    Eigen::Vector3i t = cube.triangles.col(k);
-    if (k == flipped) std::swap(t(1), t(2));
-    out += "f " + std::to_string(t(0) + 1) + " " + std::to_string(t(1) + 1) + " " +
-           std::to_string(t(2) + 1) + "\n";
-  }
-  return out;
-}
-
 TEST(MeshCli, ClosedBodyGetsItsMeshObjectAndNoWarning) {
   ScratchDir scratch;
-  scratch.write("cube.obj", cube_obj());
+  scratch.write("cube.obj", testing::obj_text(testing::centred_unit_cube()));
   scratch.write("on_cube.json", kOnCube);
   const nlohmann::json json = testing::run_json("analyze on_cube.json", scratch);
   ASSERT_TRUE(json.contains("mesh"));
@@ -75,7 +55,8 @@ TEST(MeshCli, LayoutWithoutBodyHasNoMeshObject) {
 
 TEST(MeshCli, OpenAndMiswoundBodyGivesOneWarningLine) {
   ScratchDir scratch;
-  scratch.write("cube.obj", cube_obj(/*missing=*/0, /*flipped=*/5));
+  scratch.write("cube.obj",
+                testing::obj_text(testing::centred_unit_cube(), /*missing=*/0, /*flipped=*/5));
   scratch.write("on_cube.json", kOnCube);
   for (const char* json : {"", " --json"}) {
     const CliRun run = run_vantage(std::string("analyze on_cube.json") + json, scratch);

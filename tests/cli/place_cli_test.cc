@@ -101,21 +101,6 @@ TEST(PlaceCli, SatelliteWritesALayoutThatAnalysesToTheReportedNumbers) {
   EXPECT_THAT(csv, HasSubstr("answer,6,"));
 }
 
-// The unit cube [0, 1]^3 as an OBJ file.
-std::string cube_obj() {
-  const Mesh cube = testing::unit_cube();
-  std::ostringstream obj;
-  for (Eigen::Index v = 0; v < cube.vertices.cols(); ++v) {
-    obj << "v " << cube.vertices(0, v) << " " << cube.vertices(1, v) << " " << cube.vertices(2, v)
-        << "\n";
-  }
-  for (Eigen::Index t = 0; t < cube.triangles.cols(); ++t) {
-    obj << "f " << cube.triangles(0, t) + 1 << " " << cube.triangles(1, t) + 1 << " "
-        << cube.triangles(2, t) + 1 << "\n";
-  }
-  return obj.str();
-}
-
 Eigen::Vector3d vector_of(const nlohmann::json& xyz) {
   return {xyz[0].get<double>(), xyz[1].get<double>(), xyz[2].get<double>()};
 }
@@ -127,7 +112,7 @@ TEST(PlaceCli, MarkerDiameterPutsSphereCentresOffTheSurface) {
   constexpr double kDiameter = 0.1;
   constexpr double kOnFace = 1e-12;
   ScratchDir scratch;
-  scratch.write("cube.obj", cube_obj());
+  scratch.write("cube.obj", testing::obj_text(testing::unit_cube()));
   const nlohmann::json json = testing::run_json(
       "place cube.obj --markers 5 --candidates 80 --marker-diameter 0.1 --workspace 0,0,1,60 "
       "--random-trials 20 --out c.json",

@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "support/message_of.h"
 #include "vantage/analysis/common.h"
 #include "vantage/io/layout_file.h"
 
@@ -25,12 +26,7 @@ constexpr const char* kTracker = R"({
 })";
 
 std::string error_of(const std::string& text) {
-  try {
-    parse_layout(text, "placed.json");
-  } catch (const InvalidArgument& e) {
-    return e.what();
-  }
-  return "no exception";
+  return testing::message_of([&] { parse_layout(text, "placed.json"); });
 }
 
 std::string with(const std::string& text, const std::string& from, const std::string& to) {
