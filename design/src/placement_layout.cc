@@ -32,12 +32,17 @@ Layout surface_sites_layout(const SurfaceSites& sites, const Mesh& body,
   return layout;
 }
 
-Layout sphere_centres(Layout sites, double diameter) {
-  if (!sites.visibility) throw InvalidArgument("sites", "the sites need normals");
+Eigen::Matrix3Xd sphere_centres(const Eigen::Matrix3Xd& points, const Eigen::Matrix3Xd& normals,
+                                double diameter) {
   if (!(diameter >= 0.0) || !std::isfinite(diameter)) {
     throw InvalidArgument("marker_diameter", "must be a finite number >= 0");
   }
-  sites.entries += 0.5 * diameter * sites.visibility->normals;
+  return points + 0.5 * diameter * normals;
+}
+
+Layout sphere_centres(Layout sites, double diameter) {
+  if (!sites.visibility) throw InvalidArgument("sites", "the sites need normals");
+  sites.entries = sphere_centres(sites.entries, sites.visibility->normals, diameter);
   return sites;
 }
 

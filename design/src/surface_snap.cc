@@ -2,20 +2,17 @@
 
 #include "vantage/design/surface_snap.h"
 
-#include <cmath>
 #include <string>
 #include <utility>
 
 #include "vantage/analysis/common.h"
+#include "vantage/design/placement_layout.h"
 #include "vantage/design/site_filters.h"
 
 namespace vantage::design {
 
 SurfaceSnap snap_to_surface(const Mesh& body, const Eigen::Matrix3Xd& points, double diameter) {
   body.validate();
-  if (!(diameter >= 0.0) || !std::isfinite(diameter)) {
-    throw InvalidArgument("marker_diameter", "must be a finite number >= 0");
-  }
   const Eigen::Index n = points.cols();
   SurfaceSnap snap;
   snap.surface.resize(3, n);
@@ -29,7 +26,7 @@ SurfaceSnap snap_to_surface(const Mesh& body, const Eigen::Matrix3Xd& points, do
     wound.col(i) = nearest.normal;
   }
   snap.normals = outward_normals(body, snap.surface, wound);
-  snap.centres = snap.surface + 0.5 * diameter * snap.normals;
+  snap.centres = sphere_centres(snap.surface, snap.normals, diameter);
   snap.moved = (snap.centres - points).colwise().norm().transpose();
   return snap;
 }

@@ -1,6 +1,5 @@
 #include "vantage/viewer/body_placement.h"
 
-#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <utility>
@@ -52,9 +51,8 @@ Layout body_sites(const Layout& layout, const PlaceSettings& settings) {
     throw InvalidArgument("body", "the layout has no body mesh to place markers on");
   }
   const MarkerVisibility& v = *layout.visibility;
-  const double separation = std::max(settings.min_separation, settings.marker_diameter);
-  const design::SurfaceSites sampled =
-      design::sample_surface_sites(*v.body, settings.candidates, separation, settings.seed);
+  const design::SurfaceSites sampled = design::sample_surface_sites(
+      *v.body, settings.candidates, place_request(layout, settings).separation(), settings.seed);
   const double cone = v.cone_half_angle_deg.size() > 0 ? v.cone_half_angle_deg(0)
                                                        : MarkerVisibility::kDefaultConeDeg;
   Layout sites = design::surface_sites_layout(sampled, *v.body, v.body_path, cone);

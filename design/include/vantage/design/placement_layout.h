@@ -32,9 +32,14 @@ struct PlacedLayoutRecord {
   double marker_diameter = 0.0;  ///< the spheres' diameter (0: point markers)
 };
 
-/// The sites (points on a surface with outward unit normals) moved to the centres of spheres of
-/// `diameter` resting on it: each point diameter / 2 along its normal (docs/math.md §21,
-/// "Physical markers"). Visibility and occlusion are then those of the centres.
+/// The centres of spheres of `diameter` resting on a surface at `points` with outward unit
+/// `normals`: each point diameter / 2 along its normal (docs/math.md §21, "Physical markers").
+/// Throws InvalidArgument "marker_diameter" unless it is finite and >= 0.
+Eigen::Matrix3Xd sphere_centres(const Eigen::Matrix3Xd& points, const Eigen::Matrix3Xd& normals,
+                                double diameter);
+
+/// The sites (points on a surface with outward unit normals) moved to the sphere centres above.
+/// Visibility and occlusion are then those of the centres.
 Layout sphere_centres(Layout sites, double diameter);
 
 /// The layout of result.chosen (in index order) on the sites' body, named "<sites' name>
