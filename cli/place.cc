@@ -129,6 +129,9 @@ Command add_place_command(CLI::App& root) {
       ->capture_default_str();
   sub->add_option("--distance", args->distance,
                   "camera objective: distance of the camera from the aim point, layout units");
+  sub->add_option("--distances", args->distances_text,
+                  "camera objective: D1,D2,... an approach instead of --distance: the largest "
+                  "over these distances of the statistic");
   sub->add_option("--focal", args->focal, "camera objective: focal length, pixels");
   sub->add_option("--noise-px", args->noise_px,
                   "camera objective: pixel noise per coordinate, pixels");
@@ -160,6 +163,14 @@ Command add_place_command(CLI::App& root) {
   return {sub, [args, candidates] {
             args->candidates_given = candidates->count() > 0;
             if (!args->aim_text.empty()) args->aim = commands::parse_point(args->aim_text, "--aim");
+            if (!args->distances_text.empty()) {
+              const std::optional<std::vector<double>> distances =
+                  commands::parse_numbers(args->distances_text);
+              if (!distances) {
+                throw InvalidArgument("--distances", "expected comma-separated numbers D1,D2,...");
+              }
+              args->distances = *distances;
+            }
             if (!args->tre.targets.empty()) args->targets = args->tre.parsed_targets();
             if (args->tre.fle_rms || !args->tre.fle_sigma.empty()) {
               args->fle = args->tre.parsed_fle();

@@ -37,10 +37,22 @@ std::string objective_text(const place_json::PlacedLayout& placed, double value)
 void print_camera_objective(const PlaceArgs& args, const place_json::Outcome& outcome) {
   const camera::PoseCrbMap& map = *outcome.placed.crb;
   const camera::PoseCrbOptions& c = *outcome.placed.camera;
+  const std::vector<sensor_json::ApproachStep>& approach = outcome.placed.sensor->approach;
   std::cout << "\nthe camera objective (the placed layout's vantage crb --distance "
-            << format_number(c.distance, 9) << " --focal " << format_number(c.focal_length, 9)
-            << " --noise-px " << format_number(c.noise_px, 9) << " --samples " << c.samples
-            << " --aim " << aim_option(*c.aim) << "):\n";
+            << (approach.empty() ? format_number(c.distance, 9) : std::string("D")) << " --focal "
+            << format_number(c.focal_length, 9) << " --noise-px " << format_number(c.noise_px, 9)
+            << " --samples " << c.samples << " --aim " << aim_option(*c.aim) << "):\n";
+  if (!approach.empty()) {
+    // The approach: each distance's statistic; the largest decides and is detailed below.
+    for (const sensor_json::ApproachStep& step : approach) {
+      std::cout << "  D " << format_number(step.distance, 9) << ": " << args.statistic
+                << " rot_rms "
+                << (std::isfinite(step.value) ? objective_text(outcome.placed, step.value)
+                                              : std::string("not trackable"))
+                << (step.distance == c.distance ? "  (decides)" : "") << "\n";
+    }
+    std::cout << "  at D " << format_number(c.distance, 9) << ":\n";
+  }
   if (map.status != camera::PoseCrbMap::Status::kOk) {
     std::cout << "  not trackable: " << camera::untrackable_reason(map, c.distance) << "\n";
     return;

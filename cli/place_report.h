@@ -16,6 +16,7 @@ struct PlaceArgs : place_json::Request {
   LayoutInput input;     ///< --format of --sites and the visibility options
   TreTargetArgs tre;     ///< the tracker objective's --target, --fle-rms and --fle-sigma as typed
   std::string aim_text;  ///< --aim as typed
+  std::string distances_text;  ///< --distances as typed
   bool json = false;
   bool quiet = false;
 };

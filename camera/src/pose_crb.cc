@@ -211,6 +211,8 @@ Eigen::MatrixXd PoseCrbModel::jacobian(const Eigen::Vector3d& a, double distance
   return J;
 }
 
+void PoseCrbModel::check_distance(double distance) const { impl_->check_distance(distance); }
+
 PoseCrbAt PoseCrbModel::at(const Eigen::Vector3d& a) const {
   return at(a, impl_->options.distance);
 }

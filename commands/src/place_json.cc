@@ -121,11 +121,20 @@ Json place_objective_json(const Request& request, const Outcome& outcome) {
   const camera::PoseCrbMap& map = *outcome.placed.crb;
   out["statistic"] = request.statistic;
   out["search_value_deg"] = camera_search_number(r.value.objective);
-  out["camera"] = {{"distance", c.distance},
-                   {"focal_px", c.focal_length},
-                   {"noise_px", c.noise_px},
-                   {"samples", c.samples},
-                   {"aim", {c.aim->x(), c.aim->y(), c.aim->z()}}};
+  const std::vector<sensor_json::ApproachStep>& approach = outcome.placed.sensor->approach;
+  if (approach.empty()) {
+    out["camera"] = {{"distance", c.distance}};
+  } else {
+    out["camera"] = {{"distances", outcome.placed.layout.sensor->distances}};
+  }
+  out["camera"]["focal_px"] = c.focal_length;
+  out["camera"]["noise_px"] = c.noise_px;
+  out["camera"]["samples"] = c.samples;
+  out["camera"]["aim"] = {c.aim->x(), c.aim->y(), c.aim->z()};
+  if (!approach.empty()) {
+    out["approach"] = sensor_json::approach_json(approach);
+    out["deciding_distance"] = c.distance;
+  }
   out["crb"] = sensor_json::crb_json(map, c.distance);
   return out;
 }
@@ -162,14 +171,14 @@ Outcome place(const Request& request, const Sites& sites,
     if (options.tracker) check_tracker_range(request, problem.sites.points);
     out.result = design::place_markers(problem, options);
   } catch (const InvalidArgument& e) {
-    if (e.field() == "distance") place_refuse("--distance", e.what());
+    if (e.field() == "distance") {
+      place_refuse(request.distances.empty() ? "--distance" : "--distances", e.what());
+    }
     place_refuse(e.field() == "min_separation" ? "--min-separation" : "--markers", e.what());
   }
   if (progress) progress("final analysis");
-  std::optional<camera::PoseCrbOptions> camera;
-  if (options.camera) camera = options.camera->crb;
-  out.placed =
-      placed_layout(request, sites.layout, sites.n_candidates, out.result, camera, options.tracker);
+  out.placed = placed_layout(request, sites.layout, sites.n_candidates, out.result, options.camera,
+                             options.tracker);
   const bool covered = out.result.status == design::PlacementResult::Status::kComplete;
   if (out.placed.sensor) {
     out.objective_value = out.placed.sensor->value;
@@ -187,15 +196,14 @@ Outcome place(const Request& request, const Sites& sites,
 
 PlacedLayout placed_layout(const Request& request, const Layout& sites, int n_candidates,
                            const design::PlacementResult& result,
-                           const std::optional<camera::PoseCrbOptions>& camera,
+                           const std::optional<design::CameraObjective>& camera,
                            const std::optional<design::TrackerObjective>& tracker) {
   PlacedLayout out;
   for (Eigen::Index i = 0; i < sites.entries.cols(); ++i) {
     out.site_names.push_back(design::site_name(sites, static_cast<int>(i)));
   }
   std::optional<LayoutSensor> sensor;
-  if (camera)
-    sensor = sensor_json::camera_sensor(*camera, *design::parse_crb_statistic(request.statistic));
+  if (camera) sensor = sensor_json::camera_sensor(*camera);
   if (tracker) {
     // From the request's FLE, as tracker_objective() made the search's: the same RMS, not the
     // RMS of the search's isotropic model (which may differ in the last bit).

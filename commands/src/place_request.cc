@@ -29,8 +29,21 @@ void check_positive(double value, const char* option) {
   }
 }
 
+void check_distances(const Request& request) {
+  if (request.distances.empty()) {
+    check_positive(request.distance, "--distance");
+    return;
+  }
+  if (request.distance != 0.0) place_refuse("--distances", "goes without --distance");
+  if (request.distances.size() > static_cast<std::size_t>(LayoutSensor::kMaxDistances)) {
+    place_refuse("--distances", "at most " + std::to_string(LayoutSensor::kMaxDistances) +
+                                    " distances, got " + std::to_string(request.distances.size()));
+  }
+  for (double d : request.distances) check_positive(d, "--distances");
+}
+
 void check_camera(const Request& request) {
-  check_positive(request.distance, "--distance");
+  check_distances(request);
   check_positive(request.focal, "--focal");
   check_positive(request.noise_px, "--noise-px");
   if (!design::parse_crb_statistic(request.statistic)) {
@@ -79,6 +92,7 @@ void check_objective(const Request& request) {
   if (tracker) check_tracker(request);
   const std::pair<bool, const char*> camera_only[] = {
       {request.distance != 0.0, "--distance"},
+      {!request.distances.empty(), "--distances"},
       {request.focal != 0.0, "--focal"},
       {request.noise_px != 0.0, "--noise-px"},
       {request.statistic != "worst", "--statistic"},
@@ -124,7 +138,8 @@ std::optional<design::CameraObjective> camera_objective(const Request& request,
   design::CameraObjective out;
   out.sites = sites;
   out.statistic = *design::parse_crb_statistic(request.statistic);
-  out.crb.distance = request.distance;
+  out.crb.distance = request.distances.empty() ? request.distance : request.distances.front();
+  out.distances = request.distances;
   out.crb.focal_length = request.focal;
   out.crb.noise_px = request.noise_px;
   out.crb.samples = request.crb_samples;

@@ -17,6 +17,9 @@ Json vector_json(const Eigen::Vector3d& v) { return Json{v.x(), v.y(), v.z()}; }
 // the "sensor" block, anything else (the layout's own fields) unchanged.
 [[noreturn]] void refuse(const InvalidArgument& e, const LayoutSensor& sensor) {
   const std::string& field = e.field();
+  if (field == "distance" && sensor.distances.size() > 1) {
+    throw e.renamed("sensor.distances", std::nullopt);
+  }
   if (field == "distance" || field == "noise_px" || field == "samples" || field == "aim") {
     throw e.renamed("sensor." + field, std::nullopt);
   }
@@ -30,7 +33,7 @@ Json vector_json(const Eigen::Vector3d& v) { return Json{v.x(), v.y(), v.z()}; }
 
 camera::PoseCrbOptions camera_options(const LayoutSensor& s, int threads) {
   camera::PoseCrbOptions out;
-  out.distance = s.distance;
+  out.distance = s.distances.front();
   out.focal_length = s.focal_px;
   out.noise_px = s.noise_px;
   out.samples = s.samples;
@@ -39,15 +42,35 @@ camera::PoseCrbOptions camera_options(const LayoutSensor& s, int threads) {
   return out;
 }
 
+// The map at each distance; the value and the map shown are those of the distance that decides
+// (the largest statistic, the first of equals; +inf: the first not trackable).
 void evaluate_camera(const Layout& layout, int threads, Evaluation* out) {
   out->camera = camera_options(out->sensor, threads);
+  const design::CrbStatistic statistic = *design::parse_crb_statistic(out->sensor.statistic);
+  std::vector<ApproachStep> steps;
   try {
-    out->crb = camera::pose_crb_map(camera::PoseCrbModel(layout, *out->camera));
+    const camera::PoseCrbModel model(layout, *out->camera);
+    for (double distance : out->sensor.distances) {
+      ApproachStep step;
+      step.distance = distance;
+      step.map = camera::pose_crb_map(model, distance);
+      step.value = crb_statistic(step.map, statistic);
+      steps.push_back(std::move(step));
+    }
   } catch (const InvalidArgument& e) {
     refuse(e, out->sensor);
   }
-  out->value = crb_statistic(*out->crb, *design::parse_crb_statistic(out->sensor.statistic));
-  out->complete = out->crb->status == camera::PoseCrbMap::Status::kOk;
+  std::size_t deciding = 0;
+  for (std::size_t k = 1; k < steps.size(); ++k) {
+    if (steps[k].value > steps[deciding].value) deciding = k;
+  }
+  out->camera->distance = steps[deciding].distance;
+  out->crb = steps[deciding].map;
+  out->value = steps[deciding].value;
+  out->complete = std::all_of(steps.begin(), steps.end(), [](const ApproachStep& step) {
+    return step.map.status == camera::PoseCrbMap::Status::kOk;
+  });
+  if (steps.size() > 1) out->approach = std::move(steps);
 }
 
 void evaluate_tracker(const Layout& layout, int threads, Evaluation* out) {
@@ -73,7 +96,39 @@ Json tracker_json(const Evaluation& e) {
   return targets;
 }
 
+// A camera map in one line (without the newline).
+std::string map_text(const camera::PoseCrbMap& map, const std::string& statistic, double value,
+                     double distance) {
+  std::ostringstream out;
+  out.precision(6);
+  if (map.status != camera::PoseCrbMap::Status::kOk) {
+    out << "not trackable: " << camera::untrackable_reason(map, distance);
+    return out.str();
+  }
+  if (statistic != "worst") out << statistic << " rot_rms " << value << " deg; ";
+  if (map.worst.unbounded) {
+    // Past the first-order limit: no figure (docs/math.md §22, "Unbounded").
+    out << "worst rot_rms unbounded (the first-order bound means nothing there)";
+  } else {
+    out << "worst rot_rms " << map.worst.rot_rms_deg << " deg (trans_rms " << map.worst.trans_rms
+        << ")";
+  }
+  out << ", median " << map.percentiles.p50 << " deg, trackable " << 100.0 * map.trackable_fraction
+      << " % of the workspace";
+  return out.str();
+}
+
 }  // namespace
+
+Json approach_json(const std::vector<ApproachStep>& approach) {
+  Json out = Json::array();
+  for (const ApproachStep& step : approach) {
+    out.push_back({{"distance", step.distance},
+                   {"value_deg", report::json_number(step.value)},
+                   {"crb", crb_json(step.map, step.distance)}});
+  }
+  return out;
+}
 
 Json crb_json(const camera::PoseCrbMap& map, double distance) {
   Json out = {{"status", camera::to_string(map.status)},
@@ -92,15 +147,15 @@ Json crb_json(const camera::PoseCrbMap& map, double distance) {
   return out;
 }
 
-LayoutSensor camera_sensor(const camera::PoseCrbOptions& camera, design::CrbStatistic statistic) {
+LayoutSensor camera_sensor(const design::CameraObjective& camera) {
   LayoutSensor out;
   out.kind = LayoutSensor::Kind::kCamera;
-  out.distance = camera.distance;
-  out.focal_px = camera.focal_length;
-  out.noise_px = camera.noise_px;
-  out.samples = camera.samples;
-  out.aim = camera.aim.value_or(Eigen::Vector3d::Zero());
-  out.statistic = design::to_string(statistic);
+  out.distances = camera.sample_distances();
+  out.focal_px = camera.crb.focal_length;
+  out.noise_px = camera.crb.noise_px;
+  out.samples = camera.crb.samples;
+  out.aim = camera.crb.aim.value_or(Eigen::Vector3d::Zero());
+  out.statistic = design::to_string(camera.statistic);
   return out;
 }
 
@@ -129,9 +184,22 @@ std::string words(const LayoutSensor& s) {
   std::ostringstream out;
   out.precision(17);
   if (s.kind == LayoutSensor::Kind::kCamera) {
-    out << "camera: the " << s.statistic << " rot_rms over the workspace of vantage crb --distance "
-        << s.distance << " --focal " << s.focal_px << " --noise-px " << s.noise_px << " --samples "
-        << s.samples << " --aim " << s.aim.x() << "," << s.aim.y() << "," << s.aim.z();
+    out << "camera: ";
+    if (s.distances.size() > 1) {
+      out << "the largest, over the approach's distances D = ";
+      for (std::size_t k = 0; k < s.distances.size(); ++k) {
+        out << (k > 0 ? ", " : "") << s.distances[k];
+      }
+      out << ", of ";
+    }
+    out << "the " << s.statistic << " rot_rms over the workspace of vantage crb --distance ";
+    if (s.distances.size() > 1) {
+      out << "D";
+    } else {
+      out << s.distances.front();
+    }
+    out << " --focal " << s.focal_px << " --noise-px " << s.noise_px << " --samples " << s.samples
+        << " --aim " << s.aim.x() << "," << s.aim.y() << "," << s.aim.z();
     return out.str();
   }
   out << "tracker: the largest worst.rms_bound over the targets of vantage tre";
@@ -196,7 +264,8 @@ Json to_json(const Evaluation& e) {
     out["statistic"] = s.statistic;
     out["value_deg"] = report::json_number(e.value);
     out["complete"] = e.complete;
-    out["crb"] = crb_json(*e.crb, e.sensor.distance);
+    if (!e.approach.empty()) out["approach"] = approach_json(e.approach);
+    out["crb"] = crb_json(*e.crb, e.camera->distance);
     return out;
   }
   out["value"] = report::json_number(e.value);
@@ -210,24 +279,15 @@ std::string to_text(const Evaluation& e) {
   out.precision(6);
   out << "\nsensor (the layout's \"sensor\" block): " << words(e.sensor) << "\n";
   if (e.sensor.kind == LayoutSensor::Kind::kCamera) {
-    const camera::PoseCrbMap& map = *e.crb;
-    if (map.status != camera::PoseCrbMap::Status::kOk) {
-      out << "  not trackable: " << camera::untrackable_reason(map, e.sensor.distance) << "\n";
+    if (e.approach.empty()) {
+      out << "  " << map_text(*e.crb, e.sensor.statistic, e.value, e.camera->distance) << "\n";
       return out.str();
     }
-    out << "  ";
-    if (e.sensor.statistic != "worst") {
-      out << e.sensor.statistic << " rot_rms " << e.value << " deg; ";
+    for (const ApproachStep& step : e.approach) {
+      out << "  D " << step.distance << ": "
+          << map_text(step.map, e.sensor.statistic, step.value, step.distance)
+          << (step.distance == e.camera->distance ? " (decides)" : "") << "\n";
     }
-    if (map.worst.unbounded) {
-      // Past the first-order limit: no figure (docs/math.md §22, "Unbounded").
-      out << "worst rot_rms unbounded (the first-order bound means nothing there)";
-    } else {
-      out << "worst rot_rms " << map.worst.rot_rms_deg << " deg (trans_rms " << map.worst.trans_rms
-          << ")";
-    }
-    out << ", median " << map.percentiles.p50 << " deg, trackable "
-        << 100.0 * map.trackable_fraction << " % of the workspace\n";
     return out.str();
   }
   if (!std::isfinite(e.value)) {

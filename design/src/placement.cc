@@ -149,6 +149,17 @@ bool PlaceOptions::is_valid(std::string* why) const {
       return vantage::internal::invalid_option(why, "camera.aim",
                                                "must be given (the point the camera looks at)");
     }
+    if (camera->distances.size() > static_cast<std::size_t>(CameraObjective::kMaxDistances)) {
+      return vantage::internal::invalid_option(
+          why, "camera.distances",
+          "at most " + std::to_string(CameraObjective::kMaxDistances) + " distances");
+    }
+    for (double d : camera->distances) {
+      if (!(d > 0.0) || !std::isfinite(d)) {
+        return vantage::internal::invalid_option(why, "camera.distances",
+                                                 "must be finite numbers > 0");
+      }
+    }
   }
   if (tracker) {
     if (tracker->targets.empty()) {

@@ -22,11 +22,29 @@ double read_positive(const nlohmann::json& s, const std::string& source, const s
   return v.get<double>();
 }
 
+// sensor.distance, or sensor.distances: an approach of 2 to kMaxDistances numbers > 0.
+void read_distances(const nlohmann::json& s, const std::string& source, LayoutSensor* out) {
+  if (s.contains("distance") && s.contains("distances")) {
+    fail(source, "sensor.distances: give distance or distances, not both");
+  }
+  if (!s.contains("distances")) {
+    out->distances = {read_positive(s, source, "distance")};
+    return;
+  }
+  const Eigen::VectorXd d = read_numbers(s["distances"], source, "sensor.distances");
+  if (d.size() < 2 || d.size() > LayoutSensor::kMaxDistances || !(d.array() > 0.0).all()) {
+    fail(source, "sensor.distances: expected 2 to " + std::to_string(LayoutSensor::kMaxDistances) +
+                     " numbers > 0 (one: distance)");
+  }
+  out->distances.assign(d.data(), d.data() + d.size());
+}
+
 void read_camera(const nlohmann::json& s, const std::string& source, LayoutSensor* out) {
   reject_unknown_fields(
-      s, source, {"type", "distance", "focal_px", "noise_px", "samples", "aim", "statistic"});
+      s, source,
+      {"type", "distance", "distances", "focal_px", "noise_px", "samples", "aim", "statistic"});
   out->kind = LayoutSensor::Kind::kCamera;
-  out->distance = read_positive(s, source, "distance");
+  read_distances(s, source, out);
   out->focal_px = read_positive(s, source, "focal_px");
   out->noise_px = read_positive(s, source, "noise_px");
   if (!s.contains("samples") || !s["samples"].is_number_integer() ||
@@ -94,7 +112,11 @@ void write_sensor(const Layout& layout, nlohmann::ordered_json* out) {
   nlohmann::ordered_json block;
   block["type"] = to_string(s.kind);
   if (s.kind == LayoutSensor::Kind::kCamera) {
-    block["distance"] = s.distance;
+    if (s.distances.size() == 1) {
+      block["distance"] = s.distances.front();
+    } else {
+      block["distances"] = s.distances;
+    }
     block["focal_px"] = s.focal_px;
     block["noise_px"] = s.noise_px;
     block["samples"] = s.samples;

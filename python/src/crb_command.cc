@@ -21,7 +21,7 @@ py::object crb(const py::object& layout_arg, const py::object& points, double di
                double focal, double noise_px, const py::object& principal_point,
                const py::object& direction, const py::object& sweep_distance, int samples,
                int threads, bool allow_large, const py::object& format,
-               const py::object& tag_points, const py::object& bundle) {
+               const py::object& tag_points, const py::object& bundle, const py::object& aim) {
   std::optional<camera::PoseCrbSweep> sweep;
   if (!sweep_distance.is_none()) {
     std::tuple<double, double, int> t;
@@ -49,6 +49,11 @@ py::object crb(const py::object& layout_arg, const py::object& points, double di
     const Eigen::VectorXd pp = vector_from_array(principal_point, "principal_point");
     if (pp.size() != 2) throw InvalidArgument("principal_point", "expected [cx, cy]");
     options.principal_point = pp;
+  }
+  if (!aim.is_none()) {
+    const Eigen::VectorXd o = vector_from_array(aim, "aim");
+    if (o.size() != 3) throw InvalidArgument("aim", "expected [x, y, z]");
+    options.aim = Eigen::Vector3d(o);
   }
   std::optional<Eigen::Vector3d> a;
   if (!direction.is_none()) {
@@ -81,7 +86,7 @@ void bind_crb_command(py::module_& module) {
              py::arg("direction") = py::none(), py::arg("sweep_distance") = py::none(),
              py::arg("samples") = 10000, py::arg("threads") = 0, py::arg("allow_large") = false,
              py::arg("format") = py::none(), py::arg("tag_points") = py::none(),
-             py::arg("bundle") = py::none(),
+             py::arg("bundle") = py::none(), py::arg("aim") = py::none(),
              "The pose Cramer-Rao bound of a pinhole camera over every viewpoint (as `vantage crb "
              "--json`; docs/math.md §22).");
 }

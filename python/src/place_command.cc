@@ -130,6 +130,7 @@ py::object place(const py::object& body, const py::object& sites, int markers,
                  const std::optional<int>& random_trials,
                  const std::optional<long>& exhaustive_limit, const py::object& out, bool overwrite,
                  const std::string& objective, const std::optional<double>& distance,
+                 const std::optional<std::vector<double>>& distances,
                  const std::optional<double>& focal, const std::optional<double>& noise_px,
                  const std::string& statistic, const std::optional<int>& crb_samples,
                  const py::object& aim, const py::object& targets,
@@ -157,6 +158,7 @@ py::object place(const py::object& body, const py::object& sites, int markers,
     request.overwrite = overwrite;
     request.objective = objective;
     request.distance = distance.value_or(request.distance);
+    request.distances = distances.value_or(request.distances);
     request.focal = focal.value_or(request.focal);
     request.noise_px = noise_px.value_or(request.noise_px);
     request.statistic = statistic;
@@ -195,10 +197,10 @@ void bind_place_command(py::module_& module) {
       py::arg("seed") = py::none(), py::arg("threads") = py::none(),
       py::arg("random_trials") = py::none(), py::arg("exhaustive_limit") = py::none(),
       py::arg("out") = py::none(), py::arg("overwrite") = false, py::arg("objective") = "affine",
-      py::arg("distance") = py::none(), py::arg("focal") = py::none(),
-      py::arg("noise_px") = py::none(), py::arg("statistic") = "worst",
-      py::arg("crb_samples") = py::none(), py::arg("aim") = py::none(),
-      py::arg("targets") = py::none(), py::arg("fle_rms") = py::none(),
+      py::arg("distance") = py::none(), py::arg("distances") = py::none(),
+      py::arg("focal") = py::none(), py::arg("noise_px") = py::none(),
+      py::arg("statistic") = "worst", py::arg("crb_samples") = py::none(),
+      py::arg("aim") = py::none(), py::arg("targets") = py::none(), py::arg("fle_rms") = py::none(),
       py::arg("fle_sigma") = py::none(), py::arg("min_coverage") = py::none(),
       py::arg("allow_partial") = false, py::arg("marker_diameter") = 0.0,
       py::arg("exclude") = py::none(), py::arg("region") = py::none(), py::arg("perturbations") = 0,

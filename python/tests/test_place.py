@@ -137,6 +137,27 @@ def test_tracker_objective_matches_the_cli_and_is_what_tre_reports(vantage, tmp_
     assert sensor["value"] == report.objective["value"]
 
 
+def test_an_approach_matches_the_cli_and_is_the_largest_of_crb_at_each_distance(vantage, tmp_path):
+    """Issue 35: distances= is --distances (the same JSON), and the value is the largest over the
+    distances of vantage.crb's worst on the placed layout with the same camera."""
+    camera = dict(focal=900.0, noise_px=0.3, crb_samples=300)
+    report = vantage.place(sites=CUBE_SITES, markers=5, objective="camera",
+                           distances=[6.0, 2.0, 12.0], **camera)
+    cli = cli_json("place", "--sites", CUBE_SITES, "--markers", 5, "--objective", "camera",
+                   "--distances", "6,2,12", "--focal", 900, "--noise-px", 0.3, "--crb-samples",
+                   300, "--out", tmp_path / "cli.json")
+    assert_same(without_written(report.to_dict()), without_written(cli))
+    aim = report.objective["camera"]["aim"]
+    worst = [vantage.crb(report.layout, distance=d, focal=900.0, noise_px=0.3, samples=300,
+                         aim=aim).worst.rot_rms_deg for d in (6.0, 2.0, 12.0)]
+    assert report.objective["value_deg"] == max(worst)
+    assert [step["value_deg"] for step in report.objective["approach"]] == worst
+    with pytest.raises(ValueError) as error:
+        vantage.place(sites=CUBE_SITES, markers=5, objective="camera", distances=[6.0, -1.0],
+                      **camera)
+    assert error.value.field == "distances"
+
+
 def test_incomplete_placement_keeps_its_layout_and_allow_partial_returns_it(vantage, tmp_path):
     """Issue 35 item 5: the best incomplete answer is on the error, and allow_partial returns it
     (and writes it) with a warning."""

@@ -138,13 +138,15 @@ def crb(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
         direction: Optional[npt.ArrayLike] = None,
         sweep_distance: Optional[Tuple[float, float, int]] = None, samples: int = 10000,
         threads: int = 0, allow_large: bool = False, format: Optional[str] = None,
-        tag_points: Optional[str] = None, bundle: Optional[str] = None) -> CrbReport:
+        tag_points: Optional[str] = None, bundle: Optional[str] = None,
+        aim: Optional[Sequence[float]] = None) -> CrbReport:
     """The Cramér–Rao bound of the pose from one pinhole image over every viewpoint (as
     ``vantage crb --json``; docs/math.md §22).
 
     layout: a vantage.Layout or a layout file (points), or points= (n x 3).
-    distance: the camera's distance from the markers' centroid (layout units, above the
-    layout's radius); focal: pixels; noise_px: pixel noise per coordinate.
+    distance: the camera's distance from the markers' centroid, or from aim (x, y, z) when
+    given (layout units, above the layout's radius about it); focal: pixels; noise_px: pixel
+    noise per coordinate.
     direction: also the bound at this viewing direction (body toward camera), with its 6 x 6
     covariance. sweep_distance: (D1, D2, N), the worst and median bound at N distances (N
     bounded, README "Limits"). samples: the map's lattice density (directions on the whole
@@ -159,7 +161,7 @@ def crb(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
         layout, points=points, distance=distance, focal=focal, noise_px=noise_px,
         principal_point=principal_point, direction=direction, sweep_distance=sweep_distance,
         samples=samples, threads=threads, allow_large=allow_large, format=format,
-        tag_points=tag_points, bundle=bundle))
+        tag_points=tag_points, bundle=bundle, aim=aim))
 
 
 @_typed_errors(lambda error: TreReport(error.result))
@@ -232,8 +234,9 @@ def place(body: Optional[PathArg] = None, *, sites: Optional[PathArg] = None, ma
           seed: Optional[int] = None, threads: Optional[int] = None,
           random_trials: Optional[int] = None, exhaustive_limit: Optional[int] = None,
           out: Optional[PathArg] = None, overwrite: bool = False, objective: str = "affine",
-          distance: Optional[float] = None, focal: Optional[float] = None,
-          noise_px: Optional[float] = None, statistic: str = "worst",
+          distance: Optional[float] = None, distances: Optional[Sequence[float]] = None,
+          focal: Optional[float] = None, noise_px: Optional[float] = None,
+          statistic: str = "worst",
           crb_samples: Optional[int] = None, aim: Optional[Sequence[float]] = None,
           targets: Optional[npt.ArrayLike] = None, fle_rms: Optional[float] = None,
           fle_sigma: Optional[Sequence[float]] = None, min_coverage: Optional[float] = None,
@@ -256,8 +259,9 @@ def place(body: Optional[PathArg] = None, *, sites: Optional[PathArg] = None, ma
     overwrite: replace an existing file. None: the CLI's default.
 
     objective: 'affine' (the paper's scale-free bound), 'camera' (the pinhole pose CRB: needs
-    distance, focal and noise_px; statistic 'worst', 'p95' or 'median'; crb_samples; aim
-    (x, y, z), default the centre of the sites' bounding box) or 'tracker' (the worst RMS TRE:
+    distance (or distances: an approach, the largest over them of the statistic), focal and
+    noise_px; statistic 'worst', 'p95' or 'median'; crb_samples; aim (x, y, z), default the
+    centre of the sites' bounding box) or 'tracker' (the worst RMS TRE:
     needs targets, one [x, y, z] or an n x 3 array, and fle_rms or fle_sigma (sigma_perp,
     sigma_axial)); the report's ``objective`` holds its value as ``vantage crb`` or ``vantage
     tre`` reports it on the placed layout (docs/math.md §21, "Objectives"). min_coverage: the
@@ -282,7 +286,7 @@ def place(body: Optional[PathArg] = None, *, sites: Optional[PathArg] = None, ma
         robust_dropout=robust_dropout, min_distance_difference=min_distance_difference,
         seed=seed, threads=threads, random_trials=random_trials,
         exhaustive_limit=exhaustive_limit, out=out, overwrite=overwrite, objective=objective,
-        distance=distance, focal=focal, noise_px=noise_px, statistic=statistic,
+        distance=distance, distances=None if distances is None else list(distances), focal=focal, noise_px=noise_px, statistic=statistic,
         crb_samples=crb_samples, aim=aim, targets=targets, fle_rms=fle_rms, fle_sigma=fle_sigma,
         min_coverage=min_coverage, allow_partial=allow_partial, marker_diameter=marker_diameter,
         exclude=exclude, region=region, perturbations=perturbations))

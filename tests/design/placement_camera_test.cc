@@ -33,9 +33,9 @@ constexpr int kSamples = 600;
 constexpr double kSameValue = 1e-12;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-camera::PoseCrbOptions camera_options() {
+camera::PoseCrbOptions camera_options(double distance = 6.0) {
   camera::PoseCrbOptions o;
-  o.distance = 6.0;
+  o.distance = distance;
   o.focal_length = 800.0;
   o.noise_px = 0.5;
   o.samples = kSamples;
@@ -46,8 +46,9 @@ camera::PoseCrbOptions camera_options() {
 // The statistic of `vantage crb`'s samples of a subset, first order (docs/math.md §21: the
 // search ranks past §22's 45 degree reporting limit too): +inf unless the first-order bound
 // exists at every workspace direction of the lattice (min_coverage 1).
-double crb_value(const Layout& sites, const std::vector<int>& chosen, CrbStatistic statistic) {
-  const camera::PoseCrbModel model(subset(sites, chosen), camera_options());
+double crb_value(const Layout& sites, const std::vector<int>& chosen, CrbStatistic statistic,
+                 double distance = 6.0) {
+  const camera::PoseCrbModel model(subset(sites, chosen), camera_options(distance));
   const Eigen::Matrix3Xd lattice =
       visibility::workspace_lattice(model.workspace(), kSamples).directions;
   std::vector<double> values;
@@ -99,6 +100,51 @@ TEST(PlaceCamera, FindsTheExhaustiveOptimumOfEachStatistic) {
     EXPECT_NEAR(result.value.objective, truth.value, kSameValue * truth.value);
     EXPECT_NEAR(crb_value(sites, result.chosen, statistic), truth.value, kSameValue * truth.value);
   }
+}
+
+// An approach (docs/math.md §21, "An approach"): the value of a subset is the largest over the
+// distances of its value at each distance alone, every distance covered; the enumeration scores
+// each subset by `vantage crb`'s model once per distance.
+TEST(PlaceCamera, AnApproachFindsTheExhaustiveOptimumOfTheLargestOverItsDistances) {
+  const std::vector<double> distances = {6.0, 2.5, 12.0};
+  const Layout sites = box_sites(10, kSeed + 3);
+  PlacementProblem problem;
+  problem.sites = as_problem(sites);
+  problem.markers = 4;
+  for (CrbStatistic statistic : {CrbStatistic::kWorst, CrbStatistic::kMedian}) {
+    SCOPED_TRACE(to_string(statistic));
+    const auto approach_value = [&](const std::vector<int>& chosen) {
+      double out = -kInfinity;
+      for (double d : distances) out = std::max(out, crb_value(sites, chosen, statistic, d));
+      return out;
+    };
+    const testing::BestSubset truth = testing::enumerate_subsets(10, 4, approach_value);
+    ASSERT_TRUE(std::isfinite(truth.value));
+    PlaceOptions options = camera_place_options(sites, statistic);
+    options.camera->distances = distances;
+    const PlacementResult result = place_markers(problem, options);
+    EXPECT_EQ(result.search, "exhaustive");
+    EXPECT_EQ(result.status, PlacementResult::Status::kComplete);
+    EXPECT_NEAR(result.value.objective, truth.value, kSameValue * truth.value);
+    EXPECT_NEAR(approach_value(result.chosen), truth.value, kSameValue * truth.value);
+    // Not the single distance's answer: the approach changes what is best.
+    EXPECT_GT(truth.value, enumerate(sites, 4, statistic).value);
+  }
+}
+
+TEST(PlaceCamera, AnApproachDistanceInsideTheSitesIsRefused) {
+  const Layout sites = box_sites(10, kSeed);
+  PlacementProblem problem;
+  problem.sites = as_problem(sites);
+  problem.markers = 4;
+  PlaceOptions options = camera_place_options(sites, CrbStatistic::kWorst);
+  options.camera->distances = {6.0, 0.5};
+  EXPECT_THAT(message_of([&] { place_markers(problem, options); }), HasSubstr("distance"));
+  options.camera->distances = {6.0, -1.0};
+  EXPECT_THAT(message_of([&] { place_markers(problem, options); }), HasSubstr("camera.distances"));
+  options.camera->distances.assign(CameraObjective::kMaxDistances + 1, 6.0);
+  EXPECT_THAT(message_of([&] { place_markers(problem, options); }),
+              HasSubstr("camera.distances: at most 64"));
 }
 
 TEST(PlaceCamera, GreedyWithSwapsAgainstTheOptimum) {

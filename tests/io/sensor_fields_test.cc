@@ -13,6 +13,7 @@ namespace vantage::io {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 constexpr const char* kCamera = R"({
   "points": [[0.5, 0.1, 0.0], [0.0, 0.5, 0.1], [0.1, 0.0, 0.5], [-0.5, 0.0, 0.0]],
@@ -43,13 +44,24 @@ TEST(SensorFields, ACameraSurvivesAWriteAndARead) {
   ASSERT_TRUE(again.sensor.has_value());
   const LayoutSensor& s = *again.sensor;
   EXPECT_EQ(s.kind, LayoutSensor::Kind::kCamera);
-  EXPECT_EQ(s.distance, 3.0);
+  EXPECT_EQ(s.distances, std::vector<double>{3.0});
   EXPECT_EQ(s.focal_px, 1000.0);
   EXPECT_EQ(s.noise_px, 0.2);
   EXPECT_EQ(s.samples, 2000);
   EXPECT_EQ(s.aim, Eigen::Vector3d(0.1, 0.30000000000000004, -0.2));
   EXPECT_EQ(s.statistic, "p95");
   EXPECT_EQ(layout_to_json(again), layout_to_json(layout));
+}
+
+// An approach's distances, in their order; one distance is written as "distance".
+TEST(SensorFields, AnApproachSurvivesAWriteAndARead) {
+  const Layout layout =
+      parse_layout(with(kCamera, "\"distance\": 3", "\"distances\": [5, 3, 2.5]"), "cam.json");
+  EXPECT_EQ(layout.sensor->distances, (std::vector<double>{5.0, 3.0, 2.5}));
+  const std::string text = layout_to_json(layout);
+  EXPECT_THAT(text, HasSubstr("\"distances\""));
+  EXPECT_EQ(layout_to_json(parse_layout(text, "again.json")), text);
+  EXPECT_THAT(layout_to_json(parse_layout(kCamera, "one.json")), Not(HasSubstr("distances")));
 }
 
 TEST(SensorFields, ATrackerSurvivesAWriteAndARead) {
@@ -80,6 +92,14 @@ TEST(SensorFields, BadBlocksNameTheirField) {
               HasSubstr("sensor.type: expected \"camera\" or \"tracker\", got \"lidar\""));
   EXPECT_THAT(error_of(with(kCamera, "\"distance\": 3", "\"distance\": -3")),
               HasSubstr("sensor.distance: expected a finite number > 0"));
+  EXPECT_THAT(error_of(with(kCamera, "\"distance\": 3", "\"distance\": 3, \"distances\": [3, 4]")),
+              HasSubstr("sensor.distances: give distance or distances, not both"));
+  EXPECT_THAT(error_of(with(kCamera, "\"distance\": 3", "\"distances\": [3]")),
+              HasSubstr("sensor.distances: expected 2 to 64 numbers > 0 (one: distance)"));
+  EXPECT_THAT(error_of(with(kCamera, "\"distance\": 3", "\"distances\": [3, 0]")),
+              HasSubstr("sensor.distances: expected 2 to 64"));
+  EXPECT_THAT(error_of(with(kCamera, "\"distance\": 3", "\"distances\": [3, \"x\"]")),
+              HasSubstr("sensor.distances"));
   EXPECT_THAT(error_of(with(kCamera, "\"samples\": 2000", "\"samples\": 20.5")),
               HasSubstr("sensor.samples: expected an integer in [100, 10000000]"));
   EXPECT_THAT(error_of(with(kCamera, "\"statistic\": \"p95\"", "\"statistic\": \"p50\"")),

@@ -74,7 +74,9 @@ struct LayoutSensor {
   };
   Kind kind = Kind::kCamera;
   // A camera (`vantage crb`'s options).
-  double distance = 0.0;                          ///< D, layout units
+  /// D, layout units: one, or the distances of an approach (docs/math.md §21, "An approach").
+  std::vector<double> distances;
+  static constexpr int kMaxDistances = 64;        ///< of an approach (each is one map to evaluate)
   double focal_px = 0.0;                          ///< f, pixels
   double noise_px = 0.0;                          ///< S, pixels per coordinate
   int samples = 0;                                ///< directions of the lattice

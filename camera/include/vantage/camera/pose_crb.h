@@ -115,6 +115,9 @@ class PoseCrbModel {
   PoseCrbAt at(const Eigen::Vector3d& a) const;
   /// The same at another camera distance (> the radius, else InvalidArgument "distance").
   PoseCrbAt at(const Eigen::Vector3d& a, double distance) const;
+  /// Throws InvalidArgument "distance" unless D is a camera distance of this model: in range and
+  /// above the layout's radius about the aim point.
+  void check_distance(double distance) const;
 
   /// The camera pose of direction a at distance D: R's third row is -a and its first row the
   /// unit part of a fixed reference axis orthogonal to a (the roll is immaterial, §22).

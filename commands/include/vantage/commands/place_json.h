@@ -55,6 +55,8 @@ struct Request {
   /// The camera objective's settings (--distance, --focal, --noise-px, --statistic,
   /// --crb-samples, --aim: none for the centre of the sites' bounding box).
   double distance = 0.0;
+  /// --distances D1,D2,...: an approach, instead of --distance (docs/math.md §21).
+  std::vector<double> distances;
   double focal = 0.0;
   double noise_px = 0.0;
   std::string statistic = "worst";
@@ -147,7 +149,7 @@ Outcome place(const Request& request, const Sites& sites,
 /// visibility block, workspace and placement record, and its analysis.
 PlacedLayout placed_layout(const Request& request, const Layout& sites, int n_candidates,
                            const design::PlacementResult& result,
-                           const std::optional<camera::PoseCrbOptions>& camera = std::nullopt,
+                           const std::optional<design::CameraObjective>& camera = std::nullopt,
                            const std::optional<design::TrackerObjective>& tracker = std::nullopt);
 
 /// Why the placement is not written.

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "vantage/analysis/layout.h"
 #include "vantage/camera/pose_crb.h"
@@ -19,8 +20,8 @@ namespace vantage::sensor_json {
 
 using Json = nlohmann::ordered_json;
 
-/// The camera objective's sensor (its aim must be resolved).
-LayoutSensor camera_sensor(const camera::PoseCrbOptions& camera, design::CrbStatistic statistic);
+/// The camera objective's sensor (its aim must be resolved): its camera, statistic and distances.
+LayoutSensor camera_sensor(const design::CameraObjective& camera);
 
 /// The tracker objective's sensor: its FLE as an RMS when it was given as one, else its sigmas.
 LayoutSensor tracker_sensor(const design::TrackerObjective& tracker);
@@ -31,19 +32,31 @@ tracker::FleModel fle_model(const LayoutSensor& sensor);
 /// The sensor in words, with the `vantage crb` or `vantage tre` options that reproduce its value.
 std::string words(const LayoutSensor& sensor);
 
+/// One distance of a camera's approach: `vantage crb --distance D`'s map and its statistic.
+struct ApproachStep {
+  double distance = 0.0;
+  camera::PoseCrbMap map;
+  double value = 0.0;  ///< the statistic of rot_rms (degrees), +inf when not trackable
+};
+
 /// A layout evaluated for its sensor.
 struct Evaluation {
   LayoutSensor sensor;
-  /// A camera: its options (threads as asked) and `vantage crb`'s map of the layout.
+  /// A camera: its options (threads as asked) and `vantage crb`'s map of the layout, at the
+  /// distance that decides the value (the largest statistic; the first not trackable).
   std::optional<camera::PoseCrbOptions> camera;
   std::optional<camera::PoseCrbMap> crb;
+  /// A camera with an approach (several distances): every distance, in the sensor's order.
+  std::vector<ApproachStep> approach;
   /// A tracker: `vantage tre`'s report of the layout at the targets.
   std::optional<tracker::TreReport> tre;
-  /// The camera's statistic of the rotation RMS (degrees), or the largest certified bound on the
+  /// The camera's statistic of the rotation RMS (degrees; an approach: the largest over its
+  /// distances), or the largest certified bound on the
   /// worst RMS TRE over the targets (layout units); +inf when not trackable or a target is
   /// tracked from no direction.
   double value = 0.0;
-  /// The camera's map is trackable, or every target's worst TRE is finite and certified.
+  /// The camera's map is trackable (at every distance), or every target's worst TRE is finite
+  /// and certified.
   bool complete = false;
 };
 
@@ -64,6 +77,10 @@ bool tre_certified(const tracker::TreReport& report);
 /// direction and percentiles when trackable (otherwise why not): `place --json`'s
 /// objective.crb and analyze's sensor.crb.
 Json crb_json(const camera::PoseCrbMap& map, double distance);
+
+/// An approach's distances: each one's distance, value_deg (null when +inf) and crb block
+/// (crb_json): analyze's sensor.approach and `place --json`'s objective.approach.
+Json approach_json(const std::vector<ApproachStep>& approach);
 
 /// `vantage analyze --json`'s "sensor": the settings, the words, "value_deg" (camera) or
 /// "value" (tracker, layout units; null when +inf), complete, and the camera's worst direction

@@ -76,6 +76,16 @@ struct CameraObjective {
   /// must be given (a choice's centroid would move the cameras with the choice).
   camera::PoseCrbOptions crb;
   CrbStatistic statistic = CrbStatistic::kWorst;
+  /// An approach (docs/math.md §21, "An approach"): the camera distances D_1..D_n, each above the
+  /// sites' radius about the aim, at most kMaxDistances; empty: crb.distance alone. The samples
+  /// are the (direction, D_k) pairs and the value is the largest over k of the statistic at D_k.
+  std::vector<double> distances;
+  static constexpr int kMaxDistances = LayoutSensor::kMaxDistances;
+
+  /// The distances of the samples: `distances`, or crb.distance alone.
+  std::vector<double> sample_distances() const {
+    return distances.empty() ? std::vector<double>{crb.distance} : distances;
+  }
 };
 
 /// The `tracker` objective (docs/math.md §21, "Objectives"): the target registration error of
