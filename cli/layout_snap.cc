@@ -11,6 +11,7 @@
 #include "layout_convert.h"
 #include "layout_input.h"
 #include "vantage/analysis/common.h"
+#include "vantage/design/placement_layout.h"
 #include "vantage/design/surface_snap.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/io/layout_formats.h"
@@ -133,6 +134,11 @@ int run_snap(const SnapArgs& args) {
   }
   std::string body_path;
   const Mesh body = snap_body(args, layout, &body_path);
+  try {
+    design::check_marker_diameter(args.marker_diameter, body.size());
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument("--marker-diameter", e.problem());
+  }
   design::SurfaceSnap snap;
   Layout snapped;
   try {

@@ -45,6 +45,15 @@ int place_site_at(const Layout& sites, const Eigen::Vector3d& p) {
   return -1;
 }
 
+// --marker-diameter against the size of the body (the mesh, or the sites' extent).
+void place_check_diameter(const Request& request, double extent) {
+  try {
+    design::check_marker_diameter(request.marker_diameter, extent);
+  } catch (const InvalidArgument& e) {
+    place_refuse("--marker-diameter", e.problem());
+  }
+}
+
 // A mesh named by `option` (BODY, --region, --exclude), read or refused naming the option.
 Mesh place_read_mesh(const std::string& option, const std::string& path) {
   try {
@@ -60,8 +69,9 @@ constexpr double kRegionOffBody = 1e-3;
 
 // The sites sampled on the body mesh (or on its --region), oriented per site by the whole body,
 // without the sites the --exclude volumes drop, as a point layout on the body.
-Layout place_sampled_sites(const Request& request, int* drawn, int* excluded) {
-  const Mesh mesh = place_read_mesh("BODY", request.body);
+Layout place_sampled_sites(const Request& request, const Mesh& mesh, const std::string& body_path,
+                           int* drawn, int* excluded) {
+  place_check_diameter(request, mesh.size());
   const std::string sampled_option = request.region.empty() ? "BODY" : "--region";
   const std::string sampled_path = request.region.empty() ? request.body : request.region;
   const Mesh part = request.region.empty() ? mesh : place_read_mesh("--region", request.region);
@@ -99,8 +109,7 @@ Layout place_sampled_sites(const Request& request, int* drawn, int* excluded) {
   if (sampled.points.cols() == 0) {
     place_refuse("--exclude", "the keep-out volumes hold every sampled site");
   }
-  Layout sites = design::surface_sites_layout(
-      sampled, mesh, std::filesystem::absolute(request.body).lexically_normal().string());
+  Layout sites = design::surface_sites_layout(sampled, mesh, body_path);
   sites.name = std::filesystem::path(request.body).stem().string();
   return sites;
 }
@@ -191,26 +200,8 @@ void place_check_problem(const Request& request, const Layout& sites, std::size_
   }
 }
 
-}  // namespace
-
-Sites candidate_sites(const Request& request,
-                      const std::function<Layout(const std::string&)>& read_sites,
-                      const std::function<void(Layout*)>& apply_visibility) {
-  Sites out;
-  if (!request.sites.empty()) {
-    out.layout = place_reading("--sites", request.sites, [&] { return read_sites(request.sites); });
-    if (out.layout.mode != LayoutMode::kPoints) {
-      place_refuse("--sites",
-                   request.sites + ": expected a point layout (\"points\" with \"normals\")");
-    }
-    if (!out.layout.visibility) {
-      place_refuse("--sites", request.sites + ": the sites need \"normals\" (or --normals radial)");
-    }
-    out.drawn = static_cast<int>(out.layout.entries.cols());
-  } else {
-    out.layout = place_sampled_sites(request, &out.drawn, &out.excluded);
-    apply_visibility(&out.layout);
-  }
+// The sites' common end: the sphere centres, the kept markers, the problem checked.
+Sites place_finish_sites(const Request& request, Sites out) {
   if (request.marker_diameter > 0.0) {
     out.layout = design::sphere_centres(std::move(out.layout), request.marker_diameter);
   }
@@ -218,6 +209,38 @@ Sites candidate_sites(const Request& request,
   out.keep = place_append_kept(request, &out.layout);
   place_check_problem(request, out.layout, out.keep.size());
   return out;
+}
+
+}  // namespace
+
+Sites sites_on_body(const Request& request, const Mesh& mesh, const std::string& body_path,
+                    const std::function<void(Layout*)>& apply_visibility) {
+  Sites out;
+  out.layout = place_sampled_sites(request, mesh, body_path, &out.drawn, &out.excluded);
+  apply_visibility(&out.layout);
+  return place_finish_sites(request, std::move(out));
+}
+
+Sites candidate_sites(const Request& request,
+                      const std::function<Layout(const std::string&)>& read_sites,
+                      const std::function<void(Layout*)>& apply_visibility) {
+  if (request.sites.empty()) {
+    return sites_on_body(request, place_read_mesh("BODY", request.body),
+                         std::filesystem::absolute(request.body).lexically_normal().string(),
+                         apply_visibility);
+  }
+  Sites out;
+  out.layout = place_reading("--sites", request.sites, [&] { return read_sites(request.sites); });
+  if (out.layout.mode != LayoutMode::kPoints) {
+    place_refuse("--sites",
+                 request.sites + ": expected a point layout (\"points\" with \"normals\")");
+  }
+  if (!out.layout.visibility) {
+    place_refuse("--sites", request.sites + ": the sites need \"normals\" (or --normals radial)");
+  }
+  out.drawn = static_cast<int>(out.layout.entries.cols());
+  place_check_diameter(request, design::extent(out.layout.entries));
+  return place_finish_sites(request, std::move(out));
 }
 
 }  // namespace vantage::place_json

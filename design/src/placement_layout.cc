@@ -1,6 +1,8 @@
 #include "vantage/design/placement_layout.h"
 
 #include <cmath>
+#include <limits>
+#include <sstream>
 #include <utility>
 
 #include "vantage/analysis/common.h"
@@ -32,11 +34,27 @@ Layout surface_sites_layout(const SurfaceSites& sites, const Mesh& body,
   return layout;
 }
 
-Eigen::Matrix3Xd sphere_centres(const Eigen::Matrix3Xd& points, const Eigen::Matrix3Xd& normals,
-                                double diameter) {
+void check_marker_diameter(double diameter, double extent) {
   if (!(diameter >= 0.0) || !std::isfinite(diameter)) {
     throw InvalidArgument("marker_diameter", "must be a finite number >= 0");
   }
+  if (diameter > extent) {
+    std::ostringstream message;
+    message.precision(6);
+    message << "a sphere of diameter " << diameter << " is wider than the whole body (size "
+            << extent << "): another unit?";
+    throw InvalidArgument("marker_diameter", message.str());
+  }
+}
+
+double extent(const Eigen::Matrix3Xd& points) {
+  if (points.cols() == 0) return 0.0;
+  return (points.rowwise().maxCoeff() - points.rowwise().minCoeff()).norm();
+}
+
+Eigen::Matrix3Xd sphere_centres(const Eigen::Matrix3Xd& points, const Eigen::Matrix3Xd& normals,
+                                double diameter) {
+  check_marker_diameter(diameter, std::numeric_limits<double>::max());
   return points + 0.5 * diameter * normals;
 }
 

@@ -96,6 +96,11 @@ TEST(LayoutSnapCli, BadInputIsOneLineAndNothingIsWritten) {
   const BadCall calls[] = {
       {"negative diameter", kNearCube, "in.json --body cube.obj --out s.json --marker-diameter -1",
        "--marker-diameter"},
+      // Was named "--body: snapped, points[0]: coordinates beyond +-1e150".
+      {"a diameter wider than the body", kNearCube,
+       "in.json --body cube.obj --out s.json --marker-diameter 1e300",
+       "--marker-diameter: a sphere of diameter 1e+300 is wider than the whole body (size "
+       "1.73205)"},
       {"no body", kNearCube, "in.json --out s.json", "--body: required: in.json names no body"},
       {"body missing", kNearCube, "in.json --body nothing.obj --out s.json", "--body: "},
       {"vectors", R"({"vectors": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]})",

@@ -16,6 +16,7 @@
 
 #include "support/cli_runner.h"
 #include "support/cube_mesh.h"
+#include "support/cube_sites.h"
 #include "support/sanitized.h"
 
 namespace vantage {
@@ -30,31 +31,7 @@ using testing::ScratchDir;
 const std::string kSatelliteBody =
     "'" + std::string(VANTAGE_SOURCE_DIR) + "/examples/bodies/satellite.obj'";
 
-// Sixteen sites: the centres and the quarter points of the faces of a unit cube (normals the
-// faces'), less the bottom face's last two; 150 degree cones.
-std::string cube_sites() {
-  nlohmann::json points = nlohmann::json::array(), normals = nlohmann::json::array();
-  const double offsets[3][2] = {{0.0, 0.0}, {0.25, 0.1}, {-0.2, -0.25}};
-  for (int axis = 0; axis < 3; ++axis) {
-    for (int sign : {1, -1}) {
-      for (const auto& o : offsets) {
-        if (points.size() == 16) break;
-        double p[3], n[3] = {0, 0, 0};
-        p[axis] = 0.5 * sign;
-        p[(axis + 1) % 3] = o[0];
-        p[(axis + 2) % 3] = o[1];
-        n[axis] = sign;
-        points.push_back({p[0], p[1], p[2]});
-        normals.push_back({n[0], n[1], n[2]});
-      }
-    }
-  }
-  nlohmann::json layout = {{"name", "cube sites"},
-                           {"points", points},
-                           {"normals", normals},
-                           {"visibility", {{"cone_half_angle_deg", 150.0}, {"min_visible", 3}}}};
-  return layout.dump();
-}
+using testing::cube_sites;
 
 TEST(PlaceCli, SatelliteWritesALayoutThatAnalysesToTheReportedNumbers) {
   ScratchDir scratch;
@@ -403,6 +380,7 @@ TEST(PlaceCli, BadInputGetsOneLineAndWritesNothing) {
   scratch.write("empty.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
   std::filesystem::create_directories(scratch.path("adir"));
   const std::string one_candidate = kSatelliteBody + " --markers 3 --candidates 1 --out o.json";
+  const std::string wide_body = kSatelliteBody + " --markers 4 --out o.json --marker-diameter 1e3";
   const BadCall calls[] = {
       {"K above the sites", nullptr, "--sites sites.json --markers 17 --out o.json", "--markers"},
       {"K below min_visible", nullptr, "--sites sites.json --markers 2 --out o.json", "--markers"},
@@ -488,6 +466,12 @@ TEST(PlaceCli, BadInputGetsOneLineAndWritesNothing) {
        "--sites sites.json --markers 4 --out o.json --perturbations -1", "--perturbations"},
       {"a negative diameter", nullptr,
        "--sites sites.json --markers 4 --out o.json --marker-diameter -0.1", "--marker-diameter"},
+      // Were "points[0]: coordinates beyond +-1e150" and "points: need at least 3 points".
+      {"a diameter wider than the sites", nullptr,
+       "--sites sites.json --markers 4 --out o.json --marker-diameter 1e300",
+       "--marker-diameter: a sphere of diameter 1e+300 is wider than the whole body"},
+      {"a diameter wider than the body", nullptr, wide_body.c_str(),
+       "--marker-diameter: a sphere of diameter 1000 is wider than the whole body"},
       {"a separation below the diameter", nullptr,
        "--sites sites.json --markers 4 --out o.json --marker-diameter 0.1 --min-separation 0.05",
        "--min-separation: below --marker-diameter"},

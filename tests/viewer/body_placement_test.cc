@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
+#include "support/cube_mesh.h"
 #include "support/eigen_testing.h"
 #include "vantage/analysis/mesh.h"
 #include "vantage/camera/pose_crb.h"
@@ -203,6 +206,45 @@ TEST(BodyPlacement, MissingObjectiveSettingsAreNamed) {
   settings.objective = "tracker";
   const PlaceOutcome tracker = place_on_body(cube_layout(true), 0, settings);
   EXPECT_NE(tracker.error.find("--fle-rms"), std::string::npos) << tracker.error;
+}
+
+// `vantage place`'s --exclude and its checks of the problem, through the viewer's settings.
+TEST(BodyPlacement, KeepOutVolumesAndTheProblemsChecksAreVantagePlaces) {
+  // A box over the cube's top (z from 0.25 up, wider than the cube) as a keep-out volume.
+  Mesh lid = cube();
+  for (Eigen::Index v = 0; v < lid.vertices.cols(); ++v) {
+    lid.vertices.col(v).x() *= 2.0;
+    lid.vertices.col(v).y() *= 2.0;
+    lid.vertices(2, v) = lid.vertices(2, v) < 0.0 ? 0.25 : 2.0;
+  }
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / "vantage_viewer_keep_out_lid.obj";
+  std::ofstream(path) << testing::obj_text(lid);
+  const Layout layout = cube_layout(false);
+  PlaceSettings settings = small_settings();
+  const Layout everywhere = body_sites(layout, settings);
+  settings.exclude = {path.string()};
+  const Layout kept_out = body_sites(layout, settings);
+  EXPECT_LT(kept_out.entries.cols(), everywhere.entries.cols());
+  EXPECT_GT(kept_out.entries.cols(), 0);
+  for (Eigen::Index j = 0; j < kept_out.entries.cols(); ++j) {
+    EXPECT_LT(kept_out.entries(2, j), 0.25) << j;
+  }
+  const PlaceOutcome outcome = place_on_body(layout, 0, settings);
+  EXPECT_EQ(outcome.excluded, everywhere.entries.cols() - kept_out.entries.cols());
+  std::filesystem::remove(path);
+  // Named as `vantage place` names them (the viewer skipped these checks before).
+  PlaceSettings robust = small_settings();
+  robust.markers = 3;
+  robust.robust_dropout = true;
+  const PlaceOutcome refused = place_on_body(layout, 0, robust);
+  EXPECT_NE(refused.error.find("--robust-dropout"), std::string::npos) << refused.error;
+  PlaceSettings wide = small_settings();
+  wide.marker_diameter = 10.0;
+  const PlaceOutcome too_wide = place_on_body(layout, 0, wide);
+  EXPECT_NE(too_wide.error.find("--marker-diameter: a sphere of diameter 10 is wider"),
+            std::string::npos)
+      << too_wide.error;
 }
 
 TEST(BodyPlacement, RefusedWithoutABody) {

@@ -106,6 +106,9 @@ void add_viewer_options(CLI::App& cli, ViewerArgs* args) {
   cli.add_option("--marker-diameter", s.marker_diameter,
                  "with --place: spheres of this diameter on the surface");
   cli.add_option("--min-separation", s.min_separation, "with --place: layout units");
+  cli.add_option("--exclude", s.exclude,
+                 "with --place: keep-out volume (mesh in the body's frame; repeatable)");
+  cli.add_option("--region", s.region, "with --place: the part of the body to sample (a mesh)");
 }
 
 }  // namespace

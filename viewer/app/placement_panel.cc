@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <string>
 #include <vector>
@@ -107,6 +108,20 @@ void objective_line(const PlaceOutcome& out) {
   }
 }
 
+// The keep-out volumes and the region, as given at start-up (--exclude, --region).
+void where_controls(const PlaceSettings& s) {
+  if (s.exclude.empty() && s.region.empty()) return;
+  std::string text;
+  for (const std::string& path : s.exclude) {
+    text += (text.empty() ? "keep-out: " : ", ") + std::filesystem::path(path).filename().string();
+  }
+  if (!s.region.empty()) {
+    text += (text.empty() ? "" : "; ") + std::string("region: ") +
+            std::filesystem::path(s.region).filename().string();
+  }
+  ImGui::TextWrapped("%s", text.c_str());
+}
+
 void outcome_summary(const PlaceOutcome& out) {
   const design::PlacementResult& r = out.result;
   if (!out.error.empty()) {
@@ -117,6 +132,9 @@ void outcome_summary(const PlaceOutcome& out) {
   }
   ImGui::TextWrapped("last: %d of %d sites, %s, %s, %.1f s", static_cast<int>(r.chosen.size()),
                      out.n_candidates, r.search.c_str(), design::to_string(r.status), out.seconds);
+  if (out.excluded > 0) {
+    ImGui::TextWrapped("%d sampled sites dropped by the keep-out volumes", out.excluded);
+  }
   if (!out.complete) {
     ImGui::PushStyleColor(ImGuiCol_Text, kWarningText);
     ImGui::TextWrapped("%s (coverage %.2f %%; layout kept)", out.failure.c_str(),
@@ -264,6 +282,7 @@ void Panels::placement_panel(ViewerSession& session) {
   if (ImGui::InputInt("seed", &seed))
     place_settings_.seed = static_cast<std::uint64_t>(std::max(seed, 0));
   ImGui::InputDouble("marker diameter", &place_settings_.marker_diameter, 0.0, 0.0, "%.4g");
+  where_controls(place_settings_);
   objective_controls(&place_settings_);
   ImGui::PopItemWidth();
   workspace_controls(doc.layout(), &place_settings_);

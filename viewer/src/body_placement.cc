@@ -6,8 +6,6 @@
 
 #include "vantage/analysis/common.h"
 #include "vantage/commands/place_json.h"
-#include "vantage/design/placement_layout.h"
-#include "vantage/design/site_filters.h"
 
 namespace vantage::viewer {
 namespace {
@@ -37,7 +35,27 @@ place_json::Request place_request(const Layout& layout, const PlaceSettings& set
     request.targets = {settings.target};
     if (settings.fle_rms > 0.0) request.fle = tracker::FleModel::isotropic(settings.fle_rms);
   }
+  request.exclude = settings.exclude;
+  request.region = settings.region;
   return request;
+}
+
+// `vantage place BODY`'s sites on the body the viewer shows, with the layout's cone (its first
+// marker's), min_visible and workspace (or the settings').
+place_json::Sites viewer_sites(const Layout& layout, const place_json::Request& request,
+                               const PlaceSettings& settings) {
+  if (!is_on_body(layout)) {
+    throw InvalidArgument("body", "the layout has no body mesh to place markers on");
+  }
+  const MarkerVisibility& v = *layout.visibility;
+  const double cone = v.cone_half_angle_deg.size() > 0 ? v.cone_half_angle_deg(0)
+                                                       : MarkerVisibility::kDefaultConeDeg;
+  return place_json::sites_on_body(request, *v.body, v.body_path, [&](Layout* sites) {
+    sites->name = layout.name;
+    sites->visibility->cone_half_angle_deg.setConstant(cone);
+    sites->visibility->min_visible = v.min_visible;
+    sites->workspace = settings.workspace ? settings.workspace : layout.workspace;
+  });
 }
 
 }  // namespace
@@ -47,22 +65,7 @@ bool is_on_body(const Layout& layout) {
 }
 
 Layout body_sites(const Layout& layout, const PlaceSettings& settings) {
-  if (!is_on_body(layout)) {
-    throw InvalidArgument("body", "the layout has no body mesh to place markers on");
-  }
-  const MarkerVisibility& v = *layout.visibility;
-  const design::SurfaceSites sampled = design::sample_surface_sites(
-      *v.body, settings.candidates, place_request(layout, settings).separation(), settings.seed);
-  const double cone = v.cone_half_angle_deg.size() > 0 ? v.cone_half_angle_deg(0)
-                                                       : MarkerVisibility::kDefaultConeDeg;
-  Layout sites = design::surface_sites_layout(sampled, *v.body, v.body_path, cone);
-  sites.name = layout.name;
-  sites.visibility->min_visible = v.min_visible;
-  sites.workspace = settings.workspace ? settings.workspace : layout.workspace;
-  if (settings.marker_diameter > 0.0) {
-    sites = design::sphere_centres(std::move(sites), settings.marker_diameter);
-  }
-  return sites;
+  return viewer_sites(layout, place_request(layout, settings), settings).layout;
 }
 
 PlaceOutcome place_on_body(const Layout& layout, std::uint64_t revision,
@@ -79,11 +82,9 @@ PlaceOutcome place_on_body(const Layout& layout, std::uint64_t revision,
     const place_json::Request request = place_request(layout, settings);
     place_json::check_request(request);
     if (progress) progress("sampling sites");
-    place_json::Sites sites;
-    sites.layout = body_sites(layout, settings);
-    sites.n_candidates = static_cast<int>(sites.layout.entries.cols());
-    sites.drawn = sites.n_candidates;
+    const place_json::Sites sites = viewer_sites(layout, request, settings);
     outcome.n_candidates = sites.n_candidates;
+    outcome.excluded = sites.excluded;
     const place_json::Outcome placed = place_json::place(request, sites, progress);
     outcome.result = placed.result;
     outcome.complete = placed.complete;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "vantage/analysis/layout.h"
+#include "vantage/analysis/mesh.h"
 #include "vantage/camera/pose_crb.h"
 #include "vantage/commands/sensor_json.h"
 #include "vantage/design/placement.h"
@@ -96,6 +97,14 @@ struct Sites {
   int excluded = 0;       ///< sampled sites dropped by the --exclude volumes
   std::vector<int> keep;  ///< the kept markers' columns
 };
+
+/// The candidate sites on a body already loaded (`mesh`, which the sites layout names by
+/// `body_path`): sampled (on --region when given) and oriented per site by the whole body,
+/// without the sites the --exclude volumes drop, `apply_visibility` applied, moved to the
+/// sphere centres with a diameter, the kept markers appended and the problem checked.
+/// candidate_sites() reads the body and calls this; the viewer calls it with the body it shows.
+Sites sites_on_body(const Request& request, const Mesh& mesh, const std::string& body_path,
+                    const std::function<void(Layout*)>& apply_visibility);
 
 /// Reads the sites file with `read_sites` (the front end's format and visibility options), or
 /// samples the body and applies the visibility options with `apply_visibility`; appends the

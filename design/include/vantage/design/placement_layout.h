@@ -32,9 +32,18 @@ struct PlacedLayoutRecord {
   double marker_diameter = 0.0;  ///< the spheres' diameter (0: point markers)
 };
 
+/// Throws InvalidArgument "marker_diameter" unless `diameter` is finite, >= 0 and at most
+/// `extent`, the size of the body the spheres rest on (a sphere wider than the whole body is a
+/// number in another unit, docs/math.md §21, "Physical markers").
+void check_marker_diameter(double diameter, double extent);
+
+/// The diagonal of the bounding box of `points` (0 for none).
+double extent(const Eigen::Matrix3Xd& points);
+
 /// The centres of spheres of `diameter` resting on a surface at `points` with outward unit
 /// `normals`: each point diameter / 2 along its normal (docs/math.md §21, "Physical markers").
-/// Throws InvalidArgument "marker_diameter" unless it is finite and >= 0.
+/// Throws InvalidArgument "marker_diameter" unless it is finite and >= 0 (the callers check it
+/// against the body's size with check_marker_diameter()).
 Eigen::Matrix3Xd sphere_centres(const Eigen::Matrix3Xd& points, const Eigen::Matrix3Xd& normals,
                                 double diameter);
 

@@ -9,6 +9,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "vantage/analysis/layout.h"
 #include "vantage/design/placement.h"
@@ -43,13 +44,18 @@ struct PlaceSettings {
   /// The tracker objective: one target (layout frame) and an isotropic FLE RMS.
   Eigen::Vector3d target = Eigen::Vector3d::Zero();
   double fle_rms = 0.0;
+  /// Keep-out volumes (mesh files in the body's frame) and the part of the body to sample (a mesh
+  /// file, or empty for the whole body): `vantage place`'s --exclude and --region.
+  std::vector<std::string> exclude;
+  std::string region;
 };
 
 /// One placement on a layout's body.
 struct PlaceOutcome {
   std::uint64_t revision = 0;  ///< revision of the layout it started from
   PlaceSettings settings;
-  int n_candidates = 0;  ///< sites after thinning
+  int n_candidates = 0;  ///< sites after thinning and the keep-out volumes
+  int excluded = 0;      ///< sampled sites the keep-out volumes dropped
   design::PlacementResult result;
   /// As `vantage place` decides it: the coverage reached and the placed layout's analysis
   /// certified (affine), trackable (camera) or certified at the target (tracker).
@@ -69,10 +75,11 @@ struct PlaceOutcome {
 /// True when `layout` is on a body: a point layout with normals and a body mesh.
 bool is_on_body(const Layout& layout);
 
-/// The sites of `layout`'s body as a layout: design::sample_surface_sites(body, candidates,
-/// separation, seed) with the separation at least the marker diameter, each with the cone of the
-/// layout's first marker, and the layout's min_visible, body and workspace (or the settings').
-/// Throws InvalidArgument when the layout is not on a body.
+/// The sites of `layout`'s body as a layout, as `vantage place BODY` makes them
+/// (place_json::sites_on_body: sampled on the region, without the keep-out volumes' sites, at
+/// the sphere centres with a diameter), each with the cone of the layout's first marker, and the
+/// layout's min_visible, body and workspace (or the settings'). Throws InvalidArgument when the
+/// layout is not on a body, or as `vantage place` refuses the settings.
 Layout body_sites(const Layout& layout, const PlaceSettings& settings);
 
 /// Synchronous placement: the settings checked as `vantage place` checks its options, body_sites()
