@@ -240,7 +240,11 @@ std::optional<Scored> PlacementSearch::greedy(std::vector<PlacementStep>* steps)
   std::vector<int> chosen = sorted(problem_.keep);
   const int k = problem_.sites.min_visible;
   auto record = [&](int added) {
-    const Scored s = chosen.size() >= static_cast<std::size_t>(k) ? score(chosen) : Scored{};
+    Scored s = chosen.size() >= static_cast<std::size_t>(k) ? score(chosen) : Scored{};
+    // Too few markers track nothing: t = 1 (affine), no value (camera, tracker).
+    if (chosen.size() < static_cast<std::size_t>(k) && !affine()) {
+      s.t = std::numeric_limits<double>::infinity();
+    }
     PlacementStep step;
     step.k = static_cast<int>(chosen.size());
     step.added = added;

@@ -159,6 +159,13 @@ TEST(PlaceCamera, GreedyWithSwapsAgainstTheOptimum) {
   const PlacementResult result = place_markers(problem, options);
   const testing::BestSubset truth = enumerate(sites, 5, CrbStatistic::kWorst);
   EXPECT_EQ(result.search, "greedy+swap");
+  // A greedy step of fewer markers than a direction must see has no value (+inf), not 1 degree.
+  ASSERT_FALSE(result.steps.empty());
+  for (const PlacementStep& step : result.steps) {
+    if (step.k < 3) {
+      EXPECT_EQ(step.value.objective, kInfinity) << step.k;
+    }
+  }
   EXPECT_GE(result.value.objective, truth.value * (1.0 - kSameValue));
   EXPECT_LE(result.value.objective, truth.value * (1.0 + kGreedyGap));
   std::cout << "[ gap      ] camera, 18 sites, K 5: greedy+swap " << result.value.objective
