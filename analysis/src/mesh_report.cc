@@ -166,6 +166,41 @@ MeshReport mesh_report(const Mesh& mesh) {
   return out;
 }
 
+MeshPatches mesh_patches(const Mesh& mesh) {
+  mesh.validate();
+  const std::size_t n = static_cast<std::size_t>(mesh.triangles.cols());
+  MeshReport counts;
+  const std::vector<EdgeUse> uses = edge_uses(mesh, first_identical_vertex(mesh.vertices), &counts);
+  Windings windings(n);
+  std::vector<char> degenerate(n, 1);
+  for (const EdgeUse& use : uses) degenerate[use.triangle] = 0;
+  std::vector<std::uint32_t> open_triangles;  // of a boundary or non-manifold edge
+  for (std::size_t k = 0; k < uses.size();) {
+    std::size_t end = k + 1;
+    while (end < uses.size() && uses[end].lo == uses[k].lo && uses[end].hi == uses[k].hi) ++end;
+    if (end - k == 2) {
+      windings.join(uses[k].triangle, uses[k + 1].triangle, uses[k].forward == uses[k + 1].forward);
+    } else {
+      for (std::size_t u = k; u < end; ++u) open_triangles.push_back(uses[u].triangle);
+    }
+    k = end;
+  }
+  MeshPatches out;
+  out.patch.assign(n, -1);
+  out.flipped.assign(n, 0);
+  std::vector<int> of_root(n, -1);
+  for (std::size_t t = 0; t < n; ++t) {
+    if (degenerate[t]) continue;
+    const auto [root, parity] = windings.find(static_cast<std::uint32_t>(t));
+    if (of_root[root] < 0) of_root[root] = out.count++;
+    out.patch[t] = of_root[root];
+    out.flipped[t] = parity;
+  }
+  out.closed.assign(static_cast<std::size_t>(out.count), 1);
+  for (std::uint32_t t : open_triangles) out.closed[static_cast<std::size_t>(out.patch[t])] = 0;
+  return out;
+}
+
 std::string MeshReport::warning(const std::string& name) const {
   std::vector<std::string> parts;
   if (boundary_edges > 0) {

@@ -79,21 +79,23 @@ Layout place_sampled_sites(const Request& request, const Mesh& mesh, const std::
   try {
     sampled =
         design::sample_surface_sites(part, request.candidates, request.separation(), request.seed);
-    if (!request.region.empty()) {
-      sampled.normals = design::outward_normals(mesh, sampled.points, sampled.normals);
-    }
   } catch (const InvalidArgument& e) {
     place_refuse(sampled_option, sampled_path + ": " + e.what());
   }
   if (!request.region.empty()) {
+    // Each region site on the body, with the body's triangle there: the whole body orients it.
     const double tolerance = kRegionOffBody * mesh.size();
+    std::vector<int> on_body(static_cast<std::size_t>(sampled.points.cols()));
     for (Eigen::Index i = 0; i < sampled.points.cols(); ++i) {
-      if (distance_to_mesh(mesh, sampled.points.col(i)) > tolerance) {
+      const MeshPoint nearest = nearest_mesh_point(mesh, sampled.points.col(i));
+      if (nearest.distance > tolerance) {
         place_refuse("--region", request.region + ": not on the body " + request.body +
                                      " (a point of it is farther than 1e-3 of the body's size "
                                      "from its surface: another frame or unit?)");
       }
+      on_body[static_cast<std::size_t>(i)] = static_cast<int>(nearest.triangle);
     }
+    sampled.normals = design::outward_normals(mesh, sampled.points, sampled.normals, on_body);
   }
   std::vector<design::KeepOut> volumes;
   for (const std::string& path : request.exclude) {

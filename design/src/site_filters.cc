@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/mesh_report.h"
 #include "vantage/body/ray_caster.h"
 #include "vantage/visibility/visibility.h"
 
@@ -68,7 +69,82 @@ const Eigen::Matrix3Xd& inside_rays() {
   return rays;
 }
 
+// A patch whose signed volume about its own centroid, in its propagated winding, is at least
+// this times its area^(3/2) holds a volume even when it is open (a pod without a bottom: about
+// 0.08; a sphere 0.094, a cube 0.068; a flat panel 0): docs/math.md §21, "Sites".
+constexpr double kCupLike = 0.02;
+// A site's normal is its triangle's (up to sign) when their cosine is at least this.
+constexpr double kSameFace = 0.5;
+
+// Per patch of `body`: +1 when its propagated winding faces out, -1 when in, 0 when it holds no
+// volume (open and flatter than kCupLike).
+std::vector<int> patch_orientations(const Mesh& body, const MeshPatches& patches) {
+  const std::size_t count = static_cast<std::size_t>(patches.count);
+  std::vector<Eigen::Vector3d> centroid(count, Eigen::Vector3d::Zero());
+  std::vector<double> triangles(count, 0.0);
+  for (Eigen::Index t = 0; t < body.triangles.cols(); ++t) {
+    const int p = patches.patch[static_cast<std::size_t>(t)];
+    if (p < 0) continue;
+    for (int c = 0; c < 3; ++c) centroid[p] += body.vertices.col(body.triangles(c, t)) / 3.0;
+    triangles[p] += 1.0;
+  }
+  std::vector<double> volume(count, 0.0), area(count, 0.0);
+  for (Eigen::Index t = 0; t < body.triangles.cols(); ++t) {
+    const int p = patches.patch[static_cast<std::size_t>(t)];
+    if (p < 0) continue;
+    const Eigen::Vector3d o = centroid[p] / triangles[p];
+    const Eigen::Vector3d a = body.vertices.col(body.triangles(0, t)) - o;
+    const Eigen::Vector3d b = body.vertices.col(body.triangles(1, t)) - o;
+    const Eigen::Vector3d c = body.vertices.col(body.triangles(2, t)) - o;
+    const double sign = patches.flipped[static_cast<std::size_t>(t)] ? -1.0 : 1.0;
+    volume[p] += sign * a.dot(b.cross(c)) / 6.0;
+    area[p] += 0.5 * (b - a).cross(c - a).norm();
+  }
+  std::vector<int> out(count, 0);
+  for (std::size_t p = 0; p < count; ++p) {
+    const bool holds =
+        patches.closed[p] || std::abs(volume[p]) >= kCupLike * std::pow(area[p], 1.5);
+    if (holds && volume[p] != 0.0) out[p] = volume[p] > 0.0 ? 1 : -1;
+  }
+  return out;
+}
+
 }  // namespace
+
+Eigen::Matrix3Xd outward_normals(const Mesh& body, const Eigen::Matrix3Xd& points,
+                                 const Eigen::Matrix3Xd& normals,
+                                 const std::vector<int>& triangles) {
+  if (normals.cols() != points.cols() ||
+      triangles.size() != static_cast<std::size_t>(points.cols())) {
+    throw InvalidArgument("normals", "expected one normal and one triangle per point (" +
+                                         std::to_string(points.cols()) + ")");
+  }
+  body.validate();
+  const MeshPatches patches = mesh_patches(body);
+  const std::vector<int> orientation = patch_orientations(body, patches);
+  Eigen::Matrix3Xd out = outward_normals(body, points, normals);
+  for (Eigen::Index i = 0; i < points.cols(); ++i) {
+    const int t = triangles[static_cast<std::size_t>(i)];
+    if (t < -1 || t >= body.triangles.cols()) {
+      throw InvalidArgument("triangles", static_cast<long>(i), "not a triangle of the body");
+    }
+    if (t < 0) continue;
+    const int p = patches.patch[static_cast<std::size_t>(t)];
+    if (p < 0 || orientation[static_cast<std::size_t>(p)] == 0) continue;  // the rays decide
+    const Eigen::Vector3d a = body.vertices.col(body.triangles(0, t));
+    const Eigen::Vector3d b = body.vertices.col(body.triangles(1, t));
+    const Eigen::Vector3d c = body.vertices.col(body.triangles(2, t));
+    // The triangle's normal in its patch's winding, turned out by the patch's volume.
+    const double sign = (patches.flipped[static_cast<std::size_t>(t)] ? -1.0 : 1.0) *
+                        orientation[static_cast<std::size_t>(p)];
+    const Eigen::Vector3d outward = sign * (b - a).cross(c - a).normalized();
+    const Eigen::Vector3d n = normals.col(i);
+    // A normal across the triangle's (a site at an edge, on another face): the rays decide.
+    if (std::abs(n.dot(outward)) < kSameFace * n.norm()) continue;
+    out.col(i) = n.dot(outward) < 0.0 ? Eigen::Vector3d(-n) : n;
+  }
+  return out;
+}
 
 Eigen::Matrix3Xd outward_normals(const Mesh& body, const Eigen::Matrix3Xd& points,
                                  const Eigen::Matrix3Xd& normals) {

@@ -115,7 +115,7 @@ SurfaceSites sample_surface_sites(const Mesh& mesh, int count, double min_separa
   }
   out.points.conservativeResize(3, kept);
   out.normals.conservativeResize(3, kept);
-  out.normals = outward_normals(mesh, out.points, out.normals);
+  out.normals = outward_normals(mesh, out.points, out.normals, out.triangles);
   return out;
 }
 

@@ -4,6 +4,7 @@
 
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "vantage/analysis/common.h"
 #include "vantage/design/placement_layout.h"
@@ -17,6 +18,7 @@ SurfaceSnap snap_to_surface(const Mesh& body, const Eigen::Matrix3Xd& points, do
   SurfaceSnap snap;
   snap.surface.resize(3, n);
   Eigen::Matrix3Xd wound(3, n);
+  std::vector<int> triangles(static_cast<std::size_t>(n));
   for (Eigen::Index i = 0; i < n; ++i) {
     const MeshPoint nearest = nearest_mesh_point(body, points.col(i));
     if (nearest.triangle < 0) {
@@ -24,8 +26,9 @@ SurfaceSnap snap_to_surface(const Mesh& body, const Eigen::Matrix3Xd& points, do
     }
     snap.surface.col(i) = nearest.point;
     wound.col(i) = nearest.normal;
+    triangles[static_cast<std::size_t>(i)] = static_cast<int>(nearest.triangle);
   }
-  snap.normals = outward_normals(body, snap.surface, wound);
+  snap.normals = outward_normals(body, snap.surface, wound, triangles);
   snap.centres = sphere_centres(snap.surface, snap.normals, diameter);
   snap.moved = (snap.centres - points).colwise().norm().transpose();
   return snap;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <cmath>
 
 #include "support/cube_mesh.h"
 #include "vantage/analysis/common.h"
@@ -51,6 +52,54 @@ TEST(SiteNormals, TurnedOutwardWhenGivenInward) {
   const Eigen::Matrix3Xd out = outward_normals(cube, sites.points, -sites.normals);
   EXPECT_TRUE(out.isApprox(sites.normals));
   EXPECT_THROW(outward_normals(cube, sites.points, sites.normals.leftCols(3)), InvalidArgument);
+}
+
+// A motor pod under its propeller (scripts/make_quadrotor.py's shape): a box open at the bottom,
+// [-1, 1]^2 x [0, 2], and a single-sided square sheet 0.2 above its top, three times as wide.
+// Every ray up from the pod's top meets the sheet and many rays down from under it leave through
+// the open bottom, so the rays alone turn the top's normal in; the pod holds a volume (its patch
+// is cup-like), which turns it out.
+Mesh pod_under_a_disc() {
+  Mesh pod = box(Eigen::Vector3d(-1.0, -1.0, 0.0), Eigen::Vector3d(1.0, 1.0, 2.0));
+  // The unit cube's first two triangles are its z = 0 face.
+  const Eigen::Matrix3Xi walls = pod.triangles.rightCols(10);
+  Mesh mesh;
+  mesh.vertices.resize(3, 12);
+  mesh.vertices.leftCols(8) = pod.vertices;
+  mesh.vertices.rightCols(4) << -3, 3, 3, -3, -3, -3, 3, 3, 2.2, 2.2, 2.2, 2.2;
+  mesh.triangles.resize(3, 12);
+  mesh.triangles.leftCols(10) = walls;
+  mesh.triangles.rightCols(2) << 8, 8, 9, 10, 10, 11;
+  return mesh;
+}
+
+TEST(SiteNormals, APodUnderADiscFacesOutAllRound) {
+  const Mesh mesh = pod_under_a_disc();
+  const SurfaceSites sites = sample_surface_sites(mesh, 400, 0.0, 5);
+  Eigen::Matrix3Xd top(3, 0);
+  int on_pod = 0;
+  for (Eigen::Index i = 0; i < sites.points.cols(); ++i) {
+    const Eigen::Vector3d p = sites.points.col(i);
+    if (p.z() > 2.1) continue;  // the sheet: either side is outside
+    ++on_pod;
+    // The pod's outward normal: its face's, away from the box's axis or up at the top.
+    Eigen::Vector3d expected = Eigen::Vector3d::UnitZ();
+    if (p.z() < 2.0 - 1e-12) {
+      expected = std::abs(p.x()) > std::abs(p.y()) ? Eigen::Vector3d(p.x() > 0 ? 1 : -1, 0, 0)
+                                                   : Eigen::Vector3d(0, p.y() > 0 ? 1 : -1, 0);
+    } else {
+      top.conservativeResize(3, top.cols() + 1);
+      top.col(top.cols() - 1) = p;
+    }
+    EXPECT_TRUE(sites.normals.col(i).isApprox(expected, 1e-12))
+        << i << ": " << sites.normals.col(i).transpose() << " at " << p.transpose();
+  }
+  ASSERT_GT(on_pod, 100);
+  ASSERT_GT(top.cols(), 10);
+  // The rays alone get the top wrong (the case this rule is for).
+  const Eigen::Matrix3Xd by_rays =
+      outward_normals(mesh, top, Eigen::Vector3d::UnitZ().replicate(1, top.cols()));
+  EXPECT_LT(by_rays.row(2).minCoeff(), 0.0);
 }
 
 TEST(KeepOut, InsideOrWithinTheClearance) {

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "vantage/analysis/mesh.h"
 
@@ -54,5 +55,23 @@ struct MeshReport {
 /// The report of `mesh` (finite vertices). O(t log t) time and about 45 bytes per triangle of
 /// temporary memory for t triangles.
 MeshReport mesh_report(const Mesh& mesh);
+
+/// The patches of a mesh (docs/math.md §21, "Sites"): the triangles joined by edges of exactly
+/// two triangles (between welded vertices, as MeshReport's edges), each patch with one winding
+/// that its triangles agree on where they can (the propagation of MeshReport's
+/// triangles_against_neighbours).
+struct MeshPatches {
+  int count = 0;
+  /// Per triangle: its patch in [0, count), or -1 for a degenerate triangle.
+  std::vector<int> patch;
+  /// Per triangle: wound against its patch's winding (its normal turned, it agrees).
+  std::vector<char> flipped;
+  /// Per patch: none of its triangles' edges is a boundary edge or shared by more than two
+  /// triangles, so that the patch encloses a volume.
+  std::vector<char> closed;
+};
+
+/// The patches of `mesh` (finite vertices). O(t log t) for t triangles.
+MeshPatches mesh_patches(const Mesh& mesh);
 
 }  // namespace vantage

@@ -24,6 +24,15 @@ namespace vantage::design {
 Eigen::Matrix3Xd outward_normals(const Mesh& body, const Eigen::Matrix3Xd& points,
                                  const Eigen::Matrix3Xd& normals);
 
+/// The same, with the triangle of `body` that each point lies on (or -1): a site on a patch that
+/// holds a volume (closed, or open but cup-like: a pod without a bottom) is turned out by the sign
+/// of the patch's volume in its propagated winding, whatever blocks its rays; the rays decide the
+/// others (and a normal that is not its triangle's, up to sign and 60 degrees) (docs/math.md §21,
+/// "Sites"). Throws as above, and "triangles" for an index outside the body.
+Eigen::Matrix3Xd outward_normals(const Mesh& body, const Eigen::Matrix3Xd& points,
+                                 const Eigen::Matrix3Xd& normals,
+                                 const std::vector<int>& triangles);
+
 /// A keep-out volume: a closed mesh, and a clearance about it.
 class KeepOut {
  public:
