@@ -61,15 +61,9 @@ int run_place(const PlaceArgs& args) {
   return kExitOk;
 }
 
-}  // namespace
-
-Command add_place_command(CLI::App& root) {
-  auto args = std::make_shared<PlaceArgs>();
-  CLI::App* sub = root.add_subcommand(
-      "place",
-      "Choose K marker sites on a body (a mesh's surface, or given sites with normals) so that "
-      "every workspace direction is tracked and the certified worst case under visibility is "
-      "best (docs/math.md §21)");
+// BODY or --sites, K and --out, the visibility options, and where markers may go. Returns
+// --candidates (whether it was given decides a check).
+CLI::Option* add_site_options(CLI::App* sub, PlaceArgs* args) {
   sub->add_option("BODY", args->body, "body mesh (STL, OBJ, PLY, glTF, ...) to sample sites on");
   sub->add_option("--sites", args->sites,
                   "candidate sites: a point layout with normals (its cones, min_visible, body and "
@@ -100,6 +94,11 @@ Command add_place_command(CLI::App& root) {
   sub->add_option("--keep", args->keep,
                   "markers already on the body: a layout of points with normals (3 or more): "
                   "always chosen, counted in K");
+  return candidates;
+}
+
+// The search: the robust objective, identification, seeds, threads and the search's sizes.
+void add_search_options(CLI::App* sub, PlaceArgs* args) {
   sub->add_flag("--robust-dropout", args->robust_dropout,
                 "maximise the worst case over the loss of any one marker");
   sub->add_option("--min-distance-difference", args->min_distance_difference,
@@ -123,6 +122,10 @@ Command add_place_command(CLI::App& root) {
   sub->add_option("--certificate-tolerance", args->certificate_tolerance,
                   "t_upper - t_lower of every certified search, in [1e-15, 1e-3]")
       ->capture_default_str();
+}
+
+// The objective and its camera or tracker settings.
+void add_objective_options(CLI::App* sub, PlaceArgs* args) {
   sub->add_option("--objective", args->objective,
                   "affine: the paper's scale-free bound under visibility; camera: the pinhole "
                   "pose CRB; tracker: the RMS TRE at --target (docs/math.md §21)")
@@ -151,6 +154,35 @@ Command add_place_command(CLI::App& root) {
   args->tre.fle_rms_option->description("tracker objective: isotropic FLE, RMS of the 3-D error");
   args->tre.fle_sigma_option->description(
       "tracker objective: anisotropic FLE SP,SD, sd across and along the line of sight");
+}
+
+// The typed settings of the options given as text (--aim, --distances, the tracker's).
+void parse_typed_options(PlaceArgs* args) {
+  if (!args->aim_text.empty()) args->aim = commands::parse_point(args->aim_text, "--aim");
+  if (!args->distances_text.empty()) {
+    const std::optional<std::vector<double>> distances =
+        commands::parse_numbers(args->distances_text);
+    if (!distances) {
+      throw InvalidArgument("--distances", "expected comma-separated numbers D1,D2,...");
+    }
+    args->distances = *distances;
+  }
+  if (!args->tre.targets.empty()) args->targets = args->tre.parsed_targets();
+  if (args->tre.fle_rms || !args->tre.fle_sigma.empty()) args->fle = args->tre.parsed_fle();
+}
+
+}  // namespace
+
+Command add_place_command(CLI::App& root) {
+  auto args = std::make_shared<PlaceArgs>();
+  CLI::App* sub = root.add_subcommand(
+      "place",
+      "Choose K marker sites on a body (a mesh's surface, or given sites with normals) so that "
+      "every workspace direction is tracked and the certified worst case under visibility is "
+      "best (docs/math.md §21)");
+  CLI::Option* candidates = add_site_options(sub, args.get());
+  add_search_options(sub, args.get());
+  add_objective_options(sub, args.get());
   sub->add_option("--min-coverage", args->min_coverage,
                   "least trackable fraction of the workspace's lattice, in (0, 1] (default: "
                   "every direction but one)");
@@ -162,19 +194,7 @@ Command add_place_command(CLI::App& root) {
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
   return {sub, [args, candidates] {
             args->candidates_given = candidates->count() > 0;
-            if (!args->aim_text.empty()) args->aim = commands::parse_point(args->aim_text, "--aim");
-            if (!args->distances_text.empty()) {
-              const std::optional<std::vector<double>> distances =
-                  commands::parse_numbers(args->distances_text);
-              if (!distances) {
-                throw InvalidArgument("--distances", "expected comma-separated numbers D1,D2,...");
-              }
-              args->distances = *distances;
-            }
-            if (!args->tre.targets.empty()) args->targets = args->tre.parsed_targets();
-            if (args->tre.fle_rms || !args->tre.fle_sigma.empty()) {
-              args->fle = args->tre.parsed_fle();
-            }
+            parse_typed_options(args.get());
             return run_place(*args);
           }};
 }

@@ -106,13 +106,9 @@ void print_tracker_objective(const place_json::Outcome& outcome) {
   }
 }
 
-}  // namespace
-
-void print_place_report(const PlaceArgs& args, int n_candidates, int drawn, int excluded,
-                        const place_json::Outcome& outcome, bool written) {
-  const design::PlacementResult& r = outcome.result;
-  const PlacedLayout& placed = outcome.placed;
-  const visibility::VisibilityReport& v = *placed.report.visibility;
+// The request: K, the sites and how they were drawn, the markers' shape.
+void print_request(const PlaceArgs& args, int n_candidates, int drawn, int excluded,
+                   const design::PlacementResult& r, const visibility::VisibilityReport& v) {
   std::cout << "vantage place: " << args.markers << " markers on "
             << (args.sites.empty() ? args.body : args.sites) << "\n  " << n_candidates
             << " candidate sites";
@@ -132,6 +128,12 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn, int 
     std::cout << "  point markers; ";
   }
   std::cout << "min separation " << format_number(args.separation(), 6) << "\n\n";
+}
+
+// The search: the greedy steps, swaps and perturbations (or the exhaustive count), and the random
+// baseline.
+void print_search(const PlaceArgs& args, const design::PlacementResult& r,
+                  const PlacedLayout& placed) {
   if (!r.steps.empty()) {
     std::cout << (placed.crb   ? "greedy construction (k markers: coverage, the objective on the "
                                  "search's lattice):\n"
@@ -175,6 +177,11 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn, int 
               << " (coverage " << percent(b.best_coverage) << "), median "
               << format_number(b.median_pbar_min, 6) << "\n";
   }
+}
+
+// The chosen sites and the placed layout's analysis (and its value after a lost marker).
+void print_on_its_body(const design::PlacementResult& r, const PlacedLayout& placed,
+                       const visibility::VisibilityReport& v) {
   std::cout << "chosen:";
   for (int s : r.chosen) std::cout << " " << placed.site_names[static_cast<std::size_t>(s)];
   std::cout << "\n\non its body (the placed layout's analysis, as vantage analyze):\n"
@@ -196,6 +203,18 @@ void print_place_report(const PlaceArgs& args, int n_candidates, int drawn, int 
               << placed.site_names[static_cast<std::size_t>(r.robust->worst_lost_marker)]
               << ", coverage at least " << percent(r.robust->coverage) << "\n";
   }
+}
+
+}  // namespace
+
+void print_place_report(const PlaceArgs& args, int n_candidates, int drawn, int excluded,
+                        const place_json::Outcome& outcome, bool written) {
+  const design::PlacementResult& r = outcome.result;
+  const PlacedLayout& placed = outcome.placed;
+  const visibility::VisibilityReport& v = *placed.report.visibility;
+  print_request(args, n_candidates, drawn, excluded, r, v);
+  print_search(args, r, placed);
+  print_on_its_body(r, placed, v);
   if (placed.crb) print_camera_objective(args, outcome);
   if (placed.tre) print_tracker_objective(outcome);
   if (written) std::cout << "written: " << args.out << "\n";

@@ -19,12 +19,11 @@ constexpr double kBaselineTolerance = 1e-5;
 
 }  // namespace
 
-RandomBaseline PlacementSearch::baseline(std::optional<Scored>* best) {
+std::vector<std::optional<Scored>> PlacementSearch::draw_baseline() {
   const std::vector<int> free = free_sites();
   const int k = problem_.markers - static_cast<int>(problem_.keep.size());
   const int trials = options_.random_trials;
   std::vector<std::optional<Scored>> drawn(static_cast<std::size_t>(trials));
-  progress("random baseline, " + std::to_string(trials) + " subsets");
   // Each trial has its own engine, so the draws do not depend on the threads. Coverage first:
   // it is counted, not searched.
   parallel_blocks(trials, options_.threads, [&](long b, long e) {
@@ -52,6 +51,11 @@ RandomBaseline PlacementSearch::baseline(std::optional<Scored>* best) {
       }
     }
   });
+  return drawn;
+}
+
+void PlacementSearch::search_baseline(std::vector<std::optional<Scored>>* drawn_subsets) {
+  std::vector<std::optional<Scored>>& drawn = *drawn_subsets;
   // t is searched only where it counts: the complete trials (a trial that leaves a lattice
   // direction untrackable has p-bar_min 0 in the median) and those tying the best coverage.
   const Scored* top = nullptr;
@@ -79,6 +83,16 @@ RandomBaseline PlacementSearch::baseline(std::optional<Scored>* best) {
     }
   });
   evaluations_ += static_cast<long>(searched.size());
+}
+
+RandomBaseline PlacementSearch::baseline(std::optional<Scored>* best) {
+  progress("random baseline, " + std::to_string(options_.random_trials) + " subsets");
+  std::vector<std::optional<Scored>> drawn = draw_baseline();
+  search_baseline(&drawn);
+  const Scored* top = nullptr;
+  for (const std::optional<Scored>& s : drawn) {
+    if (s && (top == nullptr || better_cover(*s, *top))) top = &*s;
+  }
   RandomBaseline out;
   std::vector<double> pbar;
   std::vector<double> values;

@@ -70,6 +70,12 @@ class PlacementSearch {
   std::optional<int> covering_markers();
 
  private:
+  /// The baseline's random feasible subsets, one per trial (none where 100 draws were not
+  /// feasible), with their coverage.
+  std::vector<std::optional<Scored>> draw_baseline();
+  /// The objective of the drawn subsets where it counts: the complete ones and those that tie
+  /// the best coverage.
+  void search_baseline(std::vector<std::optional<Scored>>* drawn);
   std::vector<std::vector<int>> family(const std::vector<int>& chosen) const;
   // The key as placements are ranked: every key covering required() directions is the same
   // (coverage no longer ranks), below it the count, then (`potential`: the greedy's guide only)

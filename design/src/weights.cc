@@ -160,6 +160,93 @@ bool WeightsOptions::is_valid(std::string* why) const {
   return true;
 }
 
+namespace {
+
+// Re-solves the LP on a fixed layout (its solves counted in `out`); fills `s` (weights,
+// min_weight) when weights exist.
+bool verify_fix(const Eigen::Matrix3Xd& fixed, const WeightsOptions& options, Weights* out,
+                WeightsSuggestion* s) {
+  const Classified f = classify(fixed, options);
+  out->lp_solves += f.lp_solves;
+  if (f.status != Weights::Status::kPositive && f.status != Weights::Status::kBoundary) {
+    return false;
+  }
+  s->weights = f.weights;
+  s->min_weight = f.weights.minCoeff();
+  return true;
+}
+
+Eigen::Matrix3Xd with_entry(const Eigen::Matrix3Xd& z, const Eigen::Vector3d& added) {
+  const Eigen::Index n = z.cols();
+  Eigen::Matrix3Xd fixed(3, n + 1);
+  fixed.leftCols(n) = z;
+  fixed.col(n) = added;
+  return fixed;
+}
+
+// The symmetric partner -z_i that gives the largest smallest weight, among the candidates of
+// the LP's slack.
+void suggest_partner(const Eigen::Matrix3Xd& z, const Classified& c, const WeightsOptions& options,
+                     Weights* out) {
+  WeightsSuggestion best_partner;
+  bool have_partner = false;
+  for (int i : partner_candidates(c.slack, static_cast<int>(z.cols()))) {
+    if (!(z.col(i).norm() > 0.0)) continue;
+    WeightsSuggestion partner;
+    partner.kind = WeightsSuggestion::Kind::kSymmetricPartner;
+    partner.index = i;
+    partner.added = -z.col(i);
+    if (!verify_fix(with_entry(z, partner.added), options, out, &partner)) continue;
+    if (!have_partner || partner.min_weight > best_partner.min_weight) {
+      have_partner = true;
+      best_partner = partner;
+    }
+  }
+  if (!have_partner) return;
+  std::ostringstream t;
+  t << "add the symmetric partner -z[" << best_partner.index
+    << "] = " << format_vector(best_partner.added) << ": the smallest weight becomes "
+    << best_partner.min_weight;
+  best_partner.text = t.str();
+  out->suggestions.push_back(best_partner);
+}
+
+// The fixes of a layout without positive weights, best first: a symmetric partner, a balancing
+// entry, and (points) moving the origin to the centroid.
+void suggest_fixes(const Eigen::Matrix3Xd& z, const Classified& c, const WeightsOptions& options,
+                   bool allow_shift, Weights* out) {
+  suggest_partner(z, c, options, out);
+  WeightsSuggestion entry;
+  entry.kind = WeightsSuggestion::Kind::kBalancingEntry;
+  entry.added = -z.rowwise().sum();
+  if (entry.added.norm() > 0.0 && verify_fix(with_entry(z, entry.added), options, out, &entry)) {
+    std::ostringstream t;
+    t << "add one entry at -sum z_i = " << format_vector(entry.added)
+      << ": equal weights then balance, the smallest weight becomes " << entry.min_weight;
+    entry.text = t.str();
+    out->suggestions.push_back(entry);
+  }
+  if (allow_shift) {
+    const Eigen::Vector3d centroid = z.rowwise().mean();
+    WeightsSuggestion shift;
+    shift.kind = WeightsSuggestion::Kind::kShiftOrigin;
+    shift.shift = centroid;
+    if (verify_fix(z.colwise() - centroid, options, out, &shift)) {
+      std::ostringstream t;
+      t << "move the object origin to the centroid " << format_vector(centroid)
+        << " of the points: the smallest weight becomes " << shift.min_weight;
+      shift.text = t.str();
+      out->suggestions.push_back(shift);
+    }
+  }
+  std::stable_sort(out->suggestions.begin(), out->suggestions.end(),
+                   [](const WeightsSuggestion& a, const WeightsSuggestion& b) {
+                     return a.min_weight > b.min_weight;
+                   });
+}
+
+}  // namespace
+
 Weights nullspace_weights(const Eigen::Matrix3Xd& z, const WeightsOptions& options,
                           bool allow_shift) {
   std::string why;
@@ -170,7 +257,6 @@ Weights nullspace_weights(const Eigen::Matrix3Xd& z, const WeightsOptions& optio
       throw InvalidArgument("z[" + std::to_string(i) + "]: not a finite number");
     }
   }
-  const int n = static_cast<int>(z.cols());
   Weights out;
   const Classified c = classify(z, options);
   out.status = c.status;
@@ -202,73 +288,7 @@ Weights nullspace_weights(const Eigen::Matrix3Xd& z, const WeightsOptions& optio
   }
   if (!options.suggest || c.status == Weights::Status::kPositive) return out;
 
-  // Re-solves the LP on a fixed layout; fills `s` (weights, min_weight) when weights exist.
-  auto verify = [&](const Eigen::Matrix3Xd& fixed, WeightsSuggestion* s) {
-    const Classified f = classify(fixed, options);
-    out.lp_solves += f.lp_solves;
-    if (f.status != Weights::Status::kPositive && f.status != Weights::Status::kBoundary) {
-      return false;
-    }
-    s->weights = f.weights;
-    s->min_weight = f.weights.minCoeff();
-    return true;
-  };
-  auto with_entry = [&](const Eigen::Vector3d& added) {
-    Eigen::Matrix3Xd fixed(3, n + 1);
-    fixed.leftCols(n) = z;
-    fixed.col(n) = added;
-    return fixed;
-  };
-
-  WeightsSuggestion best_partner;
-  bool have_partner = false;
-  for (int i : partner_candidates(c.slack, n)) {
-    if (!(z.col(i).norm() > 0.0)) continue;
-    WeightsSuggestion partner;
-    partner.kind = WeightsSuggestion::Kind::kSymmetricPartner;
-    partner.index = i;
-    partner.added = -z.col(i);
-    if (!verify(with_entry(partner.added), &partner)) continue;
-    if (!have_partner || partner.min_weight > best_partner.min_weight) {
-      have_partner = true;
-      best_partner = partner;
-    }
-  }
-  if (have_partner) {
-    std::ostringstream t;
-    t << "add the symmetric partner -z[" << best_partner.index
-      << "] = " << format_vector(best_partner.added) << ": the smallest weight becomes "
-      << best_partner.min_weight;
-    best_partner.text = t.str();
-    out.suggestions.push_back(best_partner);
-  }
-  WeightsSuggestion entry;
-  entry.kind = WeightsSuggestion::Kind::kBalancingEntry;
-  entry.added = -z.rowwise().sum();
-  if (entry.added.norm() > 0.0 && verify(with_entry(entry.added), &entry)) {
-    std::ostringstream t;
-    t << "add one entry at -sum z_i = " << format_vector(entry.added)
-      << ": equal weights then balance, the smallest weight becomes " << entry.min_weight;
-    entry.text = t.str();
-    out.suggestions.push_back(entry);
-  }
-  if (allow_shift) {
-    const Eigen::Vector3d centroid = z.rowwise().mean();
-    WeightsSuggestion shift;
-    shift.kind = WeightsSuggestion::Kind::kShiftOrigin;
-    shift.shift = centroid;
-    if (verify(z.colwise() - centroid, &shift)) {
-      std::ostringstream t;
-      t << "move the object origin to the centroid " << format_vector(centroid)
-        << " of the points: the smallest weight becomes " << shift.min_weight;
-      shift.text = t.str();
-      out.suggestions.push_back(shift);
-    }
-  }
-  std::stable_sort(out.suggestions.begin(), out.suggestions.end(),
-                   [](const WeightsSuggestion& a, const WeightsSuggestion& b) {
-                     return a.min_weight > b.min_weight;
-                   });
+  suggest_fixes(z, c, options, allow_shift, &out);
   return out;
 }
 
