@@ -21,6 +21,7 @@
 #include "tre_input.h"
 #include "vantage/analysis/common.h"
 #include "vantage/commands/tre_json.h"
+#include "vantage/io/printable.h"
 #include "vantage/io/text_file.h"
 #include "vantage/plot/crb_figures.h"
 #include "vantage/plot/experiment_figures.h"
@@ -342,7 +343,7 @@ plot::LayoutFiguresOptions layout_figures_options(const PlotArgs& args) {
   options.threshold_deg = args.threshold_deg;
   for (const std::string& name : args.only) {
     if (!plot::is_figure_name(name)) {
-      bad("--only: unknown figure \"" + name +
+      bad("--only: unknown figure \"" + io::excerpt(name) +
           "\" (viewpoint_map, visibility, dropout, error_surface, vectors, placement, design)");
     }
     if (name == "design" && args.design.empty()) {

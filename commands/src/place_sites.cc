@@ -161,7 +161,8 @@ std::vector<int> place_append_kept(const Request& request, Layout* sites) {
   for (Eigen::Index i = 0; i < f; ++i) {
     const std::string name = kept.names.empty() ? "kept" + std::to_string(i + 1) : kept.names[i];
     if (std::find(names.begin(), names.end(), name) != names.end()) {
-      place_refuse("--keep", request.keep + ": marker name \"" + name + "\" is also a site's name");
+      place_refuse("--keep", request.keep + ": marker name \"" + io::excerpt(name) +
+                                 "\" is also a site's name");
     }
     names.push_back(name);
   }

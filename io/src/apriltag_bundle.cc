@@ -20,6 +20,8 @@ namespace {
 
 using internal::fail;
 
+// A missing bundle's error lists at most this many of the file's bundle names.
+constexpr std::size_t kListedBundles = 10;
 // A quaternion shorter than this cannot be normalised into a rotation meaningfully.
 constexpr double kMinQuaternionNorm = 1e-12;
 
@@ -103,14 +105,20 @@ std::size_t choose_bundle(const YAML::Node& bundles, const std::string& source,
     const YAML::Node name = bundles[b].IsMap() ? bundles[b]["name"] : YAML::Node();
     const std::string text = name && name.IsScalar() ? name.Scalar() : "";
     if (!wanted.empty() && text == wanted) return b;
-    names += (b ? ", " : "") + (text.empty() ? "tag_bundles[" + std::to_string(b) + "]" : text);
+    if (b < kListedBundles) {
+      names += (b ? ", " : "") +
+               (text.empty() ? "tag_bundles[" + std::to_string(b) + "]" : excerpt(text));
+    }
+  }
+  if (bundles.size() > kListedBundles) {
+    names += ", and " + std::to_string(bundles.size() - kListedBundles) + " more";
   }
   if (wanted.empty() && bundles.size() == 1) return 0;
   if (wanted.empty()) {
     fail(source, "tag_bundles: " + std::to_string(bundles.size()) +
                      " bundles; choose one with --bundle (" + names + ")");
   }
-  fail(source, "tag_bundles: no bundle named \"" + wanted + "\" (" + names + ")");
+  fail(source, "tag_bundles: no bundle named \"" + excerpt(wanted) + "\" (" + names + ")");
 }
 
 }  // namespace
@@ -118,7 +126,7 @@ std::size_t choose_bundle(const YAML::Node& bundles, const std::string& source,
 TagPoints tag_points_from_string(const std::string& name, const std::string& option) {
   if (name == "corners") return TagPoints::kCorners;
   if (name == "centres" || name == "centers") return TagPoints::kCentres;
-  throw InvalidArgument(option + ": expected corners or centres, got \"" + printable(name) + "\"");
+  throw InvalidArgument(option + ": expected corners or centres, got \"" + excerpt(name) + "\"");
 }
 
 namespace {

@@ -7,6 +7,7 @@
 #include "number_text.h"
 #include "vantage/analysis/common.h"
 #include "vantage/io/csv_layout.h"
+#include "vantage/io/printable.h"
 
 namespace vantage::io {
 
@@ -51,8 +52,8 @@ std::string layout_to_csv(const Layout& layout) {
   for (Eigen::Index i = 0; i < n; ++i) {
     const std::string name = layout.entry_name(i);
     if (const char* reason = unwritable_reason(name)) {
-      throw InvalidArgument("names[" + std::to_string(i) + "]: \"" + name + "\" " + reason +
-                            ", which CSV cannot hold; write .json");
+      throw InvalidArgument("names[" + std::to_string(i) + "]: \"" + excerpt(name) + "\" " +
+                            reason + ", which CSV cannot hold; write .json");
     }
   }
   const MarkerVisibility* visibility = layout.visibility ? &*layout.visibility : nullptr;

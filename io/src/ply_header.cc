@@ -66,7 +66,7 @@ bool read_elements(std::istream& in, std::vector<Element>* elements, bool* ascii
       const auto [end, error] = std::from_chars(count.data(), count.data() + count.size(), e.count);
       if (error != std::errc() || end != count.data() + count.size()) {
         throw InvalidArgument("PLY header line " + std::to_string(number) + ": element \"" +
-                              printable(e.name) + "\" has count \"" + printable(count) +
+                              excerpt(e.name) + "\" has count \"" + excerpt(count) +
                               "\", not a whole number");
       }
       elements->push_back(e);

@@ -245,6 +245,23 @@ TEST(HardeningCli, ProgressOnlyOnATerminal) {
   EXPECT_FALSE(std::regex_search(quiet, progress)) << quiet;
 }
 
+// Issue 36, item 8: a user's word quoted in an error is an excerpt (its first 60 bytes and its
+// size), so that a 5 000-byte figure or marker name does not become a 5 000-byte line.
+TEST(HardeningCli, LongWordsInErrorsAreExcerpts) {
+  constexpr std::size_t kShortLine = 600;
+  ScratchDir scratch;
+  const std::string word(5000, 'q');
+  scratch.write("in.json", kTriadText);
+  const testing::CliRun only = run_vantage("plot in.json --out figs --only " + word, scratch);
+  expect_bad_input(only, "--only: unknown figure \"" + word.substr(0, 60) + "... (5000 bytes)\"");
+  EXPECT_LT(only.err.size(), kShortLine);
+  scratch.write("named.json", R"({"points": [[0,0,0],[1,0,0],[0,1,0]], "names": ["a", "b", ")" +
+                                  word + R"(,c"]})");
+  const testing::CliRun csv = run_vantage("layout convert named.json --out named.csv", scratch);
+  expect_bad_input(csv, "names[2]: \"" + word.substr(0, 60) + "... (5002 bytes)\"");
+  EXPECT_LT(csv.err.size(), kShortLine);
+}
+
 TEST(HardeningCli, ControlCharactersInAFileNameAreEscaped) {
   // An escape sequence in a file name must not reach the terminal raw: written \x1b.
   ScratchDir scratch;

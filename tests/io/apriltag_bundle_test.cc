@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include "support/eigen_testing.h"
+#include "support/message_of.h"
 #include "vantage/analysis/common.h"
 
 namespace vantage::io {
@@ -131,6 +132,31 @@ const BadBundle kBadBundles[] = {
 
 INSTANTIATE_TEST_SUITE_P(AprilTagBundle, BadAprilTagFile, ::testing::ValuesIn(kBadBundles),
                          [](const auto& info) { return std::string(info.param.name); });
+
+// Issue 36, item 8: a name from the file (or --bundle) is quoted as an excerpt, and the list of
+// the file's bundles stops at ten, so that a 100 kB name is not a 100 kB message.
+TEST(AprilTagBundle, LongNamesAreQuotedAsExcerptsAndTheListStops) {
+  constexpr std::size_t kShortMessage = 1000;
+  const std::string long_name(100000, 'n');
+  std::string text = bundle(kTwoTags, long_name);
+  for (int b = 0; b < 11; ++b) {
+    text += "  - name: b" + std::to_string(b) + "\n    layout:\n" + kTwoTags;
+  }
+  const std::string choose = error_of(text);
+  EXPECT_THAT(choose, HasSubstr("12 bundles; choose one with --bundle (" + std::string(60, 'n') +
+                                "... (100000 bytes), b0, b1"));
+  EXPECT_THAT(choose, HasSubstr(", b8, and 2 more)"));
+  EXPECT_LT(choose.size(), kShortMessage);
+  AprilTagOptions options;
+  options.bundle = long_name + "x";
+  const std::string missing = error_of(text, options);
+  EXPECT_THAT(missing,
+              HasSubstr("no bundle named \"" + std::string(60, 'n') + "... (100001 bytes)"));
+  EXPECT_LT(missing.size(), kShortMessage);
+  EXPECT_THAT(testing::message_of([&] { tag_points_from_string(long_name, "--tag-points"); }),
+              HasSubstr("--tag-points: expected corners or centres, got \"" + std::string(60, 'n') +
+                        "... (100000 bytes)\""));
+}
 
 TEST(AprilTagBundle, IdentityTagCornersAreHalfSizeOffsetsInApriltagRosOrder) {
   const AprilTagMarkers m = parse_apriltag_markers(

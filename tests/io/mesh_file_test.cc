@@ -195,6 +195,20 @@ TEST(MeshFile, PlyHeaderWithACountThatIsNotAWholeNumberIsRefused) {
   }
 }
 
+// Issue 36, item 8: the header's words are quoted as excerpts.
+TEST(MeshFile, PlyHeaderWordsAreQuotedAsExcerpts) {
+  const Scratch scratch;
+  const std::string long_word(100000, 'w');
+  const std::string path =
+      scratch.write("long.ply", "ply\nformat ascii 1.0\nelement " + long_word + " " + long_word +
+                                    "\nproperty float x\nend_header\n");
+  const std::string message = message_of([&] { io::read_mesh(path); });
+  EXPECT_THAT(message, HasSubstr("PLY header line 3: element \"" + std::string(60, 'w') +
+                                 "... (100000 bytes)\" has count \"" + std::string(60, 'w') +
+                                 "... (100000 bytes)\", not a whole number"));
+  EXPECT_LT(message.size(), 1000u);
+}
+
 TEST(MeshFile, PlyWhoseCountsFitItsSizeReads) {
   const Scratch scratch;
   for (const bool binary : {false, true}) {
