@@ -124,17 +124,19 @@ void add_search_options(CLI::App* sub, PlaceArgs* args) {
       ->capture_default_str();
 }
 
-// The objective and its camera or tracker settings.
-void add_objective_options(CLI::App* sub, PlaceArgs* args) {
+// The objective and its camera or tracker settings. Returns --distances (given empty, it is
+// refused).
+CLI::Option* add_objective_options(CLI::App* sub, PlaceArgs* args) {
   sub->add_option("--objective", args->objective,
                   "affine: the paper's scale-free bound under visibility; camera: the pinhole "
                   "pose CRB; tracker: the RMS TRE at --target (docs/math.md §21)")
       ->capture_default_str();
   sub->add_option("--distance", args->distance,
                   "camera objective: distance of the camera from the aim point, layout units");
-  sub->add_option("--distances", args->distances_text,
-                  "camera objective: D1,D2,... an approach instead of --distance: the largest "
-                  "over these distances of the statistic");
+  CLI::Option* distances =
+      sub->add_option("--distances", args->distances_text,
+                      "camera objective: D1,D2,... an approach instead of --distance: the largest "
+                      "over these distances of the statistic");
   sub->add_option("--focal", args->focal, "camera objective: focal length, pixels");
   sub->add_option("--noise-px", args->noise_px,
                   "camera objective: pixel noise per coordinate, pixels");
@@ -154,15 +156,16 @@ void add_objective_options(CLI::App* sub, PlaceArgs* args) {
   args->tre.fle_rms_option->description("tracker objective: isotropic FLE, RMS of the 3-D error");
   args->tre.fle_sigma_option->description(
       "tracker objective: anisotropic FLE SP,SD, sd across and along the line of sight");
+  return distances;
 }
 
 // The typed settings of the options given as text (--aim, --distances, the tracker's).
 void parse_typed_options(PlaceArgs* args) {
   if (!args->aim_text.empty()) args->aim = commands::parse_point(args->aim_text, "--aim");
-  if (!args->distances_text.empty()) {
+  if (args->distances_given) {
     const std::optional<std::vector<double>> distances =
         commands::parse_numbers(args->distances_text);
-    if (!distances) {
+    if (!distances || distances->empty()) {
       throw InvalidArgument("--distances", "expected comma-separated numbers D1,D2,...");
     }
     args->distances = *distances;
@@ -182,7 +185,7 @@ Command add_place_command(CLI::App& root) {
       "best (docs/math.md §21)");
   CLI::Option* candidates = add_site_options(sub, args.get());
   add_search_options(sub, args.get());
-  add_objective_options(sub, args.get());
+  CLI::Option* distances = add_objective_options(sub, args.get());
   sub->add_option("--min-coverage", args->min_coverage,
                   "least trackable fraction of the workspace's lattice, in (0, 1] (default: "
                   "every direction but one)");
@@ -192,8 +195,9 @@ Command add_place_command(CLI::App& root) {
   sub->add_flag("--overwrite", args->overwrite, "let --out replace an existing regular file");
   sub->add_flag("--quiet", args->quiet, "no progress line on stderr (shown only on a terminal)");
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
-  return {sub, [args, candidates] {
+  return {sub, [args, candidates, distances] {
             args->candidates_given = candidates->count() > 0;
+            args->distances_given = distances->count() > 0;
             parse_typed_options(args.get());
             return run_place(*args);
           }};

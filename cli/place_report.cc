@@ -43,13 +43,18 @@ void print_camera_objective(const PlaceArgs& args, const place_json::Outcome& ou
             << format_number(c.focal_length, 9) << " --noise-px " << format_number(c.noise_px, 9)
             << " --samples " << c.samples << " --aim " << aim_option(*c.aim) << "):\n";
   if (!approach.empty()) {
-    // The approach: each distance's statistic; the largest decides and is detailed below.
+    // The approach: each distance's statistic; the worst decides and is detailed below.
     for (const sensor_json::ApproachStep& step : approach) {
-      std::cout << "  D " << format_number(step.distance, 9) << ": " << args.statistic
-                << " rot_rms "
-                << (std::isfinite(step.value) ? objective_text(outcome.placed, step.value)
-                                              : std::string("not trackable"))
-                << (step.distance == c.distance ? "  (decides)" : "") << "\n";
+      std::cout << "  D " << format_number(step.distance, 9) << ": ";
+      if (step.map.status != camera::PoseCrbMap::Status::kOk) {
+        std::cout << "not trackable: " << camera::untrackable_reason(step.map, step.distance);
+      } else {
+        std::cout << args.statistic << " rot_rms "
+                  << (std::isfinite(step.value)
+                          ? objective_text(outcome.placed, step.value)
+                          : std::string("unbounded (first-order rot_rms past the 45 deg limit)"));
+      }
+      std::cout << (step.distance == c.distance ? "  (decides)" : "") << "\n";
     }
     std::cout << "  at D " << format_number(c.distance, 9) << ":\n";
   }

@@ -17,6 +17,7 @@ struct PlaceArgs : place_json::Request {
   TreTargetArgs tre;     ///< the tracker objective's --target, --fle-rms and --fle-sigma as typed
   std::string aim_text;  ///< --aim as typed
   std::string distances_text;  ///< --distances as typed
+  bool distances_given = false;
   bool json = false;
   bool quiet = false;
 };

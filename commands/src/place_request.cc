@@ -3,6 +3,7 @@
 
 #include "vantage/commands/place_json.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -39,7 +40,23 @@ void check_distances(const Request& request) {
     place_refuse("--distances", "at most " + std::to_string(LayoutSensor::kMaxDistances) +
                                     " distances, got " + std::to_string(request.distances.size()));
   }
-  for (double d : request.distances) check_positive(d, "--distances");
+  for (std::size_t k = 0; k < request.distances.size(); ++k) {
+    const double d = request.distances[k];
+    check_positive(d, "--distances");
+    if (std::find(request.distances.begin(), request.distances.begin() + static_cast<long>(k), d) !=
+        request.distances.begin() + static_cast<long>(k)) {
+      place_refuse("--distances", "distance " + std::to_string(k + 1) + " repeats an earlier one");
+    }
+  }
+  // Each evaluation is linear in the (direction, distance) samples, and the search keeps a pose
+  // and a visibility bit per site for each.
+  if (static_cast<double>(request.crb_samples) * static_cast<double>(request.distances.size()) >
+      kMaxCrbSamples) {
+    place_refuse("--distances", std::to_string(request.distances.size()) +
+                                    " distances of --crb-samples " +
+                                    std::to_string(request.crb_samples) + " exceed " +
+                                    std::to_string(kMaxCrbSamples) + " samples");
+  }
 }
 
 void check_camera(const Request& request) {

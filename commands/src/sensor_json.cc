@@ -1,8 +1,10 @@
 #include "vantage/commands/sensor_json.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include "vantage/analysis/common.h"
 #include "vantage/commands/tre_json.h"
@@ -43,7 +45,7 @@ camera::PoseCrbOptions camera_options(const LayoutSensor& s, int threads) {
 }
 
 // The map at each distance; the value and the map shown are those of the distance that decides
-// (the largest statistic, the first of equals; +inf: the first not trackable).
+// (the first that tracks nothing, else the first unbounded, else the largest statistic).
 void evaluate_camera(const Layout& layout, int threads, Evaluation* out) {
   out->camera = camera_options(out->sensor, threads);
   const design::CrbStatistic statistic = *design::parse_crb_statistic(out->sensor.statistic);
@@ -60,9 +62,17 @@ void evaluate_camera(const Layout& layout, int threads, Evaluation* out) {
   } catch (const InvalidArgument& e) {
     refuse(e, out->sensor);
   }
+  // Worse first: a map that tracks nothing, then one whose worst is unbounded (+inf too), then
+  // the larger value; the first of equals.
+  const auto rank = [](const ApproachStep& step) {
+    const int kind = step.map.status != camera::PoseCrbMap::Status::kOk ? 2
+                     : std::isfinite(step.value)                        ? 0
+                                                                        : 1;
+    return std::make_pair(kind, kind == 0 ? step.value : 0.0);
+  };
   std::size_t deciding = 0;
   for (std::size_t k = 1; k < steps.size(); ++k) {
-    if (steps[k].value > steps[deciding].value) deciding = k;
+    if (rank(steps[k]) > rank(steps[deciding])) deciding = k;
   }
   out->camera->distance = steps[deciding].distance;
   out->crb = steps[deciding].map;

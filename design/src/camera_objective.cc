@@ -15,7 +15,7 @@ namespace vantage::design::internal {
 
 CameraSiteObjective::CameraSiteObjective(const CameraObjective& objective, int threads)
     : objective_(objective),
-      model_(objective.sites, objective.crb),
+      model_(objective.sites, objective.model_options()),
       distances_(objective.sample_distances()) {
   for (double distance : distances_) model_.check_distance(distance);
   const Eigen::Matrix3Xd lattice =

@@ -142,7 +142,7 @@ bool PlaceOptions::is_valid(std::string* why) const {
   }
   if (camera) {
     std::string camera_why;
-    if (!camera->crb.is_valid(&camera_why)) {
+    if (!camera->model_options().is_valid(&camera_why)) {
       return vantage::internal::invalid_option(why, "camera", camera_why);
     }
     if (!camera->crb.aim) {
@@ -154,10 +154,15 @@ bool PlaceOptions::is_valid(std::string* why) const {
           why, "camera.distances",
           "at most " + std::to_string(CameraObjective::kMaxDistances) + " distances");
     }
-    for (double d : camera->distances) {
+    for (std::size_t k = 0; k < camera->distances.size(); ++k) {
+      const double d = camera->distances[k];
       if (!(d > 0.0) || !std::isfinite(d)) {
         return vantage::internal::invalid_option(why, "camera.distances",
                                                  "must be finite numbers > 0");
+      }
+      if (std::find(camera->distances.begin(), camera->distances.begin() + k, d) !=
+          camera->distances.begin() + k) {
+        return vantage::internal::invalid_option(why, "camera.distances", "a distance repeats");
       }
     }
   }
@@ -268,9 +273,12 @@ PlacementResult place_markers(const PlacementProblem& problem, const PlaceOption
   }
   if (out.status == PlacementResult::Status::kIncomplete) {
     out.covering_markers = search.covering_markers();
+    // An approach samples (direction, distance) pairs: docs/math.md §21, "An approach".
+    const bool approach = options.camera && options.camera->distances.size() > 1;
     out.message = "no placement of " + std::to_string(problem.markers) + " markers found makes " +
                   std::to_string(search.required()) + " of the " + std::to_string(directions) +
-                  " workspace directions trackable";
+                  (approach ? " (workspace direction, distance) samples of the approach trackable"
+                            : " workspace directions trackable");
   }
   return out;
 }

@@ -1,5 +1,6 @@
 #include "sensor_fields.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -37,6 +38,12 @@ void read_distances(const nlohmann::json& s, const std::string& source, LayoutSe
                      " numbers > 0 (one: distance)");
   }
   out->distances.assign(d.data(), d.data() + d.size());
+  for (std::size_t k = 1; k < out->distances.size(); ++k) {
+    if (std::find(out->distances.begin(), out->distances.begin() + static_cast<long>(k),
+                  out->distances[k]) != out->distances.begin() + static_cast<long>(k)) {
+      fail(source, "sensor.distances[" + std::to_string(k) + "]: repeats an earlier distance");
+    }
+  }
 }
 
 void read_camera(const nlohmann::json& s, const std::string& source, LayoutSensor* out) {

@@ -158,6 +158,9 @@ py::object place(const py::object& body, const py::object& sites, int markers,
     request.overwrite = overwrite;
     request.objective = objective;
     request.distance = distance.value_or(request.distance);
+    if (distances && distances->empty()) {
+      throw InvalidArgument("--distances", "give at least one distance (or none: distance=)");
+    }
     request.distances = distances.value_or(request.distances);
     request.focal = focal.value_or(request.focal);
     request.noise_px = noise_px.value_or(request.noise_px);

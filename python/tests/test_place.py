@@ -152,10 +152,11 @@ def test_an_approach_matches_the_cli_and_is_the_largest_of_crb_at_each_distance(
                          aim=aim).worst.rot_rms_deg for d in (6.0, 2.0, 12.0)]
     assert report.objective["value_deg"] == max(worst)
     assert [step["value_deg"] for step in report.objective["approach"]] == worst
-    with pytest.raises(ValueError) as error:
-        vantage.place(sites=CUBE_SITES, markers=5, objective="camera", distances=[6.0, -1.0],
-                      **camera)
-    assert error.value.field == "distances"
+    for bad in ([6.0, -1.0], [], [6.0, 6.0]):
+        with pytest.raises(ValueError) as error:
+            vantage.place(sites=CUBE_SITES, markers=5, objective="camera", distances=bad,
+                          **camera)
+        assert error.value.field == "distances", (bad, str(error.value))
 
 
 def test_incomplete_placement_keeps_its_layout_and_allow_partial_returns_it(vantage, tmp_path):

@@ -77,6 +77,37 @@ TEST(PlaceApproachCli, TheValueIsTheLargestOfWhatCrbReportsAtEachDistance) {
   EXPECT_THAT(text.out, HasSubstr("(decides)"));
 }
 
+// The distance that decides is the worst whatever the order: one that tracks nothing before one
+// whose worst is unbounded, before the largest figure; each is named for what it is.
+TEST(PlaceApproachCli, TheWorstDistanceDecidesWhateverTheOrder) {
+  ScratchDir scratch;
+  nlohmann::json sites = nlohmann::json::parse(testing::cube_sites());
+  sites["visibility"]["cone_half_angle_deg"] = 60.0;
+  scratch.write("cube60.json", sites.dump());
+  scratch.write("sites.json", testing::cube_sites());
+  const std::string place =
+      "place --sites cube60.json --markers 8 --objective camera --focal 900 --noise-px 0.3 "
+      "--crb-samples 300 --allow-partial --out ";
+  for (const char* order : {"6,0.6", "0.6,6"}) {
+    SCOPED_TRACE(order);
+    const testing::CliRun run =
+        testing::run_vantage(place + "o.json --overwrite --distances " + order, scratch);
+    ASSERT_EQ(run.status, 0) << run.err;
+    // At 0.6 (just above the sites' radius) no direction sees enough markers; at 6 the worst
+    // passes the first-order limit.
+    EXPECT_THAT(run.out, HasSubstr("D 0.6: not trackable: no sampled direction"));
+    EXPECT_THAT(run.out, HasSubstr("(300 sampled)  (decides)"));
+    EXPECT_THAT(run.out, HasSubstr("D 6: worst rot_rms unbounded"));
+  }
+  const testing::CliRun far = testing::run_vantage(
+      "place --sites sites.json --markers 5 --objective camera --focal 900 --noise-px 0.3 "
+      "--crb-samples 300 --allow-partial --out far.json --distances 6,1000",
+      scratch);
+  ASSERT_EQ(far.status, 0) << far.err;
+  EXPECT_THAT(far.out, HasSubstr("D 1000: worst rot_rms unbounded (first-order rot_rms past the "
+                                 "45 deg limit)  (decides)"));
+}
+
 TEST(PlaceApproachCli, BadDistancesGetOneLineAndWriteNothing) {
   ScratchDir scratch;
   scratch.write("sites.json", testing::cube_sites());
@@ -106,6 +137,18 @@ TEST(PlaceApproachCli, BadDistancesGetOneLineAndWriteNothing) {
       {"with affine", nullptr, "--sites sites.json --markers 4 --out o.json --distances 6,8",
        "--distances: goes with --objective camera"},
       {"65 distances", nullptr, too_many.c_str(), "--distances: at most 64 distances, got 65"},
+      {"a repeated distance", nullptr,
+       "--sites sites.json --markers 4 --out o.json --objective camera --distances 6,8,6 --focal "
+       "800 --noise-px 1",
+       "--distances: distance 3 repeats an earlier one"},
+      {"given empty", nullptr,
+       "--sites sites.json --markers 4 --out o.json --objective camera --distance 6 --distances "
+       "'' --focal 800 --noise-px 1",
+       "--distances: expected comma-separated numbers"},
+      {"too many samples", nullptr,
+       "--sites sites.json --markers 4 --out o.json --objective camera --distances 6,8,10,12,14 "
+       "--crb-samples 300000 --focal 800 --noise-px 1",
+       "--distances: 5 distances of --crb-samples 300000 exceed 1000000 samples"},
   };
   for (const BadCall& call : calls) {
     SCOPED_TRACE(call.name);

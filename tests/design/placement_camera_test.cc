@@ -122,6 +122,7 @@ TEST(PlaceCamera, AnApproachFindsTheExhaustiveOptimumOfTheLargestOverItsDistance
     ASSERT_TRUE(std::isfinite(truth.value));
     PlaceOptions options = camera_place_options(sites, statistic);
     options.camera->distances = distances;
+    options.camera->crb.distance = 0.0;  // not used with an approach
     const PlacementResult result = place_markers(problem, options);
     EXPECT_EQ(result.search, "exhaustive");
     EXPECT_EQ(result.status, PlacementResult::Status::kComplete);
@@ -142,6 +143,9 @@ TEST(PlaceCamera, AnApproachDistanceInsideTheSitesIsRefused) {
   EXPECT_THAT(message_of([&] { place_markers(problem, options); }), HasSubstr("distance"));
   options.camera->distances = {6.0, -1.0};
   EXPECT_THAT(message_of([&] { place_markers(problem, options); }), HasSubstr("camera.distances"));
+  options.camera->distances = {6.0, 8.0, 6.0};
+  EXPECT_THAT(message_of([&] { place_markers(problem, options); }),
+              HasSubstr("camera.distances: a distance repeats"));
   options.camera->distances.assign(CameraObjective::kMaxDistances + 1, 6.0);
   EXPECT_THAT(message_of([&] { place_markers(problem, options); }),
               HasSubstr("camera.distances: at most 64"));

@@ -98,6 +98,8 @@ TEST(SensorFields, BadBlocksNameTheirField) {
               HasSubstr("sensor.distances: expected 2 to 64 numbers > 0 (one: distance)"));
   EXPECT_THAT(error_of(with(kCamera, "\"distance\": 3", "\"distances\": [3, 0]")),
               HasSubstr("sensor.distances: expected 2 to 64"));
+  EXPECT_THAT(error_of(with(kCamera, "\"distance\": 3", "\"distances\": [3, 4, 3]")),
+              HasSubstr("sensor.distances[2]: repeats an earlier distance"));
   EXPECT_THAT(error_of(with(kCamera, "\"distance\": 3", "\"distances\": [3, \"x\"]")),
               HasSubstr("sensor.distances"));
   EXPECT_THAT(error_of(with(kCamera, "\"samples\": 2000", "\"samples\": 20.5")),

@@ -76,8 +76,9 @@ struct CameraObjective {
   /// must be given (a choice's centroid would move the cameras with the choice).
   camera::PoseCrbOptions crb;
   CrbStatistic statistic = CrbStatistic::kWorst;
-  /// An approach (docs/math.md §21, "An approach"): the camera distances D_1..D_n, each above the
-  /// sites' radius about the aim, at most kMaxDistances; empty: crb.distance alone. The samples
+  /// An approach (docs/math.md §21, "An approach"): the camera distances D_1..D_n, distinct,
+  /// each above the sites' radius about the aim, at most kMaxDistances (crb.distance is then not
+  /// used); empty: crb.distance alone. The samples
   /// are the (direction, D_k) pairs and the value is the largest over k of the statistic at D_k.
   std::vector<double> distances;
   static constexpr int kMaxDistances = LayoutSensor::kMaxDistances;
@@ -85,6 +86,13 @@ struct CameraObjective {
   /// The distances of the samples: `distances`, or crb.distance alone.
   std::vector<double> sample_distances() const {
     return distances.empty() ? std::vector<double>{crb.distance} : distances;
+  }
+  /// The camera of the model: `crb` at the first sample distance (crb.distance is not used
+  /// with an approach).
+  camera::PoseCrbOptions model_options() const {
+    camera::PoseCrbOptions out = crb;
+    out.distance = sample_distances().front();
+    return out;
   }
 };
 
