@@ -182,6 +182,7 @@ FigureFiles write_dropout(const report::LayoutReport& report,
   if (report.visibility.has_value()) {
     VisibilityDropoutChartData chart;
     chart.layout_name = layout.name;
+    chart.names = layout.names;
     chart.report = &*report.visibility;
     chart.seen_whole_error_deg = seen_whole_dropout(report);
     return write_visibility_dropout_chart(chart, directory, figure);
@@ -189,6 +190,7 @@ FigureFiles write_dropout(const report::LayoutReport& report,
   DropoutChartData chart;
   chart.layout_name = layout.name;
   chart.mode = layout.mode;
+  chart.names = layout.names;
   chart.intact_pbar_min = r.pbar_min;
   chart.intact_max_error_deg = r.max_worst_case_error_deg;
   chart.dropout = *report.dropout;
@@ -205,6 +207,7 @@ FigureFiles write_vectors(const report::LayoutReport& report,
   vectors.layout_name = layout.name;
   vectors.mode = layout.mode;
   vectors.entries = layout.entries;
+  vectors.names = layout.names;
   vectors.worst_viewpoints = r.worst_viewpoints;
   vectors.pbar_min = r.pbar_min;
   vectors.paper_lmi_viewpoint = r.paper_lmi.viewpoint;

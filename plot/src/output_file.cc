@@ -74,7 +74,16 @@ CsvWriter& CsvWriter::operator<<(long value) {
 
 CsvWriter& CsvWriter::operator<<(const std::string& text) {
   separator();
-  file_.write(text.data(), text.size());
+  if (text.find_first_of(",\"\r\n") == std::string::npos) {
+    file_.write(text.data(), text.size());
+    return *this;
+  }
+  // RFC 4180: the field in double quotes, each double quote doubled (a marker's name may hold a
+  // comma).
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  quoted += '"';
+  file_.write(quoted.data(), quoted.size());
   return *this;
 }
 

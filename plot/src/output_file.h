@@ -40,7 +40,8 @@ class CsvWriter {
   CsvWriter& operator<<(double value);
   CsvWriter& operator<<(long value);
   CsvWriter& operator<<(int value) { return *this << static_cast<long>(value); }
-  CsvWriter& operator<<(const std::string& text);  ///< must not contain ',', '"' or newlines
+  /// A text field, in double quotes (RFC 4180) when it holds ',', '"' or a line break.
+  CsvWriter& operator<<(const std::string& text);
   CsvWriter& operator<<(const char* text) { return *this << std::string(text); }
   void end_row();
   void commit() { file_.commit(); }

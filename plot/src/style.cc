@@ -16,6 +16,19 @@ double page_scale(const Canvas& canvas) {
   return std::min(canvas.width() / 1000.0, canvas.height() / 800.0);
 }
 
+std::string entry_label(const std::vector<std::string>& names, bool points, long k) {
+  if (!names.empty()) return names[static_cast<std::size_t>(k)];
+  return (points ? "p" : "v") + std::to_string(k);
+}
+
+std::string page_label(const std::string& label) {
+  constexpr std::size_t kPageLabelBytes = 14;
+  if (label.size() <= kPageLabelBytes) return label;
+  std::size_t cut = kPageLabelBytes;
+  while (cut > 0 && (static_cast<unsigned char>(label[cut]) & 0xc0) == 0x80) --cut;
+  return label.substr(0, cut) + "...";
+}
+
 std::string fixed(double x, int decimals) {
   char buffer[64];
   const double shown = std::abs(x) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : x;

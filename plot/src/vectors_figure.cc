@@ -39,6 +39,9 @@ void check_data(const VectorsFigureData& data) {
   if (data.worst_viewpoints.empty()) {
     throw InvalidArgument("write_vectors_figure: worst_viewpoints is empty");
   }
+  if (!data.names.empty() && data.names.size() != static_cast<std::size_t>(data.entries.cols())) {
+    throw InvalidArgument("write_vectors_figure: names needs one per entry");
+  }
   if (data.normals.cols() > 0 &&
       (data.mode != LayoutMode::kPoints || data.normals.cols() != data.entries.cols() ||
        !data.normals.allFinite())) {
@@ -74,29 +77,29 @@ bool on_body(const VectorsFigureData& data) {
 }
 
 void write_csv(const VectorsFigureData& data, const std::filesystem::path& path) {
-  internal::CsvWriter csv(path, "series,index,x,y,z");
-  const char* series = data.mode == LayoutMode::kPoints ? "point" : "vector";
+  internal::CsvWriter csv(path, "series,index,x,y,z,name");
+  const bool points = data.mode == LayoutMode::kPoints;
   for (Eigen::Index k = 0; k < data.entries.cols(); ++k) {
-    csv << series << static_cast<long>(k) << data.entries(0, k) << data.entries(1, k)
-        << data.entries(2, k);
+    csv << (points ? "point" : "vector") << static_cast<long>(k) << data.entries(0, k)
+        << data.entries(1, k) << data.entries(2, k) << internal::entry_label(data.names, points, k);
     csv.end_row();
   }
   long k = 0;
   for (const Eigen::Vector3d& a : data.worst_viewpoints) {
-    csv << "worst_viewpoint" << k++ << a.x() << a.y() << a.z();
+    csv << "worst_viewpoint" << k++ << a.x() << a.y() << a.z() << "";
     csv.end_row();
   }
   const Eigen::Vector3d& lmi = data.paper_lmi_viewpoint;
-  csv << "paper_lmi" << 0 << lmi.x() << lmi.y() << lmi.z();
+  csv << "paper_lmi" << 0 << lmi.x() << lmi.y() << lmi.z() << "";
   csv.end_row();
   for (Eigen::Index k = 0; k < data.normals.cols(); ++k) {
     csv << "normal" << static_cast<long>(k) << data.normals(0, k) << data.normals(1, k)
-        << data.normals(2, k);
+        << data.normals(2, k) << internal::entry_label(data.names, points, k);
     csv.end_row();
   }
   if (data.body_worst_viewpoint) {
     const Eigen::Vector3d& a = *data.body_worst_viewpoint;
-    csv << "body_worst_viewpoint" << 0 << a.x() << a.y() << a.z();
+    csv << "body_worst_viewpoint" << 0 << a.x() << a.y() << a.z() << "";
     csv.end_row();
   }
   csv.commit();
@@ -201,8 +204,9 @@ void draw_entries(Canvas& canvas, const VectorsFigureData& data, const Eigen::Ma
       line3(canvas, Eigen::Vector3d::Zero(), scene.col(k));
       const Eigen::Vector2d tip = vectors_camera_projection(scene.col(k));
       canvas.marker(tip.x(), tip.y(), 3.5 * s, ink);
-      canvas.label(tip.x(), tip.y(), "v" + std::to_string(k), 9 * s, -9 * s, 0.0,
-                   internal::kSmallSize * s, ink, {255, 255, 255}, 0.7);
+      canvas.label(tip.x(), tip.y(),
+                   internal::page_label(internal::entry_label(data.names, false, k)), 9 * s, -9 * s,
+                   0.0, internal::kSmallSize * s, ink, {255, 255, 255}, 0.7);
     }
     return;
   }
@@ -225,8 +229,8 @@ void draw_entries(Canvas& canvas, const VectorsFigureData& data, const Eigen::Ma
   }
   for (Eigen::Index k : order) {
     const Eigen::Vector2d p = vectors_camera_projection(scene.col(k));
-    canvas.label(p.x(), p.y(), "p" + std::to_string(k), 8 * s, -9 * s, 0.0,
-                 internal::kSmallSize * s, ink);
+    canvas.label(p.x(), p.y(), internal::page_label(internal::entry_label(data.names, true, k)),
+                 8 * s, -9 * s, 0.0, internal::kSmallSize * s, ink);
   }
 }
 

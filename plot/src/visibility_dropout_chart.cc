@@ -24,14 +24,15 @@ constexpr Rgb kBarColour{49, 104, 142};
 constexpr Rgb kUntrackableBarColour{150, 150, 150};
 constexpr Rgb kSeenWholeColour{255, 255, 255};
 
-std::string entry_label(int index) { return "p" + std::to_string(index); }
-
 void check_data(const VisibilityDropoutChartData& data) {
   if (data.report == nullptr) throw InvalidArgument("write_visibility_dropout_chart: no report");
   const auto& entries = data.report->dropout;
   const std::size_t n = entries.size();
   if (n == 0) {
     throw InvalidArgument("write_visibility_dropout_chart: the report has no dropout analysis");
+  }
+  if (!data.names.empty() && data.names.size() != n) {
+    throw InvalidArgument("write_visibility_dropout_chart: names needs one per marker");
   }
   if (data.report->dropout_by_harm.size() != n) {
     throw InvalidArgument("write_visibility_dropout_chart: dropout_by_harm must list every entry");
@@ -61,8 +62,9 @@ void write_csv(const VisibilityDropoutChartData& data, const std::filesystem::pa
   long rank = 1;
   for (int k : report.dropout_by_harm) {
     const visibility::VisibilityDropoutEntry& e = report.dropout[static_cast<std::size_t>(k)];
-    csv << entry_label(e.lost) << static_cast<long>(e.lost) << rank++ << report.entry_status(e)
-        << e.pbar_min << e.max_worst_case_error_deg << e.trackable_fraction;
+    csv << internal::entry_label(data.names, true, e.lost) << static_cast<long>(e.lost) << rank++
+        << report.entry_status(e) << e.pbar_min << e.max_worst_case_error_deg
+        << e.trackable_fraction;
     const double whole = seen_whole(data, e.lost);
     if (whole >= 0.0) {
       csv << whole;
@@ -163,8 +165,8 @@ void draw_trackable_panel(Canvas& canvas, const VisibilityDropoutChartData& data
                    internal::kSmallSize * s * (n > 14 ? 0.8 : 1.0), {25, 25, 25});
     }
     if (slot % label_every == 0) {
-      canvas.label(x, lo, entry_label(e.lost), 0.0, 12 * s, 0.5, internal::kSmallSize * s,
-                   {25, 25, 25});
+      canvas.label(x, lo, internal::page_label(internal::entry_label(data.names, true, e.lost)),
+                   0.0, 12 * s, 0.5, internal::kSmallSize * s, {25, 25, 25});
     }
   }
   dashed_level(canvas, 0.4, n + 0.6, 100.0 * report.coverage.trackable_fraction);

@@ -16,16 +16,19 @@ namespace vantage::plot {
 /// What the dropout chart draws.
 struct DropoutChartData {
   std::string layout_name;
-  LayoutMode mode = LayoutMode::kPoints;  ///< bars are labelled p<k> (markers) or v<k> (vectors)
-  double intact_pbar_min = 1.0;           ///< of the whole layout
-  double intact_max_error_deg = 0.0;      ///< of the whole layout (Eq. 30, as analyze reports)
+  LayoutMode mode = LayoutMode::kPoints;  ///< unnamed bars are p<k> (markers) or v<k> (vectors)
+  /// The entries' names (Layout::names), or empty: p<k> or v<k>.
+  std::vector<std::string> names;
+  double intact_pbar_min = 1.0;       ///< of the whole layout
+  double intact_max_error_deg = 0.0;  ///< of the whole layout (Eq. 30, as analyze reports)
   report::DropoutAnalysis dropout;
 };
 
 /// Writes dropout.<ext> and dropout.csv into `directory`. CSV columns
 /// entry,index,rank,n_vectors,pbar_min,max_worst_case_error_deg,worst_x,worst_y,worst_z,certified:
 /// one row per removed entry in order of harm (rank 1 = most harmful; entry "p3" or "v3"), then
-/// the row "intact" (index -1, rank 0) of the reference line. certified is 1 or 0.
+/// the row "intact" (index -1, rank 0) of the reference line; entry is the entry's name when the
+/// layout names them. certified is 1 or 0.
 /// Throws InvalidArgument on bad data or options, RenderError when drawing or writing fails.
 FigureFiles write_dropout_chart(const DropoutChartData& data,
                                 const std::filesystem::path& directory,

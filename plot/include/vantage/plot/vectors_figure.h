@@ -34,7 +34,10 @@ inline constexpr double kVectorsElevationDeg = 15.0;
 struct VectorsFigureData {
   std::string layout_name;
   LayoutMode mode = LayoutMode::kVectors;
-  Eigen::Matrix3Xd entries;  ///< data vectors (direction mode) or marker positions (point mode)
+  Eigen::Matrix3Xd entries;
+  /// The markers' names (Layout::names; point mode labels them), or empty: p<k>.
+  std::vector<std::string>
+      names;  ///< data vectors (direction mode) or marker positions (point mode)
   std::vector<Eigen::Vector3d> worst_viewpoints;  ///< every global worst viewpoint (>= 1)
   double pbar_min = 1.0;
   Eigen::Vector3d paper_lmi_viewpoint = Eigen::Vector3d::UnitZ();
@@ -53,9 +56,10 @@ struct VectorsFigureData {
 /// right = (-sin az, cos az, 0) and up = (-sin el cos az, -sin el sin az, cos el).
 Eigen::Vector2d vectors_camera_projection(const Eigen::Vector3d& p);
 
-/// Writes vectors.<ext> and vectors.csv (columns series,index,x,y,z in the object frame: series
-/// "vector" or "point" for the entries, "worst_viewpoint" and "paper_lmi" for the unit axes,
-/// then on a body "normal" (one per marker) and "body_worst_viewpoint")
+/// Writes vectors.<ext> and vectors.csv (columns series,index,x,y,z,name in the object frame:
+/// series "vector" or "point" for the entries, "worst_viewpoint" and "paper_lmi" for the unit
+/// axes, then on a body "normal" (one per marker) and "body_worst_viewpoint"; name is the
+/// entry's (p<k> or v<k> when unnamed), empty for the axes)
 /// into `directory`. Throws InvalidArgument on bad data or options, RenderError when drawing or
 /// writing fails.
 FigureFiles write_vectors_figure(const VectorsFigureData& data,

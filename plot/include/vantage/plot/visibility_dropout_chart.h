@@ -19,6 +19,8 @@ namespace vantage::plot {
 /// What the chart draws.
 struct VisibilityDropoutChartData {
   std::string layout_name;
+  /// The markers' names (Layout::names), or empty: p<k>.
+  std::vector<std::string> names;
   /// The layout on its body, with its dropout (VisibilityReportOptions::dropout).
   const visibility::VisibilityReport* report = nullptr;
   /// By marker: the worst-case error seen whole without it (degrees), or empty.
@@ -28,9 +30,9 @@ struct VisibilityDropoutChartData {
 /// Writes dropout.<ext> and dropout.csv into `directory`. CSV columns
 /// entry,index,rank,status,pbar_min,max_worst_case_error_deg,trackable_fraction,
 /// seen_whole_error_deg: one row per lost marker in order of harm (rank 1 = most harmful;
-/// entry "p3"; status certified, not_certified or untrackable; seen_whole_error_deg empty when
-/// not given), then the row "intact" (index -1, rank 0). Throws InvalidArgument on bad data or
-/// options, RenderError when drawing or writing fails.
+/// entry the marker's name, or "p3" when the layout names none; status certified, not_certified or
+/// untrackable; seen_whole_error_deg empty when not given), then the row "intact" (index -1, rank
+/// 0). Throws InvalidArgument on bad data or options, RenderError when drawing or writing fails.
 FigureFiles write_visibility_dropout_chart(const VisibilityDropoutChartData& data,
                                            const std::filesystem::path& directory,
                                            const FigureOptions& options = {});
