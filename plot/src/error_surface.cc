@@ -138,9 +138,13 @@ void draw_surface(Canvas& canvas, const ErrorSurfaceData& data, const Eigen::Mat
   }
   // Under the line, or over it when the line runs along the bottom of the plot.
   const bool below = pbar_min > kLabelBelowAbove;
-  canvas.label(0.02, pbar_min, "layout at its worst viewpoint: p̄_min " + fixed(pbar_min, 4), 0.0,
-               (below ? 18 : -18) * s, 0.0, internal::kSmallSize * s, {25, 25, 25}, {255, 255, 255},
-               0.85);
+  canvas.label(0.02, pbar_min,
+               std::string(data.seen_whole_of_a_body
+                               ? "layout seen whole (not on its body), its worst viewpoint: "
+                               : "layout at its worst viewpoint: ") +
+                   "p̄_min " + fixed(pbar_min, 4),
+               0.0, (below ? 18 : -18) * s, 0.0, internal::kSmallSize * s, {25, 25, 25},
+               {255, 255, 255}, 0.85);
 
   internal::draw_colour_bar(canvas, 0.80, 0.825, 0.10, 0.86, 0.0, 90.0,
                             "error θ  [deg]  (contours every 10°)");

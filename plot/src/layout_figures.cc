@@ -265,6 +265,7 @@ LayoutFigures write_layout_figures(const report::LayoutReport& report,
     ErrorSurfaceData surface;
     surface.layout_name = layout.name;
     surface.p_at_worst = projected_fractions(report.data.vectors, r.worst_viewpoint);
+    surface.seen_whole_of_a_body = report.visibility.has_value();
     result.files.push_back(write_error_surface(surface, directory, figure));
   }
   if (wants(names, "vectors")) {

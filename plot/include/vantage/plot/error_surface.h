@@ -22,6 +22,9 @@ struct ErrorSurfaceData {
   /// is p_bar_min.
   Eigen::VectorXd p_at_worst;
   int samples_per_axis = 200;  ///< grid of the map (cell centres), in [16, 2000]
+  /// The layout is on a body but p_at_worst is of its worst viewpoint seen whole (every marker):
+  /// the figure says so.
+  bool seen_whole_of_a_body = false;
 };
 
 /// Writes error_surface.<ext> and error_surface.csv (columns series,index,p,pbar,theta_deg:
