@@ -4,7 +4,8 @@
 #         command links without figures (Eigen, CSDP with LAPACK/BLAS, NLopt, nlohmann-json,
 #         CLI11, yaml-cpp);
 #   all   (the default) everything `make test` builds: the above plus PLplot, the viewer,
-#         Python, the test and benchmark frameworks, clang (fuzzing) and clang-format.
+#         Python, the test and benchmark frameworks, clang (fuzzing), clang-format and help2man
+#         (the man pages).
 # Idempotent: packages already installed are skipped, so a second run does nothing and needs no
 # network. Installs the missing packages in one apt-get call; when that fails, retries them one
 # by one and fails loudly, naming the package apt cannot install.
@@ -33,6 +34,7 @@ all_packages=(
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest
   python3-mpmath
   python3-setuptools python3-wheel python3-venv python3-pip python3-build mypy binutils
+  help2man
 )
 
 set_name=${1:-all}
