@@ -37,6 +37,8 @@ Command add_design_command(CLI::App& root);
 Command add_weights_command(CLI::App& root);
 Command add_pose_command(CLI::App& root);
 Command add_layout_command(CLI::App& root);
+/// `vantage completion bash` (completion.cc): it reads `root`'s tree when it runs.
+Command add_completion_command(CLI::App& root);
 Command add_simulate_command(CLI::App& root);
 Command add_experiment_command(CLI::App& root);
 Command add_plot_command(CLI::App& root);

@@ -79,11 +79,11 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string(VANTAGE_VERSION));
 
   const std::vector<Command> commands = {
-      add_analyze_command(app), add_orient_command(app),   add_design_command(app),
-      add_place_command(app),   add_weights_command(app),  add_pose_command(app),
-      add_layout_command(app),  add_simulate_command(app), add_experiment_command(app),
-      add_plot_command(app),    add_crb_command(app),      add_tre_command(app),
-      add_ident_command(app),
+      add_analyze_command(app), add_orient_command(app),     add_design_command(app),
+      add_place_command(app),   add_weights_command(app),    add_pose_command(app),
+      add_layout_command(app),  add_simulate_command(app),   add_experiment_command(app),
+      add_plot_command(app),    add_crb_command(app),        add_tre_command(app),
+      add_ident_command(app),   add_completion_command(app),
   };
 
   const std::string unknown = unknown_subcommand(app, argc, argv);
