@@ -21,7 +21,7 @@ constexpr double kHarmTieDeg = 1e-9;
 void check_data(const DropoutChartData& data) {
   const std::size_t n = data.dropout.entries.size();
   if (n == 0) throw InvalidArgument("write_dropout_chart: dropout has no entries");
-  if (!data.names.empty() && data.names.size() != n) {
+  if (data.names.size() != n) {
     throw InvalidArgument("write_dropout_chart: names needs one per entry");
   }
   if (data.dropout.by_harm.size() != n) {
@@ -41,10 +41,10 @@ void write_csv(const DropoutChartData& data, const std::filesystem::path& path) 
   long rank = 1;
   for (int k : data.dropout.by_harm) {
     const report::DropoutEntry& e = data.dropout.entries[k];
-    csv << internal::entry_label(data.names, data.mode == LayoutMode::kPoints, e.index)
-        << static_cast<long>(e.index) << rank++ << static_cast<long>(e.n_vectors) << e.pbar_min
-        << e.max_worst_case_error_deg << e.worst_viewpoint.x() << e.worst_viewpoint.y()
-        << e.worst_viewpoint.z() << static_cast<long>(e.certified ? 1 : 0);
+    csv << data.names[static_cast<std::size_t>(e.index)] << static_cast<long>(e.index) << rank++
+        << static_cast<long>(e.n_vectors) << e.pbar_min << e.max_worst_case_error_deg
+        << e.worst_viewpoint.x() << e.worst_viewpoint.y() << e.worst_viewpoint.z()
+        << static_cast<long>(e.certified ? 1 : 0);
     csv.end_row();
   }
   csv << "intact" << -1 << 0 << -1 << data.intact_pbar_min << data.intact_max_error_deg << 0.0
@@ -93,10 +93,8 @@ void draw_chart(Canvas& canvas, const DropoutChartData& data, const FigureOption
     }
     const std::size_t label_every = std::max<std::size_t>(1, n / 40 + 1);
     if (slot % label_every == 0) {
-      canvas.label(x, 0.0,
-                   internal::page_label(internal::entry_label(
-                       data.names, data.mode == LayoutMode::kPoints, e.index)),
-                   0.0, 12 * s, 0.5, internal::kSmallSize * s, {25, 25, 25});
+      canvas.label(x, 0.0, internal::page_label(data.names[static_cast<std::size_t>(e.index)]), 0.0,
+                   12 * s, 0.5, internal::kSmallSize * s, {25, 25, 25});
     }
   }
 

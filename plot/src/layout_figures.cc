@@ -174,6 +174,13 @@ FigureFiles write_free_viewpoint_map(const report::LayoutReport& report,
   return write_viewpoint_map(map, directory, options.figure);
 }
 
+/// Every entry's name as the layout gives it (Layout::entry_name).
+std::vector<std::string> entry_names(const Layout& layout) {
+  std::vector<std::string> out;
+  for (Eigen::Index k = 0; k < layout.entries.cols(); ++k) out.push_back(layout.entry_name(k));
+  return out;
+}
+
 /// The dropout chart: on the body (seen whole beside it) or of the data vectors.
 FigureFiles write_dropout(const report::LayoutReport& report,
                           const std::filesystem::path& directory, const FigureOptions& figure) {
@@ -182,7 +189,7 @@ FigureFiles write_dropout(const report::LayoutReport& report,
   if (report.visibility.has_value()) {
     VisibilityDropoutChartData chart;
     chart.layout_name = layout.name;
-    chart.names = layout.names;
+    chart.names = entry_names(layout);
     chart.report = &*report.visibility;
     chart.seen_whole_error_deg = seen_whole_dropout(report);
     return write_visibility_dropout_chart(chart, directory, figure);
@@ -190,7 +197,7 @@ FigureFiles write_dropout(const report::LayoutReport& report,
   DropoutChartData chart;
   chart.layout_name = layout.name;
   chart.mode = layout.mode;
-  chart.names = layout.names;
+  chart.names = entry_names(layout);
   chart.intact_pbar_min = r.pbar_min;
   chart.intact_max_error_deg = r.max_worst_case_error_deg;
   chart.dropout = *report.dropout;
@@ -207,7 +214,7 @@ FigureFiles write_vectors(const report::LayoutReport& report,
   vectors.layout_name = layout.name;
   vectors.mode = layout.mode;
   vectors.entries = layout.entries;
-  vectors.names = layout.names;
+  vectors.names = entry_names(layout);
   vectors.worst_viewpoints = r.worst_viewpoints;
   vectors.pbar_min = r.pbar_min;
   vectors.paper_lmi_viewpoint = r.paper_lmi.viewpoint;

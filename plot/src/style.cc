@@ -16,11 +16,6 @@ double page_scale(const Canvas& canvas) {
   return std::min(canvas.width() / 1000.0, canvas.height() / 800.0);
 }
 
-std::string entry_label(const std::vector<std::string>& names, bool points, long k) {
-  if (!names.empty()) return names[static_cast<std::size_t>(k)];
-  return (points ? "p" : "v") + std::to_string(k);
-}
-
 std::string page_label(const std::string& label) {
   constexpr std::size_t kPageLabelBytes = 14;
   if (label.size() <= kPageLabelBytes) return label;

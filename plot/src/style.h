@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <string>
-#include <vector>
 
 #include "canvas.h"
 #include "vantage/analysis/common.h"
@@ -20,10 +19,6 @@ inline constexpr double kSmallSize = 12.0;
 
 /// min(width / 1000, height / 800): how much larger than the default page this one is.
 double page_scale(const Canvas& canvas);
-
-/// Entry k's name in a figure and its CSV: names[k], or p<k> (markers) / v<k> (vectors) when the
-/// layout names none (Layout::entry_name's rule).
-std::string entry_label(const std::vector<std::string>& names, bool points, long k);
 
 /// A label short enough for the page: its first 14 bytes (never half a UTF-8 character) and
 /// "..." when longer; the CSV keeps the whole name.

@@ -39,7 +39,7 @@ void check_data(const VectorsFigureData& data) {
   if (data.worst_viewpoints.empty()) {
     throw InvalidArgument("write_vectors_figure: worst_viewpoints is empty");
   }
-  if (!data.names.empty() && data.names.size() != static_cast<std::size_t>(data.entries.cols())) {
+  if (data.names.size() != static_cast<std::size_t>(data.entries.cols())) {
     throw InvalidArgument("write_vectors_figure: names needs one per entry");
   }
   if (data.normals.cols() > 0 &&
@@ -81,7 +81,7 @@ void write_csv(const VectorsFigureData& data, const std::filesystem::path& path)
   const bool points = data.mode == LayoutMode::kPoints;
   for (Eigen::Index k = 0; k < data.entries.cols(); ++k) {
     csv << (points ? "point" : "vector") << static_cast<long>(k) << data.entries(0, k)
-        << data.entries(1, k) << data.entries(2, k) << internal::entry_label(data.names, points, k);
+        << data.entries(1, k) << data.entries(2, k) << data.names[static_cast<std::size_t>(k)];
     csv.end_row();
   }
   long k = 0;
@@ -94,7 +94,7 @@ void write_csv(const VectorsFigureData& data, const std::filesystem::path& path)
   csv.end_row();
   for (Eigen::Index k = 0; k < data.normals.cols(); ++k) {
     csv << "normal" << static_cast<long>(k) << data.normals(0, k) << data.normals(1, k)
-        << data.normals(2, k) << internal::entry_label(data.names, points, k);
+        << data.normals(2, k) << data.names[static_cast<std::size_t>(k)];
     csv.end_row();
   }
   if (data.body_worst_viewpoint) {
@@ -204,9 +204,8 @@ void draw_entries(Canvas& canvas, const VectorsFigureData& data, const Eigen::Ma
       line3(canvas, Eigen::Vector3d::Zero(), scene.col(k));
       const Eigen::Vector2d tip = vectors_camera_projection(scene.col(k));
       canvas.marker(tip.x(), tip.y(), 3.5 * s, ink);
-      canvas.label(tip.x(), tip.y(),
-                   internal::page_label(internal::entry_label(data.names, false, k)), 9 * s, -9 * s,
-                   0.0, internal::kSmallSize * s, ink, {255, 255, 255}, 0.7);
+      canvas.label(tip.x(), tip.y(), internal::page_label(data.names[static_cast<std::size_t>(k)]),
+                   9 * s, -9 * s, 0.0, internal::kSmallSize * s, ink, {255, 255, 255}, 0.7);
     }
     return;
   }
@@ -229,8 +228,8 @@ void draw_entries(Canvas& canvas, const VectorsFigureData& data, const Eigen::Ma
   }
   for (Eigen::Index k : order) {
     const Eigen::Vector2d p = vectors_camera_projection(scene.col(k));
-    canvas.label(p.x(), p.y(), internal::page_label(internal::entry_label(data.names, true, k)),
-                 8 * s, -9 * s, 0.0, internal::kSmallSize * s, ink);
+    canvas.label(p.x(), p.y(), internal::page_label(data.names[static_cast<std::size_t>(k)]), 8 * s,
+                 -9 * s, 0.0, internal::kSmallSize * s, ink);
   }
 }
 

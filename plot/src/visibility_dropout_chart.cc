@@ -31,7 +31,7 @@ void check_data(const VisibilityDropoutChartData& data) {
   if (n == 0) {
     throw InvalidArgument("write_visibility_dropout_chart: the report has no dropout analysis");
   }
-  if (!data.names.empty() && data.names.size() != n) {
+  if (data.names.size() != n) {
     throw InvalidArgument("write_visibility_dropout_chart: names needs one per marker");
   }
   if (data.report->dropout_by_harm.size() != n) {
@@ -62,7 +62,7 @@ void write_csv(const VisibilityDropoutChartData& data, const std::filesystem::pa
   long rank = 1;
   for (int k : report.dropout_by_harm) {
     const visibility::VisibilityDropoutEntry& e = report.dropout[static_cast<std::size_t>(k)];
-    csv << internal::entry_label(data.names, true, e.lost) << static_cast<long>(e.lost) << rank++
+    csv << data.names[static_cast<std::size_t>(e.lost)] << static_cast<long>(e.lost) << rank++
         << report.entry_status(e) << e.pbar_min << e.max_worst_case_error_deg
         << e.trackable_fraction;
     const double whole = seen_whole(data, e.lost);
@@ -165,8 +165,8 @@ void draw_trackable_panel(Canvas& canvas, const VisibilityDropoutChartData& data
                    internal::kSmallSize * s * (n > 14 ? 0.8 : 1.0), {25, 25, 25});
     }
     if (slot % label_every == 0) {
-      canvas.label(x, lo, internal::page_label(internal::entry_label(data.names, true, e.lost)),
-                   0.0, 12 * s, 0.5, internal::kSmallSize * s, {25, 25, 25});
+      canvas.label(x, lo, internal::page_label(data.names[static_cast<std::size_t>(e.lost)]), 0.0,
+                   12 * s, 0.5, internal::kSmallSize * s, {25, 25, 25});
     }
   }
   dashed_level(canvas, 0.4, n + 0.6, 100.0 * report.coverage.trackable_fraction);

@@ -17,7 +17,7 @@ namespace vantage::plot {
 struct DropoutChartData {
   std::string layout_name;
   LayoutMode mode = LayoutMode::kPoints;  ///< unnamed bars are p<k> (markers) or v<k> (vectors)
-  /// The entries' names (Layout::names), or empty: p<k> or v<k>.
+  /// One name per entry (Layout::entry_name: its name, or p<k> / v<k>).
   std::vector<std::string> names;
   double intact_pbar_min = 1.0;       ///< of the whole layout
   double intact_max_error_deg = 0.0;  ///< of the whole layout (Eq. 30, as analyze reports)

@@ -34,10 +34,9 @@ inline constexpr double kVectorsElevationDeg = 15.0;
 struct VectorsFigureData {
   std::string layout_name;
   LayoutMode mode = LayoutMode::kVectors;
-  Eigen::Matrix3Xd entries;
-  /// The markers' names (Layout::names; point mode labels them), or empty: p<k>.
-  std::vector<std::string>
-      names;  ///< data vectors (direction mode) or marker positions (point mode)
+  Eigen::Matrix3Xd entries;  ///< data vectors (direction mode) or marker positions (point mode)
+  /// One name per entry (Layout::entry_name), shown beside it and written in the CSV.
+  std::vector<std::string> names;
   std::vector<Eigen::Vector3d> worst_viewpoints;  ///< every global worst viewpoint (>= 1)
   double pbar_min = 1.0;
   Eigen::Vector3d paper_lmi_viewpoint = Eigen::Vector3d::UnitZ();

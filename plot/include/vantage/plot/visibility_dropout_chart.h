@@ -19,7 +19,7 @@ namespace vantage::plot {
 /// What the chart draws.
 struct VisibilityDropoutChartData {
   std::string layout_name;
-  /// The markers' names (Layout::names), or empty: p<k>.
+  /// One name per marker (Layout::entry_name: its name, or p<k>).
   std::vector<std::string> names;
   /// The layout on its body, with its dropout (VisibilityReportOptions::dropout).
   const visibility::VisibilityReport* report = nullptr;
