@@ -122,15 +122,18 @@ Eigen::Matrix3Xd outward_normals(const Mesh& body, const Eigen::Matrix3Xd& point
   body.validate();
   const MeshPatches patches = mesh_patches(body);
   const std::vector<int> orientation = patch_orientations(body, patches);
-  Eigen::Matrix3Xd out = outward_normals(body, points, normals);
+  Eigen::Matrix3Xd out = normals;
+  std::vector<Eigen::Index> by_rays;  // the sites no patch decides
   for (Eigen::Index i = 0; i < points.cols(); ++i) {
     const int t = triangles[static_cast<std::size_t>(i)];
     if (t < -1 || t >= body.triangles.cols()) {
       throw InvalidArgument("triangles", static_cast<long>(i), "not a triangle of the body");
     }
-    if (t < 0) continue;
-    const int p = patches.patch[static_cast<std::size_t>(t)];
-    if (p < 0 || orientation[static_cast<std::size_t>(p)] == 0) continue;  // the rays decide
+    const int p = t < 0 ? -1 : patches.patch[static_cast<std::size_t>(t)];
+    if (p < 0 || orientation[static_cast<std::size_t>(p)] == 0) {
+      by_rays.push_back(i);
+      continue;
+    }
     const Eigen::Vector3d a = body.vertices.col(body.triangles(0, t));
     const Eigen::Vector3d b = body.vertices.col(body.triangles(1, t));
     const Eigen::Vector3d c = body.vertices.col(body.triangles(2, t));
@@ -140,9 +143,22 @@ Eigen::Matrix3Xd outward_normals(const Mesh& body, const Eigen::Matrix3Xd& point
     const Eigen::Vector3d outward = sign * (b - a).cross(c - a).normalized();
     const Eigen::Vector3d n = normals.col(i);
     // A normal across the triangle's (a site at an edge, on another face): the rays decide.
-    if (std::abs(n.dot(outward)) < kSameFace * n.norm()) continue;
+    if (std::abs(n.dot(outward)) < kSameFace * n.norm()) {
+      by_rays.push_back(i);
+      continue;
+    }
     out.col(i) = n.dot(outward) < 0.0 ? Eigen::Vector3d(-n) : n;
   }
+  if (by_rays.empty()) return out;
+  const Eigen::Index m = static_cast<Eigen::Index>(by_rays.size());
+  Eigen::Matrix3Xd at(3, m), given(3, m);
+  for (Eigen::Index k = 0; k < m; ++k) {
+    at.col(k) = points.col(by_rays[static_cast<std::size_t>(k)]);
+    given.col(k) = normals.col(by_rays[static_cast<std::size_t>(k)]);
+  }
+  const Eigen::Matrix3Xd turned = outward_normals(body, at, given);
+  for (Eigen::Index k = 0; k < m; ++k)
+    out.col(by_rays[static_cast<std::size_t>(k)]) = turned.col(k);
   return out;
 }
 
