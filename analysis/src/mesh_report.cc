@@ -98,23 +98,31 @@ std::vector<EdgeUse> edge_uses(const Mesh& mesh, const std::vector<int>& weld, M
   return uses;
 }
 
-/// The edge counts and the winding of the triangles from their sorted edge uses.
-void count_edges(const std::vector<EdgeUse>& uses, std::size_t triangles, MeshReport* out) {
-  Windings windings(triangles);
+/// Calls edge(first, count) for each edge: its `count` uses start at uses[first] (sorted).
+template <typename Edge>
+void for_each_edge(const std::vector<EdgeUse>& uses, Edge&& edge) {
   for (std::size_t k = 0; k < uses.size();) {
     std::size_t end = k + 1;
     while (end < uses.size() && uses[end].lo == uses[k].lo && uses[end].hi == uses[k].hi) ++end;
-    if (end - k == 1) {
+    edge(k, end - k);
+    k = end;
+  }
+}
+
+/// The edge counts and the winding of the triangles from their sorted edge uses.
+void count_edges(const std::vector<EdgeUse>& uses, std::size_t triangles, MeshReport* out) {
+  Windings windings(triangles);
+  for_each_edge(uses, [&](std::size_t k, std::size_t count) {
+    if (count == 1) {
       ++out->boundary_edges;
-    } else if (end - k > 2) {
+    } else if (count > 2) {
       ++out->non_manifold_edges;
     } else {
       const bool same_direction = uses[k].forward == uses[k + 1].forward;
       out->inconsistent_edges += same_direction;
       windings.join(uses[k].triangle, uses[k + 1].triangle, same_direction);
     }
-    k = end;
-  }
+  });
   out->triangles_against_neighbours = windings.minority();
 }
 
@@ -175,16 +183,13 @@ MeshPatches mesh_patches(const Mesh& mesh) {
   std::vector<char> degenerate(n, 1);
   for (const EdgeUse& use : uses) degenerate[use.triangle] = 0;
   std::vector<std::uint32_t> open_triangles;  // of a boundary or non-manifold edge
-  for (std::size_t k = 0; k < uses.size();) {
-    std::size_t end = k + 1;
-    while (end < uses.size() && uses[end].lo == uses[k].lo && uses[end].hi == uses[k].hi) ++end;
-    if (end - k == 2) {
+  for_each_edge(uses, [&](std::size_t k, std::size_t count) {
+    if (count == 2) {
       windings.join(uses[k].triangle, uses[k + 1].triangle, uses[k].forward == uses[k + 1].forward);
     } else {
-      for (std::size_t u = k; u < end; ++u) open_triangles.push_back(uses[u].triangle);
+      for (std::size_t u = k; u < k + count; ++u) open_triangles.push_back(uses[u].triangle);
     }
-    k = end;
-  }
+  });
   MeshPatches out;
   out.patch.assign(n, -1);
   out.flipped.assign(n, 0);
