@@ -87,4 +87,13 @@ void check_distinct_columns(std::string_view arg, const Eigen::Matrix3Xd& points
   }
 }
 
+long first_repeat(const std::vector<double>& values) {
+  for (std::size_t i = 1; i < values.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (values[j] == values[i]) return static_cast<long>(i);
+    }
+  }
+  return -1;
+}
+
 }  // namespace vantage::internal

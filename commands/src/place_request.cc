@@ -3,12 +3,12 @@
 
 #include "vantage/commands/place_json.h"
 
-#include <algorithm>
 #include <cmath>
 #include <utility>
 
 #include "place_internal.h"
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/internal/checks.h"
 #include "vantage/commands/sensor_json.h"
 #include "vantage/io/layout_formats.h"
 #include "vantage/io/printable.h"
@@ -40,13 +40,9 @@ void check_distances(const Request& request) {
     place_refuse("--distances", "at most " + std::to_string(LayoutSensor::kMaxDistances) +
                                     " distances, got " + std::to_string(request.distances.size()));
   }
-  for (std::size_t k = 0; k < request.distances.size(); ++k) {
-    const double d = request.distances[k];
-    check_positive(d, "--distances");
-    if (std::find(request.distances.begin(), request.distances.begin() + static_cast<long>(k), d) !=
-        request.distances.begin() + static_cast<long>(k)) {
-      place_refuse("--distances", "distance " + std::to_string(k + 1) + " repeats an earlier one");
-    }
+  for (const double d : request.distances) check_positive(d, "--distances");
+  if (const long k = vantage::internal::first_repeat(request.distances); k >= 0) {
+    place_refuse("--distances", "distance " + std::to_string(k + 1) + " repeats an earlier one");
   }
   // Each evaluation is linear in the (direction, distance) samples, and the search keeps a pose
   // and a visibility bit per site for each.

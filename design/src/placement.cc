@@ -154,16 +154,14 @@ bool PlaceOptions::is_valid(std::string* why) const {
           why, "camera.distances",
           "at most " + std::to_string(CameraObjective::kMaxDistances) + " distances");
     }
-    for (std::size_t k = 0; k < camera->distances.size(); ++k) {
-      const double d = camera->distances[k];
+    for (const double d : camera->distances) {
       if (!(d > 0.0) || !std::isfinite(d)) {
         return vantage::internal::invalid_option(why, "camera.distances",
                                                  "must be finite numbers > 0");
       }
-      if (std::find(camera->distances.begin(), camera->distances.begin() + k, d) !=
-          camera->distances.begin() + k) {
-        return vantage::internal::invalid_option(why, "camera.distances", "a distance repeats");
-      }
+    }
+    if (vantage::internal::first_repeat(camera->distances) >= 0) {
+      return vantage::internal::invalid_option(why, "camera.distances", "a distance repeats");
     }
   }
   if (tracker) {

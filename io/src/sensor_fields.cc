@@ -1,10 +1,10 @@
 #include "sensor_fields.h"
 
-#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "json_fields.h"
+#include "vantage/analysis/internal/checks.h"
 
 namespace vantage::io::internal {
 namespace {
@@ -38,11 +38,8 @@ void read_distances(const nlohmann::json& s, const std::string& source, LayoutSe
                      " numbers > 0 (one: distance)");
   }
   out->distances.assign(d.data(), d.data() + d.size());
-  for (std::size_t k = 1; k < out->distances.size(); ++k) {
-    if (std::find(out->distances.begin(), out->distances.begin() + static_cast<long>(k),
-                  out->distances[k]) != out->distances.begin() + static_cast<long>(k)) {
-      fail(source, "sensor.distances[" + std::to_string(k) + "]: repeats an earlier distance");
-    }
+  if (const long k = vantage::internal::first_repeat(out->distances); k >= 0) {
+    fail(source, "sensor.distances[" + std::to_string(k) + "]: repeats an earlier distance");
   }
 }
 

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "vantage/analysis/common.h"
 
@@ -111,6 +112,10 @@ inline double weight_at(const Eigen::VectorXd& weights, Eigen::Index i) {
 
 /// "<arg>: points <j> and <i> coincide" for the first pair of equal columns, j < i. O(n^2).
 void check_distinct_columns(std::string_view arg, const Eigen::Matrix3Xd& points);
+
+/// The index of the first of `values` equal to an earlier one, or -1 when they are distinct
+/// (e.g. an approach's camera distances, which must not repeat). O(n^2).
+long first_repeat(const std::vector<double>& values);
 
 /// The point sets of a pose solve: `measured` has one column per column of `model`
 /// ("<measured_arg>: has 7 points, expected 8 (one per column of <model_arg>)"), at least
