@@ -13,6 +13,7 @@
 #include "crb_input.h"
 #include "layout_input.h"
 #include "limits.h"
+#include "progress.h"
 #include "vantage/analysis/common.h"
 #include "vantage/camera/pose_crb.h"
 #include "vantage/camera/pose_crb_tags.h"
@@ -33,6 +34,7 @@ struct CrbArgs {
   CLI::Option* tags_per_side_option = nullptr;
   CLI::Option* tag_fill_option = nullptr;
   bool json = false;
+  bool quiet = false;
   bool allow_large = false;
 };
 
@@ -144,6 +146,23 @@ void print_tag_sweep(const std::vector<camera::TagFace>& faces,
   }
 }
 
+// The --sweep-tags rows (and the faces they tile), errors named by the flags.
+std::vector<camera::TagSweepRow> tag_sweep(const CrbArgs& args, const Layout& layout,
+                                           const camera::CrbProgress& progress,
+                                           std::vector<camera::TagFace>* faces) {
+  camera::TagSweepOptions options = args.tags;
+  options.progress = progress;
+  try {
+    *faces = camera::tag_faces(layout);
+    return camera::pose_crb_tag_sweep(layout, args.camera.options(), options);
+  } catch (const InvalidArgument& e) {
+    if (e.field() == "names" || e.field() == "points") throw e.against(args.file);
+    if (e.field() == "sweep_tags.per_side") throw e.renamed("--tags-per-side", std::nullopt);
+    if (e.field() == "sweep_tags.fill") throw e.renamed("--tag-fill", std::nullopt);
+    throw crb_option_error(e, args.file);
+  }
+}
+
 int run_crb(const CrbArgs& args) {
   if (!args.sweep_tags) {
     // Issue 36: --tags-per-side without --sweep-tags was silently ignored.
@@ -166,23 +185,17 @@ int run_crb(const CrbArgs& args) {
   std::optional<Eigen::Vector3d> direction;
   if (!args.direction.empty()) direction = commands::parse_direction(args.direction, "--direction");
   camera::PoseCrbReport report;
-  try {
-    report = camera::pose_crb_report(layout, args.camera.options(), direction, sweep);
-  } catch (const InvalidArgument& e) {
-    throw crb_option_error(e, args.file);
-  }
   std::vector<camera::TagFace> faces;
   std::vector<camera::TagSweepRow> tag_rows;
-  if (args.sweep_tags) {
+  {
+    Progress progress("crb", !args.json && !args.quiet);  // cleared before the report
     try {
-      faces = camera::tag_faces(layout);
-      tag_rows = camera::pose_crb_tag_sweep(layout, args.camera.options(), args.tags);
+      report = camera::pose_crb_report(layout, args.camera.options(), direction, sweep,
+                                       progress.callback());
     } catch (const InvalidArgument& e) {
-      if (e.field() == "names" || e.field() == "points") throw e.against(args.file);
-      if (e.field() == "sweep_tags.per_side") throw e.renamed("--tags-per-side", std::nullopt);
-      if (e.field() == "sweep_tags.fill") throw e.renamed("--tag-fill", std::nullopt);
       throw crb_option_error(e, args.file);
     }
+    if (args.sweep_tags) tag_rows = tag_sweep(args, layout, progress.callback(), &faces);
   }
   if (args.json) {
     Json out = crb_json::report(report);
@@ -234,6 +247,8 @@ Command add_crb_command(CLI::App& root) {
   sub->add_option("--threads", args->camera.threads, "threads, 0 = all cores")
       ->capture_default_str();
   add_allow_large_flag(sub, args->allow_large);
+  sub->add_flag("--quiet", args->quiet,
+                "no progress line on stderr (shown only on a terminal, during the sweeps)");
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
   return {sub, [args] { return run_crb(*args); }};
 }

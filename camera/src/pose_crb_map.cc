@@ -267,7 +267,8 @@ PoseCrbMap pose_crb_map(const PoseCrbModel& model, double distance) {
 }
 
 std::vector<PoseCrbSweepRow> pose_crb_distance_sweep(const PoseCrbModel& model, double d1,
-                                                     double d2, int count) {
+                                                     double d2, int count,
+                                                     const CrbProgress& progress) {
   if (count < 2 || !(d1 < d2) || !(d2 <= PoseCrbOptions::kMaxLength) || !(d1 > model.radius()) ||
       !(d1 >= PoseCrbOptions::kMinLength)) {
     throw InvalidArgument("sweep_distance", "needs D1 < D2, both above the layout's radius " +
@@ -276,6 +277,7 @@ std::vector<PoseCrbSweepRow> pose_crb_distance_sweep(const PoseCrbModel& model, 
   }
   std::vector<PoseCrbSweepRow> rows;
   for (int k = 0; k < count; ++k) {
+    if (progress) progress("distance " + std::to_string(k + 1) + "/" + std::to_string(count));
     PoseCrbSweepRow row;
     row.distance = d1 + k * (d2 - d1) / (count - 1);
     PoseCrbMap map = pose_crb_map(model, row.distance);

@@ -9,7 +9,8 @@ namespace vantage::camera {
 
 PoseCrbReport pose_crb_report(const Layout& layout, const PoseCrbOptions& options,
                               const std::optional<Eigen::Vector3d>& direction,
-                              const std::optional<PoseCrbSweep>& sweep) {
+                              const std::optional<PoseCrbSweep>& sweep,
+                              const CrbProgress& progress) {
   const PoseCrbModel model(layout, options);
   PoseCrbReport report;
   report.camera = options;
@@ -18,7 +19,8 @@ PoseCrbReport pose_crb_report(const Layout& layout, const PoseCrbOptions& option
   if (direction) report.at_direction = model.at(*direction);
   report.map = pose_crb_map(model);
   if (sweep) {
-    report.sweep_distance = pose_crb_distance_sweep(model, sweep->from, sweep->to, sweep->count);
+    report.sweep_distance =
+        pose_crb_distance_sweep(model, sweep->from, sweep->to, sweep->count, progress);
   }
   report::LayoutReportOptions affine;
   affine.analysis.run_crosscheck = false;

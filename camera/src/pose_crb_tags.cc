@@ -218,8 +218,13 @@ std::vector<TagSweepRow> pose_crb_tag_sweep(const Layout& layout, const PoseCrbO
   double largest = 0.0;
   for (const TagFace& face : faces) largest = std::max(largest, face.extent);
   std::vector<TagSweepRow> rows;
+  const std::size_t tilings = options.per_side.size() * options.fill.size();
   for (int k : options.per_side) {
     for (double fill : options.fill) {
+      if (options.progress) {
+        options.progress("tiling " + std::to_string(rows.size() + 1) + "/" +
+                         std::to_string(tilings));
+      }
       TagSweepRow row;
       row.per_side = k;
       row.tags = static_cast<int>(faces.size()) * k * k;

@@ -245,6 +245,22 @@ TEST(HardeningCli, ProgressOnlyOnATerminal) {
   EXPECT_FALSE(std::regex_search(quiet, progress)) << quiet;
 }
 
+// Issue 36, item 6: long runs show progress. crb's distance sweep (up to 1000 maps, about 28 s)
+// says which distance it is at; --quiet silences it.
+TEST(HardeningCli, CrbSweepShowsItsProgressOnATerminal) {
+  ScratchDir scratch;
+  const std::string count = testing::kUnderSanitizer ? "20" : "60";  // over a second either way
+  const std::string crb = "crb '" + kLayouts + "apriltag_cube.yaml' --distance 2 --focal 1000 " +
+                          "--noise-px 0.3 --sweep-distance 1:3:" + count;
+  const std::regex progress("vantage crb: distance [0-9]+/" + count + ", [0-9]+ s");
+  const std::string shown = run_on_terminal(crb, scratch);
+  EXPECT_TRUE(std::regex_search(shown, progress)) << shown;
+  EXPECT_THAT(shown, HasSubstr("worst direction"));
+  const std::string quiet = run_on_terminal(crb + " --quiet", scratch);
+  EXPECT_THAT(quiet, HasSubstr("worst direction"));
+  EXPECT_FALSE(std::regex_search(quiet, progress)) << quiet;
+}
+
 // Issue 36, item 8: a user's word quoted in an error is an excerpt (its first 60 bytes and its
 // size), so that a 5 000-byte figure or marker name does not become a 5 000-byte line.
 TEST(HardeningCli, LongWordsInErrorsAreExcerpts) {

@@ -27,6 +27,7 @@
 /// segment from p_i to c meets no triangle; a layout without visibility sees every marker.
 
 #include <Eigen/Core>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -238,10 +239,15 @@ struct PoseCrbSweepRow {
   double unbounded_fraction = 0.0;  ///< as PoseCrbMap::unbounded_fraction
 };
 
+/// Called before each step of a long computation with its stage ("distance 3/1000"), e.g. to
+/// show progress; empty: nothing is called.
+using CrbProgress = std::function<void(const std::string& stage)>;
+
 /// The distance sweep D_k = D1 + k (D2 - D1) / (N - 1), k < N (N >= 2, D1 < D2 both above the
-/// radius; InvalidArgument "sweep_distance" otherwise).
+/// radius; InvalidArgument "sweep_distance" otherwise). `progress` gets "distance k/N".
 std::vector<PoseCrbSweepRow> pose_crb_distance_sweep(const PoseCrbModel& model, double d1,
-                                                     double d2, int count);
+                                                     double d2, int count,
+                                                     const CrbProgress& progress = {});
 
 /// Everything `vantage crb` and `vantage.crb` report.
 struct PoseCrbReport {
@@ -257,7 +263,8 @@ struct PoseCrbReport {
 };
 
 /// The front door: the model, the map, the bound at `direction` (when given), the affine bound
-/// (report::analyze_layout()) and the distance sweep (when `sweep` = {D1, D2, N} is given).
+/// (report::analyze_layout()) and the distance sweep (when `sweep` = {D1, D2, N} is given, with
+/// `progress` per distance).
 struct PoseCrbSweep {
   double from = 0.0;
   double to = 0.0;
@@ -265,6 +272,7 @@ struct PoseCrbSweep {
 };
 PoseCrbReport pose_crb_report(const Layout& layout, const PoseCrbOptions& options,
                               const std::optional<Eigen::Vector3d>& direction = std::nullopt,
-                              const std::optional<PoseCrbSweep>& sweep = std::nullopt);
+                              const std::optional<PoseCrbSweep>& sweep = std::nullopt,
+                              const CrbProgress& progress = {});
 
 }  // namespace vantage::camera

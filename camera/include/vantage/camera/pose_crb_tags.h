@@ -44,6 +44,8 @@ struct TagSweepOptions {
   std::vector<int> per_side = {1, 2, 3, 4};  ///< k, each in [1, kMaxPerSide]
   /// Each in (0, 1]; 1 only when every per_side is 1 (neighbours would share corners).
   std::vector<double> fill = {0.5, 0.8};
+  /// Gets "tiling k/N" before each tiling's map, or empty.
+  CrbProgress progress;
 
   /// True when every field is in range; otherwise *why names the field and the constraint.
   bool is_valid(std::string* why = nullptr) const;
