@@ -33,15 +33,6 @@ namespace vantage::cli {
 
 namespace {
 
-// A point-mode candidate closer than this (times the search box's largest side) to a marker or
-// to another candidate would give a zero free vector: the augmenter's own separation threshold.
-constexpr double kCandidateSeparation = 1e-9;
-// Largest --margin: the search box is then 201 times the layout's extent, and the augmenter's
-// separation threshold (kCandidateSeparation times the box) still 2e-7 of the layout. Larger
-// margins would make that threshold swallow the layout itself (--margin 1e8: 0.2 of it, and
-// every candidate "coincides" with a marker): out of range, not a coincidence.
-constexpr double kMaxMargin = 100.0;
-
 struct DesignArgs {
   std::string file;
   LayoutInput input;
@@ -61,46 +52,6 @@ struct DesignArgs {
 };
 
 [[noreturn]] void bad(const std::string& message) { throw InvalidArgument(message); }
-
-// Point mode: candidates that coincide with a marker or with each other cannot be added.
-void check_point_candidates(const std::string& source, const Layout& layout, double margin) {
-  if (layout.mode != LayoutMode::kPoints || layout.candidates.cols() == 0) return;
-  const Eigen::Vector3d lo = layout.entries.rowwise().minCoeff();
-  const Eigen::Vector3d hi = layout.entries.rowwise().maxCoeff();
-  const double scale = (1.0 + 2.0 * margin) * (hi - lo).maxCoeff();
-  const double min_distance = kCandidateSeparation * scale;
-  for (Eigen::Index c = 0; c < layout.candidates.cols(); ++c) {
-    const Eigen::Vector3d x = layout.candidates.col(c);
-    for (Eigen::Index i = 0; i < layout.entries.cols(); ++i) {
-      if ((x - layout.entries.col(i)).norm() <= min_distance) {
-        bad(source + ": candidates[" + std::to_string(c) + "]: coincides with points[" +
-            std::to_string(i) + "]");
-      }
-    }
-    for (Eigen::Index d = 0; d < c; ++d) {
-      if ((x - layout.candidates.col(d)).norm() <= min_distance) {
-        bad(source + ": candidates[" + std::to_string(c) + "]: coincides with candidates[" +
-            std::to_string(d) + "]");
-      }
-    }
-  }
-}
-
-// --min-distance-difference D > 0 needs marker positions that keep it themselves.
-void check_distance_difference(const DesignArgs& args, const Layout& layout) {
-  const double gap = args.min_distance_difference;
-  if (!(gap > 0.0)) return;
-  if (layout.mode != LayoutMode::kPoints) {
-    bad("--min-distance-difference: needs a layout of points; " + args.file + " has vectors");
-  }
-  const tracker::DistanceDifference d = tracker::min_distance_difference(layout.entries);
-  if (d.value < gap) {
-    bad("--min-distance-difference: " + args.file + ": its own distances " +
-        layout.entry_name(d.pair_a.first) + "-" + layout.entry_name(d.pair_a.second) + " and " +
-        layout.entry_name(d.pair_b.first) + "-" + layout.entry_name(d.pair_b.second) +
-        " differ by only " + format_number(d.value) + " < " + format_number(gap));
-  }
-}
 
 // Every check that can fail before the (possibly long) search, so that a bad call costs
 // nothing and writes nothing.
@@ -236,25 +187,51 @@ void print_report(const DesignArgs& args, const Layout& layout, const design::Au
             << (r.final_coplanarity.nearly_coplanar ? " (NEARLY COPLANAR)" : "") << "\n";
 }
 
-/// --add, --margin, --search-budget and --min-distance-difference in range.
-void check_design_numbers(const DesignArgs& args) {
-  if (args.add < 1) bad("--add: must be >= 1, got " + std::to_string(args.add));
-  if (!(args.margin >= 0.0 && args.margin <= kMaxMargin)) {
-    bad("--margin: must be in [0, " + format_number(kMaxMargin) + "], got " +
-        format_number(args.margin));
+/// An error of augment_layout() as the command names it: an option by its flag; the layout's
+/// own (coincident candidates, distances that break the minimum distance difference) against
+/// the file.
+InvalidArgument design_error(const InvalidArgument& e, const std::string& file) {
+  static const std::pair<std::string, std::string> kFlags[] = {
+      {"candidates_only", "--candidates-only"},
+      {"margin", "--margin"},
+      {"search_budget", "--search-budget"},
+      {"min_distance_difference", "--min-distance-difference"}};
+  for (const auto& [field, flag] : kFlags) {
+    if (e.field() == "options." + field) return e.renamed(flag, std::nullopt);
+    if (e.field() == field) return e.renamed(flag, std::nullopt).against(file);
   }
-  if (args.search_budget < 0) {
-    bad("--search-budget: must be >= 0, got " + std::to_string(args.search_budget));
-  }
-  if (!(args.min_distance_difference >= 0.0) || !std::isfinite(args.min_distance_difference)) {
-    bad("--min-distance-difference: must be a finite number >= 0, got " +
-        format_number(args.min_distance_difference));
-  }
+  return e.against(file);
 }
 
-/// What needs the layout: the time limit, --candidates-only, the candidates, the distance
-/// difference and the --write format.
-void check_design_layout(const DesignArgs& args, const Layout& layout) {
+/// The augmenter's options from the flags (the library checks them with the layout);
+/// --add >= 1 is the command's own rule (the library takes 0 to analyse only).
+design::AugmentOptions augment_options(const DesignArgs& args) {
+  if (args.add < 1) bad("--add: must be >= 1, got " + std::to_string(args.add));
+  design::AugmentOptions options;
+  options.add = args.add;
+  options.candidates_only = args.candidates_only;
+  options.margin = args.margin;
+  options.search_budget = args.search_budget;
+  options.min_distance_difference = args.min_distance_difference;
+  options.run_direct = args.direct;
+  return options;
+}
+
+/// What needs the layout: the library's checks (options, candidates, the distance difference),
+/// the time limit, --candidates-only and the --write format.
+void check_design_layout(const DesignArgs& args, const design::AugmentOptions& options,
+                         const Layout& layout) {
+  // The command's own rule: the library would run out of candidates (status no_candidates).
+  const Eigen::Index n_candidates = layout.candidates.cols();
+  if (args.candidates_only && n_candidates > 0 && args.add > n_candidates) {
+    bad("--add: " + std::to_string(args.add) + " exceeds the " + std::to_string(n_candidates) +
+        " candidates of " + args.file + " (--candidates-only uses each at most once)");
+  }
+  try {
+    design::check_augmentation(layout, options);
+  } catch (const InvalidArgument& e) {
+    throw design_error(e, args.file);
+  }
   const long final_count =
       layout.mode == LayoutMode::kPoints
           ? static_cast<long>(free_vector_count(layout.entries.cols() + args.add))
@@ -264,28 +241,12 @@ void check_design_layout(const DesignArgs& args, const Layout& layout) {
           " data vectors",
       estimated_design_seconds(layout, args.add, args.candidates_only, args.search_budget),
       kMaxDesignSeconds, "design", args.allow_large);
-  const Eigen::Index n_candidates = layout.candidates.cols();
-  if (args.candidates_only && n_candidates == 0) {
-    bad("--candidates-only: " + args.file + " has no \"candidates\"");
-  }
-  if (args.candidates_only && args.add > n_candidates) {
-    bad("--add: " + std::to_string(args.add) + " exceeds the " + std::to_string(n_candidates) +
-        " candidates of " + args.file + " (--candidates-only uses each at most once)");
-  }
-  check_point_candidates(args.file, layout, args.margin);
-  check_distance_difference(args, layout);
   check_write_format(args, layout);
 }
 
-/// The augmentation, with a progress line cleared before the report.
-design::AugmentResult augment(const DesignArgs& args, const Layout& layout) {
-  design::AugmentOptions options;
-  options.add = args.add;
-  options.candidates_only = args.candidates_only;
-  options.margin = args.margin;
-  options.search_budget = args.search_budget;
-  options.min_distance_difference = args.min_distance_difference;
-  options.run_direct = args.direct;
+/// The augmentation (checked already), with a progress line cleared before the report.
+design::AugmentResult augment(const DesignArgs& args, design::AugmentOptions options,
+                              const Layout& layout) {
   design::AugmentResult r;
   {
     Progress progress("design", !args.json && !args.quiet);  // cleared before the report
@@ -307,10 +268,10 @@ void print_failure(const DesignArgs& args, const design::AugmentResult& r) {
 }
 
 int run_design(const DesignArgs& args) {
-  check_design_numbers(args);
+  const design::AugmentOptions options = augment_options(args);
   check_write_target(args);
   const Layout layout = args.input.read(args.file, args.allow_large);
-  check_design_layout(args, layout);
+  check_design_layout(args, options, layout);
   if (const std::optional<std::string> warning = design_json::unused_visibility_warning(layout)) {
     std::cerr << "vantage: warning: design: " << io::printable(args.file) << ": " << *warning
               << " (--seen-whole drops the model, from --write's file too, and this line)"
@@ -324,7 +285,7 @@ int run_design(const DesignArgs& args) {
   if (!args.plot.empty()) throw InvalidArgument(std::string("--plot: ") + kWithoutPlot);
 #endif
 
-  const design::AugmentResult r = augment(args, layout);
+  const design::AugmentResult r = augment(args, options, layout);
 
   const bool ok = r.status == design::AugmentResult::Status::kOk;
   if (ok && args.write_given)

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "addition_space.h"
 #include "designer.h"
 #include "direct_search.h"
 #include "vantage/analysis/common.h"
@@ -40,6 +41,31 @@ void check_distance_difference(const Layout& layout, double gap) {
   }
 }
 
+// Point mode: a candidate within the augmenter's separation (internal::kMinSeparation of the
+// search box's largest side) of a marker or of another candidate would add a zero free vector.
+void check_point_candidates(const Layout& layout, double margin) {
+  if (layout.mode != LayoutMode::kPoints || layout.candidates.cols() == 0) return;
+  const Eigen::Vector3d lo = layout.entries.rowwise().minCoeff();
+  const Eigen::Vector3d hi = layout.entries.rowwise().maxCoeff();
+  const double min_distance =
+      internal::kMinSeparation * (1.0 + 2.0 * margin) * (hi - lo).maxCoeff();
+  for (Eigen::Index c = 0; c < layout.candidates.cols(); ++c) {
+    const Eigen::Vector3d x = layout.candidates.col(c);
+    for (Eigen::Index i = 0; i < layout.entries.cols(); ++i) {
+      if ((x - layout.entries.col(i)).norm() <= min_distance) {
+        throw InvalidArgument("candidates", static_cast<long>(c), "coincides with", "points",
+                              static_cast<long>(i));
+      }
+    }
+    for (Eigen::Index d = 0; d < c; ++d) {
+      if ((x - layout.candidates.col(d)).norm() <= min_distance) {
+        throw InvalidArgument("candidates", static_cast<long>(c), "coincides with", "candidates",
+                              static_cast<long>(d));
+      }
+    }
+  }
+}
+
 }  // namespace
 
 const char* to_string(DirectResult::Status status) {
@@ -63,8 +89,8 @@ const char* to_string(AugmentResult::Status status) {
 bool AugmentOptions::is_valid(std::string* why) const {
   using vantage::internal::invalid_option;
   if (add < 0) return invalid_option(why, "add", "must be >= 0");
-  if (!(margin >= 0.0) || !std::isfinite(margin)) {
-    return invalid_option(why, "margin", "must be finite and >= 0");
+  if (!(margin >= 0.0 && margin <= kMaxMargin)) {
+    return invalid_option(why, "margin", "must be in [0, 100]");
   }
   if (circle_samples < 4) return invalid_option(why, "circle_samples", "must be >= 4");
   if (grid_samples < 2) return invalid_option(why, "grid_samples", "must be >= 2");
@@ -87,18 +113,23 @@ bool AugmentOptions::is_valid(std::string* why) const {
     return invalid_option(why, "coplanarity_threshold", "must be >= 0");
   }
   if (!(min_distance_difference >= 0.0) || !std::isfinite(min_distance_difference)) {
-    return invalid_option(why, "min_distance_difference", "must be finite and >= 0");
+    return invalid_option(why, "min_distance_difference", "must be a finite number >= 0");
   }
   return true;
 }
 
-AugmentResult augment_layout(const Layout& layout, const AugmentOptions& options) {
+void check_augmentation(const Layout& layout, const AugmentOptions& options) {
   vantage::internal::check_options("options", options);
   layout.validate();
   if (options.candidates_only && layout.candidates.cols() == 0) {
-    vantage::internal::fail("candidates", "candidates_only needs a layout with candidates");
+    vantage::internal::fail("options.candidates_only", "needs a layout with candidates");
   }
+  check_point_candidates(layout, options.margin);
   check_distance_difference(layout, options.min_distance_difference);
+}
+
+AugmentResult augment_layout(const Layout& layout, const AugmentOptions& options) {
+  check_augmentation(layout, options);
   AugmentResult result;
   result.min_distance_difference = options.min_distance_difference;
   const Eigen::Matrix3Xd initial_vectors = data_vectors(layout).vectors;

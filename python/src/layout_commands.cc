@@ -98,12 +98,7 @@ py::object design_layout(const py::object& layout_arg, const py::object& vectors
   std::string source;
   const Layout layout = layout_from_arguments(layout_arg, vectors, points, weights, candidates,
                                               {format, tag_points, bundle, allow_large}, &source);
-  if (add < 1) throw InvalidArgument("add: must be >= 1, got " + std::to_string(add));
-  if (!(std::isfinite(min_distance_difference) && min_distance_difference >= 0.0)) {
-    throw InvalidArgument("min_distance_difference",
-                          "must be a finite number >= 0, got " +
-                              py::repr(py::float_(min_distance_difference)).cast<std::string>());
-  }
+  if (add < 1) throw InvalidArgument("add", "must be >= 1, got " + std::to_string(add));
   check_size(source, [&] {
     const long final_count = layout.mode == LayoutMode::kPoints
                                  ? static_cast<long>(free_vector_count(layout.entries.cols() + add))
@@ -120,8 +115,16 @@ py::object design_layout(const py::object& layout_arg, const py::object& vectors
   options.margin = margin;
   options.run_direct = direct;
   options.min_distance_difference = min_distance_difference;
-  std::string why;
-  if (!options.is_valid(&why)) throw InvalidArgument(why);
+  try {
+    design::check_augmentation(layout, options);
+  } catch (const InvalidArgument& e) {
+    // The library's "options.<field>" is this function's keyword <field>.
+    const std::string prefix = "options.";
+    if (e.field().rfind(prefix, 0) == 0) {
+      throw e.renamed(e.field().substr(prefix.size()), std::nullopt);
+    }
+    throw source.empty() ? e : e.against(source);
+  }
   if (const std::optional<std::string> warning = design_json::unused_visibility_warning(layout)) {
     if (PyErr_WarnEx(PyExc_RuntimeWarning, warning->c_str(), 1) < 0) throw py::error_already_set();
   }

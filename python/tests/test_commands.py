@@ -101,6 +101,21 @@ def test_bad_arguments_raise_value_error(vantage, call, expected):
     assert expected in str(error.value)
 
 
+def test_design_refuses_what_the_library_refuses_by_keyword(vantage):
+    # The library's rules reach Python as they reach the CLI (issue 34, item 4): a candidate on a
+    # marker, checked only by the CLI before, and options named by their keywords.
+    points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]
+    with pytest.raises(ValueError) as error:
+        vantage.design(points=points, candidates=[[1, 1, 1], [1, 0, 0]], add=1,
+                       candidates_only=True, direct=False)
+    assert error.value.field == "candidates" and error.value.index == 1
+    assert str(error.value) == "candidates[1]: coincides with points[1]"
+    for keyword, value in (("margin", 1e8), ("margin", -1.0), ("min_distance_difference", -0.1)):
+        with pytest.raises(ValueError) as error:
+            vantage.design(points=points, add=1, direct=False, **{keyword: value})
+        assert error.value.field == keyword, str(error.value)
+
+
 def test_design_without_enough_candidates_raises_numerical_error(vantage):
     layout = vantage.Layout(vectors=np.eye(3), candidates=[[1, 1, 0]])
     with pytest.raises(vantage.NumericalError) as error:

@@ -401,7 +401,8 @@ const BadCall kBadCalls[] = {
     {"NegativeMargin", kTriadText, "in.json --add 1 --margin -0.5 --write out.json",
      "--margin: must be in [0, 100]"},
     {"CandidatesOnlyWithoutCandidates", kTriadText,
-     "in.json --add 1 --candidates-only --write out.json", "in.json has no \"candidates\""},
+     "in.json --add 1 --candidates-only --write out.json",
+     "--candidates-only: needs a layout with candidates"},
     {"MoreThanTheCandidates", kPointsWithCandidates,
      "in.json --add 3 --candidates-only --write out.json", "exceeds the 2 candidates"},
     {"CandidateOnAMarker", kPointsWithCandidates,
@@ -419,10 +420,10 @@ const BadCall kBadCalls[] = {
     {"GapNotANumber", kDrone, "in.json --add 1 --min-distance-difference wide --write out.json",
      "--min-distance-difference"},
     {"GapOnVectors", kTriadText, "in.json --add 1 --min-distance-difference 0.1 --write out.json",
-     "--min-distance-difference: needs a layout of points"},
+     "in.json: --min-distance-difference: needs a point layout"},
     {"GapTheLayoutBreaks", kDrone,
      "in.json --add 1 --min-distance-difference 0.01 --write out.json",
-     "--min-distance-difference: in.json: its own distances"},
+     "in.json: --min-distance-difference: the layout's own distances"},
 };
 
 INSTANTIATE_TEST_SUITE_P(DesignCli, DesignCliBadInput, ::testing::ValuesIn(kBadCalls),

@@ -252,5 +252,49 @@ TEST(Augment, RejectsBadInput) {
   EXPECT_THROW(augment_layout(triad, c), InvalidArgument) << "no candidates to choose from";
 }
 
+// The library owns the rules the `vantage design` command used to check alone (issue 34, item
+// 4): a candidate on a marker or on another candidate, and the largest margin. Each error names
+// the field and the entries, so that every front end can say it in its own words.
+TEST(Augment, RefusesCandidatesThatCoincideAndMarginsPastTheLimit) {
+  Layout layout;
+  layout.mode = LayoutMode::kPoints;
+  layout.entries = (Eigen::Matrix3Xd(3, 4) << 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1).finished();
+  layout.weights = Eigen::VectorXd::Ones(4);
+  layout.candidates = (Eigen::Matrix3Xd(3, 3) << 1, 2, 1, 1, 2, 1, 1, 2, 1).finished();
+  AugmentOptions options;
+  options.add = 1;
+  options.candidates_only = true;
+  options.run_direct = false;
+  try {
+    augment_layout(layout, options);
+    ADD_FAILURE() << "candidates[2] repeats candidates[0]";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.field(), "candidates");
+    EXPECT_EQ(e.index(), 2);
+    EXPECT_STREQ(e.what(), "candidates[2]: coincides with candidates[0]");
+  }
+  layout.candidates.col(2) = layout.entries.col(3);
+  try {
+    augment_layout(layout, options);
+    ADD_FAILURE() << "candidates[2] sits on points[3]";
+  } catch (const InvalidArgument& e) {
+    EXPECT_STREQ(e.what(), "candidates[2]: coincides with points[3]");
+  }
+  // Within the separation (1e-9 of the box's largest side, 1.5 here), not only equal.
+  layout.candidates.col(2) = layout.entries.col(3) + Eigen::Vector3d(1e-10, 0, 0);
+  EXPECT_THROW(augment_layout(layout, options), InvalidArgument);
+  layout.candidates.col(2) = layout.entries.col(3) + Eigen::Vector3d(1e-6, 0, 0);
+  EXPECT_NO_THROW(augment_layout(layout, options));
+
+  options.margin = AugmentOptions::kMaxMargin * 1.5;
+  try {
+    augment_layout(layout, options);
+    ADD_FAILURE() << "margin past the limit";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.field(), "options.margin");
+    EXPECT_EQ(e.problem(), "must be in [0, 100]");
+  }
+}
+
 }  // namespace
 }  // namespace vantage::design

@@ -65,8 +65,14 @@ struct AugmentOptions {
   /// at most once. Otherwise candidates, when given, are evaluated alongside the free search.
   bool candidates_only = false;
   /// Point mode: the search box is the bounding box of the markers grown on every side by
-  /// margin times its largest side. >= 0, dimensionless.
+  /// margin times its largest side. In [0, kMaxMargin], dimensionless.
   double margin = 0.25;
+  /// The largest margin: the search box is then 201 times the layout's extent, and the
+  /// augmenter's separation (a new marker or candidate closer than 1e-9 of the box's largest
+  /// side to another marker adds a zero free vector) still 2e-7 of the layout. A larger margin
+  /// would make that separation swallow the layout itself (1e8: 0.2 of it, and every candidate
+  /// would coincide with a marker).
+  static constexpr double kMaxMargin = 100.0;
   /// Direction mode: coarse samples per great circle a^perp (half circle, c ~ -c), >= 4.
   int circle_samples = 72;
   /// Point mode: coarse grid points per box axis, >= 2.
@@ -208,6 +214,14 @@ struct AugmentResult {
 /// "ok", "not_certified", "no_candidates" or "no_feasible_addition".
 const char* to_string(AugmentResult::Status status);
 
+/// Everything augment_layout() refuses before it searches, so that a front end can refuse bad
+/// input before anything else: invalid options ("options.<field>"), an invalid layout,
+/// candidates_only without candidates ("options.candidates_only"), a point-mode candidate within the
+/// augmenter's separation of a marker or of another candidate ("candidates[2]: coincides with
+/// points[1]"), and min_distance_difference > 0 on vectors or on markers that do not keep it
+/// ("min_distance_difference"). Throws InvalidArgument.
+void check_augmentation(const Layout& layout, const AugmentOptions& options);
+
 /// Greedy augmentation, K = options.add steps. At each step: the global worst viewpoints a_k of
 /// the current layout; candidates = coarse samples of every great circle a_k^perp (the paper's
 /// rule), the points c = a_i x a_j, and the minimisers of max_k |a_k.c| (where a single vector
@@ -220,7 +234,7 @@ const char* to_string(AugmentResult::Status status);
 /// directions, or positions in the box), multi-start from the greedy answer and seeded random
 /// starts (not run when vantage is built without NLopt: direct.message says so); with
 /// candidates_only, an exhaustive search over K-subsets of the candidates (no NLopt needed).
-/// Throws InvalidArgument on an invalid layout or options.
+/// Throws InvalidArgument as check_augmentation() does.
 AugmentResult augment_layout(const Layout& layout, const AugmentOptions& options = {});
 
 }  // namespace vantage::design
