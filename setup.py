@@ -13,6 +13,7 @@ VANTAGE_BUILD_JOBS sets the parallel jobs (default: the cores).
 """
 
 import glob
+import importlib.util
 import os
 import shlex
 import shutil
@@ -20,8 +21,31 @@ import subprocess
 import sys
 import sysconfig
 
-from setuptools import Extension, setup
-from setuptools.command.build_ext import build_ext
+
+def _missing_build_tools():
+    """What this Python lacks to build and use vantage, each with its Debian package."""
+    missing = []
+    if importlib.util.find_spec("setuptools") is None:
+        missing.append("setuptools (python3-setuptools)")
+    # setuptools 70.1 and later build wheels themselves; before, bdist_wheel is the wheel
+    # package's ("invalid command 'bdist_wheel'" without it).
+    if (importlib.util.find_spec("setuptools.command.bdist_wheel") is None
+            if importlib.util.find_spec("setuptools") else True):
+        if importlib.util.find_spec("wheel") is None:
+            missing.append("wheel (python3-wheel)")
+    if importlib.util.find_spec("numpy") is None:
+        missing.append("numpy (python3-numpy), which the package imports")
+    return missing
+
+
+_MISSING = _missing_build_tools()
+if _MISSING:
+    sys.exit(f"vantage: {sys.executable} cannot import " + ", ".join(_MISSING) + ". Install "
+             "with Debian's Python: `/usr/bin/python3 -m venv --system-site-packages DIR`, then "
+             "`DIR/bin/pip install --no-build-isolation --no-index .` (README, \"Python\").")
+
+from setuptools import Extension, setup  # noqa: E402 (after the check of what is missing)
+from setuptools.command.build_ext import build_ext  # noqa: E402
 
 SOURCE_DIR = os.path.dirname(os.path.abspath(__file__))
 
@@ -51,6 +75,8 @@ class CMakeBuild(build_ext):
                 f"-DPython3_EXECUTABLE={sys.executable}",
             ] + shlex.split(os.environ.get("VANTAGE_CMAKE_ARGS", "")))
         jobs = os.environ.get("VANTAGE_BUILD_JOBS", str(os.cpu_count() or 1))
+        print("vantage: building the C++ libraries and the extension (from scratch about 9 "
+              "minutes on 2 cores; `pip install -v` shows CMake's progress)", flush=True)
         _run(["cmake", "--build", build_dir, "--target", "vantage_python", "-j", jobs])
         suffix = sysconfig.get_config_var("EXT_SUFFIX")
         built = glob.glob(os.path.join(build_dir, "python", "vantage", "_vantage" + suffix))
