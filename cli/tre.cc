@@ -99,11 +99,7 @@ int run_tre(const TreArgs& args) {
   tracker::TreOptions options;
   options.fle = args.target.parsed_fle();
   options.direction = args.target.parsed_direction();
-  if (args.monte_carlo != 0 && args.monte_carlo < 1000) {
-    throw InvalidArgument("--monte-carlo", "must be >= 1000 trials");
-  }
   check_limit("--monte-carlo", args.monte_carlo, kMaxTreTrials, "tre", args.allow_large);
-  if (args.threads < 0) throw InvalidArgument("--threads", "must be >= 0");
   options.monte_carlo_trials = args.monte_carlo;
   options.seed = args.seed;
   options.threads = args.threads;

@@ -58,11 +58,14 @@ std::optional<Eigen::Vector3d> TreTargetArgs::parsed_direction() const {
 }
 
 InvalidArgument tre_option_error(const InvalidArgument& e, const std::string& file) {
-  static const std::pair<const char*, const char*> kOptions[] = {{"target", "--target"},
-                                                                 {"fle.sigma_perp", "--fle-sigma"},
-                                                                 {"fle.sigma_axial", "--fle-sigma"},
-                                                                 {"direction", "--direction"},
-                                                                 {"radius", "--radius"}};
+  static const std::pair<const char*, const char*> kOptions[] = {
+      {"target", "--target"},
+      {"fle.sigma_perp", "--fle-sigma"},
+      {"fle.sigma_axial", "--fle-sigma"},
+      {"direction", "--direction"},
+      {"radius", "--radius"},
+      {"monte_carlo_trials", "--monte-carlo"},
+      {"threads", "--threads"}};
   for (const auto& [field, option] : kOptions) {
     if (e.field() == field) return e.renamed(option, std::nullopt);
   }

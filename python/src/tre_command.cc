@@ -83,10 +83,6 @@ py::object tre(const py::object& layout_arg, const py::object& points, const py:
     }
     options.direction = Eigen::Vector3d(d);
   }
-  if (monte_carlo != 0 && monte_carlo < 1000) {
-    throw InvalidArgument("monte_carlo", "must be 0 (none) or >= 1000 trials");
-  }
-  if (threads < 0) throw InvalidArgument("threads", "must be >= 0");
   options.monte_carlo_trials = monte_carlo;
   options.seed = seed;
   options.threads = threads;
@@ -96,6 +92,7 @@ py::object tre(const py::object& layout_arg, const py::object& points, const py:
     } catch (const InvalidArgument& e) {
       // The library's fields as the keywords that set them.
       if (e.field() == "target") throw e.renamed("targets", std::nullopt);
+      if (e.field() == "monte_carlo_trials") throw e.renamed("monte_carlo", std::nullopt);
       if (e.field() == "fle.sigma_perp" || e.field() == "fle.sigma_axial") {
         throw e.renamed(fle_rms ? "fle_rms" : "fle_sigma", std::nullopt);
       }

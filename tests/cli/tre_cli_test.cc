@@ -99,7 +99,10 @@ TEST(TreCli, BadInputIsOneLineAndExitTwo) {
       {"negative sigma", nullptr, "--target 0,0,1 --fle-sigma -0.1,0.3", "--fle-sigma"},
       {"zero rms", nullptr, "--target 0,0,1 --fle-rms 0", "--fle-rms"},
       {"zero direction", nullptr, "--target 0,0,1 --fle-rms 0.2 --direction 0,0,0", "--direction"},
-      {"few trials", nullptr, "--target 0,0,1 --fle-rms 0.2 --monte-carlo 10", "--monte-carlo"},
+      {"few trials", nullptr, "--target 0,0,1 --fle-rms 0.2 --monte-carlo 10",
+       "--monte-carlo: must be 0 or >= 1000"},
+      {"negative threads", nullptr, "--target 0,0,1 --fle-rms 0.2 --threads -1",
+       "--threads: must be >= 0"},
       // Issue 36, item 2: these reported a certified worst RMS TRE of 0.0 (or inf), RMS^2
       // having overflowed or underflowed; lengths outside [1e-50, 1e50] are refused.
       {"target 1e200", nullptr, "--target 1e200,0,0 --fle-rms 0.25", "--target: is more than"},

@@ -19,6 +19,16 @@ void check_tre_targets(const std::vector<Eigen::Vector3d>& targets) {
   }
 }
 
+// An option out of range as an error naming its field ("monte_carlo_trials", "threads",
+// "fle.sigma_perp", "direction" or the search's), for each front end to name as it calls it.
+void check_tre_options(const TreOptions& options) {
+  std::string why;
+  if (options.is_valid(&why)) return;
+  const std::size_t colon = why.find(": ");
+  if (colon == std::string::npos) throw InvalidArgument(why);
+  throw InvalidArgument(why.substr(0, colon), why.substr(colon + 2));
+}
+
 // The trials_done callback of tre_monte_carlo() that words options.progress's stage; target 0:
 // the only one.
 std::function<void(long)> monte_carlo_progress(const TreOptions& options, std::size_t target,
@@ -111,8 +121,7 @@ TreReport tre_report(const Layout& layout, const std::vector<Eigen::Vector3d>& t
     throw InvalidArgument("points", "the TRE needs a layout of marker points, not vectors");
   }
   check_tre_targets(targets);
-  std::string why;
-  if (!options.is_valid(&why)) throw InvalidArgument(why);
+  check_tre_options(options);
   return tre_report(TreModel(layout, options.fle), targets, options);
 }
 
@@ -121,8 +130,7 @@ TreReport tre_report(const TreModel& model, const std::vector<Eigen::Vector3d>& 
   TreOptions options = given;
   options.fle = model.fle();
   check_tre_targets(targets);
-  std::string why;
-  if (!options.is_valid(&why)) throw InvalidArgument(why);
+  check_tre_options(options);
   const visibility::VisibilityProblem& problem = model.problem();
   TreReport report;
   report.fle = options.fle;

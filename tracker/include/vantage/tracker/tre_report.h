@@ -99,7 +99,8 @@ struct TreReport {
 
 /// The report for a point layout (with or without visibility) and targets in its frame.
 /// Throws InvalidArgument for a layout that is not in point mode ("points"), no targets
-/// ("target"), a non-finite target ("target[i]") or bad options.
+/// ("target"), a non-finite target ("target[i]") or bad options (named by their field:
+/// "monte_carlo_trials", "threads", "fle.sigma_perp", ...).
 TreReport tre_report(const Layout& layout, const std::vector<Eigen::Vector3d>& targets,
                      const TreOptions& options);
 
