@@ -2,9 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -193,6 +195,43 @@ TEST(BodyPlacement, CameraObjectiveDiameterAndWorkspaceAreVantagePlaces) {
       EXPECT_GE((placed.entries.col(j) - placed.entries.col(k)).norm(), kDiameter);
     }
   }
+}
+
+// The panel's approach (issue 35: "the viewer's Place tab lacks --distances"): the value is the
+// largest over the distances of the library's map of the placed layout at each, and the sensor
+// block records the distances; a typed approach that is not numbers is refused by name.
+TEST(BodyPlacement, AnApproachIsTheWorstOfItsDistances) {
+  const Layout layout = cube_layout(false);
+  PlaceSettings settings = small_settings();
+  settings.objective = "camera";
+  settings.distances = {4.0, 6.0, 9.0};
+  settings.focal = 900.0;
+  settings.noise_px = 0.3;
+  settings.workspace = LayoutWorkspace{Eigen::Vector3d::UnitZ(), 30.0};
+  const PlaceOutcome outcome = place_on_body(layout, 0, settings);
+  ASSERT_EQ(outcome.error, "");
+  ASSERT_TRUE(outcome.complete) << outcome.failure;
+  const Layout& placed = outcome.placed;
+  ASSERT_TRUE(placed.sensor);
+  EXPECT_EQ(placed.sensor->distances, settings.distances);
+  camera::PoseCrbOptions crb;
+  crb.distance = settings.distances.front();
+  crb.focal_length = 900.0;
+  crb.noise_px = 0.3;
+  crb.samples = placed.sensor->samples;
+  crb.aim = placed.sensor->aim;
+  const camera::PoseCrbModel model(placed, crb);
+  double worst = 0.0;
+  for (const double d : settings.distances) {
+    const camera::PoseCrbMap map = camera::pose_crb_map(model, d);
+    ASSERT_EQ(map.status, camera::PoseCrbMap::Status::kOk) << "at " << d;
+    worst = std::max(worst, map.worst.rot_rms_deg);
+  }
+  EXPECT_EQ(outcome.objective_value, worst);
+
+  settings.distances = {std::numeric_limits<double>::quiet_NaN()};
+  const PlaceOutcome refused = place_on_body(layout, 0, settings);
+  EXPECT_NE(refused.error.find("--distances"), std::string::npos) << refused.error;
 }
 
 // A missing camera setting is refused as `vantage place` refuses it, naming the option.

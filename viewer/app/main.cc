@@ -95,6 +95,9 @@ void add_viewer_options(CLI::App& cli, ViewerArgs* args) {
       ->check(CLI::IsMember({"affine", "camera", "tracker"}))
       ->capture_default_str();
   cli.add_option("--distance", s.distance, "with --place --objective camera: layout units");
+  cli.add_option("--distances", s.distances,
+                 "with --place --objective camera: D1,D2,... an approach instead of --distance")
+      ->delimiter(',');
   cli.add_option("--focal", s.focal, "with --place --objective camera: pixels");
   cli.add_option("--noise-px", s.noise_px, "with --place --objective camera: pixels");
   cli.add_option("--target", args->target,

@@ -58,8 +58,9 @@ class Panels {
   std::uint64_t visibility_revision_ = 0;  // the revision the two fields below were read from
   double cone_edit_ = 0.0;
   int min_visible_edit_ = 3;
-  bool was_placing_ = false;                          // placing on the previous frame
-  PlaceSettings place_settings_;                      // the placement controls
+  bool was_placing_ = false;      // placing on the previous frame
+  PlaceSettings place_settings_;  // the placement controls
+  std::string approach_text_;     // the camera objective's distances D1,D2,... as typed
   std::uint64_t place_revision_ = ~std::uint64_t{0};  // the revision K was last read from
   bool place_seeded_ = false;  // the controls took the settings of a start-up placement
 };

@@ -3,24 +3,49 @@
 // last placement.
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "draw_style.h"
 #include "panels.h"
 #include "vantage/camera/pose_crb.h"
+#include "vantage/commands/point_text.h"
 
 namespace vantage::viewer::app {
 namespace {
 
 constexpr int kMaxMarkers = 200;
 constexpr int kMaxCandidates = 20000;  // as `vantage place --candidates`
+
+// D1,D2,... as the settings' approach: `vantage place --distances`'s numbers, or NaN for text
+// that is not a list of numbers (so that the placement is refused, naming --distances, rather
+// than run at the single distance); empty text: no approach.
+std::vector<double> approach_of(const std::string& text) {
+  if (text.empty()) return {};
+  const std::optional<std::vector<double>> numbers = commands::parse_numbers(text);
+  if (!numbers || numbers->empty()) return {std::numeric_limits<double>::quiet_NaN()};
+  return *numbers;
+}
+
+// The settings' distances as text: `digits` 17 reads back to the same numbers (the field), 4 is
+// for the report line.
+std::string approach_text(const std::vector<double>& distances, int digits) {
+  std::string out;
+  for (const double d : distances) {
+    char number[32];
+    std::snprintf(number, sizeof number, "%.*g", digits, d);
+    out += (out.empty() ? "" : ",") + std::string(number);
+  }
+  return out;
+}
 
 // A search value of the camera or tracker objective: degrees or layout units, "incomplete" for
 // a choice below the least coverage, and no figure past the camera's first-order limit
@@ -90,15 +115,17 @@ void steps_table(const design::PlacementResult& r, const std::string& objective)
 // The objective's value on the placed layout, as `vantage place` reports it.
 void objective_line(const PlaceOutcome& out) {
   const PlaceSettings& s = out.settings;
+  const std::string at = s.distances.empty() ? approach_text({s.distance}, 4)
+                                             : "the approach " + approach_text(s.distances, 4);
   if (s.objective == "camera" && !std::isfinite(out.objective_value)) {
     // Trackable, but the worst direction is past the first-order limit: no figure (§22).
-    ImGui::TextWrapped("objective camera: %s rot_rms unbounded at %.4g (f %.4g px, %.3g px)",
-                       s.statistic.c_str(), s.distance, s.focal, s.noise_px);
+    ImGui::TextWrapped("objective camera: %s rot_rms unbounded at %s (f %.4g px, %.3g px)",
+                       s.statistic.c_str(), at.c_str(), s.focal, s.noise_px);
   } else if (!std::isfinite(out.objective_value)) {
     ImGui::TextWrapped("objective %s: none (nothing tracked)", s.objective.c_str());
   } else if (s.objective == "camera") {
-    ImGui::TextWrapped("objective camera: %s rot_rms %.4g\u00b0 at %.4g (f %.4g px, %.3g px)",
-                       s.statistic.c_str(), out.objective_value, s.distance, s.focal, s.noise_px);
+    ImGui::TextWrapped("objective camera: %s rot_rms %.4g\u00b0 at %s (f %.4g px, %.3g px)",
+                       s.statistic.c_str(), out.objective_value, at.c_str(), s.focal, s.noise_px);
   } else if (s.objective == "tracker") {
     ImGui::TextWrapped("objective tracker: worst RMS TRE %.4g (layout units) at the target",
                        out.objective_value);
@@ -173,8 +200,9 @@ void outcome_summary(const PlaceOutcome& out) {
   steps_table(r, objective);
 }
 
-// The objective and its settings (docs/math.md §21, "Objectives").
-void objective_controls(PlaceSettings* s) {
+// The objective and its settings (docs/math.md §21, "Objectives"); `approach` is the text of
+// the camera's distances.
+void objective_controls(PlaceSettings* s, std::string* approach) {
   static const char* const kObjectives[] = {"affine", "camera", "tracker"};
   ImGui::Text("objective");
   for (const char* name : kObjectives) {
@@ -182,9 +210,13 @@ void objective_controls(PlaceSettings* s) {
     if (ImGui::RadioButton(name, s->objective == name)) s->objective = name;
   }
   if (s->objective == "camera") {
+    ImGui::BeginDisabled(!approach->empty());
     ImGui::InputDouble("distance", &s->distance, 0.0, 0.0, "%.4g");
+    ImGui::EndDisabled();
     ImGui::SameLine();
     ImGui::InputDouble("focal px", &s->focal, 0.0, 0.0, "%.4g");
+    ImGui::InputTextWithHint("approach", "D1,D2,... (instead of distance)", approach);
+    s->distances = approach_of(*approach);
     ImGui::InputDouble("noise px", &s->noise_px, 0.0, 0.0, "%.3g");
     ImGui::SameLine();
     static const char* const kStatistics[] = {"worst", "p95", "median"};
@@ -263,6 +295,7 @@ void Panels::placement_panel(ViewerSession& session) {
   const LayoutDocument& doc = session.document();
   if (!place_seeded_ && session.placement()) {
     place_settings_ = session.placement()->settings;  // e.g. the start-up --place
+    approach_text_ = approach_text(place_settings_.distances, 17);
     place_seeded_ = true;
   }
   if (place_revision_ != doc.revision() && !session.placing()) {
@@ -283,7 +316,7 @@ void Panels::placement_panel(ViewerSession& session) {
     place_settings_.seed = static_cast<std::uint64_t>(std::max(seed, 0));
   ImGui::InputDouble("marker diameter", &place_settings_.marker_diameter, 0.0, 0.0, "%.4g");
   where_controls(place_settings_);
-  objective_controls(&place_settings_);
+  objective_controls(&place_settings_, &approach_text_);
   ImGui::PopItemWidth();
   workspace_controls(doc.layout(), &place_settings_);
   coverage_controls(&place_settings_);

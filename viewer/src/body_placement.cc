@@ -26,7 +26,8 @@ place_json::Request place_request(const Layout& layout, const PlaceSettings& set
   request.min_coverage = settings.min_coverage;
   request.objective = settings.objective;
   if (settings.objective == "camera") {
-    request.distance = settings.distance;
+    if (settings.distances.empty()) request.distance = settings.distance;
+    request.distances = settings.distances;
     request.focal = settings.focal;
     request.noise_px = settings.noise_px;
     request.statistic = settings.statistic;

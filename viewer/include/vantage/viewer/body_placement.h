@@ -38,6 +38,9 @@ struct PlaceSettings {
   std::string objective = "affine";
   /// The camera objective: distance (layout units), focal length and noise (pixels), statistic.
   double distance = 0.0;
+  /// An approach instead of `distance`: the camera distances D1, D2, ... (`vantage place
+  /// --distances`; docs/math.md §21, "An approach"); empty: `distance` alone.
+  std::vector<double> distances;
   double focal = 0.0;
   double noise_px = 0.0;
   std::string statistic = "worst";
