@@ -216,8 +216,8 @@ const char* to_string(AugmentResult::Status status);
 
 /// Everything augment_layout() refuses before it searches, so that a front end can refuse bad
 /// input before anything else: invalid options ("options.<field>"), an invalid layout,
-/// candidates_only without candidates ("options.candidates_only"), a point-mode candidate within the
-/// augmenter's separation of a marker or of another candidate ("candidates[2]: coincides with
+/// candidates_only without candidates ("options.candidates_only"), a point-mode candidate within
+/// the augmenter's separation of a marker or of another candidate ("candidates[2]: coincides with
 /// points[1]"), and min_distance_difference > 0 on vectors or on markers that do not keep it
 /// ("min_distance_difference"). Throws InvalidArgument.
 void check_augmentation(const Layout& layout, const AugmentOptions& options);
