@@ -2,8 +2,8 @@
 
 The C++ libraries and the pybind11 module are built by the project's own CMakeLists.txt (no
 second build description): a Release build (-O3 -DNDEBUG, no -g, unity batches) of the target
-vantage_python only, in build/setuptools/cmake. The extension is stripped of its symbols and debug info as it
-is copied into the wheel.
+vantage_python only, in build/setuptools/cmake. The extension is stripped of its symbols and
+debug info as it is copied into the wheel.
 
 VANTAGE_CMAKE_BUILD_DIR=<dir> reuses an existing, configured CMake build directory instead (the
 ctest install test does, so that it does not rebuild the libraries): only vantage_python is
