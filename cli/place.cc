@@ -12,7 +12,6 @@
 #include "place_report.h"
 #include "progress.h"
 #include "vantage/analysis/common.h"
-#include "vantage/commands/point_text.h"
 #include "vantage/io/layout_file.h"
 #include "vantage/io/layout_formats.h"
 #include "vantage/io/text_file.h"
@@ -124,56 +123,6 @@ void add_search_options(CLI::App* sub, PlaceArgs* args) {
       ->capture_default_str();
 }
 
-// The objective and its camera or tracker settings. Returns --distances (given empty, it is
-// refused).
-CLI::Option* add_objective_options(CLI::App* sub, PlaceArgs* args) {
-  sub->add_option("--objective", args->objective,
-                  "affine: the paper's scale-free bound under visibility; camera: the pinhole "
-                  "pose CRB; tracker: the RMS TRE at --target (docs/math.md §21)")
-      ->capture_default_str();
-  sub->add_option("--distance", args->distance,
-                  "camera objective: distance of the camera from the aim point, layout units");
-  CLI::Option* distances =
-      sub->add_option("--distances", args->distances_text,
-                      "camera objective: D1,D2,... an approach instead of --distance: the largest "
-                      "over these distances of the statistic");
-  sub->add_option("--focal", args->focal, "camera objective: focal length, pixels");
-  sub->add_option("--noise-px", args->noise_px,
-                  "camera objective: pixel noise per coordinate, pixels");
-  sub->add_option("--statistic", args->statistic,
-                  "camera objective: worst, p95 or median of rot_rms over the workspace")
-      ->capture_default_str();
-  sub->add_option("--crb-samples", args->crb_samples,
-                  "camera objective: lattice density, directions on the whole sphere (vantage crb "
-                  "--samples)")
-      ->capture_default_str();
-  sub->add_option("--aim", args->aim_text,
-                  "camera objective: X,Y,Z, the point the camera looks at (default: the centre "
-                  "of the sites' bounding box)");
-  args->tre.add_options(sub, false);
-  args->tre.target_option->description(
-      "tracker objective: target X,Y,Z in the sites' frame (repeatable)");
-  args->tre.fle_rms_option->description("tracker objective: isotropic FLE, RMS of the 3-D error");
-  args->tre.fle_sigma_option->description(
-      "tracker objective: anisotropic FLE SP,SD, sd across and along the line of sight");
-  return distances;
-}
-
-// The typed settings of the options given as text (--aim, --distances, the tracker's).
-void parse_typed_options(PlaceArgs* args) {
-  if (!args->aim_text.empty()) args->aim = commands::parse_point(args->aim_text, "--aim");
-  if (args->distances_given) {
-    const std::optional<std::vector<double>> distances =
-        commands::parse_numbers(args->distances_text);
-    if (!distances || distances->empty()) {
-      throw InvalidArgument("--distances", "expected comma-separated numbers D1,D2,...");
-    }
-    args->distances = *distances;
-  }
-  if (!args->tre.targets.empty()) args->targets = args->tre.parsed_targets();
-  if (args->tre.fle_rms || !args->tre.fle_sigma.empty()) args->fle = args->tre.parsed_fle();
-}
-
 }  // namespace
 
 Command add_place_command(CLI::App& root) {
@@ -185,7 +134,8 @@ Command add_place_command(CLI::App& root) {
       "best (docs/math.md §21)");
   CLI::Option* candidates = add_site_options(sub, args.get());
   add_search_options(sub, args.get());
-  CLI::Option* distances = add_objective_options(sub, args.get());
+  args->objective_args.add_options(sub, args.get(), "the sites'",
+                                   "the centre of the sites' bounding box");
   sub->add_option("--min-coverage", args->min_coverage,
                   "least trackable fraction of the workspace's lattice, in (0, 1] (default: "
                   "every direction but one)");
@@ -195,10 +145,9 @@ Command add_place_command(CLI::App& root) {
   sub->add_flag("--overwrite", args->overwrite, "let --out replace an existing regular file");
   sub->add_flag("--quiet", args->quiet, "no progress line on stderr (shown only on a terminal)");
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
-  return {sub, [args, candidates, distances] {
+  return {sub, [args, candidates] {
             args->candidates_given = candidates->count() > 0;
-            args->distances_given = distances->count() > 0;
-            parse_typed_options(args.get());
+            args->objective_args.parse(args.get());
             return run_place(*args);
           }};
 }

@@ -5,7 +5,7 @@
 
 #include "command.h"
 #include "layout_input.h"
-#include "tre_input.h"
+#include "objective_input.h"
 #include "vantage/commands/place_json.h"
 
 namespace vantage::cli {
@@ -13,11 +13,8 @@ namespace vantage::cli {
 /// The placement's arguments (place_json::Request) and the CLI's own: the sites file's format and
 /// the visibility options, --json and --quiet.
 struct PlaceArgs : place_json::Request {
-  LayoutInput input;     ///< --format of --sites and the visibility options
-  TreTargetArgs tre;     ///< the tracker objective's --target, --fle-rms and --fle-sigma as typed
-  std::string aim_text;  ///< --aim as typed
-  std::string distances_text;  ///< --distances as typed
-  bool distances_given = false;
+  LayoutInput input;             ///< --format of --sites and the visibility options
+  ObjectiveArgs objective_args;  ///< the camera's and the tracker's options given as text
   bool json = false;
   bool quiet = false;
 };

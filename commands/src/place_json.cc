@@ -141,6 +141,23 @@ Json place_objective_json(const Request& request, const Outcome& outcome) {
 
 }  // namespace
 
+design::PlaceOptions place_options(const Request& request, const Layout& sites,
+                                   const std::function<void(const std::string&)>& progress) {
+  design::PlaceOptions options;
+  options.robust_dropout = request.robust_dropout;
+  options.random_trials = request.random_trials;
+  options.perturbations = request.perturbations;
+  options.exhaustive_limit = request.exhaustive_limit;
+  options.seed = request.seed;
+  options.threads = request.threads;
+  options.search.certificate_tolerance = request.certificate_tolerance;
+  options.progress = progress;
+  if (request.min_coverage != -1.0) options.min_coverage = request.min_coverage;
+  options.camera = camera_objective(request, sites);
+  options.tracker = tracker_objective(request);
+  return options;
+}
+
 Outcome place(const Request& request, const Sites& sites,
               const std::function<void(const std::string&)>& progress) {
   if (progress) progress("occlusion grid");
@@ -154,20 +171,9 @@ Outcome place(const Request& request, const Sites& sites,
   problem.markers = request.markers;
   problem.min_separation = request.separation();
   problem.min_distance_difference = request.min_distance_difference;
-  design::PlaceOptions options;
-  options.robust_dropout = request.robust_dropout;
-  options.random_trials = request.random_trials;
-  options.perturbations = request.perturbations;
-  options.exhaustive_limit = request.exhaustive_limit;
-  options.seed = request.seed;
-  options.threads = request.threads;
-  options.search.certificate_tolerance = request.certificate_tolerance;
-  options.progress = progress;
-  if (request.min_coverage != -1.0) options.min_coverage = request.min_coverage;
+  const design::PlaceOptions options = place_options(request, sites.layout, progress);
   Outcome out;
   try {
-    options.camera = camera_objective(request, sites.layout);
-    options.tracker = tracker_objective(request);
     if (options.tracker) check_tracker_range(request, problem.sites.points);
     out.result = design::place_markers(problem, options);
   } catch (const InvalidArgument& e) {

@@ -149,6 +149,12 @@ std::optional<design::CameraObjective> camera_objective(const Request& request,
 /// The tracker objective's options of a request, or none.
 std::optional<design::TrackerObjective> tracker_objective(const Request& request);
 
+/// The search's options of a request on the sites `sites` (as a layout): its sizes, seed,
+/// threads, least coverage, robust objective, and the camera or tracker objective; `progress`
+/// (or empty) gets the stages.
+design::PlaceOptions place_options(const Request& request, const Layout& sites,
+                                   const std::function<void(const std::string&)>& progress);
+
 /// Runs design::place_markers() on the sites and analyses the placed layout; `progress` (or
 /// empty) gets the stages.
 Outcome place(const Request& request, const Sites& sites,
