@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "command.h"
+#include "design_args.h"
 #include "layout_input.h"
 #include "limits.h"
 #include "progress.h"
@@ -33,48 +34,7 @@ namespace vantage::cli {
 
 namespace {
 
-struct DesignArgs {
-  std::string file;
-  LayoutInput input;
-  int add = 0;
-  bool candidates_only = false;
-  double margin = design::AugmentOptions{}.margin;
-  long search_budget = design::AugmentOptions{}.search_budget;
-  double min_distance_difference = 0.0;
-  bool direct = true;
-  std::string write;
-  bool write_given = false;  // --write appeared, possibly with an empty name
-  bool overwrite = false;
-  std::string plot;
-  bool json = false;
-  bool quiet = false;
-  bool allow_large = false;
-};
-
 [[noreturn]] void bad(const std::string& message) { throw InvalidArgument(message); }
-
-// Every check that can fail before the (possibly long) search, so that a bad call costs
-// nothing and writes nothing.
-void check_write_target(const DesignArgs& args) {
-  if (!args.write_given) return;
-  if (args.write.empty()) bad("--write: empty file name");
-  if (!io::is_valid_utf8(args.write)) {
-    bad("--write: the file name is not valid UTF-8 (the report could not name it)");
-  }
-  if (!args.overwrite && io::same_file(args.write, args.file)) {
-    bad("--write: " + args.write + " is the input layout; refusing to overwrite it without " +
-        "--overwrite");
-  }
-  try {
-    io::layout_write_format(args.write);
-    io::check_write_target(args.write, args.overwrite);
-  } catch (const InvalidArgument& e) {
-    // The way out for an existing regular file: the option, not a parse of the message.
-    std::error_code ec;
-    const bool existing_file = std::filesystem::is_regular_file(args.write, ec) && !args.overwrite;
-    bad(std::string("--write: ") + e.what() + (existing_file ? " (--overwrite)" : ""));
-  }
-}
 
 // The format of --write can hold the augmented layout (CSV: markers only, no candidates left,
 // names it can write): checked on the input before the search. The additions are markers with
@@ -267,7 +227,20 @@ void print_failure(const DesignArgs& args, const design::AugmentResult& r) {
   std::cerr << (args.write_given ? "; nothing written" : "") << std::endl;
 }
 
+// With the paper's bound (--objective affine): none of the camera's or the tracker's settings
+// (place's rule, "goes with --objective camera").
+void check_affine_objective(const DesignArgs& args) {
+  place_json::Request request = args.sensor;
+  request.sites = args.file;
+  request.markers = 1;
+  place_json::check_request(request);
+}
+
 int run_design(const DesignArgs& args) {
+  if (args.sensor.objective == "camera" || args.sensor.objective == "tracker") {
+    return run_sensor_design(args);
+  }
+  check_affine_objective(args);
   const design::AugmentOptions options = augment_options(args);
   check_write_target(args);
   const Layout layout = args.input.read(args.file, args.allow_large);
@@ -328,13 +301,40 @@ int run_design(const DesignArgs& args) {
 
 }  // namespace
 
+// Every check that can fail before the (possibly long) search, so that a bad call costs
+// nothing and writes nothing.
+void check_write_target(const DesignArgs& args) {
+  if (!args.write_given) return;
+  if (args.write.empty()) throw InvalidArgument("--write: empty file name");
+  if (!io::is_valid_utf8(args.write)) {
+    throw InvalidArgument(
+        "--write: the file name is not valid UTF-8 (the report could not name it)");
+  }
+  if (!args.overwrite && io::same_file(args.write, args.file)) {
+    throw InvalidArgument("--write: " + args.write +
+                          " is the input layout; refusing to overwrite it without " +
+                          "--overwrite");
+  }
+  try {
+    io::layout_write_format(args.write);
+    io::check_write_target(args.write, args.overwrite);
+  } catch (const InvalidArgument& e) {
+    // The way out for an existing regular file: the option, not a parse of the message.
+    std::error_code ec;
+    const bool existing_file = std::filesystem::is_regular_file(args.write, ec) && !args.overwrite;
+    throw InvalidArgument(std::string("--write: ") + e.what() +
+                          (existing_file ? " (--overwrite)" : ""));
+  }
+}
+
 Command add_design_command(CLI::App& root) {
   auto args = std::make_shared<DesignArgs>();
   CLI::App* sub = root.add_subcommand(
       "design",
       "Add K directions or markers greedily where the global worst viewpoint is weakest "
       "(the paper's a-perp rule, Sec. III.E), with the ceiling cos(pi/(2m)) and a direct "
-      "optimiser for comparison");
+      "optimiser for comparison; or, with --objective camera or tracker, the K candidates that "
+      "make the camera's pose CRB or the tracker's TRE best");
   sub->add_option("LAYOUT", args->file, "layout JSON file (vectors or points, optional candidates)")
       ->required();
   args->input.add_options(sub);
@@ -344,22 +344,32 @@ Command add_design_command(CLI::App& root) {
       ->required();
   sub->add_flag("--candidates-only", args->candidates_only,
                 "choose only among the layout's candidates (each at most once)");
-  sub->add_option("--margin", args->margin,
-                  "point mode: search the markers' bounding box grown by M times its largest "
-                  "side on every side, >= 0")
-      ->capture_default_str();
-  sub->add_option("--search-budget", args->search_budget,
-                  "point mode: the branch and bound's budget per step, in global solves times "
-                  "data vectors (about 1 us of CPU each); raise it until the step's search is "
-                  "closed; 0: grid and polish only")
-      ->capture_default_str();
+  args->margin_option =
+      sub->add_option("--margin", args->margin,
+                      "point mode: search the markers' bounding box grown by M times its largest "
+                      "side on every side, >= 0")
+          ->capture_default_str();
+  args->search_budget_option =
+      sub->add_option("--search-budget", args->search_budget,
+                      "point mode: the branch and bound's budget per step, in global solves times "
+                      "data vectors (about 1 us of CPU each); raise it until the step's search is "
+                      "closed; 0: grid and polish only")
+          ->capture_default_str();
   sub->add_option("--min-distance-difference", args->min_distance_difference,
                   "point mode: every addition keeps any two inter-marker distances at least D "
                   "apart (tracker identification, the check of `place`); the layout must keep "
                   "it itself; 0: no constraint")
       ->capture_default_str();
-  sub->add_flag("--direct,!--no-direct", args->direct,
-                "also run (default) or skip the direct optimiser over all K additions at once");
+  args->direct_option =
+      sub->add_flag("--direct,!--no-direct", args->direct,
+                    "also run (default) or skip the direct optimiser over all K additions at once");
+  args->objective_args
+      .add_options(sub, &args->sensor, "the layout's",
+                   "the centre of the bounding box of the markers and candidates")
+      ->description(
+          "affine: the paper's bound, seen whole (the a-perp augmenter above); camera: the "
+          "pinhole pose CRB, tracker: the RMS TRE at --target, each choosing --add of the "
+          "layout's candidates by place's search (docs/math.md §21, \"In design\")");
   CLI::Option* write =
       sub->add_option("--write", args->write,
                       "write the augmented layout (greedy additions, weight 1; used candidates "
@@ -376,6 +386,7 @@ Command add_design_command(CLI::App& root) {
   sub->add_flag("--json", args->json, "print one JSON object instead of the report");
   return {sub, [args, write] {
             args->write_given = write->count() > 0;
+            args->objective_args.parse(&args->sensor);
             return run_design(*args);
           }};
 }
