@@ -6,14 +6,19 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "arrays.h"
 #include "layouts.h"
+#include "place_command.h"
 #include "results.h"
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/free_vectors.h"
 #include "vantage/commands/design_json.h"
+#include "vantage/commands/design_sensor.h"
 #include "vantage/commands/limits.h"
 #include "vantage/commands/sensor_json.h"
 #include "vantage/design/augment.h"
@@ -89,16 +94,76 @@ py::tuple analyze(const py::object& layout_arg, const py::object& vectors, const
       result_or_raise(!report.is_usable(), status, report.message(), fields, brief), brief);
 }
 
+/// design(objective='camera'|'tracker'): `vantage design --objective`'s run
+/// (vantage/commands/design_sensor.h); the augmenter's own keywords are refused, not ignored.
+py::object sensor_design(const Layout& layout, const std::string& source, int add, double margin,
+                         bool direct, double min_distance_difference, place_json::Request request) {
+  if (margin != design::AugmentOptions{}.margin || !direct) {
+    throw InvalidArgument(margin != design::AugmentOptions{}.margin ? "margin" : "direct",
+                          "is the augmenter's (objective='affine'); the " + request.objective +
+                              " objective chooses among the candidates");
+  }
+  request.sites = source.empty() ? std::string("layout") : source;
+  request.min_distance_difference = min_distance_difference;
+  design_sensor::Sites sites;
+  try {
+    sites = design_sensor::sites_of(layout);
+    design_sensor::check(request, sites, add, layout);
+  } catch (const InvalidArgument& e) {
+    if (e.field().rfind("--", 0) == 0) throw place_renamed(e);
+    throw source.empty() ? e : e.against(source);
+  }
+  const design_sensor::Outcome out = without_gil(
+      [&] { return design_sensor::design_for_sensor(request, layout, sites, add, {}); });
+  const Json report = design_sensor::report(source_json(source), request, sites, out);
+  if (!out.complete) {
+    const bool covered = out.result.status == design::PlacementResult::Status::kComplete;
+    NumericalFailure failure(covered
+                                 ? (request.objective == "camera" ? "untrackable" : "not_certified")
+                                 : design::to_string(out.result.status),
+                             design_sensor::failure_message(out), report);
+    failure.objects.emplace_back("augmented",
+                                 std::make_shared<py::object>(py::cast(out.augmented)));
+    throw failure;
+  }
+  py::object result = to_python(report);
+  result["augmented"] = py::cast(out.augmented);
+  return result;
+}
+
 py::object design_layout(const py::object& layout_arg, const py::object& vectors,
                          const py::object& points, const py::object& weights,
                          const py::object& candidates, int add, bool candidates_only, double margin,
                          bool direct, double min_distance_difference, bool allow_large,
                          const py::object& format, const py::object& tag_points,
-                         const py::object& bundle) {
+                         const py::object& bundle, const std::string& objective,
+                         const std::optional<double>& distance,
+                         const std::optional<std::vector<double>>& distances,
+                         const std::optional<double>& focal, const std::optional<double>& noise_px,
+                         const std::string& statistic, const std::optional<int>& crb_samples,
+                         const py::object& aim, const py::object& targets,
+                         const std::optional<double>& fle_rms, const py::object& fle_sigma) {
+  place_json::Request request;
+  try {
+    request = objective_request(objective, distance, distances, focal, noise_px, statistic,
+                                crb_samples, aim, targets, fle_rms, fle_sigma);
+    if (objective != "camera" && objective != "tracker") {
+      // The camera's and the tracker's settings go with their objective (place's rule).
+      place_json::Request affine = request;
+      affine.sites = "layout";
+      affine.markers = 1;
+      place_json::check_request(affine);
+    }
+  } catch (const InvalidArgument& e) {
+    throw place_renamed(e);
+  }
   std::string source;
   const Layout layout = layout_from_arguments(layout_arg, vectors, points, weights, candidates,
                                               {format, tag_points, bundle, allow_large}, &source);
   if (add < 1) throw InvalidArgument("add", "must be >= 1, got " + std::to_string(add));
+  if (objective == "camera" || objective == "tracker") {
+    return sensor_design(layout, source, add, margin, direct, min_distance_difference, request);
+  }
   check_size(source, [&] {
     const long final_count = layout.mode == LayoutMode::kPoints
                                  ? static_cast<long>(free_vector_count(layout.entries.cols() + add))
@@ -178,8 +243,15 @@ void bind_layout_commands(py::module_& module) {
              py::arg("min_distance_difference") = design::AugmentOptions{}.min_distance_difference,
              py::arg("allow_large") = false, py::arg("format") = py::none(),
              py::arg("tag_points") = py::none(), py::arg("bundle") = py::none(),
+             py::arg("objective") = "affine", py::arg("distance") = py::none(),
+             py::arg("distances") = py::none(), py::arg("focal") = py::none(),
+             py::arg("noise_px") = py::none(), py::arg("statistic") = "worst",
+             py::arg("crb_samples") = py::none(), py::arg("aim") = py::none(),
+             py::arg("targets") = py::none(), py::arg("fle_rms") = py::none(),
+             py::arg("fle_sigma") = py::none(),
              "Add `add` markers or directions where the worst viewpoint is weakest (as `vantage "
-             "design --json`); the result's `augmented` is the new vantage.Layout.");
+             "design --json`), or, with objective 'camera' or 'tracker', the `add` candidates "
+             "that make its value best; the result's `augmented` is the new vantage.Layout.");
   module.def("weights", &layout_weights, py::arg("layout") = py::none(), py::kw_only(),
              py::arg("vectors") = py::none(), py::arg("points") = py::none(),
              py::arg("allow_large") = false, py::arg("format") = py::none(),

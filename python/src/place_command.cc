@@ -24,20 +24,6 @@ namespace vantage::python {
 
 namespace {
 
-// The keyword of a CLI flag the shared checks name: "--min-separation" -> "min_separation",
-// "BODY" and "BODY/--sites" -> "body", "--sites" -> "sites"; any other field is kept.
-InvalidArgument place_renamed(const InvalidArgument& e) {
-  const std::string& field = e.field();
-  if (field == "BODY" || field == "BODY/--sites") return e.renamed("body", e.index());
-  if (field == "--target") return e.renamed("targets", e.index());
-  if (field.rfind("--", 0) != 0) return e;
-  std::string keyword = field.substr(2);
-  for (char& c : keyword) {
-    if (c == '-') c = '_';
-  }
-  return e.renamed(keyword, e.index());
-}
-
 // A file path argument (str or os.PathLike), or "" for None.
 std::string place_path(const py::object& value, const char* field) {
   return value.is_none() ? "" : path_from(value, field);
@@ -139,7 +125,9 @@ py::object place(const py::object& body, const py::object& sites, int markers,
                  double marker_diameter, const py::object& exclude, const py::object& region,
                  int perturbations) {
   try {
-    place_json::Request request;
+    place_json::Request request =
+        objective_request(objective, distance, distances, focal, noise_px, statistic, crb_samples,
+                          aim, targets, fle_rms, fle_sigma);
     request.body = place_path(body, "body");
     request.sites = place_path(sites, "sites");
     request.candidates_given = candidates.has_value();
@@ -156,23 +144,6 @@ py::object place(const py::object& body, const py::object& sites, int markers,
     request.perturbations = perturbations;
     request.exhaustive_limit = exhaustive_limit.value_or(request.exhaustive_limit);
     request.overwrite = overwrite;
-    request.objective = objective;
-    request.distance = distance.value_or(request.distance);
-    if (distances && distances->empty()) {
-      throw InvalidArgument("--distances", "give at least one distance (or none: distance=)");
-    }
-    request.distances = distances.value_or(request.distances);
-    request.focal = focal.value_or(request.focal);
-    request.noise_px = noise_px.value_or(request.noise_px);
-    request.statistic = statistic;
-    request.crb_samples = crb_samples.value_or(request.crb_samples);
-    if (!aim.is_none()) {
-      const Eigen::VectorXd a = vector_from_array(aim, "aim");
-      if (a.size() != 3) throw InvalidArgument("aim", "expected (x, y, z)");
-      request.aim = Eigen::Vector3d(a);
-    }
-    if (!targets.is_none()) request.targets = tre_targets(targets);
-    if (fle_rms || !fle_sigma.is_none()) request.fle = tre_fle(fle_rms, fle_sigma);
     request.min_coverage = min_coverage.value_or(request.min_coverage);
     request.allow_partial = allow_partial;
     request.marker_diameter = marker_diameter;
@@ -189,6 +160,45 @@ py::object place(const py::object& body, const py::object& sites, int markers,
 }
 
 }  // namespace
+
+InvalidArgument place_renamed(const InvalidArgument& e) {
+  const std::string& field = e.field();
+  if (field == "BODY" || field == "BODY/--sites") return e.renamed("body", e.index());
+  if (field == "--target") return e.renamed("targets", e.index());
+  if (field.rfind("--", 0) != 0) return e;
+  std::string keyword = field.substr(2);
+  for (char& c : keyword) {
+    if (c == '-') c = '_';
+  }
+  return e.renamed(keyword, e.index());
+}
+
+place_json::Request objective_request(
+    const std::string& objective, const std::optional<double>& distance,
+    const std::optional<std::vector<double>>& distances, const std::optional<double>& focal,
+    const std::optional<double>& noise_px, const std::string& statistic,
+    const std::optional<int>& crb_samples, const py::object& aim, const py::object& targets,
+    const std::optional<double>& fle_rms, const py::object& fle_sigma) {
+  place_json::Request request;
+  request.objective = objective;
+  request.distance = distance.value_or(request.distance);
+  if (distances && distances->empty()) {
+    throw InvalidArgument("--distances", "give at least one distance (or none: distance=)");
+  }
+  request.distances = distances.value_or(request.distances);
+  request.focal = focal.value_or(request.focal);
+  request.noise_px = noise_px.value_or(request.noise_px);
+  request.statistic = statistic;
+  request.crb_samples = crb_samples.value_or(request.crb_samples);
+  if (!aim.is_none()) {
+    const Eigen::VectorXd a = vector_from_array(aim, "aim");
+    if (a.size() != 3) throw InvalidArgument("aim", "expected (x, y, z)");
+    request.aim = Eigen::Vector3d(a);
+  }
+  if (!targets.is_none()) request.targets = tre_targets(targets);
+  if (fle_rms || !fle_sigma.is_none()) request.fle = tre_fle(fle_rms, fle_sigma);
+  return request;
+}
 
 void bind_place_command(py::module_& module) {
   module.def(

@@ -23,7 +23,8 @@ from __future__ import annotations
 
 import functools
 import os
-from typing import Any, Callable, Iterable, Optional, Sequence, Tuple, TypeVar, Union
+from typing import (Any, Callable, Iterable, Literal, Optional, Sequence, Tuple, TypeVar,
+                    Union, overload)
 
 import numpy.typing as npt
 
@@ -37,7 +38,8 @@ from ._results import (
     VisibilityCertificate, VisibilityDropoutEntry, WeightsResult, WeightsSuggestion, Workspace,
 )
 from ._tool_results import (
-    CrbBound, CrbReport, CrbSweepRow, IdentPair, IdentReport, IdentTool, PlaceBaseline, PlaceReport,
+    CrbBound, CrbReport, CrbSweepRow, DesignSensorResult, IdentPair, IdentReport, IdentTool,
+    PlaceBaseline, PlaceReport,
     PlaceRobust, PlaceStep, TreAtDirection, TreExtreme, TreMonteCarlo, TreReport, TreTarget,
 )
 from ._vantage import (
@@ -54,7 +56,7 @@ from ._vantage import (
 
 __all__ = [
     "BoundCheck", "Certificate", "CrbBound", "CrbReport", "CrbSweepRow", "Crosscheck", "DesignCoplanarity", "DesignDirect",
-    "DesignResult", "DesignState", "DesignStep", "DistanceDifference", "DropoutEntry", "EstimatorStats", "ExactViewpoint", "IdentPair", "IdentReport",
+    "DesignResult", "DesignSensorResult", "DesignState", "DesignStep", "DistanceDifference", "DropoutEntry", "EstimatorStats", "ExactViewpoint", "IdentPair", "IdentReport",
     "IdentTool", "Identification", "Layout",
     "LayoutCoplanarity", "LayoutReport", "LayoutVisibility", "LostRegion", "NumericalError", "Orientation", "PaperLmi", "PerTrial",
     "PlaceBaseline", "PlaceReport", "PlaceRobust", "PlaceStep", "PoseAlternative", "PoseCamera", "PoseEstimate", "SimulationReport", "SimulationVisibility",
@@ -292,10 +294,44 @@ def place(body: Optional[PathArg] = None, *, sites: Optional[PathArg] = None, ma
         exclude=exclude, region=region, perturbations=perturbations))
 
 
-def _design_result(fields: Any) -> DesignResult:
+def _design_result(fields: Any) -> Union[DesignResult, DesignSensorResult]:
     fields = dict(fields)
     augmented = fields.pop("augmented", None)
+    if fields.get("objective") in ("camera", "tracker"):
+        return DesignSensorResult(fields, augmented)
     return DesignResult(fields, augmented)
+
+
+@overload
+def design(layout: LayoutArg = None, *, vectors: Optional[npt.ArrayLike] = None,
+           points: Optional[npt.ArrayLike] = None, weights: Optional[npt.ArrayLike] = None,
+           candidates: Optional[npt.ArrayLike] = None, add: int = 1,
+           candidates_only: bool = False, margin: float = 0.25, direct: bool = True,
+           min_distance_difference: float = 0.0, allow_large: bool = False,
+           format: Optional[str] = None,
+           tag_points: Optional[str] = None, bundle: Optional[str] = None,
+           objective: Literal["affine"] = "affine", distance: Optional[float] = None,
+           distances: Optional[Sequence[float]] = None, focal: Optional[float] = None,
+           noise_px: Optional[float] = None, statistic: str = "worst",
+           crb_samples: Optional[int] = None, aim: Optional[Sequence[float]] = None,
+           targets: Optional[npt.ArrayLike] = None, fle_rms: Optional[float] = None,
+           fle_sigma: Optional[Sequence[float]] = None) -> DesignResult: ...
+
+
+@overload
+def design(layout: LayoutArg = None, *, vectors: Optional[npt.ArrayLike] = None,
+           points: Optional[npt.ArrayLike] = None, weights: Optional[npt.ArrayLike] = None,
+           candidates: Optional[npt.ArrayLike] = None, add: int = 1,
+           candidates_only: bool = False, margin: float = 0.25, direct: bool = True,
+           min_distance_difference: float = 0.0, allow_large: bool = False,
+           format: Optional[str] = None,
+           tag_points: Optional[str] = None, bundle: Optional[str] = None,
+           objective: Literal["camera", "tracker"], distance: Optional[float] = None,
+           distances: Optional[Sequence[float]] = None, focal: Optional[float] = None,
+           noise_px: Optional[float] = None, statistic: str = "worst",
+           crb_samples: Optional[int] = None, aim: Optional[Sequence[float]] = None,
+           targets: Optional[npt.ArrayLike] = None, fle_rms: Optional[float] = None,
+           fle_sigma: Optional[Sequence[float]] = None) -> DesignSensorResult: ...
 
 
 @_typed_errors(lambda error: _design_result(error.result))
@@ -305,7 +341,13 @@ def design(layout: LayoutArg = None, *, vectors: Optional[npt.ArrayLike] = None,
            candidates_only: bool = False, margin: float = 0.25, direct: bool = True,
            min_distance_difference: float = 0.0, allow_large: bool = False,
            format: Optional[str] = None,
-           tag_points: Optional[str] = None, bundle: Optional[str] = None) -> DesignResult:
+           tag_points: Optional[str] = None, bundle: Optional[str] = None,
+           objective: str = "affine", distance: Optional[float] = None,
+           distances: Optional[Sequence[float]] = None, focal: Optional[float] = None,
+           noise_px: Optional[float] = None, statistic: str = "worst",
+           crb_samples: Optional[int] = None, aim: Optional[Sequence[float]] = None,
+           targets: Optional[npt.ArrayLike] = None, fle_rms: Optional[float] = None,
+           fle_sigma: Optional[Sequence[float]] = None) -> Union[DesignResult, DesignSensorResult]:
     """Add ``add`` markers or directions where the worst viewpoint is weakest (as ``vantage
     design --json``); the result's ``augmented`` is the new vantage.Layout.
 
@@ -316,12 +358,25 @@ def design(layout: LayoutArg = None, *, vectors: Optional[npt.ArrayLike] = None,
     least difference of two inter-marker distances at or above this (ART's identification rule,
     docs/math.md §24; ``--min-distance-difference``; 0: none); the layout must keep it itself.
     allow_large: lift the time budget (README "Limits").
+
+    objective 'camera' or 'tracker' (``--objective``; docs/math.md §21, "In design"): the
+    ``add`` of the layout's candidates that make the camera's pose CRB or the tracker's TRE
+    best, chosen by vantage.place's search with the layout's markers kept, the layout seen whole
+    (one with normals, cones or a body is refused); the settings as vantage.place's (distance
+    or distances, focal, noise_px, statistic, crb_samples, aim; targets, fle_rms or fle_sigma).
+    Returns a DesignSensorResult; margin and direct are the augmenter's and may not be changed.
+    Raises NumericalError (its ``result`` the DesignSensorResult, with the best ``augmented``)
+    when the answer leaves a direction untracked.
     """
-    return _design_result(_vantage.design(
+    result = _vantage.design(
         layout, vectors=vectors, points=points, weights=weights, candidates=candidates, add=add,
         candidates_only=candidates_only, margin=margin, direct=direct,
         min_distance_difference=min_distance_difference, allow_large=allow_large, format=format,
-        tag_points=tag_points, bundle=bundle))
+        tag_points=tag_points, bundle=bundle, objective=objective, distance=distance,
+        distances=None if distances is None else list(distances), focal=focal,
+        noise_px=noise_px, statistic=statistic, crb_samples=crb_samples, aim=aim,
+        targets=targets, fle_rms=fle_rms, fle_sigma=fle_sigma)
+    return _design_result(result)
 
 
 @_typed_errors(lambda error: WeightsResult(error.result))

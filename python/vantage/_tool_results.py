@@ -15,8 +15,8 @@ from ._results import (FloatArray, IntArray, LayoutVisibility, _float, _floats, 
 from ._vantage import Layout
 
 __all__ = [
-    "CrbBound", "CrbReport", "CrbSweepRow", "IdentPair", "IdentReport", "IdentTool",
-    "PlaceBaseline", "PlaceReport", "PlaceRobust", "PlaceStep", "TreAtDirection", "TreExtreme",
+    "CrbBound", "CrbReport", "CrbSweepRow", "DesignSensorResult", "IdentPair", "IdentReport",
+    "IdentTool", "PlaceBaseline", "PlaceReport", "PlaceRobust", "PlaceStep", "TreAtDirection", "TreExtreme",
     "TreMonteCarlo", "TreReport", "TreTarget",
 ]
 
@@ -314,4 +314,45 @@ class PlaceReport(_JsonView):
         self.covering_markers: Optional[int] = None if covering is None else int(covering)
         self.all_sites_coverage: Optional[float] = (
             _float(fields["all_sites_coverage"]) if "all_sites_coverage" in fields else None)
+        self.written: Optional[str] = _text(fields["written"])
+
+
+class DesignSensorResult(_JsonView):
+    """vantage.design(objective='camera' or 'tracker') (``vantage design --objective ...
+    --json``; docs/math.md §21, "In design"): the candidates added (``added``, indices into the
+    layout's candidates) by place's search (``search`` 'exhaustive' or 'greedy+swap') on the
+    layout seen whole, the greedy ``steps``, the ``random_baseline``, and the sensor's value of
+    the layout before (``initial``, None with fewer than 3 markers) and of ``augmented``
+    (``sensor``, as vantage.analyze reports it on that layout: "value_deg" for a camera, "value"
+    in the layout's unit for a tracker). ``augmented`` is the new vantage.Layout, with the sensor
+    block; ``written`` is None (Python writes no file)."""
+
+    def __init__(self, fields: Mapping[str, Any], augmented: Optional[Layout]) -> None:
+        super().__init__(fields)
+        #: The augmented layout; on a NumericalError, the best (incomplete) answer found.
+        self.augmented: Optional[Layout] = augmented
+        self.objective: str = str(fields["objective"])
+        self.status: str = str(fields["status"])
+        self.complete: bool = bool(fields["complete"])
+        self.markers: int = int(fields["markers"])
+        self.candidates: int = int(fields["candidates"])
+        self.added: IntArray = _ints(fields["added"])
+        self.search: str = str(fields["search"])
+        key = "value_deg" if self.objective == "camera" else "value"
+        #: The value the search ranked by (the camera's before the refinement of its worst).
+        self.search_value: float = _float(fields["search_" + key])
+        self.evaluations: int = int(fields["evaluations"])
+        #: search 'exhaustive': the subsets searched; else None.
+        self.subsets: Optional[int] = int(fields["subsets"]) if "subsets" in fields else None
+        #: search 'greedy+swap': the improving swaps; else None.
+        self.swaps: Optional[int] = int(fields["swaps"]) if "swaps" in fields else None
+        #: Each greedy step: k, the candidate added (None for the kept markers' row), the
+        #: coverage and the search value ("value_deg" or "value"; None when incomplete).
+        self.steps: List[Dict[str, Any]] = [dict(step) for step in fields["steps"]]
+        self.random_baseline: Dict[str, Any] = dict(fields["random_baseline"])
+        initial = fields["initial"]
+        self.initial: Optional[Dict[str, Any]] = None if initial is None else dict(initial)
+        self.sensor: Dict[str, Any] = dict(fields["sensor"])
+        #: The value of ``augmented`` (``sensor``'s "value_deg" or "value"; nan when none).
+        self.value: float = _float(self.sensor.get(key))
         self.written: Optional[str] = _text(fields["written"])

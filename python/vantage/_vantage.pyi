@@ -67,7 +67,13 @@ def design(layout: Union[Layout, _Path, None] = None, *, vectors: _Array = None,
            add: int = 1, candidates_only: bool = False, margin: float = 0.25,
            direct: bool = True, min_distance_difference: float = 0.0,
            allow_large: bool = False, format: Optional[str] = None,
-           tag_points: Optional[str] = None, bundle: Optional[str] = None) -> Dict[str, Any]: ...
+           tag_points: Optional[str] = None, bundle: Optional[str] = None,
+           objective: str = "affine", distance: Optional[float] = None,
+           distances: Optional[Sequence[float]] = None, focal: Optional[float] = None,
+           noise_px: Optional[float] = None, statistic: str = "worst",
+           crb_samples: Optional[int] = None, aim: Optional[Sequence[float]] = None,
+           targets: Optional[Any] = None, fle_rms: Optional[float] = None,
+           fle_sigma: Optional[Sequence[float]] = None) -> Dict[str, Any]: ...
 def weights(layout: Union[Layout, _Path, None] = None, *, vectors: _Array = None,
             points: _Array = None, allow_large: bool = False, format: Optional[str] = None,
             tag_points: Optional[str] = None, bundle: Optional[str] = None) -> Dict[str, Any]: ...
