@@ -78,7 +78,7 @@ class CMakeBuild(build_ext):
                 f"-DPython3_EXECUTABLE={sys.executable}",
             ] + shlex.split(os.environ.get("VANTAGE_CMAKE_ARGS", "")))
         jobs = os.environ.get("VANTAGE_BUILD_JOBS", str(os.cpu_count() or 1))
-        print("vantage: building the C++ libraries and the extension (from scratch about 9 "
+        print("vantage: building the C++ libraries and the extension (from scratch about 4 "
               "minutes on 2 cores; `pip install -v` shows CMake's progress)", flush=True)
         _run(["cmake", "--build", build_dir, "--target", "vantage_python", "-j", jobs])
         suffix = sysconfig.get_config_var("EXT_SUFFIX")

@@ -51,8 +51,8 @@ std::string pad(std::string text, std::size_t width) {
 
 // A value of the sensor's objective in words: degrees (camera) or layout units (tracker).
 std::string value_text(double value, bool camera) {
-  if (camera && value > camera::PoseCrbAt::kMaxRotRmsDeg) return "unbounded";
   if (!std::isfinite(value)) return "none (not tracked)";
+  if (camera && value > camera::PoseCrbAt::kMaxRotRmsDeg) return "unbounded";
   return format_number(value, 4) + (camera ? " deg" : "");
 }
 
@@ -101,8 +101,8 @@ void print_report(const DesignArgs& args, const Layout& layout, const design_sen
 }  // namespace
 
 int run_sensor_design(const DesignArgs& args) {
-  check_unused_options(args);
   check_write_target(args);
+  check_unused_options(args);
   const Layout layout = args.input.read(args.file, args.allow_large);
   const design_sensor::Sites sites =
       against_source(args.file, [&] { return design_sensor::sites_of(layout); });

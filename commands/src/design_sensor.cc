@@ -98,8 +98,24 @@ void check(const place_json::Request& request, const Sites& sites, int add, cons
                                        std::to_string(candidates) +
                                        " candidates (each is added at most once)");
   }
+  place_json::Request r = request;
+  r.markers = sites.markers + add;
+  try {
+    place_json::check_request(r);
+    if (r.objective == "tracker") {
+      place_json::internal::check_tracker_range(r, sites.layout.entries);
+    }
+  } catch (const InvalidArgument& e) {
+    if (e.field() == "--markers") {
+      throw InvalidArgument("--add", e.problem() + " (the layout's " +
+                                         std::to_string(sites.markers) + " markers and --add " +
+                                         std::to_string(add) + ")");
+    }
+    if (e.field() == "--sites") throw e.renamed("points", std::nullopt);
+    throw;
+  }
   // Coincident candidates and a distance difference the markers break, as the augmenter says
-  // them (design::check_augmentation).
+  // them (design::check_augmentation; its options are in range once check_request passed).
   design::AugmentOptions augment;
   augment.add = add;
   augment.candidates_only = true;
@@ -111,18 +127,6 @@ void check(const place_json::Request& request, const Sites& sites, int add, cons
     if (e.field() == "min_distance_difference") {
       throw e.renamed("--min-distance-difference", std::nullopt);
     }
-    throw;
-  }
-  place_json::Request r = request;
-  r.markers = sites.markers + add;
-  try {
-    place_json::check_request(r);
-    if (r.objective == "tracker") {
-      place_json::internal::check_tracker_range(r, sites.layout.entries);
-    }
-  } catch (const InvalidArgument& e) {
-    if (e.field() == "--markers") throw e.renamed("--add", std::nullopt);
-    if (e.field() == "--sites") throw e.renamed("points", std::nullopt);
     throw;
   }
 }
@@ -137,7 +141,17 @@ Outcome design_for_sensor(const place_json::Request& request, const Layout& layo
   problem.min_distance_difference = request.min_distance_difference;
   const design::PlaceOptions options = place_json::place_options(request, sites.layout, progress);
   Outcome out;
-  out.result = design::place_markers(problem, options);
+  try {
+    out.result = design::place_markers(problem, options);
+  } catch (const InvalidArgument& e) {
+    // The search's own refusals, named by the flags that cause them: a camera distance inside
+    // the sites, and no K candidates that keep the distance difference (or apart).
+    if (e.field() == "distance") {
+      throw e.renamed(request.distances.empty() ? "--distance" : "--distances", std::nullopt);
+    }
+    if (e.field() == "min_separation") throw e.renamed("--min-distance-difference", std::nullopt);
+    throw;
+  }
   for (const int s : out.result.chosen) {
     if (s >= sites.markers) out.added.push_back(s - sites.markers);
   }
@@ -187,8 +201,8 @@ Json report(const Json& source, const place_json::Request& request, const Sites&
   out["add"] = static_cast<int>(outcome.added.size());
   out["added"] = outcome.added;
   out["search"] = r.search;
-  // The value the search ranked by (the camera's: the largest lattice sample, before the
-  // refinement that `vantage crb` and the final value below add).
+  // The value the search ranked by (the camera's: its statistic over the lattice samples; for
+  // `worst`, before the refinement that `vantage crb` and the final value below add).
   out[camera ? "search_value_deg" : "search_value"] = search_number(r.value.objective, camera);
   out["evaluations"] = r.evaluations;
   if (r.search == "exhaustive") {

@@ -113,8 +113,13 @@ py::object sensor_design(const Layout& layout, const std::string& source, int ad
     if (e.field().rfind("--", 0) == 0) throw place_renamed(e);
     throw source.empty() ? e : e.against(source);
   }
-  const design_sensor::Outcome out = without_gil(
-      [&] { return design_sensor::design_for_sensor(request, layout, sites, add, {}); });
+  design_sensor::Outcome out;
+  try {
+    out = without_gil(
+        [&] { return design_sensor::design_for_sensor(request, layout, sites, add, {}); });
+  } catch (const InvalidArgument& e) {
+    throw place_renamed(e);  // the search's refusals name the distance or the gap
+  }
   const Json report = design_sensor::report(source_json(source), request, sites, out);
   if (!out.complete) {
     const bool covered = out.result.status == design::PlacementResult::Status::kComplete;

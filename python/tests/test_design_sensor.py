@@ -51,6 +51,8 @@ def test_tracker_design_adds_the_candidates_the_cli_adds(vantage, patch_file):
     ({"objective": "tracker", "targets": [0, 0, 1]}, "fle_rms"),
     ({"focal": 1000.0}, "focal"),
     ({"objective": "camera", "add": 7, **CAMERA}, "add"),
+    ({"objective": "camera", **{**CAMERA, "distance": 0.01}}, "distance"),
+    ({"objective": "camera", "min_distance_difference": -0.1, **CAMERA}, "min_distance_difference"),
 ])
 def test_bad_settings_name_the_keyword(vantage, patch_file, kwargs, field):
     kwargs = {"add": 1, **kwargs}

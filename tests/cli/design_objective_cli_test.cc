@@ -174,6 +174,11 @@ TEST(DesignObjectiveCli, BadInputIsOneLineExitTwoNothingWritten) {
       R"({"points": )" + rows(kMarkers) + R"(, "normals": [[0,0,1],[0,0,1],[0,0,1],[0,0,1]],)" +
       R"( "visibility": {"cone_half_angle_deg": 80}, "candidates": )" + rows(kCandidates) + "}";
   const std::string vectors = R"({"vectors": [[1,0,0],[0,1,0],[0,0,1]]})";
+  // Markers whose distances differ by at least 0.13, and candidates at the midpoints of marker
+  // pairs: each is as far from two markers, so none keeps a distance difference of 0.1.
+  const std::string midpoints = R"({"points": [[0,0,0],[1,0,0],[0,2.2,0],[0,0,3.7]],)"
+                                R"( "candidates": [[0.5,0,0],[0,1.1,0],[0,0,1.85]]})";
+  const std::string far_camera = " --objective camera --distance 10 --focal 1000 --noise-px 0.3";
   const std::string add1 = "in.json --add 1 --write out.json";
   const std::string add7 = "in.json --add 7 --write out.json";
   struct Call {
@@ -193,6 +198,17 @@ TEST(DesignObjectiveCli, BadInputIsOneLineExitTwoNothingWritten) {
       {"FocalWithoutTheCamera", with_candidates, add1 + " --focal 1000",
        "--focal: goes with --objective camera"},
       {"NoFle", with_candidates, add1 + " --objective tracker --target 0,0,1", "--fle-rms"},
+      // Found by a review: the search's own refusals and the checks' order named no flag.
+      {"CameraInsideTheSites", with_candidates,
+       add1 + " --objective camera --distance 0.01 --focal 1000 --noise-px 0.3", "--distance"},
+      {"NoCandidateKeepsTheGap", midpoints, add1 + far_camera + " --min-distance-difference 0.1",
+       "--min-distance-difference: no 5 sites"},
+      {"NegativeGap", with_candidates, add1 + camera + " --min-distance-difference -0.1",
+       "--min-distance-difference: must be a finite number >= 0"},
+      {"EmptyWrite", with_candidates, "in.json --add 1 --write ''" + camera,
+       "--write: empty file name"},
+      {"UnknownWriteFormat", with_candidates, "in.json --add 1 --write out.txt" + camera,
+       "--write"},
   };
   for (const Call& call : calls) {
     SCOPED_TRACE(call.name);

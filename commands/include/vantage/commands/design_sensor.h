@@ -31,9 +31,10 @@ struct Sites {
   std::vector<int> keep;  ///< 0 .. markers - 1
 };
 
-/// The layout's markers and candidates as the search's sites. Throws InvalidArgument naming
-/// "LAYOUT" for a layout of vectors, one without candidates, or one with a visibility model
-/// (normals, cones or a body: its candidates could not share it).
+/// The layout's markers and candidates as the search's sites. Throws InvalidArgument naming the
+/// layout's field: "vectors" for a layout of vectors, "candidates" for one without candidates,
+/// "visibility" for one with a visibility model (normals, cones or a body: its candidates could
+/// not share it).
 Sites sites_of(const Layout& layout);
 
 /// Checks `request` (place's checks, with markers = the layout's markers + `add`) and the layout
@@ -58,7 +59,8 @@ struct Outcome {
 };
 
 /// The search (request.objective is "camera" or "tracker", checked by check()); `progress` (or
-/// empty) gets the stages.
+/// empty) gets the stages. Throws InvalidArgument naming --distance or --distances (a camera
+/// inside the sites) and --min-distance-difference (no K candidates keep it).
 Outcome design_for_sensor(const place_json::Request& request, const Layout& layout,
                           const Sites& sites, int add,
                           const std::function<void(const std::string&)>& progress);
