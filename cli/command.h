@@ -68,6 +68,9 @@ void print_json(const Json& object, const std::string& key, std::size_t count,
 std::string format_vector(const Eigen::VectorXd& v, int digits = 6);
 std::string format_number(double x, int digits = 6);
 
+/// `text` with spaces appended up to `width` bytes (a column of a text report).
+std::string pad(std::string text, std::size_t width);
+
 /// The readable rows of a 3x3 matrix, each indented by `indent` spaces and ending in '\n'.
 std::string format_matrix(const Eigen::MatrixXd& m, int indent = 2, int digits = 6);
 

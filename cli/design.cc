@@ -80,11 +80,6 @@ std::string format_points(const std::vector<Eigen::Vector3d>& points) {
   return out;
 }
 
-std::string pad(std::string text, size_t width) {
-  if (text.size() < width) text.append(width - text.size(), ' ');
-  return text;
-}
-
 std::string fixed(double x, int decimals) {
   char buffer[64];
   std::snprintf(buffer, sizeof(buffer), "%.*f", decimals, x);

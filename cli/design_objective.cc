@@ -44,11 +44,6 @@ void check_unused_options(const DesignArgs& args) {
   }
 }
 
-std::string pad(std::string text, std::size_t width) {
-  if (text.size() < width) text.append(width - text.size(), ' ');
-  return text;
-}
-
 // A value of the sensor's objective in words: degrees (camera) or layout units (tracker).
 std::string value_text(double value, bool camera) {
   if (!std::isfinite(value)) return "none (not tracked)";

@@ -70,6 +70,11 @@ void print_json(const Json& object, const std::string& key, std::size_t count,
   std::cout << "\n}" << std::endl;
 }
 
+std::string pad(std::string text, std::size_t width) {
+  if (text.size() < width) text.append(width - text.size(), ' ');
+  return text;
+}
+
 std::string format_number(double x, int digits) {
   std::ostringstream out;
   out.precision(digits);
