@@ -175,9 +175,9 @@ void print_dropout(const report::LayoutReport& report) {
   for (int k : dropout.by_harm) {
     const report::DropoutEntry& e = dropout.entries[k];
     std::cout << "  without " << report.entry_label(e.index) << "  pbar_min "
-              << format_number(e.pbar_min, 6) << "  "
-              << format_number(e.max_worst_case_error_deg, 6) << " deg"
-              << (e.certified ? "" : "  (NOT certified)") << "\n";
+              << format_number(e.worst.pbar_min, 6) << "  "
+              << format_number(e.worst.max_worst_case_error_deg, 6) << " deg"
+              << (e.worst.certified ? "" : "  (NOT certified)") << "\n";
   }
   if (!report.visibility || report.visibility->dropout.empty()) return;
   const visibility::VisibilityReport& v = *report.visibility;

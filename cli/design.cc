@@ -104,7 +104,7 @@ void print_report(const DesignArgs& args, const Layout& layout, const design::Au
             << pad(std::to_string(r.initial_vector_count), 6)
             << pad(fixed(r.initial.pbar_min, 6), 11)
             << pad(fixed(r.initial.max_worst_case_error_deg, 3), 13)
-            << pad(fixed(r.initial_ceiling, 6), 10) << r.initial.worst_viewpoints.size()
+            << pad(fixed(r.initial_ceiling, 6), 10) << r.initial.viewpoints.size()
             << " worst viewpoint(s)\n";
   for (size_t s = 0; s < r.steps.size(); ++s) {
     const design::AugmentStep& st = r.steps[s];
@@ -116,10 +116,10 @@ void print_report(const DesignArgs& args, const Layout& layout, const design::Au
               << pad(fixed(st.worst.max_worst_case_error_deg, 3), 13)
               << pad(fixed(st.ceiling, 6), 10) << st.note << "\n";
   }
-  std::cout << "\ninitial worst viewpoints: " << format_points(r.initial.worst_viewpoints) << "\n";
+  std::cout << "\ninitial worst viewpoints: " << format_points(r.initial.viewpoints) << "\n";
   if (!r.steps.empty()) {
-    std::cout << "final worst viewpoints:   "
-              << format_points(r.steps.back().worst.worst_viewpoints) << "\n";
+    std::cout << "final worst viewpoints:   " << format_points(r.steps.back().worst.viewpoints)
+              << "\n";
   }
   std::cout << "final p-bar_min " << fixed(r.final_pbar_min, 6) << "\n";
   if (r.min_distance_difference > 0.0) {

@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
         r.initial_vector_count, r.initial.pbar_min, r.initial_ceiling,
         r.initial.max_worst_case_error_deg, r.initial_coplanarity.smallest_singular_value,
         r.initial_coplanarity.nearly_coplanar ? " (nearly coplanar)" : "");
-    print_viewpoints(r.initial.worst_viewpoints);
+    print_viewpoints(r.initial.viewpoints);
     for (size_t s = 0; s < r.steps.size(); ++s) {
       const vantage::design::AugmentStep& st = r.steps[s];
       std::printf(
@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
           st.candidate_index >= 0 ? " [candidate]" : "", st.vector_count, st.worst.pbar_min,
           st.ceiling, st.worst.max_worst_case_error_deg, st.global_solves, st.screened,
           st.note.c_str());
-      print_viewpoints(st.worst.worst_viewpoints);
+      print_viewpoints(st.worst.viewpoints);
     }
     std::printf("final: pbar_min %.6f, coplanarity %.4f%s\n", r.final_pbar_min,
                 r.final_coplanarity.smallest_singular_value,

@@ -23,7 +23,7 @@ Json points(const std::vector<Eigen::Vector3d>& points) {
 Json worst(const design::WorstCase& worst, int n_vectors) {
   Json out;
   out["pbar_min"] = worst.pbar_min;
-  out["worst_viewpoints"] = points(worst.worst_viewpoints);
+  out["worst_viewpoints"] = points(worst.viewpoints);
   out["max_worst_case_error_deg"] = worst.max_worst_case_error_deg;
   out["ceiling"] = design::pbar_ceiling(n_vectors);
   out["n_vectors"] = n_vectors;
@@ -37,7 +37,7 @@ Json step(const design::AugmentStep& st, LayoutMode mode, const std::string& nam
   out["added"] = list(st.added);
   out["name"] = name;
   out["pbar_min"] = st.worst.pbar_min;
-  out["worst_viewpoints"] = points(st.worst.worst_viewpoints);
+  out["worst_viewpoints"] = points(st.worst.viewpoints);
   out["max_worst_case_error_deg"] = st.worst.max_worst_case_error_deg;
   out["ceiling"] = st.ceiling;
   out["n_vectors"] = st.vector_count;
@@ -66,7 +66,7 @@ Json direct(const design::DirectResult& d) {
   out["added"] = points(d.added);
   out["method"] = d.method;
   if (!d.candidate_indices.empty()) out["candidate_indices"] = d.candidate_indices;
-  out["worst_viewpoints"] = points(d.worst.worst_viewpoints);
+  out["worst_viewpoints"] = points(d.worst.viewpoints);
   out["max_worst_case_error_deg"] = d.worst.max_worst_case_error_deg;
   out["certified"] = d.worst.certified;
   out["global_solves"] = d.global_solves;

@@ -47,7 +47,7 @@ sdp::WorstViewpointOptions Designer::solve_options(double stop_above) const {
 void Designer::remember(const WorstCase& w, bool stopped) {
   if (stopped) return;
   hints_.resize(current_hints_);
-  hints_.insert(hints_.end(), w.worst_viewpoints.begin(), w.worst_viewpoints.end());
+  hints_.insert(hints_.end(), w.viewpoints.begin(), w.viewpoints.end());
 }
 
 WorstCase Designer::evaluate(const Eigen::Matrix3Xd& vectors, double stop_above, bool* stopped) {
@@ -102,12 +102,12 @@ Score Designer::score(const Eigen::Vector3d& x, const WorstCase& current, long* 
   Eigen::Matrix3Xd added;
   if (!space_->new_vectors(x, markers_, &added)) return s;
   if (!feasible(x)) {
-    if (viewpoints != nullptr) *viewpoints = evaluate_added(added).worst_viewpoints;
+    if (viewpoints != nullptr) *viewpoints = evaluate_added(added).viewpoints;
     return s;
   }
   int survivors = 0;
   double margin = std::numeric_limits<double>::infinity();
-  for (const Eigen::Vector3d& a : current.worst_viewpoints) {
+  for (const Eigen::Vector3d& a : current.viewpoints) {
     double proj = std::numeric_limits<double>::infinity();
     for (Eigen::Index i = 0; i < added.cols(); ++i) {
       proj = std::min(proj, std::abs(a.dot(added.col(i).normalized())));
@@ -128,10 +128,9 @@ Score Designer::score(const Eigen::Vector3d& x, const WorstCase& current, long* 
   }
   bool stopped = false;
   const WorstCase w = evaluate_added(added, stop_above, &stopped);
-  if (viewpoints != nullptr) *viewpoints = w.worst_viewpoints;
+  if (viewpoints != nullptr) *viewpoints = w.viewpoints;
   s.t = w.t;
-  s.n_worst =
-      stopped ? std::numeric_limits<int>::max() : static_cast<int>(w.worst_viewpoints.size());
+  s.n_worst = stopped ? std::numeric_limits<int>::max() : static_cast<int>(w.viewpoints.size());
   return s;
 }
 
@@ -183,7 +182,7 @@ std::vector<Designer::Option> Designer::generate(const WorstCase& current, Augme
   }
   Eigen::Vector3d kill_point = Eigen::Vector3d::UnitX();
   std::vector<Eigen::Vector3d> kill_points;
-  st->best_kill_level = best_kill_level(current.worst_viewpoints, &kill_point, &kill_points);
+  st->best_kill_level = best_kill_level(current.viewpoints, &kill_point, &kill_points);
   st->single_vector_can_improve =
       space_->single_addition_can_improve(st->best_kill_level, current.t, options_.tie_tolerance);
   if (!options_.candidates_only) {
@@ -228,7 +227,7 @@ void Designer::search_box(Option* chosen, const WorstCase& current, AugmentStep*
   };
   calls.solves = [this] { return solves_; };
   const BoxSearchResult r = internal::search_box(
-      lo, hi, markers_, unit_vectors, current.worst_viewpoints, chosen->x, chosen->score,
+      lo, hi, markers_, unit_vectors, current.viewpoints, chosen->x, chosen->score,
       options_.search_tolerance, options_.tie_tolerance, max_solves, calls);
   st->search_t_lower = r.t_lower;
   st->search_closed = r.closed;
@@ -262,9 +261,9 @@ void Designer::describe(const WorstCase& current, const Option& chosen, AugmentS
   st->ceiling = pbar_ceiling(st->vector_count);
   st->improved = st->worst.t < current.t - options_.tie_tolerance;
   st->angle_from_worst_plane_deg =
-      space_->angle_from_worst_planes_deg(chosen.x, current.worst_viewpoints);
+      space_->angle_from_worst_planes_deg(chosen.x, current.viewpoints);
   std::ostringstream note;
-  const int k = static_cast<int>(current.worst_viewpoints.size());
+  const int k = static_cast<int>(current.viewpoints.size());
   if (st->improved) {
     note << "p-bar_min rose from " << fmt(current.pbar_min) << " to " << fmt(st->worst.pbar_min);
   } else if (!st->single_vector_can_improve) {
@@ -272,22 +271,22 @@ void Designer::describe(const WorstCase& current, const Option& chosen, AugmentS
          << " worst viewpoint(s) cannot all be killed at once (min over unit c of max_k |a_k.c| "
          << "= " << fmt(st->best_kill_level) << " >= t = " << fmt(current.t)
          << "); added the vector leaving the fewest worst viewpoints ("
-         << st->worst.worst_viewpoints.size() << ")";
+         << st->worst.viewpoints.size() << ")";
   } else if (options_.candidates_only) {
     note << "p-bar_min unchanged at " << fmt(current.pbar_min)
          << ": no remaining candidate kills all " << k << " worst viewpoint(s)";
   } else {
     note << "p-bar_min unchanged at " << fmt(current.pbar_min) << ": no addition found in the "
          << space_->search_name() << " kills all " << k
-         << " worst viewpoint(s); added the one leaving the fewest ("
-         << st->worst.worst_viewpoints.size() << ")";
+         << " worst viewpoint(s); added the one leaving the fewest (" << st->worst.viewpoints.size()
+         << ")";
   }
   st->note = note.str();
 }
 
 AugmentStep Designer::step(const WorstCase& current, bool* out_of_candidates, bool* no_feasible) {
   AugmentStep st;
-  hints_ = current.worst_viewpoints;
+  hints_ = current.viewpoints;
   current_hints_ = static_cast<int>(hints_.size());
   prepare(vectors_, current.t);
   const long solves_before = solves_;

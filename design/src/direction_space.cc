@@ -35,7 +35,7 @@ class DirectionSpace final : public AdditionSpace {
   // the points where one direction kills every worst viewpoint at once.
   void coarse_samples(const WorstCase& current, const std::vector<Eigen::Vector3d>& kill_points,
                       std::vector<Eigen::Vector3d>* samples) const override {
-    for (const Eigen::Vector3d& a : current.worst_viewpoints) {
+    for (const Eigen::Vector3d& a : current.viewpoints) {
       Eigen::Vector3d u, v;
       perpendicular_basis(a, &u, &v);
       for (int j = 0; j < options_.circle_samples; ++j) {

@@ -42,9 +42,9 @@ void write_csv(const DropoutChartData& data, const std::filesystem::path& path) 
   for (int k : data.dropout.by_harm) {
     const report::DropoutEntry& e = data.dropout.entries[k];
     csv << data.names[static_cast<std::size_t>(e.index)] << static_cast<long>(e.index) << rank++
-        << static_cast<long>(e.n_vectors) << e.pbar_min << e.max_worst_case_error_deg
-        << e.worst_viewpoint.x() << e.worst_viewpoint.y() << e.worst_viewpoint.z()
-        << static_cast<long>(e.certified ? 1 : 0);
+        << static_cast<long>(e.n_vectors) << e.worst.pbar_min << e.worst.max_worst_case_error_deg
+        << e.worst.viewpoint.x() << e.worst.viewpoint.y() << e.worst.viewpoint.z()
+        << static_cast<long>(e.worst.certified ? 1 : 0);
     csv.end_row();
   }
   csv << "intact" << -1 << 0 << -1 << data.intact_pbar_min << data.intact_max_error_deg << 0.0
@@ -66,9 +66,10 @@ void draw_chart(Canvas& canvas, const DropoutChartData& data, const FigureOption
           " lost (certified global worst viewpoint each time), most harmful first");
 
   double top = data.intact_max_error_deg;
-  for (const report::DropoutEntry& e : entries) top = std::max(top, e.max_worst_case_error_deg);
+  for (const report::DropoutEntry& e : entries)
+    top = std::max(top, e.worst.max_worst_case_error_deg);
   top = std::min(90.0, std::max(1.0, top * 1.3));
-  const double worst_error = entries[data.dropout.by_harm.front()].max_worst_case_error_deg;
+  const double worst_error = entries[data.dropout.by_harm.front()].worst.max_worst_case_error_deg;
 
   plstream& pls = canvas.pls();
   pls.vpor(0.09, 0.97, 0.14, 0.84);
@@ -82,13 +83,13 @@ void draw_chart(Canvas& canvas, const DropoutChartData& data, const FigureOption
   for (std::size_t slot = 0; slot < n; ++slot) {
     const report::DropoutEntry& e = entries[data.dropout.by_harm[slot]];
     const double x = slot + 1.0;
-    const double h = e.max_worst_case_error_deg;
+    const double h = e.worst.max_worst_case_error_deg;
     const bool most_harmful = std::abs(h - worst_error) <= kHarmTieDeg;
     const std::vector<double> bx{x - half, x + half, x + half, x - half};
     const std::vector<double> by{0.0, 0.0, h, h};
     canvas.fill_polygon(bx, by, most_harmful ? kWorstViewpointColour : Rgb{49, 104, 142}, 1.0);
     if (n <= kMaxAnnotatedBars) {
-      canvas.label(x, h, "p̄ " + fixed(e.pbar_min, 3), 0.0, -10 * s, 0.5,
+      canvas.label(x, h, "p̄ " + fixed(e.worst.pbar_min, 3), 0.0, -10 * s, 0.5,
                    internal::kSmallSize * s * (n > 14 ? 0.8 : 1.0), {25, 25, 25});
     }
     const std::size_t label_every = std::max<std::size_t>(1, n / 40 + 1);

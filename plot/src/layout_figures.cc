@@ -59,7 +59,7 @@ std::vector<double> seen_whole_dropout(const report::LayoutReport& report) {
   std::vector<double> out(static_cast<std::size_t>(report.layout.entries.cols()), -1.0);
   for (const report::DropoutEntry& e : report.dropout->entries) {
     if (e.index >= 0 && static_cast<std::size_t>(e.index) < out.size()) {
-      out[static_cast<std::size_t>(e.index)] = e.max_worst_case_error_deg;
+      out[static_cast<std::size_t>(e.index)] = e.worst.max_worst_case_error_deg;
     }
   }
   return out;

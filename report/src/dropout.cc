@@ -5,7 +5,6 @@
 #include <numeric>
 
 #include "vantage/analysis/common.h"
-#include "vantage/analysis/error_bounds.h"
 #include "vantage/analysis/parallel.h"
 
 namespace vantage::report {
@@ -32,25 +31,9 @@ DropoutEntry analyse_without(const DataVectors& data, int k,
   DropoutEntry entry;
   entry.index = k;
   entry.n_vectors = static_cast<int>(vectors.cols());
-  if (vectors.cols() == 1) {
-    entry.worst_viewpoint = sdp::upper_hemisphere(vectors.col(0).normalized());
-    entry.worst_viewpoints = {entry.worst_viewpoint};
-    entry.t = 1.0;
-    entry.pbar_min = 0.0;
-    entry.max_worst_case_error_deg = 90.0;
-    entry.certified = true;
-    return entry;
-  }
-  const sdp::WorstViewpoint global = sdp::global_worst_viewpoint(vectors, options);
-  entry.worst_viewpoint = global.viewpoint;
-  entry.worst_viewpoints = global.viewpoints;
-  entry.t = global.t;
-  entry.pbar_min = global.pbar_min;
-  for (const Eigen::Vector3d& a : global.viewpoints) {
-    entry.max_worst_case_error_deg =
-        std::max(entry.max_worst_case_error_deg, worst_case_errors_deg(vectors, a).maxCoeff());
-  }
-  entry.certified = global.status == sdp::WorstViewpoint::Status::kCertified;
+  entry.worst = vectors.cols() == 1
+                    ? sdp::certified_worst_end_on(vectors.col(0))
+                    : sdp::certified_worst(sdp::global_worst_viewpoint(vectors, options), vectors);
   return entry;
 }
 
@@ -94,13 +77,13 @@ DropoutAnalysis dropout_analysis(const Layout& layout, const DropoutOptions& opt
   result.by_harm.resize(n);
   std::iota(result.by_harm.begin(), result.by_harm.end(), 0);
   // Values equal to rounding (symmetric markers) keep index order.
-  auto key = [&](int k) { return std::round(result.entries[k].pbar_min / kHarmResolution); };
+  auto key = [&](int k) { return std::round(result.entries[k].worst.pbar_min / kHarmResolution); };
   std::stable_sort(result.by_harm.begin(), result.by_harm.end(),
                    [&](int a, int b) { return key(a) < key(b); });
 
   std::string uncertified;
   for (const DropoutEntry& entry : result.entries) {
-    if (!entry.certified)
+    if (!entry.worst.certified)
       uncertified += (uncertified.empty() ? "" : ", ") + std::to_string(entry.index);
   }
   result.status = uncertified.empty() ? DropoutAnalysis::Status::kCertified

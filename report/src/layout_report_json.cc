@@ -53,11 +53,11 @@ Json dropout(const DropoutAnalysis& dropout) {
   Json out = Json::array();
   for (const DropoutEntry& e : dropout.entries) {
     out.push_back({{"index", e.index},
-                   {"pbar_min", e.pbar_min},
-                   {"max_worst_case_error_deg", e.max_worst_case_error_deg},
-                   {"worst_viewpoint", list(e.worst_viewpoint)},
+                   {"pbar_min", e.worst.pbar_min},
+                   {"max_worst_case_error_deg", e.worst.max_worst_case_error_deg},
+                   {"worst_viewpoint", list(e.worst.viewpoint)},
                    {"n_vectors", e.n_vectors},
-                   {"certified", e.certified}});
+                   {"certified", e.worst.certified}});
   }
   return out;
 }

@@ -1,6 +1,7 @@
 #include "vantage/sdp/layout_analysis.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -10,6 +11,7 @@
 #include "vantage/analysis/common.h"
 #include "vantage/analysis/error_bounds.h"
 #include "vantage/analysis/scaling.h"
+#include "vantage/sdp/certified_worst.h"
 #include "vantage/sdp/internal/message_parts.h"
 
 namespace vantage::sdp {
@@ -100,11 +102,9 @@ void record_global_worst(const Eigen::Matrix3Xd& n, const WorstViewpointOptions&
   }
   report->worst_case_errors_deg = worst_case_errors_deg(n, report->worst_viewpoint);
   // With tied worst viewpoints the bound is the largest over all of them (design reports the same).
-  report->max_worst_case_error_deg = report->worst_case_errors_deg.maxCoeff();
-  for (const Eigen::Vector3d& a : report->worst_viewpoints) {
-    report->max_worst_case_error_deg =
-        std::max(report->max_worst_case_error_deg, worst_case_errors_deg(n, a).maxCoeff());
-  }
+  report->max_worst_case_error_deg =
+      std::max(report->worst_case_errors_deg.maxCoeff(),
+               max_worst_case_error_deg(n, report->worst_viewpoints));
   report->certificate = {global.t_upper, global.t_lower, global.certified()};
   report->solver.backend = wv.sdp.backend;
   report->solver.status = global.status;

@@ -52,8 +52,7 @@ void expect_same_choices(const AugmentResult& pruned, const AugmentResult& refer
     EXPECT_EIGEN_NEAR(pruned.steps[s].added, reference.steps[s].added, kRounding);
     EXPECT_EQ(pruned.steps[s].candidate_index, reference.steps[s].candidate_index);
     EXPECT_NEAR(pruned.steps[s].worst.t, reference.steps[s].worst.t, kRounding);
-    EXPECT_EQ(pruned.steps[s].worst.worst_viewpoints.size(),
-              reference.steps[s].worst.worst_viewpoints.size());
+    EXPECT_EQ(pruned.steps[s].worst.viewpoints.size(), reference.steps[s].worst.viewpoints.size());
     EXPECT_TRUE(pruned.steps[s].worst.certified);
   }
   EXPECT_EQ(pruned.direct.status, reference.direct.status);

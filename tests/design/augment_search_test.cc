@@ -110,7 +110,7 @@ void expect_same_step(const AugmentStep& a, const AugmentStep& b) {
   EXPECT_TRUE((a.added.array() == b.added.array()).all())
       << a.added.transpose() << " vs " << b.added.transpose();
   EXPECT_EQ(a.worst.t, b.worst.t);
-  EXPECT_EQ(a.worst.worst_viewpoints.size(), b.worst.worst_viewpoints.size());
+  EXPECT_EQ(a.worst.viewpoints.size(), b.worst.viewpoints.size());
   EXPECT_EQ(a.vector_count, b.vector_count);
 }
 

@@ -90,7 +90,7 @@ TEST(Augment, TriadPlusOneVectorNeverExceedsItsValue) {
   const AugmentResult r = augment_layout(triad, greedy_only(1));
   EXPECT_EQ(r.status, AugmentResult::Status::kOk) << r.message;
   EXPECT_NEAR(r.initial.pbar_min, kTriadPbar, kCertified);
-  EXPECT_EQ(r.initial.worst_viewpoints.size(), 4u);
+  EXPECT_EQ(r.initial.viewpoints.size(), 4u);
   ASSERT_EQ(r.steps.size(), 1u);
   const AugmentStep& st = r.steps[0];
   EXPECT_LE(st.worst.pbar_min, kTriadPbar + kCertified);
@@ -99,7 +99,7 @@ TEST(Augment, TriadPlusOneVectorNeverExceedsItsValue) {
   EXPECT_NEAR(st.best_kill_level, 1.0 / std::sqrt(3.0), kRounding);
   EXPECT_NE(st.note.find("no single vector can raise"), std::string::npos) << st.note;
   // The tie-break keeps the fewest worst viewpoints: (1,1,-1)/sqrt(3) kills three of four.
-  EXPECT_EQ(st.worst.worst_viewpoints.size(), 1u);
+  EXPECT_EQ(st.worst.viewpoints.size(), 1u);
   expect_agrees_with_fresh_analysis(r, triad);
 
   // Independently: no random vector added to Z = I lifts the global p-bar_min (Fig. 3's 0.95

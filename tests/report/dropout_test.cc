@@ -68,11 +68,11 @@ TEST(Dropout, TriadWithoutOneVectorIsTwoOrthogonalVectors) {
     const DropoutEntry& e = result.entries[k];
     EXPECT_EQ(e.index, k);
     EXPECT_EQ(e.n_vectors, 2);
-    EXPECT_NEAR(e.pbar_min, std::sqrt(0.5), kCertified);
-    EXPECT_NEAR(e.max_worst_case_error_deg, 45.0, kCertifiedDeg);
-    EXPECT_NEAR(std::abs(e.worst_viewpoint(k)), 0.0, kCertifiedViewpoint)
+    EXPECT_NEAR(e.worst.pbar_min, std::sqrt(0.5), kCertified);
+    EXPECT_NEAR(e.worst.max_worst_case_error_deg, 45.0, kCertifiedDeg);
+    EXPECT_NEAR(std::abs(e.worst.viewpoint(k)), 0.0, kCertifiedViewpoint)
         << "the lost axis is in a-perp";
-    EXPECT_TRUE(e.certified);
+    EXPECT_TRUE(e.worst.certified);
   }
 }
 
@@ -95,9 +95,11 @@ TEST(Dropout, MatchesTheAnalysisOfTheReducedLayoutAndNeverRaisesPbar) {
       const sdp::LayoutAnalysis direct =
           sdp::analyze_vectors(reduced.vectors, reduced.weights, options);
       EXPECT_EQ(e.n_vectors, 10) << "5 markers left: 10 free vectors";
-      EXPECT_NEAR(e.pbar_min, direct.pbar_min, kExact) << "trial " << trial << " marker " << k;
-      EXPECT_NEAR(e.max_worst_case_error_deg, direct.max_worst_case_error_deg, kDegreesRounding);
-      EXPECT_LE(e.pbar_min, intact.pbar_min + kExact);
+      EXPECT_NEAR(e.worst.pbar_min, direct.pbar_min, kExact)
+          << "trial " << trial << " marker " << k;
+      EXPECT_NEAR(e.worst.max_worst_case_error_deg, direct.max_worst_case_error_deg,
+                  kDegreesRounding);
+      EXPECT_LE(e.worst.pbar_min, intact.pbar_min + kExact);
     }
   }
 }
@@ -110,8 +112,8 @@ TEST(Dropout, ByHarmIsSortedByIncreasingPbar) {
   const DropoutAnalysis result = dropout_analysis(vector_layout(vectors));
   ASSERT_EQ(result.by_harm.size(), 7u);
   for (std::size_t k = 1; k < result.by_harm.size(); ++k) {
-    EXPECT_LE(result.entries[result.by_harm[k - 1]].pbar_min,
-              result.entries[result.by_harm[k]].pbar_min + kExact);
+    EXPECT_LE(result.entries[result.by_harm[k - 1]].worst.pbar_min,
+              result.entries[result.by_harm[k]].worst.pbar_min + kExact);
   }
 }
 
@@ -128,8 +130,8 @@ TEST(Dropout, DeterministicForAnyThreadCount) {
   ASSERT_EQ(a.entries.size(), b.entries.size());
   EXPECT_EQ(a.by_harm, b.by_harm);
   for (std::size_t k = 0; k < a.entries.size(); ++k) {
-    EXPECT_EQ(a.entries[k].pbar_min, b.entries[k].pbar_min);
-    EXPECT_EQ(a.entries[k].worst_viewpoint, b.entries[k].worst_viewpoint);
+    EXPECT_EQ(a.entries[k].worst.pbar_min, b.entries[k].worst.pbar_min);
+    EXPECT_EQ(a.entries[k].worst.viewpoint, b.entries[k].worst.viewpoint);
   }
 }
 
@@ -141,12 +143,12 @@ TEST(Dropout, ThreeMarkersLeaveOneVectorSeenEndOn) {
   const DropoutAnalysis result = dropout_analysis(point_layout(points));
   for (const DropoutEntry& e : result.entries) {
     EXPECT_EQ(e.n_vectors, 1);
-    EXPECT_EQ(e.pbar_min, 0.0);
-    EXPECT_EQ(e.max_worst_case_error_deg, 90.0);
-    EXPECT_TRUE(e.certified);
+    EXPECT_EQ(e.worst.pbar_min, 0.0);
+    EXPECT_EQ(e.worst.max_worst_case_error_deg, 90.0);
+    EXPECT_TRUE(e.worst.certified);
   }
   // Without marker 0 the free vector is p2 - p1 = (-1, 2, 0): the worst viewpoint is along it.
-  EXPECT_NEAR(std::abs(result.entries[0].worst_viewpoint.dot(Eigen::Vector3d(-1, 2, 0))),
+  EXPECT_NEAR(std::abs(result.entries[0].worst.viewpoint.dot(Eigen::Vector3d(-1, 2, 0))),
               std::sqrt(5.0), kRounding);
 }
 

@@ -33,20 +33,15 @@
 #include <vector>
 
 #include "vantage/analysis/layout.h"
+#include "vantage/sdp/certified_worst.h"
 #include "vantage/sdp/layout_measures.h"
 
 namespace vantage::design {
 
-/// The global worst case of a set of data vectors: the one evaluation the augmenter repeats.
-struct WorstCase {
-  double t = 0.0;         ///< max_a min_i |a.n_i| (Eq. 31), certified by the global solver
-  double pbar_min = 1.0;  ///< sqrt(1 - t^2) (Eq. 29 corrected, docs/math.md §12)
-  std::vector<Eigen::Vector3d> worst_viewpoints;  ///< every global optimum up to sign
-  /// Largest worst-case angular error of Eq. (30) over the data vectors and the worst
-  /// viewpoints, in degrees (vantage::worst_case_errors_deg, analysis/error_bounds.h).
-  double max_worst_case_error_deg = 0.0;
-  bool certified = false;  ///< the global solver's certificate closed (status kCertified)
-};
+/// The global worst case of a set of data vectors: the one evaluation the augmenter repeats,
+/// sdp's one record of a certified worst case (t, p-bar_min, every worst viewpoint, the largest
+/// Eq. (30) error over them, the certificate).
+using WorstCase = sdp::CertifiedWorst;
 
 /// The global worst case of `vectors` (3 x m, m >= 2, non-zero finite columns), from
 /// sdp::global_worst_viewpoint. Throws InvalidArgument on bad vectors.

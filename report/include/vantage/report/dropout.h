@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "vantage/analysis/layout.h"
-#include "vantage/sdp/worst_viewpoint.h"
+#include "vantage/sdp/certified_worst.h"
 
 namespace vantage::report {
 
@@ -26,15 +26,10 @@ struct DropoutOptions {
 struct DropoutEntry {
   int index = 0;      ///< the removed entry: a marker (point mode) or a vector (direction mode)
   int n_vectors = 0;  ///< data vectors left (free vectors not touching the marker in point mode)
-  Eigen::Vector3d worst_viewpoint = Eigen::Vector3d::UnitZ();  ///< upper hemisphere
-  std::vector<Eigen::Vector3d> worst_viewpoints;               ///< every global optimum up to sign
-  double t = 0.0;                                              ///< max_a min_i |a.n_i| (Eq. 31)
-  double pbar_min = 1.0;                                       ///< sqrt(1 - t^2)
-  /// Largest Eq. (30) error over the remaining vectors and the worst viewpoints, in degrees
-  /// (as `vantage analyze` reports it). With one vector left, t = 1 and p-bar_min = 0: it is
-  /// seen end-on, and this is the limit arccos(p-bar_min) = 90 degrees (docs/math.md §11).
-  double max_worst_case_error_deg = 0.0;
-  bool certified = false;  ///< the global solver's status is kCertified (always for one vector)
+  /// The certified worst case of the vectors left, its error as `vantage analyze` reports it.
+  /// With one vector left it is seen end-on: t = 1, p-bar_min = 0 and the error is the limit
+  /// 90 degrees (sdp::certified_worst_end_on, docs/math.md §11), always certified.
+  sdp::CertifiedWorst worst;
 };
 
 /// Result of dropout_analysis().
