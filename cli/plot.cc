@@ -18,6 +18,7 @@
 #include "figure_output.h"
 #include "layout_input.h"
 #include "limits.h"
+#include "progress.h"
 #include "tre_input.h"
 #include "vantage/analysis/common.h"
 #include "vantage/commands/tre_json.h"
@@ -51,6 +52,7 @@ struct PlotArgs {
   double radius = 0.0;
   CLI::Option* radius_option = nullptr;
   bool json = false;
+  bool quiet = false;
 };
 
 [[noreturn]] void bad(const std::string& message) { throw InvalidArgument(message); }
@@ -232,10 +234,14 @@ int run_crb_plot(const PlotArgs& args) {
   check_figure_directory("--out", args.out);
   const Layout layout = args.input.read(args.file);
   plot::CrbFigures figures;
-  try {
-    figures = plot::crb_figures(layout, args.camera.options(), options);
-  } catch (const InvalidArgument& e) {
-    throw crb_option_error(e, args.file);
+  {
+    Progress progress("plot", !args.json && !args.quiet);  // cleared before the report
+    options.progress = progress.callback();
+    try {
+      figures = plot::crb_figures(layout, args.camera.options(), options);
+    } catch (const InvalidArgument& e) {
+      throw crb_option_error(e, args.file);
+    }
   }
   create_figure_directory("--out", args.out);
   try {
@@ -504,6 +510,9 @@ Command add_plot_command(CLI::App& root) {
       "tre_polar: radius of the circles about the markers' centroid (default: the first "
       "target's distance from it)");
   sub->add_flag("--json", args->json, "print one JSON object listing the files written");
+  sub->add_flag("--quiet", args->quiet,
+                "no progress line on stderr (--crb shows one on a terminal during its distance "
+                "sweep)");
   return {sub, [args] { return run_plot(*args); }};
 }
 

@@ -178,7 +178,8 @@ CrbFigures crb_figures(const Layout& layout, const camera::PoseCrbOptions& camer
   out.model = std::make_shared<const camera::PoseCrbModel>(layout, camera);
   out.report = camera::pose_crb_report(
       layout, camera, std::nullopt,
-      options.sweep ? *options.sweep : default_crb_sweep(camera.distance, out.model->radius()));
+      options.sweep ? *options.sweep : default_crb_sweep(camera.distance, out.model->radius()),
+      options.progress);
   return out;
 }
 

@@ -261,6 +261,22 @@ TEST(HardeningCli, CrbSweepShowsItsProgressOnATerminal) {
   EXPECT_FALSE(std::regex_search(quiet, progress)) << quiet;
 }
 
+// `vantage plot --crb` shows the same progress during its distance sweep, and --quiet drops it;
+// the figures are written either way.
+TEST(HardeningCli, PlotCrbSweepShowsItsProgressOnATerminal) {
+  ScratchDir scratch;
+  const std::string count = testing::kUnderSanitizer ? "30" : "100";  // over a second either way
+  const std::string plot = "plot '" + kLayouts + "apriltag_cube.yaml' --crb --distance 2 " +
+                           "--focal 1000 --noise-px 0.3 --sweep-distance 1:3:" + count;
+  const std::regex progress("vantage plot: distance [0-9]+/" + count + ", [0-9]+ s");
+  const std::string shown = run_on_terminal(plot + " --out shown", scratch);
+  EXPECT_TRUE(std::regex_search(shown, progress)) << shown;
+  EXPECT_TRUE(fs::exists(scratch.dir() / "shown" / "crb_sweep.png"));
+  const std::string quiet = run_on_terminal(plot + " --out quiet --quiet", scratch);
+  EXPECT_FALSE(std::regex_search(quiet, progress)) << quiet;
+  EXPECT_TRUE(fs::exists(scratch.dir() / "quiet" / "crb_sweep.png"));
+}
+
 // Issue 36, item 8: a user's word quoted in an error is an excerpt (its first 60 bytes and its
 // size), so that a 5 000-byte figure or marker name does not become a 5 000-byte line.
 TEST(HardeningCli, LongWordsInErrorsAreExcerpts) {

@@ -68,6 +68,7 @@ struct CrbFiguresOptions {
   int csv_samples_per_axis = 100;  ///< the map's CSV, as CrbMapData
   /// The distance sweep; default_crb_sweep() of the camera when empty.
   std::optional<camera::PoseCrbSweep> sweep;
+  camera::CrbProgress progress;  ///< told each distance of the sweep ("distance k/N"); may be empty
 };
 
 /// What the figures draw (the model, the report) and the files written.
@@ -79,7 +80,8 @@ struct CrbFigures {
 };
 
 /// The front door of `vantage plot --crb`, first half: the model and
-/// camera::pose_crb_report(layout, camera, no direction, the sweep); nothing is written. Throws
+/// camera::pose_crb_report(layout, camera, no direction, the sweep, options.progress); nothing is
+/// written. Throws
 /// what those throw (the camera's and the sweep's InvalidArgument name their field: "distance",
 /// ..., "sweep_distance").
 CrbFigures crb_figures(const Layout& layout, const camera::PoseCrbOptions& camera,
