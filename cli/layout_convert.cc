@@ -1,9 +1,10 @@
 // `vantage layout convert IN --out OUT [--format F] [--tag-points ...] [--bundle NAME]
 // [--overwrite] [--allow-large] [--json]`: reads a layout in any format (io::load_layout) and
-// writes it in the format of OUT's extension (io::save_layout): JSON, CSV or an Atracsys
-// geometry .ini, whose id the name of OUT ends in. What OUT's format cannot hold is either
-// refused (CSV: candidates, direction vectors; .ini: direction vectors, candidates, more than 6
-// markers) or, for an .ini, left out and listed (names, weights, normals, ...).
+// writes it in the format of OUT's extension (io::save_layout): JSON, CSV, an Atracsys geometry
+// .ini, whose id the name of OUT ends in, or an NDI tool definition .rom (a .rom read is written
+// back byte for byte: io::read_ndi_rom). What OUT's format cannot hold is either refused (CSV:
+// candidates, direction vectors; .ini and .rom: direction vectors, candidates, too many
+// markers) or, for an .ini or a .rom, left out and listed (names, weights, normals, ...).
 
 #include <filesystem>
 #include <iostream>
@@ -14,6 +15,8 @@
 #include "vantage/analysis/common.h"
 #include "vantage/io/atracsys_geometry.h"
 #include "vantage/io/layout_formats.h"
+#include "vantage/io/ndi_rom.h"
+#include "vantage/io/printable.h"
 #include "vantage/io/text_file.h"
 
 namespace vantage::cli {
@@ -41,10 +44,22 @@ int run_convert(const ConvertArgs& args) {
   const io::LayoutFormat in_format =
       chosen == io::LayoutFormat::kAuto ? io::layout_format_of(args.in) : chosen;
   const Layout layout = args.input.read(args.in, args.allow_large);
-  const std::vector<std::string> dropped = out_format == io::LayoutFormat::kAtracsys
-                                               ? io::atracsys_dropped_fields(layout)
-                                               : std::vector<std::string>{};
-  io::save_layout(args.out, layout, args.overwrite);
+  std::vector<std::string> dropped;
+  if (out_format == io::LayoutFormat::kAtracsys) dropped = io::atracsys_dropped_fields(layout);
+  if (out_format == io::LayoutFormat::kNdiRom && in_format == io::LayoutFormat::kNdiRom) {
+    // A tool to a tool: every byte of the 752 is kept, so an unchanged tool is the same file.
+    const io::NdiRom tool = io::read_ndi_rom(args.in);
+    if (tool.trailing_bytes > 0) {
+      dropped.push_back("trailing_bytes");
+      std::cerr << "vantage: warning: layout convert: " << io::printable(args.in) << ": the "
+                << tool.trailing_bytes << " bytes after the tool's " << io::kNdiRomBytes
+                << " are not part of it and are not written" << std::endl;
+    }
+    io::write_text_file(args.out, io::ndi_rom_bytes(tool), args.overwrite);
+  } else {
+    if (out_format == io::LayoutFormat::kNdiRom) dropped = io::ndi_rom_dropped_fields(layout);
+    io::save_layout(args.out, layout, args.overwrite);
+  }
   if (args.json) {
     Json out;
     out["input"] = args.in;
@@ -82,7 +97,8 @@ Command add_layout_convert_subcommand(CLI::App* layout) {
   CLI::App* sub = layout->add_subcommand(
       "convert",
       "Write a layout in another format: any format read (.json, .csv, .yaml, .ini, .rom) to "
-      ".json, .csv or an Atracsys geometry .ini (named for its id, e.g. geometry150.ini)");
+      ".json, .csv, an Atracsys geometry .ini (named for its id, e.g. geometry150.ini) or an "
+      "NDI tool definition .rom");
   sub->add_option("IN", args->in, "the layout file to read")->required();
   sub->add_option("--out", args->out, "the file to write; its extension names the format")
       ->required();

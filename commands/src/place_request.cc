@@ -238,7 +238,8 @@ void check_request(const Request& request) {
   if (!json) {
     place_refuse("--out", request.out +
                               ": write the placed layout as .json (it keeps normals, body, "
-                              "workspace and the placement record)");
+                              "workspace and the placement record); `vantage layout convert` "
+                              "then writes a tracker's .rom or .ini from it");
   }
 }
 

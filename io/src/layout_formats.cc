@@ -119,25 +119,20 @@ LayoutFormat layout_write_format(const std::string& path) {
   if (extension == ".yaml" || extension == ".yml") {
     internal::fail(path,
                    "cannot write an AprilTag bundle (it describes printed tags, which a layout "
-                   "does not hold); name the file .json, .csv or .ini");
+                   "does not hold); name the file .json, .csv, .ini or .rom");
   }
-  if (extension == ".rom") {
-    internal::fail(path,
-                   "cannot write an NDI tool definition (.rom is read only: its format is not "
-                   "published); name the file .json, .csv or .ini");
-  }
+  if (extension == ".rom") return LayoutFormat::kNdiRom;
   internal::fail(path, "cannot tell the layout format from the extension \"" + extension +
-                           "\"; name the file .json, .csv or .ini");
+                           "\"; name the file .json, .csv, .ini or .rom");
 }
 
 std::string layout_to_text(const Layout& layout, LayoutFormat format, std::uint32_t geometry_id) {
   if (format == LayoutFormat::kCsv) return layout_to_csv(layout);
   if (format == LayoutFormat::kAtracsys) return layout_to_atracsys_geometry(layout, geometry_id);
-  if (format == LayoutFormat::kAprilTag || format == LayoutFormat::kNdiRom) {
+  if (format == LayoutFormat::kNdiRom) return ndi_rom_bytes(ndi_rom_of_layout(layout));
+  if (format == LayoutFormat::kAprilTag) {
     throw InvalidArgument(
-        std::string("format: ") +
-        (format == LayoutFormat::kNdiRom ? "NDI tool definitions" : "AprilTag bundles") +
-        " are read only; write json, csv or atracsys");
+        "format: AprilTag bundles are read only; write json, csv, atracsys or rom");
   }
   layout.validate();
   return layout_to_json(layout);

@@ -1,4 +1,5 @@
-// parse_ndi_rom_layout(): NDI tool definition files, read by the byte map of ndi_rom.h.
+// parse_ndi_rom_layout() and parse_ndi_rom(): NDI tool definition files, read by the byte map of
+// ndi_rom.h (ndi_rom_map.h).
 
 #include "vantage/io/ndi_rom.h"
 
@@ -10,26 +11,26 @@
 
 #include "entry_labels.h"
 #include "json_fields.h"
+#include "ndi_rom_map.h"
 #include "vantage/analysis/common.h"
+#include "vantage/io/text_file.h"
 
 namespace vantage::io {
 
 namespace {
 
 using internal::fail;
+namespace rom = internal::rom;
 
-constexpr std::size_t kMaxAngleByte = 24;
-constexpr std::size_t kCountByte = 28;
-constexpr std::size_t kMinMarkersByte = 32;
-constexpr std::size_t kPositionsByte = 72;
-constexpr std::size_t kNormalsByte = 312;
+constexpr std::size_t kMaxAngleByte = rom::kMaxAngle;
+constexpr std::size_t kCountByte = rom::kCount;
+constexpr std::size_t kMinMarkersByte = rom::kMinMarkers;
+constexpr std::size_t kPositionsByte = rom::kPositions;
+constexpr std::size_t kNormalsByte = rom::kNormals;
 
 /// The little-endian float32 at `offset`, whatever the host's byte order.
 double rom_float(std::string_view bytes, std::size_t offset) {
-  std::uint32_t word = 0;
-  for (int b = 3; b >= 0; --b) {
-    word = (word << 8) | static_cast<unsigned char>(bytes[offset + static_cast<std::size_t>(b)]);
-  }
+  const std::uint32_t word = rom::word_at(bytes, offset, 4);
   float value = 0;
   std::memcpy(&value, &word, sizeof value);
   return value;
@@ -55,7 +56,20 @@ Eigen::Vector3d rom_vector(std::string_view bytes, std::size_t table, long k, co
 }
 
 int rom_byte(std::string_view bytes, std::size_t offset) {
-  return static_cast<unsigned char>(bytes[offset]);
+  return static_cast<int>(rom::byte_at(bytes, offset));
+}
+
+// The NUL-terminated ASCII text of `size` bytes at `offset`.
+std::string rom_text(std::string_view bytes, std::size_t offset, std::size_t size) {
+  const std::string_view field = bytes.substr(offset, size);
+  return std::string(field.substr(0, field.find('\0')));
+}
+
+std::vector<int> per_marker(std::string_view bytes, std::size_t table, long count) {
+  std::vector<int> out;
+  for (long k = 0; k < count; ++k)
+    out.push_back(rom_byte(bytes, table + static_cast<std::size_t>(k)));
+  return out;
 }
 
 void check_byte(int value, int low, int high, std::size_t offset, const char* field,
@@ -120,6 +134,60 @@ Layout parse_ndi_rom_layout(std::string_view bytes, const std::string& source) {
   }
   internal::validate_labelled(layout, source, labels);
   return layout;
+}
+
+NdiRom parse_ndi_rom(std::string_view bytes, const std::string& source) {
+  if (bytes.size() < kNdiRomBytes) {
+    fail(source, "an NDI tool definition holds " + std::to_string(kNdiRomBytes) +
+                     " bytes, this file " + std::to_string(bytes.size()));
+  }
+  NdiRom tool;
+  tool.layout = parse_ndi_rom_layout(bytes, source);
+  const std::uint32_t stored = rom::word_at(bytes, rom::kChecksum, 2);
+  const std::uint32_t sum = rom::checksum_of(bytes);
+  if (stored != sum) {
+    fail(source, "bytes 4-5 (checksum): " + std::to_string(stored) +
+                     ", while the sum of bytes 6-751 modulo 65536 is " + std::to_string(sum) +
+                     " (a damaged file)");
+  }
+  const long count = tool.layout.entries.cols();
+  tool.normals.resize(3, count);
+  for (long k = 0; k < count; ++k) {
+    tool.normals.col(k) = rom_vector(bytes, kNormalsByte, k, "normal", source);
+  }
+  tool.max_marker_angle_deg = rom_byte(bytes, rom::kMaxAngle);
+  tool.min_markers = rom_byte(bytes, rom::kMinMarkers);
+  tool.max_marker_error_mm = rom_float(bytes, rom::kMaxError);
+  tool.manufacturer = rom_text(bytes, rom::kManufacturer, rom::kManufacturerSize);
+  tool.part_number = rom_text(bytes, rom::kPartNumber, rom::kPartNumberSize);
+  tool.tool_main_type = rom_byte(bytes, rom::kMainType);
+  tool.tool_sub_type = rom_byte(bytes, rom::kSubType);
+  tool.tool_revision = static_cast<int>(rom::word_at(bytes, rom::kRevision, 2));
+  tool.firing_sequence = per_marker(bytes, rom::kFiring, count);
+  tool.marker_faces = per_marker(bytes, rom::kFaces, count);
+  tool.marker_groups = per_marker(bytes, rom::kGroups, count);
+  tool.algorithm_flags = rom_byte(bytes, rom::kAlgorithmFlags);
+  tool.marker_type = rom_byte(bytes, rom::kMarkerType);
+  for (int f = 0; f < kNdiRomMaxFaces; ++f) {
+    const std::size_t first = rom::kFaceNormals + 12 * static_cast<std::size_t>(f);
+    for (int r = 0; r < 3; ++r) {
+      tool.face_normals(r, f) = rom_float(bytes, first + 4 * static_cast<std::size_t>(r));
+    }
+    if (!tool.face_normals.col(f).allFinite()) {
+      fail(source,
+           "face " + std::to_string(f + 1) + " (" + byte_range(first, 12) + "): normal not finite");
+    }
+  }
+  if (!std::isfinite(tool.max_marker_error_mm)) {
+    fail(source, "bytes 36-39 (maximum marker error): not finite");
+  }
+  tool.image = std::string(bytes.substr(0, kNdiRomBytes));
+  tool.trailing_bytes = bytes.size() - kNdiRomBytes;
+  return tool;
+}
+
+NdiRom read_ndi_rom(const std::string& path) {
+  return parse_ndi_rom(read_text_file(path, kMaxFileBytes), path);
 }
 
 }  // namespace vantage::io

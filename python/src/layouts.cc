@@ -220,9 +220,11 @@ void bind_layout_files(py::module_& module) {
         io::save_layout(path_from(path, "path"), layout, overwrite);
       },
       py::arg("layout"), py::arg("path"), py::kw_only(), py::arg("overwrite") = false,
-      "Writes the layout in the format its extension names: .json (everything) or .csv "
-      "(markers: name,x,y,z,weight; refused for vectors or candidates); .yaml and other "
-      "extensions are refused. Refuses to replace an existing file unless overwrite=True.");
+      "Writes the layout in the format its extension names: .json (everything), .csv "
+      "(markers: name,x,y,z,weight; refused for vectors or candidates), an Atracsys .ini (named "
+      "for its geometry id, geometry150.ini) or an NDI .rom (markers, normals, one cone, "
+      "min_visible); .yaml and other extensions are refused. Refuses to replace an existing "
+      "file unless overwrite=True.");
   module.def(
       "board",
       [](const std::string& type, int rows, int cols, double square, double marker,

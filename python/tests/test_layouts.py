@@ -172,12 +172,18 @@ def test_save_layout_writes_the_format_the_extension_names(vantage, tmp_path):
     vantage.save_layout(body, tmp_path / "body.json")
     assert vantage.load_layout(tmp_path / "body.json").names == body.names
     for name, expected in [("tags.yaml", "cannot write an AprilTag bundle"),
-                           ("body.txt", "name the file .json, .csv or .ini")]:
+                           ("body.txt", "name the file .json, .csv, .ini or .rom")]:
         with pytest.raises(ValueError, match=expected):
             vantage.save_layout(body, tmp_path / name)
         assert not (tmp_path / name).exists()
     with pytest.raises(ValueError, match="holds marker positions"):
         vantage.save_layout(vantage.Layout(vectors=TRIAD), tmp_path / "triad.csv")
+    # An NDI .rom holds the positions as float32 (these are exact) and leaves the names out.
+    vantage.save_layout(body, tmp_path / "body.rom")
+    assert (tmp_path / "body.rom").stat().st_size == 752
+    tool = vantage.load_layout(tmp_path / "body.rom")
+    assert tool.names == ["A", "B", "C", "D", "E"]
+    np.testing.assert_array_equal(tool.entries, body.entries.astype(np.float32))
 
 
 def test_layout_names_are_given_checked_and_defaulted(vantage):

@@ -107,7 +107,7 @@ TEST(LayoutFormatsCli, DesignRefusesWritesItCannotHonourBeforeTheSearch) {
   };
   const Refused refused[] = {
       {kCsv + " --add 1 --write out.yaml", "out.yaml", "out.yaml: cannot write an AprilTag"},
-      {kCsv + " --add 1 --write out.txt", "out.txt", "name the file .json, .csv or .ini"},
+      {kCsv + " --add 1 --write out.txt", "out.txt", "name the file .json, .csv, .ini or .rom"},
       {kTriad + " --add 1 --write out.csv", "out.csv", "holds marker positions"},
   };
   for (const Refused& r : refused) {

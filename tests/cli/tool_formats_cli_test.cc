@@ -97,13 +97,74 @@ TEST(ToolFormatsCli, AnalyzeReadsAnNdiRom) {
   EXPECT_EQ(from_rom["pbar_min"].get<double>(), from_ini["pbar_min"].get<double>());
 }
 
+// A .rom written from a layout reads back to the same markers (positions exactly representable
+// in float32), normals, cone and minimum markers; the bytes at the documented offsets (ndi_rom.h)
+// hold them, and bytes 4-5 hold the sum of bytes 6-751 (computed here, independently).
+TEST(ToolFormatsCli, WritesAnNdiRomThatReadsBack) {
+  ScratchDir scratch;
+  scratch.write("probe.json",
+                R"({"name": "probe7", "points": [[0,0,0],[0,50.25,0],[40,90,-1.5],[-45,115,0.125]],
+    "normals": [[0,0,1],[0,0.6,0.8],[0,0,1],[0.6,0,0.8]],
+    "visibility": {"cone_half_angle_deg": 75, "min_visible": 4}})");
+  const auto report = run_vantage("layout convert probe.json --out probe.rom", scratch);
+  ASSERT_EQ(report.status, 0) << report.err;
+  EXPECT_THAT(report.out, HasSubstr("(ndi)"));
+  std::ifstream in(scratch.path("probe.rom"), std::ios::binary);
+  const std::string rom((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_EQ(rom.size(), 752u);
+  EXPECT_EQ(rom.substr(0, 3), "NDI");
+  EXPECT_EQ(rom[24], 75);
+  EXPECT_EQ(rom[28], 4);
+  EXPECT_EQ(rom[32], 4);
+  EXPECT_EQ(rom.substr(592, 7), std::string("probe7") + '\0');
+  unsigned sum = 0;
+  for (std::size_t k = 6; k < 752; ++k) sum += static_cast<unsigned char>(rom[k]);
+  EXPECT_EQ(static_cast<unsigned char>(rom[4]) + 256u * static_cast<unsigned char>(rom[5]),
+            sum % 65536u);
+  float y1 = 0;
+  std::memcpy(&y1, &rom[72 + 12 + 4], 4);  // marker B's y, little endian
+  EXPECT_EQ(y1, 50.25f);
+  const auto from_json = run_json("analyze probe.json", scratch);
+  const auto from_rom = run_json("analyze probe.rom", scratch);
+  EXPECT_EQ(from_rom["pbar_min"].get<double>(), from_json["pbar_min"].get<double>());
+  EXPECT_EQ(from_rom["visibility"]["pbar_min"].get<double>(),
+            from_json["visibility"]["pbar_min"].get<double>());
+  // A tool written again from the .rom is the same file, byte for byte.
+  run_json("layout convert probe.rom --out again.rom", scratch);
+  EXPECT_EQ(testing::read_file(scratch.path("again.rom")), rom);
+  // Bytes after the 752 are not part of the tool: read, warned about, not written.
+  scratch.write("long.rom", rom + "trailing");
+  const auto longer = run_vantage("layout convert long.rom --out short.rom", scratch);
+  EXPECT_EQ(longer.status, 0) << longer.err;
+  EXPECT_THAT(longer.err, HasSubstr("vantage: warning: layout convert: long.rom: the 8 bytes "
+                                    "after the tool's 752 are not part of it and are not "
+                                    "written"));
+  EXPECT_EQ(testing::read_file(scratch.path("short.rom")), rom);
+  // What a .rom cannot hold is listed.
+  scratch.write("pointer.json", kToolJson);
+  const auto dropped = run_json("layout convert pointer.json --out pointer.rom", scratch);
+  EXPECT_THAT(dropped["dropped"], ElementsAre("names"));
+  EXPECT_EQ(dropped["output_format"], "ndi");
+}
+
 TEST(ToolFormatsCli, BadToolsAndNamesWriteNothing) {
   ScratchDir scratch;
   scratch.write("pointer.json", kToolJson);
   expect_bad_input(run_vantage("layout convert pointer.json --out tool.ini", scratch),
                    "--out: tool.ini: cannot tell the geometry id from the file name");
-  expect_bad_input(run_vantage("layout convert pointer.json --out tool.rom", scratch),
-                   "cannot write an NDI tool definition");
+  std::string many = R"({"points": [)";
+  for (int k = 0; k < 21; ++k)
+    many += (k ? ",[" : "[") + std::to_string(k) + "," + std::to_string(k * k) + ",0]";
+  scratch.write("many.json", many + "]}");
+  expect_bad_input(run_vantage("layout convert many.json --out tool.rom", scratch),
+                   "tool.rom: points: a .rom holds 3 to 20 markers, the layout has 21");
+  scratch.write("cones.json", R"({"points": [[0,0,0],[50,0,0],[0,60,0],[30,30,0]],
+    "normals": [[0,0,1],[0,0,1],[0,0,1],[0,0,1]], "visibility": {"cone_half_angle_deg": 72.5}})");
+  expect_bad_input(run_vantage("layout convert cones.json --out tool.rom", scratch),
+                   "visibility.cone_half_angle_deg: a .rom holds a whole number of degrees");
+  scratch.write("empty.rom", "");
+  expect_bad_input(run_vantage("layout convert empty.rom --out out.json", scratch),
+                   "empty.rom: an NDI tool definition holds at least 552 bytes, this file 0");
   scratch.write("bad150.ini", "[geometry]\ncount=3\nid=150\n[fiducial0]\nx=0\ny=zero\nz=0\n");
   expect_bad_input(run_vantage("analyze bad150.ini", scratch),
                    "bad150.ini: line 6, [fiducial0] y: expected a finite number (mm)");

@@ -145,7 +145,7 @@ TEST(AtracsysGeometry, TheIdComesFromTheFileName) {
   EXPECT_THROW(atracsys_geometry_id_of("geometry4294967296.ini"), InvalidArgument);
   EXPECT_EQ(layout_write_format("geometry150.ini"), LayoutFormat::kAtracsys);
   EXPECT_THROW(layout_write_format("tool.ini"), InvalidArgument);
-  EXPECT_THROW(layout_write_format("tool.rom"), InvalidArgument);
+  EXPECT_EQ(layout_write_format("tool.rom"), LayoutFormat::kNdiRom);
   EXPECT_EQ(layout_format_of("tool.ini"), LayoutFormat::kAtracsys);
   EXPECT_EQ(layout_format_from_string("atracsys", "--format"), LayoutFormat::kAtracsys);
   EXPECT_EQ(to_string(LayoutFormat::kAtracsys), std::string("atracsys"));

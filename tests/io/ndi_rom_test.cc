@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <string>
 
 #include "support/eigen_testing.h"
@@ -101,6 +102,145 @@ TEST(NdiRom, TwentyMarkersAndLoadLayoutByExtension) {
   ASSERT_EQ(layout.entries.cols(), 20);
   EXPECT_EQ(layout.names.back(), "T");
   EXPECT_EIGEN_NEAR(layout.entries.col(19), Eigen::Vector3d(19, 361, 1), kExact);
+}
+
+// The sum of bytes 6-751 modulo 2^16, written into bytes 4-5 (the file's checksum).
+std::string with_checksum(std::string bytes) {
+  unsigned sum = 0;
+  for (std::size_t k = 6; k < 752; ++k) sum += static_cast<unsigned char>(bytes[k]);
+  bytes[4] = static_cast<char>(sum & 0xFFu);
+  bytes[5] = static_cast<char>((sum >> 8) & 0xFFu);
+  return bytes;
+}
+
+// A whole tool: four_spheres() with normals, a finite maximum error and face normals (the noise
+// elsewhere stays: the writer must keep it).
+std::string whole_tool() {
+  RomBytes rom = four_spheres();
+  for (int k = 0; k < 4; ++k) rom.normal(k, 0, 0.6f, 0.8f);
+  rom.float32(36, 0.75f);
+  for (std::size_t k = 656; k < 752; k += 4) rom.float32(k, 0.0f);
+  rom.float32(660, 0.6f).float32(664, 0.8f);
+  return with_checksum(rom.str());
+}
+
+float float_at(const std::string& bytes, std::size_t offset) {
+  std::uint32_t word = 0;
+  for (int b = 3; b >= 0; --b) word = (word << 8) | static_cast<unsigned char>(bytes[offset + b]);
+  float value = 0;
+  std::memcpy(&value, &word, sizeof value);
+  return value;
+}
+
+TEST(NdiRom, AToolReadIsWrittenBackByteForByte) {
+  const std::string bytes = whole_tool();
+  const NdiRom tool = parse_ndi_rom(bytes, "tool.rom");
+  EXPECT_EQ(tool.max_marker_angle_deg, 90);
+  EXPECT_EQ(tool.min_markers, 3);
+  EXPECT_EQ(tool.max_marker_error_mm, 0.75);
+  EXPECT_EIGEN_NEAR(tool.face_normals.col(0), Eigen::Vector3d(0, 0.6f, 0.8f), kExact);
+  EXPECT_EQ(tool.trailing_bytes, 0u);
+  EXPECT_EQ(ndi_rom_bytes(tool), bytes);
+  // A longer file: the 752 are the tool, the rest is counted and not written.
+  const NdiRom longer = parse_ndi_rom(bytes + "12345678", "long.rom");
+  EXPECT_EQ(longer.trailing_bytes, 8u);
+  EXPECT_EQ(ndi_rom_bytes(longer), bytes);
+}
+
+TEST(NdiRom, AMovedMarkerChangesItsBytesAndTheChecksumOnly) {
+  const std::string bytes = whole_tool();
+  NdiRom tool = parse_ndi_rom(bytes, "tool.rom");
+  tool.layout.entries(1, 1) = 51.5;  // marker B's y: bytes 88-91
+  const std::string moved = ndi_rom_bytes(tool);
+  ASSERT_EQ(moved.size(), bytes.size());
+  for (std::size_t k = 0; k < bytes.size(); ++k) {
+    const bool may_change = (k >= 4 && k < 6) || (k >= 88 && k < 92);
+    if (!may_change) {
+      EXPECT_EQ(moved[k], bytes[k]) << "byte " << k;
+    }
+  }
+  EXPECT_EQ(float_at(moved, 88), 51.5f);
+  EXPECT_EQ(with_checksum(moved), moved);
+}
+
+TEST(NdiRom, ANewToolHoldsTheLayoutAtTheDocumentedOffsets) {
+  Layout layout = parse_ndi_rom_layout(four_spheres().str(), "tools/probe.rom");
+  MarkerVisibility visibility;
+  visibility.normals = Eigen::Matrix3Xd::Zero(3, 4);
+  visibility.normals.row(2).setOnes();
+  visibility.cone_half_angle_deg = Eigen::VectorXd::Constant(4, 70.0);
+  visibility.min_visible = 4;
+  layout.visibility = visibility;
+  const std::string bytes = ndi_rom_bytes(ndi_rom_of_layout(layout));
+  ASSERT_EQ(bytes.size(), 752u);
+  EXPECT_EQ(bytes.substr(0, 3), "NDI");
+  EXPECT_EQ(bytes[24], 70);
+  EXPECT_EQ(bytes[28], 4);
+  EXPECT_EQ(bytes[32], 4);
+  EXPECT_EQ(float_at(bytes, 36), 2.0f);  // the default maximum marker error
+  for (int k = 0; k < 4; ++k) {
+    for (int r = 0; r < 3; ++r) {
+      EXPECT_EQ(float_at(bytes, 72 + 12 * k + 4 * r), static_cast<float>(layout.entries(r, k)));
+      EXPECT_EQ(float_at(bytes, 312 + 12 * k + 4 * r), r == 2 ? 1.0f : 0.0f);
+    }
+    EXPECT_EQ(bytes[552 + k], k);  // fired in order
+    EXPECT_EQ(bytes[613 + k], 1);  // face 1
+    EXPECT_EQ(bytes[633 + k], 1);  // group 1
+  }
+  EXPECT_EQ(bytes.substr(592, 6), std::string("probe") + '\0');
+  EXPECT_EQ(float_at(bytes, 664), 1.0f);  // face 1's normal: the markers' common direction
+  EXPECT_EQ(with_checksum(bytes), bytes);
+  const NdiRom back = parse_ndi_rom(bytes, "probe.rom");
+  EXPECT_EIGEN_NEAR(back.layout.entries, layout.entries, kExact);
+  ASSERT_TRUE(back.layout.visibility.has_value());
+  EXPECT_EQ(back.layout.visibility->min_visible, 4);
+  EXPECT_EIGEN_NEAR(back.layout.visibility->cone_half_angle_deg, visibility.cone_half_angle_deg,
+                    kExact);
+  EXPECT_TRUE(ndi_rom_dropped_fields(layout).empty());
+}
+
+// What a .rom cannot hold is refused, naming the field.
+TEST(NdiRom, WritingRefusesWhatTheFormatCannotHold) {
+  const Layout four = parse_ndi_rom_layout(four_spheres().str(), "four.rom");
+  auto refused = [](const std::function<void()>& write) {
+    try {
+      write();
+    } catch (const InvalidArgument& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  Layout cones = four;
+  cones.visibility = MarkerVisibility{};
+  cones.visibility->normals = Eigen::Matrix3Xd::Zero(3, 4);
+  cones.visibility->normals.row(2).setOnes();
+  cones.visibility->cone_half_angle_deg = Eigen::Vector4d(80, 80, 80, 70);
+  EXPECT_THAT(refused([&] { ndi_rom_of_layout(cones); }),
+              HasSubstr("visibility.cone_half_angle_deg: a .rom holds one maximum marker angle"));
+  cones.visibility->cone_half_angle_deg.setConstant(80.5);
+  EXPECT_THAT(refused([&] { ndi_rom_of_layout(cones); }),
+              HasSubstr("visibility.cone_half_angle_deg: a .rom holds a whole number of degrees"));
+  Layout far = four;
+  far.entries *= 1e37;  // marker B's y, 5e38, is past the largest float32 (3.4e38)
+  EXPECT_THAT(refused([&] { ndi_rom_bytes(ndi_rom_of_layout(far)); }),
+              HasSubstr("points[1]: 5e+38 is not a finite float32"));
+  Layout many;
+  many.mode = LayoutMode::kPoints;
+  many.entries = Eigen::Matrix3Xd::Random(3, 21);
+  many.weights = Eigen::VectorXd::Ones(21);
+  EXPECT_THAT(refused([&] { ndi_rom_of_layout(many); }),
+              HasSubstr("points: a .rom holds 3 to 20 markers, the layout has 21"));
+  NdiRom named = ndi_rom_of_layout(four);
+  named.part_number = std::string(21, 'p');
+  EXPECT_THAT(refused([&] { ndi_rom_bytes(named); }),
+              HasSubstr("part_number: at most 20 characters, got 21"));
+  // A damaged file: the checksum is not the sum.
+  std::string damaged = whole_tool();
+  damaged[4] = static_cast<char>(damaged[4] + 1);
+  EXPECT_THAT(refused([&] { parse_ndi_rom(damaged, "damaged.rom"); }),
+              HasSubstr("damaged.rom: bytes 4-5 (checksum): "));
+  EXPECT_THAT(refused([&] { parse_ndi_rom(damaged.substr(0, 751), "short.rom"); }),
+              HasSubstr("short.rom: an NDI tool definition holds 752 bytes, this file 751"));
 }
 
 struct BadRom {

@@ -27,7 +27,7 @@ enum class LayoutFormat {
   kCsv,       ///< name,x,y,z[,weight]
   kAprilTag,  ///< ROS apriltag tags.yaml, tag_bundles
   kAtracsys,  ///< Atracsys fusionTrack / spryTrack geometry .ini
-  kNdiRom,    ///< NDI tool definition .rom (binary, read only)
+  kNdiRom,    ///< NDI tool definition .rom (binary)
 };
 
 /// "auto" | "json" | "csv" | "apriltag" | "atracsys" | "ndi"; throws InvalidArgument naming
@@ -62,15 +62,15 @@ void load_body(const std::string& layout_path, Layout* layout);
 
 /// The format save_layout() writes to `path`: kJson for .json, kCsv for .csv, kAtracsys for .ini
 /// (case-insensitive; an .ini name must end its stem in the geometry id,
-/// atracsys_geometry_id_of()). Throws InvalidArgument "<path>: ..." for .yaml/.yml (AprilTag
-/// bundles describe printed tags, which a layout does not hold), for .rom (read only), for an
+/// atracsys_geometry_id_of()), kNdiRom for .rom. Throws InvalidArgument "<path>: ..." for
+/// .yaml/.yml (AprilTag bundles describe printed tags, which a layout does not hold), for an
 /// .ini name without the id, and for any other extension.
 LayoutFormat layout_write_format(const std::string& path);
 
 /// The layout as the text of `format` (kJson: layout_to_json, kCsv: layout_to_csv, kAtracsys:
-/// layout_to_atracsys_geometry with `geometry_id`). Throws InvalidArgument for what the format
-/// cannot hold (csv_layout.h, atracsys_geometry.h), for the read-only formats and for an
-/// invalid layout.
+/// layout_to_atracsys_geometry with `geometry_id`, kNdiRom: the 752 bytes of
+/// ndi_rom_of_layout()). Throws InvalidArgument for what the format cannot hold (csv_layout.h,
+/// atracsys_geometry.h, ndi_rom.h), for AprilTag bundles (read only) and for an invalid layout.
 std::string layout_to_text(const Layout& layout, LayoutFormat format,
                            std::uint32_t geometry_id = 0);
 
