@@ -1,7 +1,8 @@
 // NDI tool definitions written by NDI's and others' tools (VANTAGE_REAL_INPUTS_DIR/ndi-rom, the
 // folder of real-inputs/README.md): every 752-byte file reads and is written back byte for byte;
 // a tool written from its fields alone equals the file except where the format keeps what the
-// byte map does not name; the 760-byte and the 0-byte files get their documented verdicts.
+// byte map does not name; the tools decode to NDI's published coordinates; the 760-byte and the
+// 0-byte files get their documented verdicts.
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -74,6 +76,33 @@ TEST(NdiRomRealInputs, ToolsRebuiltFromTheirFieldsAreTheFiles) {
       }
     }
   }
+}
+
+// NDI's published marker coordinates (derived/ndi-published-geometry.csv, printed to 0.01 mm) are
+// what the tools' files decode to.
+TEST(NdiRomRealInputs, ToolsDecodeToNdisPublishedCoordinates) {
+  constexpr double kPrinted = 0.005;  // half the published 0.01 mm
+  std::ifstream csv(std::filesystem::path(VANTAGE_REAL_INPUTS_DIR) / "derived" /
+                    "ndi-published-geometry.csv");
+  std::string line;
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    if (line.empty() || line[0] == '#' || line.rfind("part,", 0) == 0) continue;
+    std::istringstream fields(line);
+    std::string part, marker, x, y, z;
+    std::getline(fields, part, ',');
+    std::getline(fields, marker, ',');
+    std::getline(fields, x, ',');
+    std::getline(fields, y, ',');
+    std::getline(fields, z, ',');
+    const std::string bytes = file_bytes(kRoms / ("PlusLibData__" + part + ".rom"));
+    const Layout tool = io::parse_ndi_rom_layout(bytes, part + ".rom");
+    const Eigen::Vector3d published(std::stod(x), std::stod(y), std::stod(z));
+    EXPECT_LE((tool.entries.col(std::stoi(marker)) - published).cwiseAbs().maxCoeff(), kPrinted)
+        << part << " marker " << marker;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 12);
 }
 
 TEST(NdiRomRealInputs, TheLongAndTheEmptyFilesGetTheirVerdicts) {
