@@ -190,4 +190,13 @@ NdiRom read_ndi_rom(const std::string& path) {
   return parse_ndi_rom(read_text_file(path, kMaxFileBytes), path);
 }
 
+int read_ndi_rom_min_markers(const std::string& path) {
+  const std::string bytes = read_text_file(path, kMaxFileBytes);
+  const Layout layout = parse_ndi_rom_layout(bytes, path);
+  const int min_markers = rom_byte(bytes, kMinMarkersByte);
+  check_byte(min_markers, 3, static_cast<int>(layout.entries.cols()), kMinMarkersByte,
+             "minimum markers", path);
+  return min_markers;
+}
+
 }  // namespace vantage::io

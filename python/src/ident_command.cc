@@ -2,6 +2,7 @@
 
 #include "ident_command.h"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "results.h"
 #include "vantage/analysis/common.h"
 #include "vantage/commands/ident_json.h"
+#include "vantage/commands/ident_tools.h"
 #include "vantage/tracker/tool_match.h"
 
 namespace vantage::python {
@@ -35,29 +37,57 @@ Layout ident_tool(const py::handle& item, long index, const ReadArguments& read,
   return tool;
 }
 
-py::object ident(const py::object& tools_arg, int min_visible, const py::object& format,
-                 bool allow_large) {
-  if (min_visible < kIdentMinVisible) {
+py::object ident(const py::object& tools_arg, const py::object& min_visible_arg,
+                 double same_tolerance, const py::object& format, bool allow_large) {
+  const bool given = !min_visible_arg.is_none();
+  if (given &&
+      (!py::isinstance<py::int_>(min_visible_arg) || py::isinstance<py::bool_>(min_visible_arg))) {
+    throw InvalidArgument("min_visible", "expected an integer or None (each tool's own)");
+  }
+  const int min_visible = given ? min_visible_arg.cast<int>() : 0;
+  if (given && min_visible < kIdentMinVisible) {
     throw InvalidArgument("min_visible", "must be >= 3 (a 3-D registration needs three markers)");
+  }
+  if (!(same_tolerance >= 0.0 && std::isfinite(same_tolerance))) {
+    throw InvalidArgument("same_tolerance", "must be finite and >= 0");
   }
   if (py::isinstance<py::str>(tools_arg) || py::isinstance<py::bytes>(tools_arg) ||
       py::hasattr(tools_arg, "__fspath__") || !py::hasattr(tools_arg, "__iter__")) {
     throw InvalidArgument("tools", "expected a list of vantage.Layout objects or file paths");
   }
   const ReadArguments read{format, py::none(), py::none(), allow_large};
+  // Folders become their tool files (as `vantage ident`); Layouts stay as they are.
+  py::list items;
+  long position = 0;
+  for (const py::handle item : py::list(tools_arg)) {
+    const long index = position++;
+    if (py::isinstance<Layout>(item)) {
+      items.append(item);
+      continue;
+    }
+    if (!py::isinstance<py::str>(item) && !py::hasattr(item, "__fspath__")) {
+      throw InvalidArgument("tools", index, "expected a vantage.Layout or a file path");
+    }
+    const std::string path = py::str(py::module_::import("os").attr("fspath")(item));
+    for (const std::string& file : commands::tool_files({path})) items.append(py::str(file));
+  }
   // The items first: the bound is checked before any tool is read.
-  const py::list items(tools_arg);
   commands::check_limit("tools", static_cast<long>(items.size()), commands::kMaxIdentTools, "ident",
                         allow_large, kPythonWords);
+  const io::LayoutFormat chosen =
+      format.is_none() ? io::LayoutFormat::kAuto
+                       : io::layout_format_from_string(format.cast<std::string>(), "format");
   std::vector<Layout> tools;
   std::vector<std::string> files;
+  std::vector<int> k;
   for (const py::handle item : items) {
     const long index = static_cast<long>(tools.size());
     std::string source;
     tools.push_back(ident_tool(item, index, read, &source));
     files.push_back(source);
     const Layout& tool = tools.back();
-    if (tool.entries.cols() < min_visible) {
+    k.push_back(given ? min_visible : commands::own_min_visible(tool, source, chosen));
+    if (given && tool.entries.cols() < min_visible) {
       throw InvalidArgument("min_visible", std::to_string(min_visible) + " exceeds the " +
                                                std::to_string(tool.entries.cols()) +
                                                " markers of tools[" + std::to_string(index) + "]" +
@@ -68,9 +98,9 @@ py::object ident(const py::object& tools_arg, int min_visible, const py::object&
   std::vector<Eigen::Matrix3Xd> points;
   for (const Layout& tool : tools) points.push_back(tool.entries);
   tracker::ToolMatchOptions options;
-  options.min_visible = min_visible;
+  options.same_tolerance = same_tolerance;
   const tracker::ToolLibraryMatches matches =
-      without_gil([&] { return tracker::match_tool_library(points, options); });
+      without_gil([&] { return tracker::match_tool_library(points, options, k); });
   Json out = ident_json::report_without_pairs(matches, tools, files);
   // A vantage.Layout has no file: null, as the other results' "layout" of arrays.
   for (std::size_t t = 0; t < files.size(); ++t) {
@@ -89,12 +119,14 @@ py::object ident(const py::object& tools_arg, int min_visible, const py::object&
 }  // namespace
 
 void bind_ident_command(py::module_& module) {
-  module.def("ident", &ident, py::arg("tools"), py::kw_only(),
-             py::arg("min_visible") = kIdentMinVisible, py::arg("format") = py::none(),
-             py::arg("allow_large") = false,
-             "How close the tools of a library come by their inter-marker distances: every pair "
-             "and each tool relabelled, mirror images included (as `vantage ident --json`; "
-             "docs/math.md §24).");
+  module.def("ident", &ident, py::arg("tools"), py::kw_only(), py::arg("min_visible") = py::none(),
+             py::arg("same_tolerance") = tracker::ToolMatchOptions{}.same_tolerance,
+             py::arg("format") = py::none(), py::arg("allow_large") = false,
+             "How close the tools of a library (Layouts, files or folders of tool files) come by "
+             "their inter-marker distances: every pair and each tool relabelled, mirror images "
+             "included, each pair's verdict (same_tool, mirror, distinct) and the matrix (as "
+             "`vantage ident --json`; docs/math.md §24). min_visible=None: each tool's own "
+             "minimum markers.");
 }
 
 }  // namespace vantage::python

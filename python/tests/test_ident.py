@@ -76,6 +76,23 @@ def test_ident_of_layouts_is_the_report_of_their_files(vantage):
     assert from_layouts == from_files
 
 
+def test_ident_of_a_folder_is_the_clis_with_verdicts_and_matrix(vantage):
+    report = vantage.ident([TOOLS])
+    cli = cli_json("ident", TOOLS)
+    assert_same(report.to_dict(), cli)
+    assert [t.file for t in report.tools] == sorted(
+        str(p) for p in TOOLS.iterdir() if p.suffix in (".json", ".csv", ".ini", ".rom"))
+    n = len(report.tools)
+    assert report.matrix.shape == (n, n)
+    for pair in report.pairs:
+        assert report.matrix[pair.a, pair.b] == report.matrix[pair.b, pair.a] == pair.mismatch
+        assert pair.verdict == ("self" if pair.self else "distinct")
+        assert pair.min_visible == min(report.tools[pair.a].min_visible,
+                                       report.tools[pair.b].min_visible)
+    assert report.closest_distinct is not None and not report.closest_distinct.self
+    assert report.closest_distinct.mismatch == min(p.mismatch for p in report.pairs if not p.self)
+
+
 @pytest.mark.parametrize("min_visible", [3, 4])
 def test_ident_mismatch_is_the_brute_force(vantage, min_visible):
     points = [tool_points(path) for path in JSON_TOOLS]
@@ -93,6 +110,8 @@ def test_ident_mismatch_is_the_brute_force(vantage, min_visible):
 
 @pytest.mark.parametrize("call, field, index", [
     (lambda v: v.ident(JSON_TOOLS, min_visible=2), "min_visible", None),
+    (lambda v: v.ident(JSON_TOOLS, same_tolerance=-1.0), "same_tolerance", None),
+    (lambda v: v.ident(JSON_TOOLS, min_visible=3.5), "min_visible", None),
     (lambda v: v.ident(JSON_TOOLS, min_visible=5), "min_visible", None),
     (lambda v: v.ident([v.Layout(points=np.eye(3))], min_visible=4), "min_visible", None),
     (lambda v: v.ident([]), "tools", None),

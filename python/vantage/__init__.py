@@ -197,22 +197,28 @@ def tre(layout: LayoutArg = None, *, points: Optional[npt.ArrayLike] = None,
         allow_large=allow_large, format=format, tag_points=tag_points, bundle=bundle))
 
 
-def ident(tools: Iterable[Union[Layout, str, "os.PathLike[str]"]], *, min_visible: int = 3,
+def ident(tools: Iterable[Union[Layout, str, "os.PathLike[str]"]], *,
+          min_visible: Optional[int] = None, same_tolerance: float = 0.01,
           format: Optional[str] = None, allow_large: bool = False) -> IdentReport:
     """How close the tools of a library come to each other by their inter-marker distances (as
     ``vantage ident --json``; docs/math.md §24, Eq. 24.4): for every two tools, and each tool
-    against itself relabelled, the least over views of ``min_visible`` markers of one and
-    injective labellings by the other of the largest inter-marker distance error, the markers
-    that give it and whether it fits as a rotation or only as a reflection.
+    against itself relabelled, the least over views of k markers of one and injective
+    labellings by the other of the largest inter-marker distance error, the markers that give
+    it, whether it fits as a rotation or only as a reflection, and each pair's verdict
+    ('same_tool', 'mirror' or 'distinct': whether every marker matches within
+    ``same_tolerance``, in the tools' units), with the n x n ``matrix``.
 
-    tools: vantage.Layout objects (points) or tool files (.json, .csv, Atracsys .ini, NDI .rom),
-    read with format ('auto', 'json', 'csv', 'atracsys', 'ndi') and allow_large as
-    ``--format``, ``--allow-large``; a Layout's ``file`` is None; the number of tools is
-    bounded (README "Limits"; allow_large=True lifts it). min_visible: K >= 3, at most every tool's markers.
+    tools: vantage.Layout objects (points), tool files (.json, .csv, Atracsys .ini, NDI .rom)
+    or folders of them, read with format ('auto', 'json', 'csv', 'atracsys', 'ndi') and
+    allow_large as ``--format``, ``--allow-large``; a Layout's ``file`` is None; the number of
+    tools is bounded (README "Limits"; allow_large=True lifts it). min_visible: k >= 3 for every
+    tool, at most every tool's markers; None: each tool's own (a .rom's minimum markers, a
+    layout's visibility.min_visible, else 3), a pair the smaller of its two.
 
-    Raises ValueError on bad input (its ``field`` 'min_visible' or 'tools').
+    Raises ValueError on bad input (its ``field`` 'min_visible', 'same_tolerance' or 'tools').
     """
-    return IdentReport(_vantage.ident(tools, min_visible=min_visible, format=format,
+    return IdentReport(_vantage.ident(tools, min_visible=min_visible,
+                                      same_tolerance=same_tolerance, format=format,
                                       allow_large=allow_large))
 
 

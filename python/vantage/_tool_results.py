@@ -171,13 +171,15 @@ class TreReport(_JsonView):
 
 class IdentTool(_JsonView):
     """One tool of ``vantage ident --json``'s ``tools``: its file (None for a vantage.Layout),
-    name and number of markers."""
+    name, number of markers and ``min_visible``, the k of its views (its own minimum, or the
+    ``min_visible`` given)."""
 
     def __init__(self, fields: Mapping[str, Any]) -> None:
         super().__init__(fields)
         self.file: Optional[str] = _text(fields["file"])
         self.name: str = str(fields["name"])
         self.markers: int = int(fields["markers"])
+        self.min_visible: int = int(fields["min_visible"])
 
 
 class IdentPair(_JsonView):
@@ -185,13 +187,17 @@ class IdentPair(_JsonView):
     vantage::tracker::ToolPairMatch): the mismatch of Eq. (24.4), the view ``subset`` of tool a and the
     markers ``assignment`` of tool b that give it (indices, and names), the best rigid fit
     ('rotation', 'reflection' or 'either') with the RMS of each, and whether the search ended
-    within its budget (else ``mismatch_lower`` bounds what it left)."""
+    within its budget (else ``mismatch_lower`` bounds what it left); ``verdict``: 'self',
+    'same_tool', 'mirror' or 'distinct'; ``min_visible``: the k of the match (the smaller of the
+    two tools')."""
 
     def __init__(self, fields: Mapping[str, Any]) -> None:
         super().__init__(fields)
         self.a: int = int(fields["a"])
         self.b: int = int(fields["b"])
         self.self: bool = bool(fields["self"])
+        self.verdict: str = str(fields["verdict"])
+        self.min_visible: int = int(fields["min_visible"])
         self.mismatch: float = _float(fields["mismatch"])
         self.subset: IntArray = _ints(fields["subset"])
         self.assignment: IntArray = _ints(fields["assignment"])
@@ -207,18 +213,27 @@ class IdentPair(_JsonView):
 
 class IdentReport(_JsonView):
     """vantage.ident (``vantage ident --json``; C++ vantage::tracker::ToolLibraryMatches; docs/math.md
-    §24): the tools, every pair (each unordered pair once, self pairs included) and the closest
-    pair, which ``closest`` is (an entry of ``pairs``)."""
+    §24): the tools, every pair (each unordered pair once, self pairs included), the closest
+    pair and the closest pair of distinct tools (entries of ``pairs``; None when no pair is
+    distinct), the n x n ``matrix`` of mismatches, and ``min_visible``, the k every tool shares
+    (None when the tools' own minima differ)."""
 
     def __init__(self, fields: Mapping[str, Any]) -> None:
         super().__init__(fields)
-        self.min_visible: int = int(fields["min_visible"])
+        shared = fields["min_visible"]
+        self.min_visible: Optional[int] = None if shared is None else int(shared)
         self.tools: List[IdentTool] = [IdentTool(t) for t in fields["tools"]]
         self.pairs: List[IdentPair] = [IdentPair(p) for p in fields["pairs"]]
-        closest = fields["closest"]
-        self.closest: IdentPair = next(
-            p for p in self.pairs if (p.a, p.b) == (closest["a"], closest["b"]))
+        self.closest: IdentPair = self._pair(fields["closest"])
+        distinct = fields["closest_distinct"]
+        self.closest_distinct: Optional[IdentPair] = (
+            None if distinct is None else self._pair(distinct))
+        self.matrix: FloatArray = _floats(fields["matrix"]).reshape(len(self.tools),
+                                                                    len(self.tools))
         self.certified: bool = bool(fields["certified"])
+
+    def _pair(self, summary: Mapping[str, Any]) -> IdentPair:
+        return next(p for p in self.pairs if (p.a, p.b) == (summary["a"], summary["b"]))
 
 
 # ------------------------------------------------------------------- marker placement (place)

@@ -104,8 +104,9 @@ def simulate(layout: Union[Layout, _Path, None] = None, *, vectors: _Array = Non
              threads: int = 0, per_trial: bool = False, allow_large: bool = False,
              format: Optional[str] = None, tag_points: Optional[str] = None,
              bundle: Optional[str] = None) -> Dict[str, Any]: ...
-def ident(tools: Iterable[Union[Layout, _Path]], *, min_visible: int = 3,
-          format: Optional[str] = None, allow_large: bool = False) -> Dict[str, Any]: ...
+def ident(tools: Iterable[Union[Layout, _Path]], *, min_visible: Optional[int] = None,
+          same_tolerance: float = 0.01, format: Optional[str] = None,
+          allow_large: bool = False) -> Dict[str, Any]: ...
 def place(body: Optional[_Path] = None, *, sites: Optional[_Path] = None, markers: int,
           candidates: Optional[int] = None, cone_deg: Optional[float] = None,
           min_visible: Optional[int] = None,

@@ -10,9 +10,11 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <numeric>
+#include <sstream>
 #include <vector>
 
 #include "support/cli_runner.h"
@@ -22,6 +24,7 @@ namespace {
 
 using testing::BadCall;
 using ::testing::HasSubstr;
+using testing::run_json;
 using testing::run_vantage;
 using testing::ScratchDir;
 
@@ -256,11 +259,78 @@ TEST(IdentCli, TextReportNamesThePairsAndTheClosest) {
   const testing::CliRun run = run_vantage(
       "ident '" + kToolDir + "west_planar.json' '" + kToolDir + "passive4_150.ini'", scratch);
   ASSERT_EQ(run.status, 0) << run.err;
-  EXPECT_THAT(run.out, HasSubstr("vantage ident: 2 tools, views of 3 markers"));
-  EXPECT_THAT(run.out, HasSubstr("0 vs 0 (self)"));
-  EXPECT_THAT(run.out, HasSubstr("0 vs 1"));
-  EXPECT_THAT(run.out, HasSubstr("closest"));
+  EXPECT_THAT(run.out, HasSubstr("vantage ident: 2 tools, views of k markers (each tool's own "
+                                 "minimum; a pair: the smaller of its two)"));
+  EXPECT_THAT(run.out, HasSubstr("0 vs 0  self  k 3"));
+  EXPECT_THAT(run.out, HasSubstr("0 vs 1  distinct  k 3"));
+  EXPECT_THAT(run.out, HasSubstr("matrix of mismatches"));
+  EXPECT_THAT(run.out, HasSubstr("closest distinct  0 vs 1"));
   EXPECT_EQ(run.err, "");
+}
+
+// The points of `p` as layout JSON (17 significant digits), optionally with `extra` fields.
+std::string tool_json(const Eigen::Matrix3Xd& p, const std::string& extra = "") {
+  std::ostringstream out;
+  out.precision(17);
+  out << R"({"points": [)";
+  for (Eigen::Index i = 0; i < p.cols(); ++i) {
+    out << (i ? ", [" : "[") << p(0, i) << ", " << p(1, i) << ", " << p(2, i) << "]";
+  }
+  out << "]" << extra << "}";
+  return out.str();
+}
+
+// A folder of tools (issue 37, item 2): its tool files by name, each tool's own minimum (a
+// .rom's byte 32), a pair's k the smaller of its two, the verdicts of a moved copy and a mirror
+// image, the matrix of every pair's mismatch, and --min-visible for every tool.
+TEST(IdentCli, AFolderEachToolsOwnMinimumVerdictsAndTheMatrix) {
+  ScratchDir scratch;
+  const Eigen::Matrix3Xd tool = points_of(kToolDir + "five_marker.json");
+  Eigen::Matrix3d turn;
+  turn << 0, -1, 0, 1, 0, 0, 0, 0, 1;  // 90 degrees about z
+  Eigen::Matrix3Xd moved = (turn * tool).colwise() + Eigen::Vector3d(5, -7, 100);
+  moved.col(0).swap(moved.col(4));
+  Eigen::Matrix3Xd mirror = tool;
+  mirror.row(2) *= -1.0;
+  std::filesystem::create_directory(scratch.dir() / "fleet");
+  scratch.write("fleet/a_tool.json", tool_json(tool));
+  scratch.write("fleet/b_moved.json", tool_json(moved));
+  scratch.write("fleet/c_mirror.json", tool_json(mirror));
+  scratch.write("fleet/notes.txt", "not a tool");
+  scratch.write("probe.json",
+                tool_json(tool, R"(, "normals": [[0,0,1],[0,0,1],[0,0,1],[0,0,1],[0,0,1]],
+    "visibility": {"cone_half_angle_deg": 80, "min_visible": 4})"));
+  run_json("layout convert probe.json --out fleet/d_probe.rom", scratch);
+  const nlohmann::json j = run_json("ident fleet", scratch);
+  ASSERT_EQ(j["tools"].size(), 4u);
+  EXPECT_THAT(j["tools"][3]["file"].get<std::string>(), HasSubstr("d_probe.rom"));
+  const std::vector<int> own = {3, 3, 3, 4};
+  for (std::size_t t = 0; t < 4; ++t) EXPECT_EQ(j["tools"][t]["min_visible"], own[t]) << t;
+  EXPECT_TRUE(j["min_visible"].is_null());  // the tools' own minima differ
+  ASSERT_EQ(j["pairs"].size(), 10u);
+  ASSERT_EQ(j["matrix"].size(), 4u);
+  for (const nlohmann::json& p : j["pairs"]) {
+    const int a = p["a"].get<int>();
+    const int b = p["b"].get<int>();
+    EXPECT_EQ(p["min_visible"],
+              std::min(own[static_cast<std::size_t>(a)], own[static_cast<std::size_t>(b)]));
+    EXPECT_EQ(j["matrix"][a][b], p["mismatch"]);
+    EXPECT_EQ(j["matrix"][b][a], p["mismatch"]);
+    const std::string verdict = p["verdict"].get<std::string>();
+    const std::string expected = a == b ? "self" : (a == 2) != (b == 2) ? "mirror" : "same_tool";
+    EXPECT_EQ(verdict, expected) << a << " vs " << b;
+  }
+  EXPECT_TRUE(j["closest_distinct"].is_null());  // every two files hold one tool or its mirror
+  // --min-visible sets every tool's k.
+  const nlohmann::json four = run_json("ident fleet --min-visible 4", scratch);
+  EXPECT_EQ(four["min_visible"], 4);
+  for (const nlohmann::json& t : four["tools"]) EXPECT_EQ(t["min_visible"], 4);
+  // Bad folders and tolerances: one line, exit 2.
+  std::filesystem::create_directory(scratch.dir() / "empty");
+  testing::expect_bad_input(run_vantage("ident empty", scratch),
+                            "empty: holds no tool files (.json, .csv, .ini, .rom)");
+  testing::expect_bad_input(run_vantage("ident fleet --same-tolerance -1", scratch),
+                            "--same-tolerance: must be finite and >= 0");
 }
 
 TEST(IdentCli, BadInputIsOneLineExitTwoNothingWritten) {

@@ -206,5 +206,86 @@ TEST(MatchToolLibrary, EveryPairOnceEachAsItsOwnSearch) {
   EXPECT_THAT(message_of([&] { match_tool_library(tools, options); }), HasSubstr("tools[0]"));
 }
 
+// Each tool is seen in views of its own k, a pair in views of the smaller of its two; the matrix
+// holds every pair's mismatch both ways; each mismatch is the enumeration's at that k.
+TEST(MatchToolLibrary, EachToolsOwnMinimumAndTheMatrix) {
+  std::mt19937 rng(kSeed + 15);
+  const std::vector<Eigen::Matrix3Xd> tools = {
+      random_points(rng, 4, 50.0), random_points(rng, 5, 50.0), random_points(rng, 4, 50.0)};
+  const std::vector<int> own = {4, 3, 4};
+  const ToolLibraryMatches got = match_tool_library(tools, {}, own);
+  EXPECT_EQ(got.min_visible, own);
+  const Eigen::MatrixXd matrix = got.mismatch_matrix();
+  for (const ToolPairMatch& p : got.pairs) {
+    const int k = std::min(own[static_cast<std::size_t>(p.a)], own[static_cast<std::size_t>(p.b)]);
+    EXPECT_EQ(p.min_visible, k);
+    const double truth = brute_mismatch(tools[static_cast<std::size_t>(p.a)],
+                                        tools[static_cast<std::size_t>(p.b)], k, p.a == p.b);
+    EXPECT_EQ(p.match.mismatch, truth) << p.a << " " << p.b;
+    EXPECT_EQ(matrix(p.a, p.b), truth);
+    EXPECT_EQ(matrix(p.b, p.a), truth);
+  }
+  EXPECT_THAT(message_of([&] {
+                match_tool_library(tools, {}, {4, 3});
+              }),
+              HasSubstr("min_visible: one per tool: 2 for 3 tools"));
+  EXPECT_THAT(message_of([&] { match_tool_library(tools, {}, {5, 3, 4}); }), HasSubstr("tools[0]"));
+}
+
+// A copy moved rigidly and relabelled is the same tool; its mirror image is a mirror; a copy
+// with one marker moved by 0.1 is distinct; so is a tool with another marker count. A tool with
+// a mirror plane is the same tool as its reflection (a relabelling makes it a rotation).
+TEST(MatchToolLibrary, VerdictsSameToolMirrorAndDistinct) {
+  std::mt19937 rng(kSeed + 16);
+  const Eigen::Matrix3Xd a = random_points(rng, 5, 50.0);
+  const Eigen::Matrix3d r = random_rotation(rng);
+  Eigen::Matrix3Xd moved = (r * a).colwise() + Eigen::Vector3d(10, -20, 300);
+  moved.col(0).swap(moved.col(3));
+  Eigen::Matrix3Xd mirror = a;
+  mirror.row(0) *= -1.0;
+  Eigen::Matrix3Xd bent = moved;
+  bent(2, 1) += 0.1;
+  const Eigen::Matrix3Xd more = random_points(rng, 6, 50.0);
+  const ToolLibraryMatches got = match_tool_library({a, moved, mirror, bent, more});
+  auto verdict = [&](int x, int y) {
+    for (const ToolPairMatch& p : got.pairs) {
+      if (p.a == x && p.b == y) return p.verdict;
+    }
+    return ToolPairMatch::Verdict::kSelf;
+  };
+  EXPECT_EQ(verdict(0, 0), ToolPairMatch::Verdict::kSelf);
+  EXPECT_EQ(verdict(0, 1), ToolPairMatch::Verdict::kSameTool);
+  EXPECT_EQ(verdict(0, 2), ToolPairMatch::Verdict::kMirror);
+  EXPECT_EQ(verdict(1, 2), ToolPairMatch::Verdict::kMirror);
+  EXPECT_EQ(verdict(0, 3), ToolPairMatch::Verdict::kDistinct);
+  EXPECT_EQ(verdict(0, 4), ToolPairMatch::Verdict::kDistinct);
+  EXPECT_STREQ(to_string(verdict(0, 1)), "same_tool");
+  // The closest distinct pair is the bent copy against a copy it was made from.
+  ASSERT_GE(got.closest_distinct, 0);
+  const ToolPairMatch& closest = got.pairs[static_cast<std::size_t>(got.closest_distinct)];
+  EXPECT_EQ(closest.verdict, ToolPairMatch::Verdict::kDistinct);
+  EXPECT_NE(closest.a, closest.b);
+  // A wider tolerance takes the bent copy for the tool.
+  ToolMatchOptions loose;
+  loose.same_tolerance = 0.2;
+  EXPECT_EQ(match_tool_library({a, bent}, loose).pairs[1].verdict,
+            ToolPairMatch::Verdict::kSameTool);
+  // Mirror-symmetric: (x, y, z) -> (-x, y, z) maps the set onto itself.
+  Eigen::Matrix3Xd symmetric(3, 5);
+  symmetric << -20, 20, 0, 0, 0,  //
+      0, 0, 35, -10, 5,           //
+      0, 0, 0, 15, 40;
+  Eigen::Matrix3Xd reflected = r * symmetric;
+  reflected.row(1) *= -1.0;
+  EXPECT_EQ(match_tool_library({symmetric, reflected}).pairs[1].verdict,
+            ToolPairMatch::Verdict::kSameTool);
+  EXPECT_THAT(message_of([&] {
+                ToolMatchOptions bad;
+                bad.same_tolerance = -1.0;
+                match_tool_library({a}, bad);
+              }),
+              HasSubstr("options.same_tolerance"));
+}
+
 }  // namespace
 }  // namespace vantage::tracker

@@ -177,28 +177,115 @@ ToolMatch self_ambiguity(const Eigen::Matrix3Xd& a, const ToolMatchOptions& opti
   return best_match(a, a, true, options);
 }
 
+const char* to_string(ToolPairMatch::Verdict verdict) {
+  switch (verdict) {
+    case ToolPairMatch::Verdict::kSelf:
+      return "self";
+    case ToolPairMatch::Verdict::kSameTool:
+      return "same_tool";
+    case ToolPairMatch::Verdict::kMirror:
+      return "mirror";
+    case ToolPairMatch::Verdict::kDistinct:
+      break;
+  }
+  return "distinct";
+}
+
+Eigen::MatrixXd ToolLibraryMatches::mismatch_matrix() const {
+  const Eigen::Index n = static_cast<Eigen::Index>(min_visible.size());
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(n, n);
+  for (const ToolPairMatch& p : pairs) {
+    out(p.a, p.b) = p.match.mismatch;
+    out(p.b, p.a) = p.match.mismatch;
+  }
+  return out;
+}
+
+namespace {
+
+std::vector<double> sorted_distances(const Eigen::Matrix3Xd& p) {
+  std::vector<double> out;
+  for (Eigen::Index i = 0; i < p.cols(); ++i) {
+    for (Eigen::Index j = i + 1; j < p.cols(); ++j) out.push_back((p.col(i) - p.col(j)).norm());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Two different tools: one tool, mirror images or distinct, by the match of every marker.
+ToolPairMatch::Verdict verdict_of(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b,
+                                  const ToolMatchOptions& options) {
+  if (a.cols() != b.cols()) return ToolPairMatch::Verdict::kDistinct;
+  // One tool has the other's distances: their sorted lists agree within the tolerance (a
+  // necessary condition, which keeps the whole-set search to the pairs that may pass).
+  const std::vector<double> da = sorted_distances(a);
+  const std::vector<double> db = sorted_distances(b);
+  for (std::size_t k = 0; k < da.size(); ++k) {
+    if (std::abs(da[k] - db[k]) > options.same_tolerance) return ToolPairMatch::Verdict::kDistinct;
+  }
+  ToolMatchOptions whole = options;
+  whole.min_visible = static_cast<int>(a.cols());
+  const ToolMatch all = best_match(a, b, false, whole);
+  if (!all.certified || all.mismatch > options.same_tolerance) {
+    return ToolPairMatch::Verdict::kDistinct;
+  }
+  if (all.transform != ToolMatch::Transform::kReflection) return ToolPairMatch::Verdict::kSameTool;
+  // The labelling found fits as a reflection; when A has a mirror symmetry of its own, another
+  // labelling turns it into a rotation, and B is A.
+  const ToolMatch symmetry = best_match(a, a, true, whole);
+  const bool mirror_symmetric = symmetry.certified && symmetry.mismatch <= options.same_tolerance &&
+                                symmetry.transform != ToolMatch::Transform::kRotation;
+  return mirror_symmetric ? ToolPairMatch::Verdict::kSameTool : ToolPairMatch::Verdict::kMirror;
+}
+
+}  // namespace
+
 ToolLibraryMatches match_tool_library(const std::vector<Eigen::Matrix3Xd>& tools,
-                                      const ToolMatchOptions& options) {
+                                      const ToolMatchOptions& options,
+                                      const std::vector<int>& min_visible) {
   internal::check_options("options", options);
+  if (!(options.same_tolerance >= 0.0 && std::isfinite(options.same_tolerance))) {
+    internal::fail("options.same_tolerance", "must be finite and >= 0");
+  }
   if (tools.empty()) internal::fail("tools", "need at least one tool");
-  for (std::size_t t = 0; t < tools.size(); ++t) {
-    const std::string arg = "tools[" + std::to_string(t) + "]";
-    check_tool(arg, tools[t], options);
+  if (!min_visible.empty() && min_visible.size() != tools.size()) {
+    internal::fail("min_visible", "one per tool: " + std::to_string(min_visible.size()) + " for " +
+                                      std::to_string(tools.size()) + " tools");
   }
   ToolLibraryMatches out;
-  out.min_visible = options.min_visible;
+  out.min_visible =
+      min_visible.empty() ? std::vector<int>(tools.size(), options.min_visible) : min_visible;
+  for (std::size_t t = 0; t < tools.size(); ++t) {
+    ToolMatchOptions own = options;
+    own.min_visible = out.min_visible[t];
+    if (own.min_visible < 2) {
+      internal::fail("min_visible[" + std::to_string(t) + "]", "must be >= 2");
+    }
+    check_tool("tools[" + std::to_string(t) + "]", tools[t], own);
+  }
   out.certified = true;
   const int n = static_cast<int>(tools.size());
   for (int a = 0; a < n; ++a) {
     for (int b = a; b < n; ++b) {
       const Eigen::Matrix3Xd& ta = tools[static_cast<std::size_t>(a)];
       const Eigen::Matrix3Xd& tb = tools[static_cast<std::size_t>(b)];
-      out.pairs.push_back({a, b, best_match(ta, tb, a == b, options)});
+      ToolMatchOptions pair_options = options;
+      pair_options.min_visible = std::min(out.min_visible[static_cast<std::size_t>(a)],
+                                          out.min_visible[static_cast<std::size_t>(b)]);
+      ToolPairMatch pair{a, b, pair_options.min_visible, best_match(ta, tb, a == b, pair_options),
+                         ToolPairMatch::Verdict::kSelf};
+      if (a != b) pair.verdict = verdict_of(ta, tb, options);
+      out.pairs.push_back(pair);
       const ToolMatch& m = out.pairs.back().match;
       out.certified = out.certified && m.certified;
-      if (out.closest < 0 ||
-          m.mismatch < out.pairs[static_cast<std::size_t>(out.closest)].match.mismatch) {
-        out.closest = static_cast<int>(out.pairs.size()) - 1;
+      const int index = static_cast<int>(out.pairs.size()) - 1;
+      auto smaller = [&](int current) {
+        return current < 0 ||
+               m.mismatch < out.pairs[static_cast<std::size_t>(current)].match.mismatch;
+      };
+      if (smaller(out.closest)) out.closest = index;
+      if (pair.verdict == ToolPairMatch::Verdict::kDistinct && smaller(out.closest_distinct)) {
+        out.closest_distinct = index;
       }
     }
   }

@@ -1,10 +1,11 @@
 #pragma once
 
 // The JSON object of `vantage ident --json` (issue 20; README, "vantage ident"; docs/math.md
-// §24), from the one ToolLibraryMatches of vantage::tracker::match_tool_library(): min_visible,
-// tools
-// [{file, name, markers}], pairs [{a, b, self, mismatch, subset, assignment, transform,
-// proper_rms, improper_rms, certified, mismatch_lower}], closest, certified.
+// §24), from the one ToolLibraryMatches of vantage::tracker::match_tool_library(): min_visible
+// (the k every tool shares, or null), tools [{file, name, markers, min_visible}], pairs [{a, b,
+// self, verdict, min_visible, mismatch, subset, assignment, transform, proper_rms, improper_rms,
+// certified, mismatch_lower}], closest and closest_distinct ({a, b, mismatch} or null), matrix
+// (n x n mismatches), certified.
 
 #include <nlohmann/json.hpp>
 #include <string>

@@ -96,6 +96,12 @@ NdiRom parse_ndi_rom(std::string_view bytes, const std::string& source);
 /// Reads and parses the .rom file at `path` (parse_ndi_rom(); errors name the path).
 NdiRom read_ndi_rom(const std::string& path);
 
+/// The minimum markers (byte 32) of the .rom file at `path`, which the tracker needs in view to
+/// report the tool, whether or not the file has normals (parse_ndi_rom_layout() keeps it only
+/// with normals, as min_visible). Throws InvalidArgument naming the path for a file that
+/// parse_ndi_rom_layout() refuses, and "byte 32 (minimum markers)" outside [3, n].
+int read_ndi_rom_min_markers(const std::string& path);
+
 /// A new tool definition for `layout` (point mode, 3 to 20 markers): positions (rounded to
 /// float32), with a visibility model its normals, its one cone half-angle (an integer number of
 /// degrees, the same for every marker) and min_visible; without one, zero normals, a maximum

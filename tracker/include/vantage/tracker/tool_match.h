@@ -19,6 +19,11 @@ struct ToolMatchOptions {
   /// Budget of the branch and bound in distance comparisons (one per pair of a partial
   /// assignment), >= 1. About 0.5 s of CPU at 2 * 10^8.
   long max_comparisons = 200'000'000;
+  /// Two tools with as many markers are one tool (or mirror images) when their whole marker
+  /// sets match within this largest distance error, in the tools' units (mm for a tracker's
+  /// tools: 0.01 mm is far above the float32 rounding of a .rom and below any machining step),
+  /// >= 0. Used by match_tool_library()'s verdicts.
+  double same_tolerance = 0.01;
 
   /// True when every field is in range; otherwise *why names the field and the constraint.
   bool is_valid(std::string* why = nullptr) const;
@@ -68,24 +73,47 @@ ToolMatch self_ambiguity(const Eigen::Matrix3Xd& a, const ToolMatchOptions& opti
 
 /// One pair of a tool library: tools a <= b; a == b is the self-ambiguity of tool a.
 struct ToolPairMatch {
+  /// What the two files are (docs/math.md §24, "Verdicts").
+  enum class Verdict {
+    kSelf,      ///< a == b: the tool against itself relabelled
+    kSameTool,  ///< as many markers, every one matched within same_tolerance by a rotation
+    kMirror,    ///< as many markers, matched within same_tolerance only by a reflection
+    kDistinct,  ///< anything else (a tracker may still confuse them: see the mismatch)
+  };
   int a = 0;
   int b = 0;
+  int min_visible = 3;  ///< k of this match: the smaller of the two tools' own
   ToolMatch match;
+  Verdict verdict = Verdict::kDistinct;
 };
+
+/// "self", "same_tool", "mirror" or "distinct".
+const char* to_string(ToolPairMatch::Verdict verdict);
 
 /// Every pair of a tool library (`vantage ident`).
 struct ToolLibraryMatches {
-  int min_visible = 3;  ///< k of every match
+  std::vector<int> min_visible;  ///< k of each tool (a pair's k is the smaller of its two)
   /// (0,0), (0,1), ..., (0,n-1), (1,1), ...: each unordered pair once (m(A, B) = m(B, A)).
   std::vector<ToolPairMatch> pairs;
-  int closest = -1;        ///< index into pairs of the smallest mismatch (the first such)
+  int closest = -1;  ///< index into pairs of the smallest mismatch (the first such)
+  /// The same, over pairs of two different files whose verdict is kDistinct (-1: none); the
+  /// pair a designer must keep apart.
+  int closest_distinct = -1;
   bool certified = false;  ///< every pair's search ended within its budget
+
+  /// The n x n matrix of mismatches: (a, b) and (b, a) the pair's, (a, a) the self-ambiguity.
+  Eigen::MatrixXd mismatch_matrix() const;
 };
 
-/// match_tools() for every two tools and self_ambiguity() for each (docs/math.md §24). Throws
-/// InvalidArgument ("tools[i]": fewer markers than min_visible or non-finite; "tools": empty;
-/// "options.*").
+/// match_tools() for every two tools and self_ambiguity() for each (docs/math.md §24), with the
+/// verdict of each pair. Tool t is seen in views of `min_visible[t]` markers (its own minimum,
+/// e.g. a .rom's "minimum markers"; every one options.min_visible when empty), and a pair in
+/// views of the smaller of its two: a tracker that needs k_B markers of B can take k_B markers
+/// of A for B, and m_k only falls as k does. Throws InvalidArgument ("tools[i]": fewer markers
+/// than its min_visible or non-finite; "tools": empty; "min_visible": not one per tool or an
+/// entry below 2; "options.*").
 ToolLibraryMatches match_tool_library(const std::vector<Eigen::Matrix3Xd>& tools,
-                                      const ToolMatchOptions& options = {});
+                                      const ToolMatchOptions& options = {},
+                                      const std::vector<int>& min_visible = {});
 
 }  // namespace vantage::tracker
