@@ -79,8 +79,14 @@ void print_target(const tracker::TreTargetReport& t) {
 void print_report(const std::string& name, const tracker::TreReport& r) {
   std::cout << "vantage tre: " << name << "\n  " << r.markers << " markers, tracked with at least "
             << r.min_visible << " visible; visibility "
-            << (r.with_body ? "cone+mesh" : (r.with_normals ? "cone" : "none (all seen)"))
-            << "\n  FLE ";
+            << (r.with_body ? "cone+mesh" : (r.with_normals ? "cone" : "none (all seen)")) << "\n";
+  if (r.five_dof) {
+    std::cout << "  5-DoF tool: its markers are collinear, along " << format_vector(r.axis, 4)
+              << " through " << format_vector(r.axis_point, 4)
+              << "; the rotation about that axis is not measured, so only targets on it are "
+                 "tracked\n";
+  }
+  std::cout << "  FLE ";
   if (r.fle.from_rms) {
     std::cout << "isotropic, RMS " << format_number(r.fle.rms(), 5);
   } else {

@@ -71,6 +71,13 @@ Json report(const tracker::TreReport& r) {
                 {"min_visible", r.min_visible},
                 {"visibility", r.with_body ? "cone+mesh" : (r.with_normals ? "cone" : "none")},
                 {"reference", "docs/math.md §23"}};
+  if (r.five_dof) {
+    model["five_dof"] = {{"axis_point", tre_vector3(r.axis_point)},
+                         {"axis", tre_vector3(r.axis)},
+                         {"note",
+                          "collinear markers: the rotation about the axis is not "
+                          "measured; targets on the axis only"}};
+  }
   Json out;
   out["targets"] = std::move(targets);
   out["fle"] = std::move(fle);

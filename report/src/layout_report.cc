@@ -158,7 +158,12 @@ std::string LayoutReport::brief_report() const {
   std::ostringstream out;
   if (visibility)
     out << visibility_brief(*visibility) << "seen whole (every marker from everywhere):\n";
-  if (r.degenerate) {
+  if (r.degenerate && !data.pairs.empty()) {
+    // Collinear markers: a tracker tool of them measures five degrees of freedom.
+    out << "5-DOF TOOL             every marker is on one line: the rotation about it is not "
+           "measured (`vantage tre --target` on the line gives a target's error; "
+           "docs/math.md §23)\n";
+  } else if (r.degenerate) {
     out << "DEGENERATE             every data vector is parallel to one line: the rotation "
            "about it is not determined\n";
   } else if (r.near_degenerate) {

@@ -356,8 +356,12 @@ TEST(HardeningCli, CollinearPointsAreDegenerate) {
   EXPECT_TRUE(json["degenerate"].get<bool>());
   EXPECT_EQ(json["max_worst_case_error_deg"].get<double>(), 90.0);
   run = run_vantage("analyze line.json", scratch);
-  EXPECT_THAT(run.out, HasSubstr("DEGENERATE"));
+  // Collinear markers are a 5-DoF tool (issue 37, item 3); collinear vectors are degenerate.
+  EXPECT_THAT(run.out, HasSubstr("5-DOF TOOL             every marker is on one line"));
   EXPECT_THAT(run.out, Not(HasSubstr("max worst-case error   0 deg")));
+  scratch.write("parallel.json", R"({"vectors": [[1,1,1],[2,2,2],[-1,-1,-1]]})");
+  run = run_vantage("analyze parallel.json", scratch);
+  EXPECT_THAT(run.out, HasSubstr("DEGENERATE             every data vector is parallel"));
 }
 
 TEST(HardeningCli, SkippedCrossCheckClaimsNothing) {

@@ -156,5 +156,33 @@ TEST(TreCli, NothingTrackedIsExitOneWithTheReason) {
   EXPECT_THAT(run.err, HasSubstr("vantage: tre: no direction of the workspace sees at least 3"));
 }
 
+// A 5-DoF tool (issue 37, item 3): three collinear markers, as NDI's 8700248 stylus. A tip on
+// their line is tracked, with TRE^2 = F^2/N + (2/3) F^2 D^2 / S (docs/math.md §23, "Five degrees
+// of freedom"; computed here), the report says "5-DoF tool"; a target off the line is refused.
+TEST(TreCli, AFiveDofToolTracksTargetsOnItsAxis) {
+  ScratchDir scratch;
+  scratch.write("stylus.json", R"({"points": [[0,0,0],[0,0,50],[0,0,105]]})");
+  const nlohmann::json j =
+      testing::run_json("tre stylus.json --target 0,0,-100 --fle-rms 0.25", scratch);
+  ASSERT_TRUE(j["model"].contains("five_dof")) << j.dump();
+  EXPECT_EQ(j["model"]["five_dof"]["axis"], nlohmann::json::parse("[0.0, 0.0, 1.0]"));
+  const double centroid = 155.0 / 3.0;
+  const double S =
+      centroid * centroid + (50 - centroid) * (50 - centroid) + (105 - centroid) * (105 - centroid);
+  const double D = 100.0 + centroid;
+  const double expected = std::sqrt(0.25 * 0.25 / 3.0 + (2.0 / 3.0) * 0.25 * 0.25 * D * D / S);
+  const nlohmann::json& t = j["targets"][0];
+  EXPECT_NEAR(t["rms_isotropic"].get<double>(), expected, kTraceRounding * 1e3);
+  EXPECT_NEAR(t["worst"]["rms"].get<double>(), expected, kTraceRounding * 1e3);
+  EXPECT_TRUE(t["worst"]["certified"].get<bool>());
+  const testing::CliRun text =
+      run_vantage("tre stylus.json --target 0,0,-100 --fle-rms 0.25", scratch);
+  EXPECT_EQ(text.status, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("5-DoF tool: its markers are collinear"));
+  testing::expect_bad_input(
+      run_vantage("tre stylus.json --target 0,3,-100 --fle-rms 0.25", scratch),
+      "3 from the line of the tool's collinear markers: a 5-DoF tool");
+}
+
 }  // namespace
 }  // namespace vantage

@@ -10,8 +10,11 @@
 #include <Eigen/SVD>
 #include <cmath>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "vantage/analysis/absolute_orientation.h"
+#include "vantage/analysis/common.h"
 
 namespace vantage::tracker {
 namespace {
@@ -119,13 +122,70 @@ TEST(TargetRegistration, CovarianceIsTheLinearisedRegistration) {
   }
 }
 
-TEST(TargetRegistration, CollinearMarkersAreNotRegistrable) {
+// A 5-DoF tool (three markers on a line, as NDI's 8700248 stylus) registers a target on its
+// line: the rotation about the line is not measured and does not move the target, so the TRE is
+// the translation's plus the two rotations across the line, TRE^2 = F^2/N + (2/3) F^2 D^2 / S
+// (D the target's distance from the centroid, S = sum of the markers' squared distances from
+// it; derived here from the two across-line rotations, docs/math.md §23), and a Monte Carlo run
+// of the actual registration agrees. Off the line the error is unbounded: refused.
+TEST(TargetRegistration, AFiveDofToolRegistersTargetsOnItsLineOnly) {
+  const Eigen::Vector3d u = Eigen::Vector3d(1.0, -2.0, 2.0).normalized();
+  const Eigen::Vector3d origin(5.0, 3.0, -1.0);
+  const double along[3] = {0.0, 50.0, 105.0};
   Eigen::Matrix3Xd p(3, 3);
-  p << 0, 1, 2, 0, 1, 2, 0, 1, 2;
-  EXPECT_FALSE(tre_quadratic(p, all_of(3), Eigen::Vector3d::Zero(), FleModel{1, 1}).registrable);
-  EXPECT_TRUE(tre_covariance(p, all_of(3), Eigen::Vector3d::Zero(), FleModel{1, 1},
-                             Eigen::Vector3d::UnitZ())
-                  .isZero(0.0));
+  for (int i = 0; i < 3; ++i) p.col(i) = origin + along[i] * u;
+  const double centroid = (0.0 + 50.0 + 105.0) / 3.0;
+  double S = 0.0;
+  for (double t : along) S += (t - centroid) * (t - centroid);
+  const Eigen::Vector3d tip = origin - 100.0 * u;
+  const double D = 100.0 + centroid;
+  constexpr double kFle = 0.25;
+  EXPECT_EQ(registration_of(p, all_of(3), tip), Registration::kOnAxis);
+  const double expected = std::sqrt(kFle * kFle / 3.0 + (2.0 / 3.0) * kFle * kFle * D * D / S);
+  EXPECT_NEAR(tre_rms_isotropic(p, tip, kFle), expected, kFormulaTolerance * expected);
+  const FleModel anisotropic{0.0995, 0.2985};
+  const Eigen::Vector3d a = Eigen::Vector3d(0.3, -0.2, 0.9).normalized();
+  const TreMonteCarlo mc = tre_monte_carlo(p, all_of(3), tip, anisotropic, a, 100000, 7);
+  EXPECT_LE(std::abs(mc.rms / mc.formula_rms - 1.0), kMonteCarloTolerance)
+      << mc.rms << " " << mc.formula_rms;
+  // 1 mm off the line: no bounded error, refused with the nearest target on the line.
+  const Eigen::Vector3d off = tip + u.unitOrthogonal();
+  EXPECT_EQ(registration_of(p, all_of(3), off), Registration::kOffAxis);
+  EXPECT_FALSE(tre_quadratic(p, all_of(3), off, anisotropic).registrable);
+  std::string message;
+  try {
+    check_on_axis(p, off, 1);
+  } catch (const InvalidArgument& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("target: target 1: 1 from the line of the tool's collinear markers: a "
+                         "5-DoF tool"),
+            std::string::npos)
+      << message;
+  EXPECT_NO_THROW(check_on_axis(p, tip, -1));
+  Eigen::Vector3d point;
+  Eigen::Vector3d axis;
+  ASSERT_TRUE(tool_axis(p, &point, &axis));
+  EXPECT_NEAR(std::abs(axis.dot(u)), 1.0, 1e-12);
+  EXPECT_GT(axis.z(), 0.0);
+}
+
+// A 6-DoF tool of which only collinear markers are seen gives no pose, even for a target on
+// their line; fewer than three markers never do.
+TEST(TargetRegistration, CollinearViewsOfASixDofToolAreNotRegistrable) {
+  Eigen::Matrix3Xd p(3, 4);
+  p << 0, 1, 2, 0,  //
+      0, 1, 2, 1,   //
+      0, 1, 2, 0;
+  const std::vector<int> line = {0, 1, 2};
+  EXPECT_EQ(registration_of(p, line, Eigen::Vector3d(3, 3, 3)), Registration::kOffAxis);
+  EXPECT_FALSE(tre_quadratic(p, line, Eigen::Vector3d(3, 3, 3), FleModel{1, 1}).registrable);
+  EXPECT_TRUE(
+      tre_covariance(p, line, Eigen::Vector3d(3, 3, 3), FleModel{1, 1}, Eigen::Vector3d::UnitZ())
+          .isZero(0.0));
+  EXPECT_EQ(registration_of(p, {0, 1}, Eigen::Vector3d::Zero()), Registration::kTooFew);
+  EXPECT_EQ(registration_of(p, all_of(4), Eigen::Vector3d(3, 3, 3)), Registration::kFull);
+  EXPECT_STREQ(to_string(Registration::kOnAxis), "on_axis");
 }
 
 TEST(TargetRegistration, MonteCarloAgreesIsotropicAndAnisotropic) {

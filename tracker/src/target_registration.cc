@@ -29,6 +29,49 @@ std::string target_text(long index) {
   return index < 0 ? std::string() : "target " + std::to_string(index) + ": ";
 }
 
+// A target is on a 5-DoF tool's line within this fraction of the set's size (rounding).
+constexpr double kOnAxisFraction = 1e-9;
+
+// Lambda (Eq. 23.2) of the markers `visible` about their centroid.
+Eigen::Matrix3d lambda_of(const Eigen::Matrix3Xd& points, const std::vector<int>& visible,
+                          Eigen::Vector3d* centroid) {
+  *centroid = Eigen::Vector3d::Zero();
+  for (int i : visible) *centroid += points.col(i);
+  *centroid /= static_cast<double>(visible.size());
+  Eigen::Matrix3d lambda = Eigen::Matrix3d::Zero();
+  for (int i : visible) {
+    const Eigen::Vector3d q = points.col(i) - *centroid;
+    lambda += q.squaredNorm() * Eigen::Matrix3d::Identity() - q * q.transpose();
+  }
+  return lambda;
+}
+
+bool collinear(const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& eigen, double trace) {
+  return !(eigen.eigenvalues()(0) > kCollinearFraction * trace);
+}
+
+// Every marker of the tool on one line.
+bool tool_collinear(const Eigen::Matrix3Xd& points) {
+  std::vector<int> all(static_cast<std::size_t>(points.cols()));
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  Eigen::Vector3d centroid;
+  const Eigen::Matrix3d lambda = lambda_of(points, all, &centroid);
+  return collinear(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(lambda), lambda.trace());
+}
+
+// The registration of a set with `eigen` of its Lambda, for a target at `d` from its centroid.
+Registration classify(const Eigen::Matrix3Xd& points, const Eigen::Vector3d& d,
+                      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& eigen, double trace,
+                      std::size_t visible) {
+  if (visible < 3) return Registration::kTooFew;
+  if (!collinear(eigen, trace)) return Registration::kFull;
+  // Lambda = s (I - u u^T) for markers on the line u: trace 2 s, RMS radius sqrt(s / n).
+  const double radius = std::sqrt(0.5 * trace / static_cast<double>(visible));
+  const Eigen::Vector3d axis = eigen.eigenvectors().col(0);
+  const bool on_axis = d.cross(axis).norm() <= kOnAxisFraction * (radius + d.norm());
+  return on_axis && tool_collinear(points) ? Registration::kOnAxis : Registration::kOffAxis;
+}
+
 Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& v) {
   Eigen::Matrix3d m;
   m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
@@ -65,26 +108,66 @@ bool FleModel::is_valid(std::string* why) const {
   return true;
 }
 
+const char* to_string(Registration registration) {
+  switch (registration) {
+    case Registration::kFull:
+      return "full";
+    case Registration::kOnAxis:
+      return "on_axis";
+    case Registration::kTooFew:
+      return "too_few";
+    case Registration::kOffAxis:
+      break;
+  }
+  return "off_axis";
+}
+
+Registration registration_of(const Eigen::Matrix3Xd& points_tool, const std::vector<int>& visible,
+                             const Eigen::Vector3d& target_tool) {
+  if (visible.size() < 3) return Registration::kTooFew;
+  Eigen::Vector3d centroid;
+  const Eigen::Matrix3d lambda = lambda_of(points_tool, visible, &centroid);
+  return classify(points_tool, target_tool - centroid,
+                  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(lambda), lambda.trace(),
+                  visible.size());
+}
+
+bool tool_axis(const Eigen::Matrix3Xd& points_tool, Eigen::Vector3d* point,
+               Eigen::Vector3d* direction) {
+  if (points_tool.cols() < 2 || !tool_collinear(points_tool)) return false;
+  std::vector<int> all(static_cast<std::size_t>(points_tool.cols()));
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  const Eigen::Matrix3d lambda = lambda_of(points_tool, all, point);
+  *direction = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(lambda).eigenvectors().col(0);
+  // One sign for the line: the first non-zero of its z, y, x components positive.
+  for (int j = 2; j >= 0; --j) {
+    if (std::abs((*direction)(j)) > 1e-12) {
+      if ((*direction)(j) < 0.0) *direction = -*direction;
+      break;
+    }
+  }
+  return true;
+}
+
 bool tre_linear_maps(const Eigen::Matrix3Xd& points_tool, const std::vector<int>& visible,
                      const Eigen::Vector3d& target_tool, std::vector<Eigen::Matrix3d>* A) {
   A->clear();
   const int n = static_cast<int>(visible.size());
   if (n < 3) return false;
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  for (int i : visible) centroid += points_tool.col(i);
-  centroid /= n;
-  Eigen::Matrix3d lambda = Eigen::Matrix3d::Zero();
-  for (int i : visible) {
-    const Eigen::Vector3d q = points_tool.col(i) - centroid;
-    lambda += q.squaredNorm() * Eigen::Matrix3d::Identity() - q * q.transpose();
-  }
+  Eigen::Vector3d centroid;
+  const Eigen::Matrix3d lambda = lambda_of(points_tool, visible, &centroid);
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(lambda);
-  if (!(eigen.eigenvalues()(0) > kCollinearFraction * lambda.trace())) return false;
+  const Registration registration =
+      classify(points_tool, target_tool - centroid, eigen, lambda.trace(), visible.size());
+  if (registration != Registration::kFull && registration != Registration::kOnAxis) return false;
   // Lambda^-1 from the eigenpairs already at hand, not from cofactors: its determinant (the cube
-  // of the markers' squared spread) leaves the range of doubles long before Lambda does.
-  const Eigen::Matrix3d lambda_inv = eigen.eigenvectors() *
-                                     eigen.eigenvalues().cwiseInverse().asDiagonal() *
-                                     eigen.eigenvectors().transpose();
+  // of the markers' squared spread) leaves the range of doubles long before Lambda does. On a
+  // 5-DoF tool's line the unmeasured rotation about the line (eigenvalue 0) is left out: the
+  // pseudo-inverse, exact there since the target's lever arm is along the line.
+  Eigen::Vector3d inverse = eigen.eigenvalues().cwiseInverse();
+  if (registration == Registration::kOnAxis) inverse(0) = 0.0;
+  const Eigen::Matrix3d lambda_inv =
+      eigen.eigenvectors() * inverse.asDiagonal() * eigen.eigenvectors().transpose();
   const Eigen::Matrix3d d_lambda_inv = cross_matrix(target_tool - centroid) * lambda_inv;
   A->reserve(visible.size());
   for (int i : visible) {
@@ -97,6 +180,7 @@ bool tre_linear_maps(const Eigen::Matrix3Xd& points_tool, const std::vector<int>
 TreQuadratic tre_quadratic(const Eigen::Matrix3Xd& points_tool, const std::vector<int>& visible,
                            const Eigen::Vector3d& target_tool, const FleModel& fle) {
   TreQuadratic out;
+  out.registration = registration_of(points_tool, visible, target_tool);
   std::vector<Eigen::Matrix3d> A;
   if (!tre_linear_maps(points_tool, visible, target_tool, &A)) return out;
   const double perp2 = fle.sigma_perp * fle.sigma_perp;
@@ -121,6 +205,24 @@ Eigen::Matrix3d tre_covariance(const Eigen::Matrix3Xd& points_tool, const std::v
                                 (fle.sigma_axial * fle.sigma_axial - perp2) * a * a.transpose();
   for (const Eigen::Matrix3d& m : A) cov += m * sigma * m.transpose();
   return 0.5 * (cov + cov.transpose());
+}
+
+void check_on_axis(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d& target_tool,
+                   long index) {
+  Eigen::Vector3d point;
+  Eigen::Vector3d axis;
+  if (!tool_axis(points_tool, &point, &axis)) return;
+  std::vector<int> all(static_cast<std::size_t>(points_tool.cols()));
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  if (registration_of(points_tool, all, target_tool) != Registration::kOffAxis) return;
+  const Eigen::Vector3d nearest = point + axis * axis.dot(target_tool - point);
+  throw InvalidArgument(
+      "target", target_text(index) + length_text((target_tool - nearest).norm()) +
+                    " from the line of the tool's collinear markers: a 5-DoF tool (the rotation "
+                    "about its line is not measured, so a target off the line has no bounded "
+                    "error); the nearest target on the line is (" +
+                    length_text(nearest.x()) + ", " + length_text(nearest.y()) + ", " +
+                    length_text(nearest.z()) + ")");
 }
 
 void check_tre_range(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d& target_tool,
@@ -152,6 +254,7 @@ void check_tre_range(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d&
     throw InvalidArgument(
         "target", target_text(index) + "is more than 1e50 from the markers' centroid:" + range);
   }
+  check_on_axis(points_tool, target_tool, index);
   std::vector<int> all(static_cast<std::size_t>(points_tool.cols()));
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
   const TreQuadratic q = tre_quadratic(points_tool, all, target_tool, fle);
@@ -172,6 +275,7 @@ double tre_rms_isotropic(const Eigen::Matrix3Xd& points_tool, const Eigen::Vecto
   for (int i = 0; i < static_cast<int>(all.size()); ++i) all[static_cast<std::size_t>(i)] = i;
   const TreQuadratic quadratic =
       tre_quadratic(points_tool, all, target_tool, FleModel::isotropic(fle_rms));
+  if (quadratic.registration == Registration::kOffAxis) check_on_axis(points_tool, target_tool, -1);
   if (!quadratic.registrable) {
     throw InvalidArgument("points",
                           "fewer than 3 markers or collinear: the tool cannot be registered");

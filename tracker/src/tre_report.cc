@@ -138,6 +138,7 @@ TreReport tre_report(const TreModel& model, const std::vector<Eigen::Vector3d>& 
   report.min_visible = problem.min_visible;
   report.with_normals = model.with_normals();
   report.with_body = model.with_body();
+  report.five_dof = tool_axis(problem.points, &report.axis_point, &report.axis);
   for (std::size_t i = 0; i < targets.size(); ++i) {
     check_tre_range(problem.points, targets[i], options.fle,
                     targets.size() > 1 ? static_cast<long>(i) : -1L);

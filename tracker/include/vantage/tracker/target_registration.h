@@ -32,9 +32,39 @@ struct FleModel {
   bool is_valid(std::string* why = nullptr) const;
 };
 
+/// How a visible set registers a target (docs/math.md §23, "Five degrees of freedom").
+enum class Registration {
+  kFull,     ///< at least 3 markers, not collinear: the whole pose
+  kOnAxis,   ///< a 5-DoF tool (every marker of the tool on one line), at least 3 of them seen
+             ///< and the target on their line: the rotation about the line is not measured and
+             ///< does not move the target
+  kTooFew,   ///< fewer than 3 markers
+  kOffAxis,  ///< collinear markers and the target off their line (its error is unbounded), or
+             ///< collinear markers of a tool that is not collinear (no 6-DoF pose)
+};
+
+/// "full", "on_axis", "too_few" or "off_axis".
+const char* to_string(Registration registration);
+
+/// The registration of `target_tool` by the markers `visible` of the tool `points_tool`. A set
+/// is collinear when the smallest eigenvalue of Lambda (Eq. 23.2) is at most 1e-12 of its trace;
+/// the target is on the line when its distance from it is at most 1e-9 of the set's RMS radius
+/// plus the target's distance from the set's centroid.
+Registration registration_of(const Eigen::Matrix3Xd& points_tool, const std::vector<int>& visible,
+                             const Eigen::Vector3d& target_tool);
+
+/// The line of a 5-DoF tool (every marker of `points_tool` collinear): a point on it (the
+/// markers' centroid) and its unit direction (the first non-zero of its z, y, x components
+/// positive); false when the markers are not collinear.
+bool tool_axis(const Eigen::Matrix3Xd& points_tool, Eigen::Vector3d* point,
+               Eigen::Vector3d* direction);
+
 /// RMS^2(a) = c + a^T M a for one visible set (Eq. 23.4).
 struct TreQuadratic {
-  bool registrable = false;  ///< the set has >= 3 markers, not collinear (Lambda invertible)
+  /// registration is kFull or kOnAxis: Lambda invertible, or invertible across the 5-DoF line
+  /// whose rotation does not move the target (its pseudo-inverse then).
+  bool registrable = false;
+  Registration registration = Registration::kTooFew;
   double c = 0.0;
   Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
 
@@ -43,9 +73,9 @@ struct TreQuadratic {
 };
 
 /// The first-order maps A_i of Eq. (23.2), TRE = sum_{i in visible} A_i e'_i, one per entry of
-/// `visible` (indices into the columns of points_tool, distinct). Returns false (and leaves *A
-/// empty) when the visible markers are fewer than 3 or collinear (smallest eigenvalue of Lambda
-/// at most 1e-12 of its trace).
+/// `visible` (indices into the columns of points_tool, distinct); for Registration::kOnAxis with
+/// the pseudo-inverse of Lambda. Returns false (and leaves *A empty) unless registration_of() is
+/// kFull or kOnAxis.
 bool tre_linear_maps(const Eigen::Matrix3Xd& points_tool, const std::vector<int>& visible,
                      const Eigen::Vector3d& target_tool, std::vector<Eigen::Matrix3d>* A);
 
@@ -69,13 +99,22 @@ inline constexpr double kTreMaxLength = 1e50;
 /// radius about their centroid ("points"), the larger FLE standard deviation and each of them
 /// ("fle.sigma_perp", "fle.sigma_axial"), the target's distance from the centroid (at most;
 /// "target"), or the RMS TRE at the target with every marker registered ("target"); the message
-/// names "target <index>" when index >= 0 (one of several). Markers that cannot be registered
-/// (collinear) are left to the search to report.
+/// names "target <index>" when index >= 0 (one of several); and a target off a 5-DoF tool's line
+/// (check_on_axis()). Other markers that cannot be registered are left to the search to report.
 void check_tre_range(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d& target_tool,
                      const FleModel& fle, long index);
 
+/// Throws InvalidArgument "target" (with "target <index>: " when index >= 0) when the tool is a
+/// 5-DoF tool (every marker collinear) and the target is off its line, naming the distance and
+/// the nearest point on the line; nothing otherwise. check_tre_range() calls it.
+void check_on_axis(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d& target_tool,
+                   long index);
+
 /// Fitzpatrick, West & Maurer 1998's RMS TRE for isotropic FLE with E|e|^2 = fle_rms^2 and every
-/// marker registered, Eq. (23.3). Throws InvalidArgument when the markers are collinear.
+/// marker registered, Eq. (23.3) (for a 5-DoF tool and a target on its line, with the rotation
+/// about the line left out). Throws InvalidArgument ("points" for fewer than 3 markers,
+/// "target" for a target off a 5-DoF tool's line, naming its distance and the nearest point on
+/// the line).
 double tre_rms_isotropic(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d& target_tool,
                          double fle_rms);
 

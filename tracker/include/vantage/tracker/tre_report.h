@@ -95,6 +95,11 @@ struct TreReport {
   int min_visible = 3;
   bool with_normals = false;  ///< the layout has visibility (normals, cones)
   bool with_body = false;     ///< occlusion by a body mesh
+  /// Every marker on one line: a 5-DoF tool (docs/math.md §23, "Five degrees of freedom"),
+  /// whose targets are on `axis` (through `axis_point`); the rotation about it is not measured.
+  bool five_dof = false;
+  Eigen::Vector3d axis_point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d axis = Eigen::Vector3d::Zero();
 };
 
 /// The report for a point layout (with or without visibility) and targets in its frame.
