@@ -106,11 +106,11 @@ void print_matrix(const tracker::ToolLibraryMatches& r) {
   };
   std::cout << "\nmatrix of mismatches (row a, column b; the diagonal: each tool relabelled)\n";
   std::string header = "   ";
-  for (Eigen::Index b = 0; b < m.cols(); ++b) header += pad(std::to_string(b), 9);
+  for (Eigen::Index b = 0; b < m.cols(); ++b) header += pad(std::to_string(b), 11);
   line(header);
   for (Eigen::Index a = 0; a < m.rows(); ++a) {
     std::string row = pad(std::to_string(a), 3);
-    for (Eigen::Index b = 0; b < m.cols(); ++b) row += pad(format_number(m(a, b), 4), 9);
+    for (Eigen::Index b = 0; b < m.cols(); ++b) row += pad(format_number(m(a, b), 4), 11);
     line(row);
   }
 }

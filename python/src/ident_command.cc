@@ -57,31 +57,48 @@ py::object ident(const py::object& tools_arg, const py::object& min_visible_arg,
   }
   const ReadArguments read{format, py::none(), py::none(), allow_large};
   // Folders become their tool files (as `vantage ident`); Layouts stay as they are.
+  // origin[k]: the position in `tools` that item k came from (errors name it).
   py::list items;
+  std::vector<long> origin;
   long position = 0;
   for (const py::handle item : py::list(tools_arg)) {
     const long index = position++;
     if (py::isinstance<Layout>(item)) {
       items.append(item);
+      origin.push_back(index);
       continue;
     }
     if (!py::isinstance<py::str>(item) && !py::hasattr(item, "__fspath__")) {
       throw InvalidArgument("tools", index, "expected a vantage.Layout or a file path");
     }
-    const std::string path = py::str(py::module_::import("os").attr("fspath")(item));
-    for (const std::string& file : commands::tool_files({path})) items.append(py::str(file));
+    const py::object path = py::module_::import("os").attr("fspath")(item);
+    if (!py::isinstance<py::str>(path)) {
+      throw InvalidArgument("tools", index, "expected a str path (not bytes)");
+    }
+    std::vector<std::string> files;
+    try {
+      files = commands::tool_files({path.cast<std::string>()});
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument("tools", index, e.what());
+    }
+    for (const std::string& file : files) {
+      items.append(py::str(file));
+      origin.push_back(index);
+    }
   }
   // The items first: the bound is checked before any tool is read.
   commands::check_limit("tools", static_cast<long>(items.size()), commands::kMaxIdentTools, "ident",
                         allow_large, kPythonWords);
+  // A format that is not a str is refused by the reader, naming `format`.
   const io::LayoutFormat chosen =
-      format.is_none() ? io::LayoutFormat::kAuto
-                       : io::layout_format_from_string(format.cast<std::string>(), "format");
+      py::isinstance<py::str>(format)
+          ? io::layout_format_from_string(format.cast<std::string>(), "format")
+          : io::LayoutFormat::kAuto;
   std::vector<Layout> tools;
   std::vector<std::string> files;
   std::vector<int> k;
   for (const py::handle item : items) {
-    const long index = static_cast<long>(tools.size());
+    const long index = origin[tools.size()];
     std::string source;
     tools.push_back(ident_tool(item, index, read, &source));
     files.push_back(source);

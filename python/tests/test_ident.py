@@ -119,6 +119,8 @@ def test_ident_mismatch_is_the_brute_force(vantage, min_visible):
     (lambda v: v.ident(3), "tools", None),
     (lambda v: v.ident([JSON_TOOLS[0], 3]), "tools", 1),
     (lambda v: v.ident([v.Layout(vectors=np.eye(3))]), "tools", 0),
+    (lambda v: v.ident([TOOLS, v.Layout(vectors=np.eye(3))]), "tools", 1),
+    (lambda v: v.ident([JSON_TOOLS[0], SOURCE / "docs"]), "tools", 1),
 ])
 def test_ident_bad_input_raises_naming_the_argument(vantage, call, field, index):
     with pytest.raises(ValueError) as error:

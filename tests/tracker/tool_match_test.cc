@@ -260,11 +260,12 @@ TEST(MatchToolLibrary, VerdictsSameToolMirrorAndDistinct) {
   EXPECT_EQ(verdict(0, 3), ToolPairMatch::Verdict::kDistinct);
   EXPECT_EQ(verdict(0, 4), ToolPairMatch::Verdict::kDistinct);
   EXPECT_STREQ(to_string(verdict(0, 1)), "same_tool");
-  // The closest distinct pair is the bent copy against a copy it was made from.
+  // The closest distinct pair is the bent copy (3) against the tool (0) or the moved copy (1).
   ASSERT_GE(got.closest_distinct, 0);
   const ToolPairMatch& closest = got.pairs[static_cast<std::size_t>(got.closest_distinct)];
   EXPECT_EQ(closest.verdict, ToolPairMatch::Verdict::kDistinct);
-  EXPECT_NE(closest.a, closest.b);
+  EXPECT_EQ(closest.b, 3);
+  EXPECT_LE(closest.a, 1);
   // A wider tolerance takes the bent copy for the tool.
   ToolMatchOptions loose;
   loose.same_tolerance = 0.2;
@@ -278,6 +279,29 @@ TEST(MatchToolLibrary, VerdictsSameToolMirrorAndDistinct) {
   Eigen::Matrix3Xd reflected = r * symmetric;
   reflected.row(1) *= -1.0;
   EXPECT_EQ(match_tool_library({symmetric, reflected}).pairs[1].verdict,
+            ToolPairMatch::Verdict::kSameTool);
+  // Nearly planar (5e-4 off its plane, as a real .rom): a rotation fits its mirror image within
+  // the tolerance, so the two are one tool, whatever the labelling the search finds first.
+  Eigen::Matrix3Xd flat = random_points(rng, 4, 50.0);
+  flat.row(2) = 5e-4 * Eigen::RowVector4d(1, -1, 1, -1);
+  Eigen::Matrix3Xd flat_mirror = flat;
+  flat_mirror.row(0) *= -1.0;
+  EXPECT_EQ(match_tool_library({flat, flat_mirror}).pairs[1].verdict,
+            ToolPairMatch::Verdict::kSameTool);
+  // S4 symmetry (a quarter turn about z with z -> -z) and no mirror plane: two generic orbits of
+  // 4. Its proper symmetries (the half turn) and improper ones are both labellings onto itself;
+  // its reflection is a rotation of it under an improper one, so one tool.
+  Eigen::Matrix3Xd s4(3, 8);
+  for (int orbit = 0; orbit < 2; ++orbit) {
+    Eigen::Vector3d p = orbit == 0 ? Eigen::Vector3d(30, 11, 7) : Eigen::Vector3d(13, -41, 22);
+    for (int k = 0; k < 4; ++k) {
+      s4.col(4 * orbit + k) = p;
+      p = Eigen::Vector3d(-p.y(), p.x(), -p.z());
+    }
+  }
+  Eigen::Matrix3Xd s4_mirror = r * s4;
+  s4_mirror.row(0) *= -1.0;
+  EXPECT_EQ(match_tool_library({s4, s4_mirror}).pairs[1].verdict,
             ToolPairMatch::Verdict::kSameTool);
   EXPECT_THAT(message_of([&] {
                 ToolMatchOptions bad;

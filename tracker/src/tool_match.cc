@@ -212,30 +212,93 @@ std::vector<double> sorted_distances(const Eigen::Matrix3Xd& p) {
   return out;
 }
 
-// Two different tools: one tool, mirror images or distinct, by the match of every marker.
+// Labellings of every marker of A onto B whose distances all agree within the tolerance: a
+// depth-first enumeration (not a minimisation) that stops at a budget of partial assignments.
+class WholeLabellings {
+ public:
+  WholeLabellings(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b, double tolerance,
+                  long budget)
+      : a_(a),
+        b_(b),
+        da_(distance_matrix(a)),
+        db_(distance_matrix(b)),
+        tolerance_(tolerance),
+        budget_(budget),
+        sigma_(static_cast<std::size_t>(a.cols())),
+        used_(static_cast<std::size_t>(b.cols()), false) {}
+
+  // The best proper and improper fits (RMS) over every such labelling; false when the budget
+  // ran out first (the fits are then over those found).
+  bool run(double* proper, double* improper) {
+    proper_ = improper_ = kMatchInfinity;
+    const bool finished = extend(0);
+    *proper = proper_;
+    *improper = improper_;
+    return finished;
+  }
+
+ private:
+  bool extend(Eigen::Index i) {
+    if (i == a_.cols()) {
+      Eigen::Matrix3Xd to(3, a_.cols());
+      for (Eigen::Index k = 0; k < a_.cols(); ++k)
+        to.col(k) = b_.col(sigma_[static_cast<std::size_t>(k)]);
+      proper_ = std::min(proper_, internal::orthogonal_fit_rms(a_, to, false));
+      improper_ = std::min(improper_, internal::orthogonal_fit_rms(a_, to, true));
+      return true;
+    }
+    for (Eigen::Index j = 0; j < b_.cols(); ++j) {
+      if (used_[static_cast<std::size_t>(j)]) continue;
+      if (--budget_ < 0) return false;
+      bool fits = true;
+      for (Eigen::Index k = 0; k < i && fits; ++k) {
+        fits = std::abs(da_(i, k) - db_(j, sigma_[static_cast<std::size_t>(k)])) <= tolerance_;
+      }
+      if (!fits) continue;
+      sigma_[static_cast<std::size_t>(i)] = j;
+      used_[static_cast<std::size_t>(j)] = true;
+      const bool finished = extend(i + 1);
+      used_[static_cast<std::size_t>(j)] = false;
+      if (!finished) return false;
+    }
+    return true;
+  }
+
+  const Eigen::Matrix3Xd& a_;
+  const Eigen::Matrix3Xd& b_;
+  Eigen::MatrixXd da_;
+  Eigen::MatrixXd db_;
+  double tolerance_;
+  long budget_;
+  std::vector<Eigen::Index> sigma_;
+  std::vector<bool> used_;
+  double proper_ = kMatchInfinity;
+  double improper_ = kMatchInfinity;
+};
+
+// Two different tools: one tool, mirror images or distinct. Every labelling of all the markers
+// whose distances agree within the tolerance is fitted, by a rotation and by a reflection: the
+// same tool when some labelling fits by a rotation within the tolerance (RMS), else mirror images
+// when some fits by a reflection, else distinct. *finished is false when the enumeration's
+// budget ran out (the verdict is then over the labellings found).
 ToolPairMatch::Verdict verdict_of(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b,
-                                  const ToolMatchOptions& options) {
+                                  const ToolMatchOptions& options, bool* finished) {
+  *finished = true;
   if (a.cols() != b.cols()) return ToolPairMatch::Verdict::kDistinct;
   // One tool has the other's distances: their sorted lists agree within the tolerance (a
-  // necessary condition, which keeps the whole-set search to the pairs that may pass).
+  // necessary condition, which keeps the enumeration to the pairs that may pass).
   const std::vector<double> da = sorted_distances(a);
   const std::vector<double> db = sorted_distances(b);
   for (std::size_t k = 0; k < da.size(); ++k) {
     if (std::abs(da[k] - db[k]) > options.same_tolerance) return ToolPairMatch::Verdict::kDistinct;
   }
-  ToolMatchOptions whole = options;
-  whole.min_visible = static_cast<int>(a.cols());
-  const ToolMatch all = best_match(a, b, false, whole);
-  if (!all.certified || all.mismatch > options.same_tolerance) {
-    return ToolPairMatch::Verdict::kDistinct;
-  }
-  if (all.transform != ToolMatch::Transform::kReflection) return ToolPairMatch::Verdict::kSameTool;
-  // The labelling found fits as a reflection; when A has a mirror symmetry of its own, another
-  // labelling turns it into a rotation, and B is A.
-  const ToolMatch symmetry = best_match(a, a, true, whole);
-  const bool mirror_symmetric = symmetry.certified && symmetry.mismatch <= options.same_tolerance &&
-                                symmetry.transform != ToolMatch::Transform::kRotation;
-  return mirror_symmetric ? ToolPairMatch::Verdict::kSameTool : ToolPairMatch::Verdict::kMirror;
+  double proper = kMatchInfinity;
+  double improper = kMatchInfinity;
+  *finished = WholeLabellings(a, b, options.same_tolerance, options.max_comparisons)
+                  .run(&proper, &improper);
+  if (proper <= options.same_tolerance) return ToolPairMatch::Verdict::kSameTool;
+  if (improper <= options.same_tolerance) return ToolPairMatch::Verdict::kMirror;
+  return ToolPairMatch::Verdict::kDistinct;
 }
 
 }  // namespace
@@ -274,7 +337,11 @@ ToolLibraryMatches match_tool_library(const std::vector<Eigen::Matrix3Xd>& tools
                                           out.min_visible[static_cast<std::size_t>(b)]);
       ToolPairMatch pair{a, b, pair_options.min_visible, best_match(ta, tb, a == b, pair_options),
                          ToolPairMatch::Verdict::kSelf};
-      if (a != b) pair.verdict = verdict_of(ta, tb, options);
+      if (a != b) {
+        bool finished = true;
+        pair.verdict = verdict_of(ta, tb, options, &finished);
+        out.certified = out.certified && finished;
+      }
       out.pairs.push_back(pair);
       const ToolMatch& m = out.pairs.back().match;
       out.certified = out.certified && m.certified;

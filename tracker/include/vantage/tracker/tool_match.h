@@ -76,8 +76,9 @@ struct ToolPairMatch {
   /// What the two files are (docs/math.md §24, "Verdicts").
   enum class Verdict {
     kSelf,      ///< a == b: the tool against itself relabelled
-    kSameTool,  ///< as many markers, every one matched within same_tolerance by a rotation
-    kMirror,    ///< as many markers, matched within same_tolerance only by a reflection
+    kSameTool,  ///< as many markers, and a labelling of all of them (distances within
+                ///< same_tolerance) fits by a rotation with an RMS residual within it
+    kMirror,    ///< as many markers, and such a labelling fits only by a reflection
     kDistinct,  ///< anything else (a tracker may still confuse them: see the mismatch)
   };
   int a = 0;
@@ -99,7 +100,9 @@ struct ToolLibraryMatches {
   /// The same, over pairs of two different files whose verdict is kDistinct (-1: none); the
   /// pair a designer must keep apart.
   int closest_distinct = -1;
-  bool certified = false;  ///< every pair's search ended within its budget
+  /// Every pair's search, and every verdict's enumeration of labellings, ended within its
+  /// budget (options.max_comparisons).
+  bool certified = false;
 
   /// The n x n matrix of mismatches: (a, b) and (b, a) the pair's, (a, a) the self-ambiguity.
   Eigen::MatrixXd mismatch_matrix() const;
