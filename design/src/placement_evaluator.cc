@@ -114,11 +114,19 @@ double affine_attained(const visibility::VisibilityProblem& p, const Eigen::Vect
   return seen.trackable ? seen.t : -1.0;
 }
 
+// Markers all on one line: a 5-DoF tool to `vantage tre`, but place designs 6-DoF tools (a member
+// left collinear by a lost marker gives no pose), so it is tracked nowhere.
+bool collinear_member(const visibility::VisibilityProblem& p) {
+  Eigen::Vector3d point;
+  Eigen::Vector3d axis;
+  return tracker::tool_axis(p.points, &point, &axis);
+}
+
 // The largest RMS TRE over the targets attained at the tracked direction a of `p` (what tre's
 // search attains there), or -1 when a is not tracked.
 double tracker_attained(const visibility::VisibilityProblem& p, const TrackerObjective& tracker,
                         const Eigen::Vector3d& a) {
-  if (p.points.cols() < p.min_visible) return -1.0;
+  if (p.points.cols() < p.min_visible || collinear_member(p)) return -1.0;
   const visibility::DirectionVisibility seen = visibility::direction_visibility(p, a);
   if (!seen.trackable) return -1.0;
   double out = -1.0;
@@ -210,7 +218,9 @@ FamilyValue PlacementEvaluator::tracker_family(
     // Fewer markers than a direction must see: tracked nowhere (robust_dropout early on).
     MemberValue v;
     v.value = std::numeric_limits<double>::infinity();
-    if (problems[m].points.cols() >= problems[m].min_visible) {
+    if (problems[m].points.cols() >= problems[m].min_visible && collinear_member(problems[m])) {
+      v.status = Status::kUntrackable;
+    } else if (problems[m].points.cols() >= problems[m].min_visible) {
       v.status = Status::kCertified;
       v.value = -1.0;
       for (const Eigen::Vector3d& target : tracker.targets) {

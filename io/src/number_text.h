@@ -1,14 +1,12 @@
 #pragma once
 
 // Private helper of the text writers: a double as the shortest decimal text that reads back to
-// the same double.
+// the same double (the libraries' one, analysis/internal/number_text.h).
 
-#include <string>
+#include "vantage/analysis/internal/number_text.h"
 
 namespace vantage::io::internal {
 
-/// The fewest of 15, 16 or 17 significant digits ("%.*g") that strtod reads back to x exactly
-/// (17 always do).
-std::string round_trip_number(double x);
+using vantage::internal::round_trip_number;
 
 }  // namespace vantage::io::internal

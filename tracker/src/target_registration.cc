@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "vantage/analysis/common.h"
+#include "vantage/analysis/internal/number_text.h"
 
 namespace vantage::tracker {
 namespace {
@@ -59,16 +60,35 @@ bool tool_collinear(const Eigen::Matrix3Xd& points) {
   return collinear(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(lambda), lambda.trace());
 }
 
-// The registration of a set with `eigen` of its Lambda, for a target at `d` from its centroid.
-Registration classify(const Eigen::Matrix3Xd& points, const Eigen::Vector3d& d,
-                      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& eigen, double trace,
-                      std::size_t visible) {
-  if (visible < 3) return Registration::kTooFew;
+// How far a target may be from the line of collinear markers (about their centroid, along
+// `axis`) and still be on it: the rounding of the lengths, plus twice what the markers'
+// deviation from the line, epsilon, leaves undetermined there (the line is known to within
+// epsilon across it and epsilon / radius in direction, so to within epsilon (1 + |d| / radius)
+// at the target). Epsilon is the larger of the markers' own largest distance from the line and
+// the largest the collinearity test accepts, sqrt(1e-12 trace Lambda) (about 1e-6 of the tool's
+// size; float32 coordinates, a .rom's, deviate by about 1e-7).
+double on_axis_tolerance(const Eigen::Matrix3Xd& points, const std::vector<int>& visible,
+                         const Eigen::Vector3d& centroid, const Eigen::Vector3d& axis,
+                         double radius, double distance, double trace) {
+  double epsilon = std::sqrt(kCollinearFraction * trace);
+  for (int i : visible) {
+    epsilon = std::max(epsilon, (points.col(i) - centroid).cross(axis).norm());
+  }
+  return kOnAxisFraction * (radius + distance) + 2.0 * epsilon * (1.0 + distance / radius);
+}
+
+// The registration of the set `visible` (about `centroid`, `eigen` of its Lambda) for a target
+// at `d` from the centroid.
+Registration classify(const Eigen::Matrix3Xd& points, const std::vector<int>& visible,
+                      const Eigen::Vector3d& centroid, const Eigen::Vector3d& d,
+                      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& eigen, double trace) {
+  if (visible.size() < 3) return Registration::kTooFew;
   if (!collinear(eigen, trace)) return Registration::kFull;
   // Lambda = s (I - u u^T) for markers on the line u: trace 2 s, RMS radius sqrt(s / n).
-  const double radius = std::sqrt(0.5 * trace / static_cast<double>(visible));
+  const double radius = std::sqrt(0.5 * trace / static_cast<double>(visible.size()));
   const Eigen::Vector3d axis = eigen.eigenvectors().col(0);
-  const bool on_axis = d.cross(axis).norm() <= kOnAxisFraction * (radius + d.norm());
+  const bool on_axis = d.cross(axis).norm() <=
+                       on_axis_tolerance(points, visible, centroid, axis, radius, d.norm(), trace);
   return on_axis && tool_collinear(points) ? Registration::kOnAxis : Registration::kOffAxis;
 }
 
@@ -127,9 +147,8 @@ Registration registration_of(const Eigen::Matrix3Xd& points_tool, const std::vec
   if (visible.size() < 3) return Registration::kTooFew;
   Eigen::Vector3d centroid;
   const Eigen::Matrix3d lambda = lambda_of(points_tool, visible, &centroid);
-  return classify(points_tool, target_tool - centroid,
-                  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(lambda), lambda.trace(),
-                  visible.size());
+  return classify(points_tool, visible, centroid, target_tool - centroid,
+                  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(lambda), lambda.trace());
 }
 
 bool tool_axis(const Eigen::Matrix3Xd& points_tool, Eigen::Vector3d* point,
@@ -150,15 +169,18 @@ bool tool_axis(const Eigen::Matrix3Xd& points_tool, Eigen::Vector3d* point,
 }
 
 bool tre_linear_maps(const Eigen::Matrix3Xd& points_tool, const std::vector<int>& visible,
-                     const Eigen::Vector3d& target_tool, std::vector<Eigen::Matrix3d>* A) {
+                     const Eigen::Vector3d& target_tool, std::vector<Eigen::Matrix3d>* A,
+                     Registration* how) {
   A->clear();
   const int n = static_cast<int>(visible.size());
+  if (how != nullptr) *how = Registration::kTooFew;
   if (n < 3) return false;
   Eigen::Vector3d centroid;
   const Eigen::Matrix3d lambda = lambda_of(points_tool, visible, &centroid);
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(lambda);
   const Registration registration =
-      classify(points_tool, target_tool - centroid, eigen, lambda.trace(), visible.size());
+      classify(points_tool, visible, centroid, target_tool - centroid, eigen, lambda.trace());
+  if (how != nullptr) *how = registration;
   if (registration != Registration::kFull && registration != Registration::kOnAxis) return false;
   // Lambda^-1 from the eigenpairs already at hand, not from cofactors: its determinant (the cube
   // of the markers' squared spread) leaves the range of doubles long before Lambda does. On a
@@ -180,9 +202,8 @@ bool tre_linear_maps(const Eigen::Matrix3Xd& points_tool, const std::vector<int>
 TreQuadratic tre_quadratic(const Eigen::Matrix3Xd& points_tool, const std::vector<int>& visible,
                            const Eigen::Vector3d& target_tool, const FleModel& fle) {
   TreQuadratic out;
-  out.registration = registration_of(points_tool, visible, target_tool);
   std::vector<Eigen::Matrix3d> A;
-  if (!tre_linear_maps(points_tool, visible, target_tool, &A)) return out;
+  if (!tre_linear_maps(points_tool, visible, target_tool, &A, &out.registration)) return out;
   const double perp2 = fle.sigma_perp * fle.sigma_perp;
   const double extra = fle.sigma_axial * fle.sigma_axial - perp2;
   for (const Eigen::Matrix3d& a : A) {
@@ -220,9 +241,10 @@ void check_on_axis(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d& t
       "target", target_text(index) + length_text((target_tool - nearest).norm()) +
                     " from the line of the tool's collinear markers: a 5-DoF tool (the rotation "
                     "about its line is not measured, so a target off the line has no bounded "
-                    "error); the nearest target on the line is (" +
-                    length_text(nearest.x()) + ", " + length_text(nearest.y()) + ", " +
-                    length_text(nearest.z()) + ")");
+                    "error); the nearest target on the line is " +
+                    internal::round_trip_number(nearest.x()) + "," +
+                    internal::round_trip_number(nearest.y()) + "," +
+                    internal::round_trip_number(nearest.z()));
 }
 
 void check_tre_range(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d& target_tool,

@@ -48,8 +48,10 @@ const char* to_string(Registration registration);
 
 /// The registration of `target_tool` by the markers `visible` of the tool `points_tool`. A set
 /// is collinear when the smallest eigenvalue of Lambda (Eq. 23.2) is at most 1e-12 of its trace;
-/// the target is on the line when its distance from it is at most 1e-9 of the set's RMS radius
-/// plus the target's distance from the set's centroid.
+/// the target, at distance D from the set's centroid, is on the fitted line when its distance
+/// from it is at most 1e-9 (r + D) + 2 epsilon (1 + D / r), r the set's RMS radius and epsilon
+/// the larger of the markers' largest distance from the line and sqrt(1e-12 trace Lambda), the
+/// largest deviation the collinearity test accepts (what the line's fit leaves undetermined).
 Registration registration_of(const Eigen::Matrix3Xd& points_tool, const std::vector<int>& visible,
                              const Eigen::Vector3d& target_tool);
 
@@ -75,9 +77,10 @@ struct TreQuadratic {
 /// The first-order maps A_i of Eq. (23.2), TRE = sum_{i in visible} A_i e'_i, one per entry of
 /// `visible` (indices into the columns of points_tool, distinct); for Registration::kOnAxis with
 /// the pseudo-inverse of Lambda. Returns false (and leaves *A empty) unless registration_of() is
-/// kFull or kOnAxis.
+/// kFull or kOnAxis; *how (when given) is registration_of(), found on the way.
 bool tre_linear_maps(const Eigen::Matrix3Xd& points_tool, const std::vector<int>& visible,
-                     const Eigen::Vector3d& target_tool, std::vector<Eigen::Matrix3d>* A);
+                     const Eigen::Vector3d& target_tool, std::vector<Eigen::Matrix3d>* A,
+                     Registration* how = nullptr);
 
 /// c and M of Eq. (23.4) for the visible set.
 TreQuadratic tre_quadratic(const Eigen::Matrix3Xd& points_tool, const std::vector<int>& visible,

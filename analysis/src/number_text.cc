@@ -1,9 +1,9 @@
-#include "number_text.h"
+#include "vantage/analysis/internal/number_text.h"
 
 #include <cstdio>
 #include <cstdlib>
 
-namespace vantage::io::internal {
+namespace vantage::internal {
 
 std::string round_trip_number(double x) {
   char buffer[32];
@@ -14,4 +14,4 @@ std::string round_trip_number(double x) {
   return buffer;
 }
 
-}  // namespace vantage::io::internal
+}  // namespace vantage::internal
