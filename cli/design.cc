@@ -3,6 +3,7 @@
 // augmenter of McInroy et al. (Sec. III.E, text around Fig. 3) done on the global worst viewpoint
 // (docs/math.md §13, §15).
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -43,6 +44,26 @@ void check_write_format(const DesignArgs& args, const Layout& layout) {
   if (!args.write_given) return;
   Layout probe = layout;
   if (args.candidates_only && args.add >= probe.candidates.cols()) probe.candidates.resize(3, 0);
+  if (probe.mode == LayoutMode::kPoints && args.add > 0) {
+    // The additions count against a tool format's markers (.ini 6, .rom 20): K distinct
+    // stand-ins, placed apart from the markers, without visibility (the additions have none).
+    const Eigen::Index n = probe.entries.cols();
+    const double far = 1.0 + probe.entries.cwiseAbs().maxCoeff();
+    probe.entries.conservativeResize(3, n + args.add);
+    probe.weights.conservativeResize(n + args.add);
+    for (int k = 0; k < args.add; ++k) {
+      probe.entries.col(n + k) = Eigen::Vector3d(far * (k + 2), far * (k + 3), far);
+      probe.weights(n + k) = 1.0;
+      if (!probe.names.empty()) {
+        std::string name = "added" + std::to_string(k + 1);
+        while (std::find(probe.names.begin(), probe.names.end(), name) != probe.names.end()) {
+          name += "_";
+        }
+        probe.names.push_back(name);
+      }
+    }
+    probe.visibility.reset();
+  }
   try {
     io::layout_to_text(probe, io::layout_write_format(args.write));
   } catch (const InvalidArgument& e) {
@@ -368,8 +389,9 @@ Command add_design_command(CLI::App& root) {
   CLI::Option* write =
       sub->add_option("--write", args->write,
                       "write the augmented layout (greedy additions, weight 1; used candidates "
-                      "removed) to OUT.json or OUT.csv (markers only), in the format the "
-                      "extension names; nothing is written on any error");
+                      "removed) to OUT.json, OUT.csv (markers only) or a tracker's OUT.rom or "
+                      "geometryID.ini (markers only), in the format the extension names; "
+                      "nothing is written on any error");
   sub->add_flag("--overwrite", args->overwrite,
                 "let --write replace an existing file (even the input layout)")
       ->needs(write);

@@ -46,7 +46,15 @@ int run_convert(const ConvertArgs& args) {
   const Layout layout = args.input.read(args.in, args.allow_large);
   std::vector<std::string> dropped;
   if (out_format == io::LayoutFormat::kAtracsys) dropped = io::atracsys_dropped_fields(layout);
-  if (out_format == io::LayoutFormat::kNdiRom && in_format == io::LayoutFormat::kNdiRom) {
+  std::error_code size_error;
+  const bool whole_rom = in_format == io::LayoutFormat::kNdiRom &&
+                         std::filesystem::file_size(args.in, size_error) >= io::kNdiRomBytes;
+  if (in_format == io::LayoutFormat::kNdiRom && !whole_rom && out_format == in_format) {
+    std::cerr << "vantage: warning: layout convert: " << io::printable(args.in)
+              << ": fewer than a tool's " << io::kNdiRomBytes
+              << " bytes; written as a new tool from its markers" << std::endl;
+  }
+  if (out_format == io::LayoutFormat::kNdiRom && whole_rom) {
     // A tool to a tool: every byte of the 752 is kept, so an unchanged tool is the same file.
     const io::NdiRom tool = io::read_ndi_rom(args.in);
     if (tool.trailing_bytes > 0) {

@@ -191,6 +191,31 @@ std::string ndi_rom_bytes(const NdiRom& tool) {
     throw InvalidArgument("normals: " + std::to_string(tool.normals.cols()) + " columns for " +
                           std::to_string(n) + " markers");
   }
+  const long zero_normals = (tool.normals.colwise().squaredNorm().array() == 0.0).count();
+  if (zero_normals != 0 && zero_normals != n) {
+    throw InvalidArgument("normals: a .rom holds a normal for every marker or for none; " +
+                          std::to_string(n - zero_normals) + " of the " + std::to_string(n) +
+                          " have one");
+  }
+  if (zero_normals == 0 && (tool.max_marker_angle_deg < 1 || tool.max_marker_angle_deg > 180)) {
+    throw InvalidArgument("max_marker_angle_deg: 1 to 180 degrees with normals, got " +
+                          std::to_string(tool.max_marker_angle_deg));
+  }
+  if (tool.min_markers < 3 || tool.min_markers > n) {
+    throw InvalidArgument("min_markers: 3 to the " + std::to_string(n) + " markers, got " +
+                          std::to_string(tool.min_markers));
+  }
+  // A count that changed leaves no markers of the old one behind: the slots past it are zeroed.
+  if (static_cast<long>(rom::byte_at(bytes, rom::kCount)) != n) {
+    const std::size_t past = static_cast<std::size_t>(n);
+    for (std::size_t table : {rom::kPositions, rom::kNormals}) {
+      bytes.replace(table + 12 * past, 12 * (kNdiRomMaxMarkers - past),
+                    12 * (kNdiRomMaxMarkers - past), '\0');
+    }
+    for (std::size_t table : {rom::kFiring, rom::kFaces, rom::kGroups}) {
+      bytes.replace(table + past, kNdiRomMaxMarkers - past, kNdiRomMaxMarkers - past, '\0');
+    }
+  }
   put_byte(bytes, rom::kCount, static_cast<int>(n), "points");
   for (long k = 0; k < n; ++k) {
     const std::size_t slot = 12 * static_cast<std::size_t>(k);

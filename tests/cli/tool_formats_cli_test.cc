@@ -162,6 +162,15 @@ TEST(ToolFormatsCli, BadToolsAndNamesWriteNothing) {
     "normals": [[0,0,1],[0,0,1],[0,0,1],[0,0,1]], "visibility": {"cone_half_angle_deg": 72.5}})");
   expect_bad_input(run_vantage("layout convert cones.json --out tool.rom", scratch),
                    "visibility.cone_half_angle_deg: a .rom holds a whole number of degrees");
+  // design --write to a .rom counts the additions before the search.
+  std::string nineteen = R"({"points": [)";
+  for (int k = 0; k < 19; ++k) {
+    nineteen += (k ? ",[" : "[") + std::to_string(k) + "," + std::to_string(k * k % 7) + "," +
+                std::to_string(k % 3) + "]";
+  }
+  scratch.write("nineteen.json", nineteen + "]}");
+  expect_bad_input(run_vantage("design nineteen.json --add 2 --write big.rom", scratch),
+                   "a .rom holds 3 to 20 markers, the layout has 21");
   scratch.write("empty.rom", "");
   expect_bad_input(run_vantage("layout convert empty.rom --out out.json", scratch),
                    "empty.rom: an NDI tool definition holds at least 552 bytes, this file 0");
@@ -174,7 +183,7 @@ TEST(ToolFormatsCli, BadToolsAndNamesWriteNothing) {
                 R"({"points": [[0,0,0],[1,0,0],[0,1,0],[0,0,1],[1,1,0],[1,0,1],[0,1,1]]})");
   expect_bad_input(run_vantage("layout convert seven.json --out geometry7.ini", scratch),
                    "holds 3 to 6 fiducials, the layout has 7");
-  for (const char* name : {"tool.ini", "tool.rom", "out.json", "geometry7.ini"}) {
+  for (const char* name : {"tool.ini", "tool.rom", "out.json", "geometry7.ini", "big.rom"}) {
     EXPECT_FALSE(std::filesystem::exists(scratch.path(name))) << name;
   }
 }

@@ -234,6 +234,23 @@ TEST(NdiRom, WritingRefusesWhatTheFormatCannotHold) {
   named.part_number = std::string(21, 'p');
   EXPECT_THAT(refused([&] { ndi_rom_bytes(named); }),
               HasSubstr("part_number: at most 20 characters, got 21"));
+  // A tool read and cut down so that the file would be refused on reading.
+  NdiRom cut = parse_ndi_rom(whole_tool(), "tool.rom");
+  cut.min_markers = 4;
+  cut.layout.entries.conservativeResize(3, 3);
+  cut.normals.conservativeResize(3, 3);
+  cut.firing_sequence.resize(3);
+  cut.marker_faces.resize(3);
+  cut.marker_groups.resize(3);
+  EXPECT_THAT(refused([&] { ndi_rom_bytes(cut); }),
+              HasSubstr("min_markers: 3 to the 3 markers, got 4"));
+  cut.min_markers = 3;
+  const std::string three = ndi_rom_bytes(cut);
+  for (std::size_t k = 72 + 36; k < 312; ++k) EXPECT_EQ(three[k], '\0') << "byte " << k;
+  EXPECT_EQ(parse_ndi_rom(three, "three.rom").layout.entries.cols(), 3);
+  cut.normals.col(1).setZero();
+  EXPECT_THAT(refused([&] { ndi_rom_bytes(cut); }),
+              HasSubstr("normals: a .rom holds a normal for every marker or for none"));
   // A damaged file: the checksum is not the sum.
   std::string damaged = whole_tool();
   damaged[4] = static_cast<char>(damaged[4] + 1);

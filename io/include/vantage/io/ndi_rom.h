@@ -108,11 +108,11 @@ int read_ndi_rom_min_markers(const std::string& path);
 /// marker angle of 90 and minimum markers 3. The part number is the layout's name when it is
 /// ASCII and at most 20 characters (else empty); the other fields hold the defaults above, and
 /// every marker is on face 1, in group 1, fired in order. With normals, face 1's normal is the
-/// normalised sum of the marker normals (NDI's tools with normals hold one face whose normal is
-/// their common direction). Throws InvalidArgument naming the layout field the format cannot
-/// hold: "vectors" (direction mode), "points" (count outside [3, 20] or a coordinate beyond
-/// float32), "candidates", "visibility.cone_half_angle_deg" (cones that differ or are not an
-/// integer in [1, 180]), "visibility.min_visible" (outside [3, n]).
+/// normalised sum of the marker normals (a choice: NDI's own files differ). Throws
+/// InvalidArgument naming the layout field the format cannot hold: "vectors" (direction mode),
+/// "points" (count outside [3, 20]), "candidates", "visibility.cone_half_angle_deg" (cones that
+/// differ or are not an integer in [1, 180]), "visibility.min_visible" (outside [3, n]); a
+/// coordinate beyond float32 is ndi_rom_bytes()'s "points[k]".
 NdiRom ndi_rom_of_layout(const Layout& layout);
 
 /// The layout's fields a tool definition cannot hold and ndi_rom_of_layout() leaves out, by
@@ -124,8 +124,10 @@ std::vector<std::string> ndi_rom_dropped_fields(const Layout& layout);
 /// above written over it (a text field only when it differs from the image's: a text read
 /// keeps its bytes) and the checksum recomputed. The markers come from tool.layout (its
 /// positions rounded to float32) and tool.normals; slots past the marker count keep the image's
-/// bytes. Throws InvalidArgument when a field does not fit its bytes (names it: "part_number",
-/// "max_marker_error_mm", ...).
+/// bytes when the count is the image's, and are zeroed when it changed. Throws InvalidArgument
+/// when a field does not fit its bytes or would make a file parse_ndi_rom() refuses (names it:
+/// "part_number", "max_marker_error_mm", "points[k]", "normals" for some but not all,
+/// "min_markers" outside [3, n], "max_marker_angle_deg" outside [1, 180] with normals, ...).
 std::string ndi_rom_bytes(const NdiRom& tool);
 
 }  // namespace vantage::io
