@@ -40,8 +40,6 @@ std::string byte_range(std::size_t first, std::size_t size) {
   return "bytes " + std::to_string(first) + "-" + std::to_string(first + size - 1);
 }
 
-std::string marker_letter(long k) { return std::string(1, static_cast<char>('A' + k)); }
-
 /// Vector k of the 20 at `table`, checked finite.
 Eigen::Vector3d rom_vector(std::string_view bytes, std::size_t table, long k, const char* what,
                            const std::string& source) {
@@ -49,7 +47,7 @@ Eigen::Vector3d rom_vector(std::string_view bytes, std::size_t table, long k, co
   Eigen::Vector3d v;
   for (int r = 0; r < 3; ++r) v(r) = rom_float(bytes, first + 4 * static_cast<std::size_t>(r));
   if (!v.allFinite()) {
-    fail(source, "marker " + marker_letter(k) + " (" + byte_range(first, 12) + "): " + what +
+    fail(source, "marker " + rom::marker_letter(k) + " (" + byte_range(first, 12) + "): " + what +
                      " not finite");
   }
   return v;
@@ -106,14 +104,14 @@ Layout parse_ndi_rom_layout(std::string_view bytes, const std::string& source) {
     layout.entries.col(k) = rom_vector(bytes, kPositionsByte, k, "position", source);
     normals.col(k) = rom_vector(bytes, kNormalsByte, k, "normal", source);
     if (!normals.col(k).isZero(0.0)) ++with_normal;
-    layout.names.push_back(marker_letter(k));
-    labels.push_back("marker " + marker_letter(k) + " (" +
+    layout.names.push_back(rom::marker_letter(k));
+    labels.push_back("marker " + rom::marker_letter(k) + " (" +
                      byte_range(kPositionsByte + 12 * static_cast<std::size_t>(k), 12) + ")");
   }
   if (with_normal != 0 && with_normal != count) {
     for (long k = 0; k < count; ++k) {
       if (normals.col(k).isZero(0.0)) {
-        fail(source, "marker " + marker_letter(k) + " (" +
+        fail(source, "marker " + rom::marker_letter(k) + " (" +
                          byte_range(kNormalsByte + 12 * static_cast<std::size_t>(k), 12) +
                          "): no normal, while " + std::to_string(with_normal) + " of the " +
                          std::to_string(count) + " markers have one");

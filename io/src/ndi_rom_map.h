@@ -37,6 +37,9 @@ constexpr std::size_t kMarkerType = 655;
 constexpr std::size_t kFaceNormals = 656;  // 8 x 3 x float32
 constexpr std::size_t kUnknownFloat = 64;  // float32: 10 in every real file (kept as read)
 
+// NDI's name of marker k: "A", "B", ...
+inline std::string marker_letter(long k) { return std::string(1, static_cast<char>('A' + k)); }
+
 inline unsigned byte_at(std::string_view bytes, std::size_t offset) {
   return static_cast<unsigned char>(bytes[offset]);
 }

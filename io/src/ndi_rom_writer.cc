@@ -17,8 +17,6 @@ namespace {
 
 namespace rom = internal::rom;
 
-std::string marker_letter(long k) { return std::string(1, static_cast<char>('A' + k)); }
-
 // The image of a new tool: "NDI", the constant byte 8 and the bytes every real file in the test
 // data holds where the byte map names no field of ours (the float at 64, no LEDs, a tool-in-port
 // diode, byte 612); zeros elsewhere. The date and sequence number (bytes 20-23) stay zero, so a
@@ -121,7 +119,7 @@ int one_cone_deg(const MarkerVisibility& visibility) {
 std::vector<std::string> ndi_rom_dropped_fields(const Layout& layout) {
   std::vector<std::string> dropped;
   for (std::size_t k = 0; k < layout.names.size(); ++k) {
-    if (layout.names[k] != marker_letter(static_cast<long>(k))) {
+    if (layout.names[k] != rom::marker_letter(static_cast<long>(k))) {
       dropped.push_back("names");
       break;
     }
