@@ -126,14 +126,15 @@ bool collinear_member(const visibility::VisibilityProblem& p) {
 // search attains there), or -1 when a is not tracked.
 double tracker_attained(const visibility::VisibilityProblem& p, const TrackerObjective& tracker,
                         const Eigen::Vector3d& a) {
-  if (p.points.cols() < p.min_visible || collinear_member(p)) return -1.0;
+  if (p.points.cols() < p.min_visible) return -1.0;
   const visibility::DirectionVisibility seen = visibility::direction_visibility(p, a);
   if (!seen.trackable) return -1.0;
   double out = -1.0;
   for (const Eigen::Vector3d& target : tracker.targets) {
     const tracker::TreQuadratic q =
         tracker::tre_quadratic(p.points, seen.visible, target, tracker.fle);
-    if (!q.registrable) return -1.0;
+    // Place designs 6-DoF tools: a set on one line is no pose (collinear_member()).
+    if (!q.registrable || q.registration == tracker::Registration::kOnAxis) return -1.0;
     out = std::max(out, std::sqrt(std::max(0.0, q.rms_squared(a))));
   }
   return out;

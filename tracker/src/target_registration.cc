@@ -51,13 +51,21 @@ bool collinear(const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& eigen, doub
   return !(eigen.eigenvalues()(0) > kCollinearFraction * trace);
 }
 
-// Every marker of the tool on one line.
-bool tool_collinear(const Eigen::Matrix3Xd& points) {
-  std::vector<int> all(static_cast<std::size_t>(points.cols()));
+// 0, 1, ..., n - 1: every marker of a tool.
+std::vector<int> all_markers(Eigen::Index n) {
+  std::vector<int> all(static_cast<std::size_t>(n));
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-  Eigen::Vector3d centroid;
-  const Eigen::Matrix3d lambda = lambda_of(points, all, &centroid);
-  return collinear(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(lambda), lambda.trace());
+  return all;
+}
+
+// Every marker of the tool on one line: its centroid and (unsigned) direction; false otherwise.
+bool tool_line(const Eigen::Matrix3Xd& points, Eigen::Vector3d* centroid,
+               Eigen::Vector3d* direction) {
+  const Eigen::Matrix3d lambda = lambda_of(points, all_markers(points.cols()), centroid);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(lambda);
+  if (!collinear(eigen, lambda.trace())) return false;
+  *direction = eigen.eigenvectors().col(0);
+  return true;
 }
 
 // How far a target may be from the line of collinear markers (about their centroid, along
@@ -89,7 +97,10 @@ Registration classify(const Eigen::Matrix3Xd& points, const std::vector<int>& vi
   const Eigen::Vector3d axis = eigen.eigenvectors().col(0);
   const bool on_axis = d.cross(axis).norm() <=
                        on_axis_tolerance(points, visible, centroid, axis, radius, d.norm(), trace);
-  return on_axis && tool_collinear(points) ? Registration::kOnAxis : Registration::kOffAxis;
+  Eigen::Vector3d tool_centroid;
+  Eigen::Vector3d tool_direction;
+  return on_axis && tool_line(points, &tool_centroid, &tool_direction) ? Registration::kOnAxis
+                                                                       : Registration::kOffAxis;
 }
 
 Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& v) {
@@ -153,11 +164,7 @@ Registration registration_of(const Eigen::Matrix3Xd& points_tool, const std::vec
 
 bool tool_axis(const Eigen::Matrix3Xd& points_tool, Eigen::Vector3d* point,
                Eigen::Vector3d* direction) {
-  if (points_tool.cols() < 2 || !tool_collinear(points_tool)) return false;
-  std::vector<int> all(static_cast<std::size_t>(points_tool.cols()));
-  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-  const Eigen::Matrix3d lambda = lambda_of(points_tool, all, point);
-  *direction = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(lambda).eigenvectors().col(0);
+  if (points_tool.cols() < 2 || !tool_line(points_tool, point, direction)) return false;
   // One sign for the line: the first non-zero of its z, y, x components positive.
   for (int j = 2; j >= 0; --j) {
     if (std::abs((*direction)(j)) > 1e-12) {
@@ -230,12 +237,14 @@ Eigen::Matrix3d tre_covariance(const Eigen::Matrix3Xd& points_tool, const std::v
 
 void check_on_axis(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d& target_tool,
                    long index) {
+  // Off a line of every marker only: a 6-DoF tool's targets are kFull, too few markers kTooFew.
+  if (registration_of(points_tool, all_markers(points_tool.cols()), target_tool) !=
+      Registration::kOffAxis) {
+    return;
+  }
   Eigen::Vector3d point;
   Eigen::Vector3d axis;
-  if (!tool_axis(points_tool, &point, &axis)) return;
-  std::vector<int> all(static_cast<std::size_t>(points_tool.cols()));
-  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-  if (registration_of(points_tool, all, target_tool) != Registration::kOffAxis) return;
+  tool_axis(points_tool, &point, &axis);
   const Eigen::Vector3d nearest = point + axis * axis.dot(target_tool - point);
   throw InvalidArgument(
       "target", target_text(index) + length_text((target_tool - nearest).norm()) +
@@ -277,9 +286,8 @@ void check_tre_range(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d&
         "target", target_text(index) + "is more than 1e50 from the markers' centroid:" + range);
   }
   check_on_axis(points_tool, target_tool, index);
-  std::vector<int> all(static_cast<std::size_t>(points_tool.cols()));
-  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-  const TreQuadratic q = tre_quadratic(points_tool, all, target_tool, fle);
+  const TreQuadratic q =
+      tre_quadratic(points_tool, all_markers(points_tool.cols()), target_tool, fle);
   if (!q.registrable) return;
   const double mean_rms = std::sqrt(q.c + q.M.trace() / 3.0);
   if (outside(mean_rms)) {
@@ -293,10 +301,8 @@ void check_tre_range(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d&
 
 double tre_rms_isotropic(const Eigen::Matrix3Xd& points_tool, const Eigen::Vector3d& target_tool,
                          double fle_rms) {
-  std::vector<int> all(static_cast<std::size_t>(points_tool.cols()));
-  for (int i = 0; i < static_cast<int>(all.size()); ++i) all[static_cast<std::size_t>(i)] = i;
-  const TreQuadratic quadratic =
-      tre_quadratic(points_tool, all, target_tool, FleModel::isotropic(fle_rms));
+  const TreQuadratic quadratic = tre_quadratic(points_tool, all_markers(points_tool.cols()),
+                                               target_tool, FleModel::isotropic(fle_rms));
   if (quadratic.registration == Registration::kOffAxis) check_on_axis(points_tool, target_tool, -1);
   if (!quadratic.registrable) {
     throw InvalidArgument("points",
