@@ -1,6 +1,7 @@
 // ndi_rom_of_layout(), ndi_rom_dropped_fields() and ndi_rom_bytes(): NDI tool definitions
 // written by the byte map of ndi_rom.h (ndi_rom_map.h).
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -57,17 +58,20 @@ void put_byte(std::string& bytes, std::size_t offset, int value, const std::stri
   bytes[offset] = static_cast<char>(value);
 }
 
+// What a .rom's text fields hold: printable ASCII (32 to 126).
+bool printable_ascii(const std::string& text) {
+  return std::all_of(text.begin(), text.end(), [](char c) {
+    return static_cast<unsigned char>(c) >= 32 && static_cast<unsigned char>(c) <= 126;
+  });
+}
+
 // Writes `text` NUL padded, unless the bytes already hold it (up to their first NUL): a text
 // read from a file keeps its bytes, whatever follows its NUL.
 void put_text(std::string& bytes, std::size_t offset, std::size_t size, const std::string& text,
               const std::string& field) {
   const std::string_view held = std::string_view(bytes).substr(offset, size);
   if (held.substr(0, held.find('\0')) == text) return;
-  for (const char c : text) {
-    if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) {
-      throw InvalidArgument(field + ": printable ASCII only");
-    }
-  }
+  if (!printable_ascii(text)) throw InvalidArgument(field + ": printable ASCII only");
   if (text.size() > size) {
     throw InvalidArgument(field + ": at most " + std::to_string(size) + " characters, got " +
                           std::to_string(text.size()));
@@ -86,14 +90,6 @@ void put_per_marker(std::string& bytes, std::size_t table, const std::vector<int
     put_byte(bytes, table + static_cast<std::size_t>(k), values[static_cast<std::size_t>(k)],
              field + "[" + std::to_string(k) + "]");
   }
-}
-
-bool is_ascii_name(const std::string& name) {
-  if (name.size() > rom::kPartNumberSize) return false;
-  for (const char c : name) {
-    if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) return false;
-  }
-  return true;
 }
 
 // The one cone half-angle of `visibility`: an integer number of degrees shared by every marker.
@@ -164,7 +160,9 @@ NdiRom ndi_rom_of_layout(const Layout& layout) {
     const Eigen::Vector3d sum = tool.normals.rowwise().sum();
     if (sum.norm() > 0) tool.face_normals.col(0) = sum.normalized();
   }
-  if (is_ascii_name(layout.name)) tool.part_number = layout.name;
+  if (printable_ascii(layout.name) && layout.name.size() <= rom::kPartNumberSize) {
+    tool.part_number = layout.name;
+  }
   for (long k = 0; k < n; ++k) {
     tool.firing_sequence.push_back(static_cast<int>(k));
     tool.marker_faces.push_back(1);

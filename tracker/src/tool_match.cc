@@ -203,10 +203,11 @@ Eigen::MatrixXd ToolLibraryMatches::mismatch_matrix() const {
 
 namespace {
 
-std::vector<double> sorted_distances(const Eigen::Matrix3Xd& p) {
+// The distances above the diagonal of a distance matrix, sorted.
+std::vector<double> sorted_distances(const Eigen::MatrixXd& d) {
   std::vector<double> out;
-  for (Eigen::Index i = 0; i < p.cols(); ++i) {
-    for (Eigen::Index j = i + 1; j < p.cols(); ++j) out.push_back((p.col(i) - p.col(j)).norm());
+  for (Eigen::Index i = 0; i < d.rows(); ++i) {
+    for (Eigen::Index j = i + 1; j < d.cols(); ++j) out.push_back(d(i, j));
   }
   std::sort(out.begin(), out.end());
   return out;
@@ -216,12 +217,13 @@ std::vector<double> sorted_distances(const Eigen::Matrix3Xd& p) {
 // depth-first enumeration (not a minimisation) that stops at a budget of partial assignments.
 class WholeLabellings {
  public:
-  WholeLabellings(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b, double tolerance,
-                  long budget)
+  // da, db: the tools' distance matrices (distance_matrix()).
+  WholeLabellings(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b, const Eigen::MatrixXd& da,
+                  const Eigen::MatrixXd& db, double tolerance, long budget)
       : a_(a),
         b_(b),
-        da_(distance_matrix(a)),
-        db_(distance_matrix(b)),
+        da_(da),
+        db_(db),
         tolerance_(tolerance),
         budget_(budget),
         sigma_(static_cast<std::size_t>(a.cols())),
@@ -266,8 +268,8 @@ class WholeLabellings {
 
   const Eigen::Matrix3Xd& a_;
   const Eigen::Matrix3Xd& b_;
-  Eigen::MatrixXd da_;
-  Eigen::MatrixXd db_;
+  const Eigen::MatrixXd& da_;
+  const Eigen::MatrixXd& db_;
   double tolerance_;
   long budget_;
   std::vector<Eigen::Index> sigma_;
@@ -287,14 +289,18 @@ ToolPairMatch::Verdict verdict_of(const Eigen::Matrix3Xd& a, const Eigen::Matrix
   if (a.cols() != b.cols()) return ToolPairMatch::Verdict::kDistinct;
   // One tool has the other's distances: their sorted lists agree within the tolerance (a
   // necessary condition, which keeps the enumeration to the pairs that may pass).
-  const std::vector<double> da = sorted_distances(a);
-  const std::vector<double> db = sorted_distances(b);
-  for (std::size_t k = 0; k < da.size(); ++k) {
-    if (std::abs(da[k] - db[k]) > options.same_tolerance) return ToolPairMatch::Verdict::kDistinct;
+  const Eigen::MatrixXd da = distance_matrix(a);
+  const Eigen::MatrixXd db = distance_matrix(b);
+  const std::vector<double> sorted_a = sorted_distances(da);
+  const std::vector<double> sorted_b = sorted_distances(db);
+  for (std::size_t k = 0; k < sorted_a.size(); ++k) {
+    if (std::abs(sorted_a[k] - sorted_b[k]) > options.same_tolerance) {
+      return ToolPairMatch::Verdict::kDistinct;
+    }
   }
   double proper = kMatchInfinity;
   double improper = kMatchInfinity;
-  *finished = WholeLabellings(a, b, options.same_tolerance, options.max_comparisons)
+  *finished = WholeLabellings(a, b, da, db, options.same_tolerance, options.max_comparisons)
                   .run(&proper, &improper);
   if (proper <= options.same_tolerance) return ToolPairMatch::Verdict::kSameTool;
   if (improper <= options.same_tolerance) return ToolPairMatch::Verdict::kMirror;
