@@ -242,6 +242,14 @@ std::string ndi_rom_bytes(const NdiRom& tool) {
                tool.face_normals.col(f), "face_normals[" + std::to_string(f) + "]");
   }
   rom::put_word(bytes, rom::kChecksum, rom::checksum_of(bytes), 2);
+  // What is written reads back: rounding to float32 must not make markers coincide (a layout
+  // 1e-100 across) or normals vanish.
+  try {
+    parse_ndi_rom_layout(bytes, "the tool as written");
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(std::string("points: rounded to float32, a .rom's precision: ") +
+                          e.what());
+  }
   return bytes;
 }
 

@@ -224,6 +224,11 @@ TEST(NdiRom, WritingRefusesWhatTheFormatCannotHold) {
   far.entries *= 1e37;  // marker B's y, 5e38, is past the largest float32 (3.4e38)
   EXPECT_THAT(refused([&] { ndi_rom_bytes(ndi_rom_of_layout(far)); }),
               HasSubstr("points[1]: 5e+38 is not a finite float32"));
+  Layout tiny = four;
+  tiny.entries *= 1e-100;  // distinct in double, all 0 in float32
+  EXPECT_THAT(refused([&] { ndi_rom_bytes(ndi_rom_of_layout(tiny)); }),
+              HasSubstr("points: rounded to float32, a .rom's precision: the tool as written: "
+                        "marker B"));
   Layout many;
   many.mode = LayoutMode::kPoints;
   many.entries = Eigen::Matrix3Xd::Random(3, 21);

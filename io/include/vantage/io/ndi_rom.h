@@ -96,11 +96,12 @@ NdiRom parse_ndi_rom(std::string_view bytes, const std::string& source);
 /// Reads and parses the .rom file at `path` (parse_ndi_rom(); errors name the path).
 NdiRom read_ndi_rom(const std::string& path);
 
-/// The minimum markers (byte 32) of the .rom file at `path`, which the tracker needs in view to
-/// report the tool, whether or not the file has normals (parse_ndi_rom_layout() keeps it only
-/// with normals, as min_visible). Throws InvalidArgument naming the path for a file that
-/// parse_ndi_rom_layout() refuses, and "byte 32 (minimum markers)" outside [3, n].
-int read_ndi_rom_min_markers(const std::string& path);
+/// The minimum markers (byte 32) of a tool definition's `bytes` (at least kNdiRomMinBytes, as
+/// parse_ndi_rom_layout() accepted them, its layout having `markers` markers), which the tracker
+/// needs in view to report the tool, whether or not the file has normals
+/// (parse_ndi_rom_layout() keeps it only with normals, as min_visible). Throws InvalidArgument
+/// "<source>: byte 32 (minimum markers): ..." outside [3, markers].
+int ndi_rom_min_markers(std::string_view bytes, const std::string& source, long markers);
 
 /// A new tool definition for `layout` (point mode, 3 to 20 markers): positions (rounded to
 /// float32), with a visibility model its normals, its one cone half-angle (an integer number of
@@ -127,7 +128,9 @@ std::vector<std::string> ndi_rom_dropped_fields(const Layout& layout);
 /// bytes when the count is the image's, and are zeroed when it changed. Throws InvalidArgument
 /// when a field does not fit its bytes or would make a file parse_ndi_rom() refuses (names it:
 /// "part_number", "max_marker_error_mm", "points[k]", "normals" for some but not all,
-/// "min_markers" outside [3, n], "max_marker_angle_deg" outside [1, 180] with normals, ...).
+/// "min_markers" outside [3, n], "max_marker_angle_deg" outside [1, 180] with normals, ...;
+/// "points: rounded to float32 ..." when the bytes would not read back, e.g. markers that
+/// coincide once rounded).
 std::string ndi_rom_bytes(const NdiRom& tool);
 
 }  // namespace vantage::io
