@@ -10,6 +10,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "command.h"
@@ -46,19 +47,20 @@ std::vector<Layout> read_tools(const IdentArgs& args, const std::vector<std::str
   options.format = io::layout_format_from_string(args.format, "--format");
   std::vector<Layout> tools;
   for (const std::string& file : files) {
+    commands::IdentTool read;
     try {
-      tools.push_back(io::load_layout(file, options));
+      read = commands::read_ident_tool(file, options);
     } catch (const io::FileTooLarge& e) {
       throw io::FileTooLarge(std::string(e.what()) +
                              (args.allow_large ? "" : " (--allow-large raises it to 1 GiB)"));
     }
+    tools.push_back(std::move(read.layout));
     const Layout& tool = tools.back();
     if (tool.mode != LayoutMode::kPoints) {
       throw InvalidArgument(file + ": vectors: a tool needs marker positions (\"points\")");
     }
     const bool given = args.min_visible_option->count() > 0;
-    min_visible->push_back(given ? args.min_visible
-                                 : commands::own_min_visible(tool, file, options.format));
+    min_visible->push_back(given ? args.min_visible : read.min_visible);
     if (given && tool.entries.cols() < args.min_visible) {
       throw InvalidArgument("--min-visible", std::to_string(args.min_visible) + " exceeds the " +
                                                  std::to_string(tool.entries.cols()) +

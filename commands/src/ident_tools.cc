@@ -8,6 +8,7 @@
 
 #include "vantage/analysis/common.h"
 #include "vantage/io/ndi_rom.h"
+#include "vantage/io/text_file.h"
 
 namespace vantage::commands {
 
@@ -45,13 +46,21 @@ std::vector<std::string> tool_files(const std::vector<std::string>& paths) {
   return out;
 }
 
-int own_min_visible(const Layout& tool, const std::string& file, io::LayoutFormat format) {
-  if (!file.empty()) {
-    const io::LayoutFormat resolved =
-        format == io::LayoutFormat::kAuto ? io::layout_format_of(file) : format;
-    if (resolved == io::LayoutFormat::kNdiRom) return io::read_ndi_rom_min_markers(file);
-  }
+int own_min_visible(const Layout& tool) {
   return tool.visibility ? tool.visibility->min_visible : 3;
+}
+
+IdentTool read_ident_tool(const std::string& path, const io::LayoutReadOptions& options) {
+  const std::string bytes = io::read_text_file(path, options.max_bytes);
+  IdentTool tool;
+  tool.layout = io::parse_layout_as(bytes, path, options);
+  io::load_body(path, &tool.layout);
+  const io::LayoutFormat format =
+      options.format == io::LayoutFormat::kAuto ? io::layout_format_of(path) : options.format;
+  tool.min_visible = format == io::LayoutFormat::kNdiRom
+                         ? io::ndi_rom_min_markers(bytes, path, tool.layout.entries.cols())
+                         : own_min_visible(tool.layout);
+  return tool;
 }
 
 }  // namespace vantage::commands

@@ -188,12 +188,13 @@ NdiRom read_ndi_rom(const std::string& path) {
   return parse_ndi_rom(read_text_file(path, kMaxFileBytes), path);
 }
 
-int read_ndi_rom_min_markers(const std::string& path) {
-  const std::string bytes = read_text_file(path, kMaxFileBytes);
-  const Layout layout = parse_ndi_rom_layout(bytes, path);
+int ndi_rom_min_markers(std::string_view bytes, const std::string& source, long markers) {
+  if (bytes.size() < kNdiRomMinBytes) {
+    fail(source, "an NDI tool definition holds at least " + std::to_string(kNdiRomMinBytes) +
+                     " bytes, this file " + std::to_string(bytes.size()));
+  }
   const int min_markers = rom_byte(bytes, kMinMarkersByte);
-  check_byte(min_markers, 3, static_cast<int>(layout.entries.cols()), kMinMarkersByte,
-             "minimum markers", path);
+  check_byte(min_markers, 3, static_cast<int>(markers), kMinMarkersByte, "minimum markers", source);
   return min_markers;
 }
 

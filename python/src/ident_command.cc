@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "layouts.h"
@@ -20,17 +21,27 @@ namespace {
 // A 3-D registration needs three markers (as `vantage ident --min-visible`).
 constexpr int kIdentMinVisible = 3;
 
-// One tool of the library: a vantage.Layout, or a path read as `vantage ident` reads its TOOL
-// arguments (format=, allow_large=); *source is the path, or "" for a Layout.
-Layout ident_tool(const py::handle& item, long index, const ReadArguments& read,
-                  std::string* source) {
-  if (!py::isinstance<Layout>(item) && !py::isinstance<py::str>(item) &&
-      !py::hasattr(item, "__fspath__")) {
-    throw InvalidArgument("tools", index, "expected a vantage.Layout or a file path");
+// One tool of the library: a vantage.Layout (its own minimum from its visibility), or a path
+// read once as `vantage ident` reads its TOOL arguments (format=, allow_large=); *source is the
+// path, or "" for a Layout.
+commands::IdentTool ident_tool(const py::handle& item, long index, const ReadArguments& read,
+                               std::string* source) {
+  commands::IdentTool tool;
+  source->clear();
+  if (py::isinstance<Layout>(item)) {
+    tool.layout = item.cast<Layout>();
+    tool.min_visible = commands::own_min_visible(tool.layout);
+  } else {
+    *source = py::str(item).cast<std::string>();
+    const io::LayoutReadOptions options = read_options_from(read);
+    try {
+      tool = without_gil([&] { return commands::read_ident_tool(*source, options); });
+    } catch (const io::FileTooLarge& e) {
+      throw io::FileTooLarge(std::string(e.what()) +
+                             (read.allow_large ? "" : " (allow_large=True raises it to 1 GiB)"));
+    }
   }
-  const Layout tool = layout_from_arguments(py::reinterpret_borrow<py::object>(item), py::none(),
-                                            py::none(), py::none(), py::none(), read, source);
-  if (tool.mode != LayoutMode::kPoints) {
+  if (tool.layout.mode != LayoutMode::kPoints) {
     const InvalidArgument e("tools", index, "vectors: a tool needs marker positions (\"points\")");
     throw source->empty() ? e : e.against(*source);
   }
@@ -89,21 +100,17 @@ py::object ident(const py::object& tools_arg, const py::object& min_visible_arg,
   // The items first: the bound is checked before any tool is read.
   commands::check_limit("tools", static_cast<long>(items.size()), commands::kMaxIdentTools, "ident",
                         allow_large, kPythonWords);
-  // A format that is not a str is refused by the reader, naming `format`.
-  const io::LayoutFormat chosen =
-      py::isinstance<py::str>(format)
-          ? io::layout_format_from_string(format.cast<std::string>(), "format")
-          : io::LayoutFormat::kAuto;
   std::vector<Layout> tools;
   std::vector<std::string> files;
   std::vector<int> k;
   for (const py::handle item : items) {
     const long index = origin[tools.size()];
     std::string source;
-    tools.push_back(ident_tool(item, index, read, &source));
+    commands::IdentTool read_tool = ident_tool(item, index, read, &source);
+    tools.push_back(std::move(read_tool.layout));
     files.push_back(source);
     const Layout& tool = tools.back();
-    k.push_back(given ? min_visible : commands::own_min_visible(tool, source, chosen));
+    k.push_back(given ? min_visible : read_tool.min_visible);
     if (given && tool.entries.cols() < min_visible) {
       throw InvalidArgument("min_visible", std::to_string(min_visible) + " exceeds the " +
                                                std::to_string(tool.entries.cols()) +

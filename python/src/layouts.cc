@@ -23,22 +23,6 @@ std::string text_of(const py::handle& value, const char* name) {
   return value.cast<std::string>();
 }
 
-/// format=, tag_points=, bundle=, allow_large= (the CLI's --format, --tag-points, --bundle,
-/// --allow-large).
-io::LayoutReadOptions read_options_from(const ReadArguments& read) {
-  io::LayoutReadOptions options;
-  options.max_bytes = read.allow_large ? io::kMaxFileBytesAllowLarge : io::kMaxFileBytes;
-  if (!read.format.is_none()) {
-    options.format = io::layout_format_from_string(text_of(read.format, "format"), "format");
-  }
-  if (!read.tag_points.is_none()) {
-    options.apriltag.tag_points =
-        io::tag_points_from_string(text_of(read.tag_points, "tag_points"), "tag_points");
-  }
-  if (!read.bundle.is_none()) options.apriltag.bundle = text_of(read.bundle, "bundle");
-  return options;
-}
-
 std::vector<std::string> names_from(const py::object& names) {
   if (names.is_none()) return {};
   if (py::isinstance<py::str>(names)) {
@@ -116,6 +100,20 @@ py::object layout_dict(const Layout& layout) {
 }
 
 }  // namespace
+
+io::LayoutReadOptions read_options_from(const ReadArguments& read) {
+  io::LayoutReadOptions options;
+  options.max_bytes = read.allow_large ? io::kMaxFileBytesAllowLarge : io::kMaxFileBytes;
+  if (!read.format.is_none()) {
+    options.format = io::layout_format_from_string(text_of(read.format, "format"), "format");
+  }
+  if (!read.tag_points.is_none()) {
+    options.apriltag.tag_points =
+        io::tag_points_from_string(text_of(read.tag_points, "tag_points"), "tag_points");
+  }
+  if (!read.bundle.is_none()) options.apriltag.bundle = text_of(read.bundle, "bundle");
+  return options;
+}
 
 Layout layout_from_arguments(const py::object& layout, const py::object& vectors,
                              const py::object& points, const py::object& weights,

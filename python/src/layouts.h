@@ -9,6 +9,7 @@
 #include <string>
 
 #include "vantage/analysis/layout.h"
+#include "vantage/io/layout_formats.h"
 
 namespace vantage::python {
 
@@ -23,6 +24,10 @@ struct ReadArguments {
   py::object bundle = py::none();
   bool allow_large = false;
 };
+
+/// format=, tag_points=, bundle=, allow_large= as the reader's options (the CLI's --format,
+/// --tag-points, --bundle, --allow-large); InvalidArgument names the keyword.
+io::LayoutReadOptions read_options_from(const ReadArguments& read);
 
 /// The layout the caller means: `layout` (a vantage.Layout, or a path read in any supported
 /// format as `read` says) or exactly one of `vectors` / `points` (n x 3) with optional `weights`

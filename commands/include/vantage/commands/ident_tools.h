@@ -17,10 +17,21 @@ namespace vantage::commands {
 /// folder without one.
 std::vector<std::string> tool_files(const std::vector<std::string>& paths);
 
-/// The markers a tracker needs in view to report `tool`, read from `file` in `format`
-/// (kAuto: by its extension): a .rom's minimum markers (byte 32, io::read_ndi_rom_min_markers,
-/// with or without normals), else the layout's visibility.min_visible, else 3 (a 3-D
-/// registration's least). Empty `file` (a tool given as a layout): the layout's.
-int own_min_visible(const Layout& tool, const std::string& file, io::LayoutFormat format);
+/// The markers a tracker needs in view to report a tool given as a layout: its
+/// visibility.min_visible, else 3 (a 3-D registration's least).
+int own_min_visible(const Layout& tool);
+
+/// A tool file as `vantage ident` and vantage.ident read it.
+struct IdentTool {
+  Layout layout;
+  /// Its own minimum markers: a .rom's (byte 32, io::ndi_rom_min_markers, with or without
+  /// normals), else own_min_visible(layout).
+  int min_visible = 3;
+};
+
+/// Reads the tool file at `path` once (io::load_layout's reading, with `options`; kAuto: the
+/// format its extension names), and its own minimum. Throws what load_layout throws, and
+/// io::ndi_rom_min_markers' error for a .rom.
+IdentTool read_ident_tool(const std::string& path, const io::LayoutReadOptions& options);
 
 }  // namespace vantage::commands
